@@ -1,0 +1,31 @@
+// The subcommands of `erd`. Each takes (argc, argv) with argv[0] = its own name and returns
+// the process exit status: 0 success, 1 runtime failure, 2 usage or input error,
+// 3 target sampling density not achieved (thesis -x mode 0).
+#pragma once
+
+namespace erd::cli {
+
+using CommandFn = int (*)(int argc, char** argv);
+
+struct Command {
+    const char* name;
+    const char* summary;  // one line for `erd help`
+    CommandFn run;
+};
+
+int cmd_info(int argc, char** argv);
+int cmd_synth(int argc, char** argv);
+int cmd_psnr(int argc, char** argv);
+int cmd_edges(int argc, char** argv);
+int cmd_generate(int argc, char** argv);
+int cmd_reconstruct(int argc, char** argv);
+int cmd_render(int argc, char** argv);
+int cmd_export(int argc, char** argv);
+
+// The thesis's seven programs (Appendix A.5), reached through argv[0] (issue: packaging).
+int thesis_alias(const char* name, int argc, char** argv, bool* handled);
+
+// The static table (cli/main.cpp).
+const Command* commands(int* count);
+
+}  // namespace erd::cli

@@ -1,0 +1,127 @@
+// erd: one program, a static table of subcommands, and the thesis's command names via argv[0].
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "cli/commands.h"
+
+#ifndef ERD_VERSION
+#define ERD_VERSION "0.1.0"
+#endif
+
+namespace erd::cli {
+
+// Placeholders for subcommands whose files have not landed yet; a real definition elsewhere
+// overrides these weak ones at link time. (Removed once every subcommand exists.)
+#define ERD_PENDING(fn, nm)                                                            \
+    __attribute__((weak)) int fn(int, char**) {                                        \
+        std::fprintf(stderr, "erd %s: not available in this build\n", nm);             \
+        return 1;                                                                      \
+    }
+ERD_PENDING(cmd_info, "info")
+ERD_PENDING(cmd_synth, "synth")
+ERD_PENDING(cmd_psnr, "psnr")
+ERD_PENDING(cmd_edges, "edges")
+ERD_PENDING(cmd_generate, "generate")
+ERD_PENDING(cmd_reconstruct, "reconstruct")
+ERD_PENDING(cmd_render, "render")
+ERD_PENDING(cmd_export, "export")
+__attribute__((weak)) int thesis_alias(const char*, int, char**, bool* handled) {
+    *handled = false;
+    return 0;
+}
+
+static int cmd_help(int argc, char** argv);
+
+static const Command kCommands[] = {
+    {"generate", "mesh an image: --method ed|gpi|erded|erdgpi", cmd_generate},
+    {"reconstruct", "rasterise a .model or .erd back into an image", cmd_reconstruct},
+    {"psnr", "PSNR of an approximation against the original", cmd_psnr},
+    {"edges", "half-pixel edge map and polylines of an image", cmd_edges},
+    {"render", "draw a mesh as SVG or PNG", cmd_render},
+    {"export", "write a mesh as OBJ or PLY", cmd_export},
+    {"info", "size, maxval and bits per sample of an image", cmd_info},
+    {"synth", "write a deterministic test image", cmd_synth},
+    {"help", "list subcommands, or show one's help", cmd_help},
+};
+
+const Command* commands(int* count) {
+    *count = int(sizeof kCommands / sizeof kCommands[0]);
+    return kCommands;
+}
+
+static const Command* find_command(const char* name) {
+    for (const auto& c : kCommands)
+        if (std::strcmp(c.name, name) == 0) return &c;
+    return nullptr;
+}
+
+// Levenshtein distance, for "did you mean".
+static int distance(const std::string& a, const std::string& b) {
+    std::string::size_type n = b.size();
+    std::basic_string<int> row(n + 1, 0);
+    for (std::string::size_type j = 0; j <= n; ++j) row[j] = int(j);
+    for (char ca : a) {
+        int diag = row[0];
+        row[0] += 1;
+        for (std::string::size_type j = 1; j <= n; ++j) {
+            int up = row[j];
+            row[j] = std::min(std::min(row[j] + 1, row[j - 1] + 1), diag + (ca == b[j - 1] ? 0 : 1));
+            diag = up;
+        }
+    }
+    return row[n];
+}
+
+static void list_commands(FILE* out) {
+    std::fprintf(out, "usage: erd SUBCOMMAND [options]   (erd help SUBCOMMAND for details)\n\nSubcommands:\n");
+    for (const auto& c : kCommands) std::fprintf(out, "  %-12s %s\n", c.name, c.summary);
+    std::fprintf(out, "\nExit status: 0 success, 1 runtime failure, 2 usage or input error,\n"
+                      "3 target sampling density not achieved exactly (-x 0).\n");
+}
+
+static int cmd_help(int argc, char** argv) {
+    if (argc < 2) { list_commands(stdout); return 0; }
+    const Command* c = find_command(argv[1]);
+    if (!c || c->run == cmd_help) {
+        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", argv[1]); return 2; }
+        list_commands(stdout);
+        return 0;
+    }
+    char help_flag[] = "--help";
+    char* sub_argv[] = {argv[1], help_flag, nullptr};
+    return c->run(2, sub_argv);
+}
+
+static int unknown(const char* name) {
+    std::fprintf(stderr, "erd: '%s' is not a subcommand.", name);
+    int best = 1 << 30;
+    const char* guess = nullptr;
+    for (const auto& c : kCommands) {
+        int d = distance(name, c.name);
+        if (d < best) { best = d; guess = c.name; }
+    }
+    if (guess && best <= 3) std::fprintf(stderr, " Did you mean '%s'?", guess);
+    std::fprintf(stderr, " See 'erd help'.\n");
+    return 2;
+}
+
+}  // namespace erd::cli
+
+int main(int argc, char** argv) {
+    using namespace erd::cli;
+    const char* self = argc > 0 && argv[0] ? argv[0] : "erd";
+    const char* base = std::strrchr(self, '/');
+    base = base ? base + 1 : self;
+    bool handled = false;
+    int status = thesis_alias(base, argc, argv, &handled);
+    if (handled) return status;
+
+    if (argc < 2) { list_commands(stderr); return 2; }
+    const char* sub = argv[1];
+    if (!std::strcmp(sub, "--version") || !std::strcmp(sub, "version")) { std::printf("erd %s\n", ERD_VERSION); return 0; }
+    if (!std::strcmp(sub, "--help") || !std::strcmp(sub, "-h")) { list_commands(stdout); return 0; }
+    const Command* c = find_command(sub);
+    if (!c) return unknown(sub);
+    return c->run(argc - 1, argv + 1);
+}

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Builds every fuzz/fuzz_*.cpp with libFuzzer + ASan + UBSan and runs each for SECONDS.
+# Prints "PASS name execs corpus" or "FAIL name" per target.  Usage: fuzz/run.sh SECONDS
+set -u
+cd "$(dirname "$0")/.."
+SECONDS_EACH=${1:-300}
+B=build-fuzz
+SAN="-fsanitize=address,undefined -fno-sanitize-recover=all"
+FLAGS="-O1 -g -std=c++17 -I. -fno-omit-frame-pointer $SAN"
+if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ not found, skipped"; exit 0; fi
+mkdir -p $B
+# Library and CLI objects (all but main) with coverage instrumentation; rebuilt when sources change.
+make -s -j2 BUILD=$B CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+    $B/liberd.a $(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o || { echo "FAIL build"; exit 1; }
+objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o $B/liberd.a"
+status=0
+for src in fuzz/fuzz_*.cpp; do
+    name=$(basename "$src" .cpp)
+    if ! clang++ $FLAGS -fsanitize=fuzzer "$src" $objs -o $B/$name 2>$B/$name.build.log; then
+        echo "FAIL $name (build)"; cat $B/$name.build.log | head -20; status=1; continue
+    fi
+    corpus=$B/corpus/$name
+    mkdir -p "$corpus"
+    seeds=fuzz/corpus/$name
+    dict=""; [[ -f fuzz/$name.dict ]] && dict="-dict=fuzz/$name.dict"
+    if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$SECONDS_EACH" \
+        -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
+        execs=$(grep -E 'stat::number_of_executed_units' $B/$name.log | awk '{print $2}')
+        echo "PASS $name execs=$execs corpus=$(ls "$corpus" | wc -l)"
+    else
+        echo "FAIL $name"; grep -E 'ERROR|SUMMARY|Test unit written' $B/$name.log | head -5; status=1
+    fi
+done
+exit $status

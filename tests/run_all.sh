@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# `make test`: the unit tests, the same tests under ASan+UBSan, and a short run of every fuzz
+# target. Counts test cases (a fuzz target counts as one) and ends with "N passed, M failed".
+set -u
+cd "$(dirname "$0")/.."
+IMAGES=${IMAGES:-../shared/images}
+passed=0
+failed=0
+log=$(mktemp -d)
+trap 'rm -rf "$log"' EXIT
+
+# Adds the counts from a Catch2 run's last lines to the totals.
+count_catch() {
+    local out=$1 rc=$2 line p f
+    line=$(grep -E '^(test cases:|All tests passed)' "$out" | tail -1)
+    if [[ $line =~ All\ tests\ passed.*\ ([0-9]+)\ test\ case ]]; then
+        p=${BASH_REMATCH[1]}; f=0
+    elif [[ $line =~ test\ cases:\ +([0-9]+)\ \|\ +([0-9]+)\ passed\ \|\ +([0-9]+)\ failed ]]; then
+        p=${BASH_REMATCH[2]}; f=${BASH_REMATCH[3]}
+    elif [[ $line =~ test\ cases:\ +([0-9]+)\ \|\ +([0-9]+)\ failed ]]; then
+        p=0; f=${BASH_REMATCH[2]}
+    else
+        p=0; f=1   # crashed before reporting
+    fi
+    [[ $rc -ne 0 && $f -eq 0 ]] && f=1
+    passed=$((passed + p)); failed=$((failed + f))
+}
+
+echo "== build"
+if ! make -s -j2 build/erd build/erd_tests; then
+    echo "build failed"; echo "0 passed, 1 failed"; exit 1
+fi
+
+echo "== unit tests"
+ERD_BIN=build/erd ERD_IMAGES=$IMAGES build/erd_tests 2>&1 | tee "$log/unit" | tail -3
+count_catch "$log/unit" "${PIPESTATUS[0]}"
+
+echo "== unit tests under ASan+UBSan"
+if command -v clang++ >/dev/null && make -s -j2 asan >"$log/asan-build" 2>&1; then
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    ERD_BIN=build-asan/erd ERD_IMAGES=$IMAGES ERD_SANITIZED=1 build-asan/erd_tests 2>&1 | tee "$log/asan" | tail -3
+    count_catch "$log/asan" "${PIPESTATUS[0]}"
+else
+    tail -20 "$log/asan-build"; echo "sanitizer build failed"; failed=$((failed + 1))
+fi
+
+echo "== fuzz smoke runs"
+if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
+    bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-20}" >"$log/fuzz" 2>&1
+    cat "$log/fuzz" | grep -E '^(fuzz|PASS|FAIL)' || true
+    p=$(grep -c '^PASS' "$log/fuzz"); f=$(grep -c '^FAIL' "$log/fuzz")
+    passed=$((passed + p)); failed=$((failed + f))
+fi
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]

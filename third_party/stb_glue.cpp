@@ -1,0 +1,127 @@
+#include "third_party/stb_glue.h"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace {
+// Byte budget for the current decode. Thread-local so concurrent decodes do not share it.
+thread_local std::size_t g_budget = 0;
+thread_local std::size_t g_used = 0;
+
+struct Header { std::size_t size; std::size_t pad; };
+
+void* budget_malloc(std::size_t n) {
+    if (n > g_budget || g_used > g_budget - n) return nullptr;
+    auto* h = static_cast<Header*>(std::malloc(sizeof(Header) + n));
+    if (!h) return nullptr;
+    h->size = n;
+    g_used += n;
+    return h + 1;
+}
+void budget_free(void* p) {
+    if (!p) return;
+    Header* h = static_cast<Header*>(p) - 1;
+    g_used -= h->size;
+    std::free(h);
+}
+void* budget_realloc(void* p, std::size_t n) {
+    if (!p) return budget_malloc(n);
+    Header* h = static_cast<Header*>(p) - 1;
+    std::size_t old = h->size;
+    if (n > old && (n - old > g_budget || g_used > g_budget - (n - old))) return nullptr;
+    auto* nh = static_cast<Header*>(std::realloc(h, sizeof(Header) + n));
+    if (!nh) return nullptr;
+    g_used = g_used - old + n;
+    nh->size = n;
+    return nh + 1;
+}
+}  // namespace
+
+#define STBI_ONLY_PNG
+#define STBI_NO_STDIO
+#define STBI_NO_LINEAR
+#define STBI_NO_HDR
+#define STBI_NO_THREAD_LOCALS
+#define STBI_MAX_DIMENSIONS 32768
+#define STBI_MALLOC(sz) budget_malloc(sz)
+#define STBI_REALLOC(p, newsz) budget_realloc(p, newsz)
+#define STBI_FREE(p) budget_free(p)
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#define STBI_WRITE_NO_STDIO
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wsign-conversion"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wdouble-promotion"
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+#pragma GCC diagnostic pop
+
+namespace erd::stb {
+
+bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
+    if (size > std::size_t(0x7fffffff)) { *why = "file too large"; return false; }
+    int len = int(size);
+    if (!stbi_info_from_memory(data, len, w, h, channels)) {
+        *why = stbi_failure_reason() ? stbi_failure_reason() : "not a PNG";
+        return false;
+    }
+    *is16 = stbi_is_16_bit_from_memory(data, len) != 0;
+    return true;
+}
+
+bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_bytes, PngImage* out, std::string* why) {
+    int w = 0, h = 0, ch = 0;
+    bool is16 = false;
+    if (!png_info(data, size, &w, &h, &ch, &is16, why)) return false;
+    g_budget = budget_bytes;
+    g_used = 0;
+    int len = int(size), got = 0;
+    out->width = w;
+    out->height = h;
+    out->channels = ch;
+    out->bits = is16 ? 16 : 8;
+    std::size_t n = std::size_t(w) * std::size_t(h);
+    out->gray.assign(n, 0);
+    // Luma by BT.601 weights, rounded: (299 R + 587 G + 114 B) / 1000.
+    auto luma = [](unsigned r, unsigned g, unsigned b) { return std::uint16_t((299u * r + 587u * g + 114u * b + 500u) / 1000u); };
+    if (is16) {
+        stbi_us* px = stbi_load_16_from_memory(data, len, &w, &h, &got, 0);
+        if (!px) { *why = stbi_failure_reason() ? stbi_failure_reason() : "decode failed"; return false; }
+        for (std::size_t i = 0; i < n; ++i) {
+            const stbi_us* p = px + i * std::size_t(ch);
+            out->gray[i] = ch >= 3 ? luma(p[0], p[1], p[2]) : p[0];
+        }
+        stbi_image_free(px);
+    } else {
+        stbi_uc* px = stbi_load_from_memory(data, len, &w, &h, &got, 0);
+        if (!px) { *why = stbi_failure_reason() ? stbi_failure_reason() : "decode failed"; return false; }
+        for (std::size_t i = 0; i < n; ++i) {
+            const stbi_uc* p = px + i * std::size_t(ch);
+            out->gray[i] = ch >= 3 ? luma(p[0], p[1], p[2]) : p[0];
+        }
+        stbi_image_free(px);
+    }
+    return true;
+}
+
+static void append(void* ctx, void* data, int size) {
+    auto* v = static_cast<std::vector<unsigned char>*>(ctx);
+    auto* b = static_cast<unsigned char*>(data);
+    v->insert(v->end(), b, b + size);
+}
+
+bool png_encode(const unsigned char* pixels, int w, int h, int channels, std::vector<unsigned char>* out) {
+    out->clear();
+    return stbi_write_png_to_func(append, out, w, h, channels, pixels, w * channels) != 0;
+}
+
+}  // namespace erd::stb
