@@ -1,0 +1,33 @@
+// How every subcommand talks to the user: errors as "erd SUB: message" on stderr with the exit
+// status of the Status code, warnings and progress on stderr (silenced by -q/--quiet), data
+// on stdout only. One Reporter per subcommand run; no global state.
+#pragma once
+#include <string>
+
+#include "kernel/status.h"
+
+namespace erd::cli {
+
+class Reporter {
+public:
+    explicit Reporter(std::string sub) : sub_(std::move(sub)) {}
+
+    // -q/--quiet: drop warnings and progress (errors are always printed).
+    void set_quiet(bool q) { quiet_ = q; }
+    bool quiet() const { return quiet_; }
+
+    // Prints "erd SUB: message" and returns st.exit_code() (0 prints nothing).
+    int fail(const Status& st) const;
+    // A usage error: "erd SUB: message" plus "usage: erd SUB ..." and a pointer to --help; returns 2.
+    int usage(const std::string& message, const std::string& usage_line) const;
+    // "erd SUB: warning: message" unless quiet; empty messages print nothing (may hold several lines).
+    void warn(const std::string& message) const;
+    // "erd SUB: message" unless quiet: progress, timings.
+    void note(const std::string& message) const;
+
+private:
+    std::string sub_;
+    bool quiet_ = false;
+};
+
+}  // namespace erd::cli
