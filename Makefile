@@ -94,3 +94,62 @@ clean:
 	rm -rf build build-asan build-fuzz out
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+# ---------------------------------------------------------------------------------------------
+# Packaging (issue 9): install/uninstall, pkg-config, the -Os -fno-exceptions -fno-rtti build.
+#
+# `make install PREFIX=/usr/local DESTDIR=` installs bin/erd plus the thesis's seven command
+# names as symlinks to it, lib/liberd.a, the library headers under include/erd/ (kernel/ and
+# algorithms/ keep their names, so the headers' own "kernel/x.h" includes resolve with
+# -I$(includedir)/erd, which erd.pc supplies), include/erd/erd.h (forwards to algorithms/erd.h),
+# lib/pkgconfig/erd.pc and share/man/man1/erd.1. It installs what $(BUILD) already holds.
+PREFIX     ?= /usr/local
+DESTDIR    ?=
+BINDIR     ?= $(PREFIX)/bin
+LIBDIR     ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+MANDIR     ?= $(PREFIX)/share/man
+ERD_ALIASES := ywb gpi erd_ed erd_gpi imgsyn imgsyn_aa Cal_PSNR
+ERD_PC_VERSION ?= 0.1.0
+
+.PHONY: install uninstall embedded
+install: $(BUILD)/erd $(BUILD)/liberd.a
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(MANDIR)/man1 \
+	  $(DESTDIR)$(INCLUDEDIR)/erd/kernel $(DESTDIR)$(INCLUDEDIR)/erd/algorithms
+	install -m 755 $(BUILD)/erd $(DESTDIR)$(BINDIR)/erd
+	for a in $(ERD_ALIASES); do ln -sf erd $(DESTDIR)$(BINDIR)/$$a; done
+	install -m 644 $(BUILD)/liberd.a $(DESTDIR)$(LIBDIR)/liberd.a
+	install -m 644 $(wildcard kernel/*.h) $(DESTDIR)$(INCLUDEDIR)/erd/kernel/
+	install -m 644 $(wildcard algorithms/*.h) $(DESTDIR)$(INCLUDEDIR)/erd/algorithms/
+	printf '%s\n' '// erd public API: see algorithms/erd.h. Compile with `pkg-config --cflags erd`.' \
+	  '#pragma once' '#include "algorithms/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
+	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
+	  'Name: erd' 'Description: image meshes with explicit discontinuities (ERD model): mesh generation, reconstruction, PSNR' \
+	  'Version: $(ERD_PC_VERSION)' 'Cflags: -I$${includedir}/erd' 'Libs: -L$${libdir} -lerd' \
+	  > $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc
+	install -m 644 docs/erd.1 $(DESTDIR)$(MANDIR)/man1/erd.1
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/erd $(addprefix $(DESTDIR)$(BINDIR)/,$(ERD_ALIASES)) \
+	  $(DESTDIR)$(LIBDIR)/liberd.a $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc $(DESTDIR)$(MANDIR)/man1/erd.1
+	rm -rf $(DESTDIR)$(INCLUDEDIR)/erd
+
+# `make embedded`: kernel/ + algorithms/ at -Os with -fno-exceptions -fno-rtti in their own build
+# dir, the example docs/examples/embedded.cpp linked against that library, run once; prints sizes.
+EMBEDDED_BUILD ?= build-embedded
+EMBEDDED_FLAGS := -Os -fno-exceptions -fno-rtti -ffunction-sections -fdata-sections
+embedded:
+	@env CXXFLAGS="$(EMBEDDED_FLAGS)" $(MAKE) --no-print-directory BUILD=$(EMBEDDED_BUILD) \
+	  $(EMBEDDED_BUILD)/liberd.a $(EMBEDDED_BUILD)/embedded_example
+	@echo "library $(EMBEDDED_BUILD)/liberd.a: $$(size -t $(EMBEDDED_BUILD)/liberd.a | tail -1 | awk '{print $$1 " text, " $$2 " data, " $$3 " bss bytes"}'), file $$(wc -c < $(EMBEDDED_BUILD)/liberd.a) bytes"
+	@strip -o $(EMBEDDED_BUILD)/embedded_example.stripped $(EMBEDDED_BUILD)/embedded_example
+	@echo "example $(EMBEDDED_BUILD)/embedded_example: $$(size $(EMBEDDED_BUILD)/embedded_example | tail -1 | awk '{print $$1 " text, " $$2 " data, " $$3 " bss bytes"}'), stripped file $$(wc -c < $(EMBEDDED_BUILD)/embedded_example.stripped) bytes"
+	@$(EMBEDDED_BUILD)/embedded_example
+
+$(BUILD)/embedded_example: $(BUILD)/docs/examples/embedded.o $(BUILD)/liberd.a
+	$(CXX) $(CXXFLAGS) -Wl,--gc-sections -o $@ $^ $(LDFLAGS)
+
+clean: clean-embedded
+.PHONY: clean-embedded
+clean-embedded:
+	rm -rf $(EMBEDDED_BUILD)
