@@ -3,6 +3,7 @@
 // on stdout only. One Reporter per subcommand run; no global state.
 #pragma once
 #include <string>
+#include <utility>
 
 #include "kernel/status.h"
 

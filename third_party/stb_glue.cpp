@@ -67,14 +67,37 @@ void* budget_realloc(void* p, std::size_t n) {
 
 namespace erd::stb {
 
+// stbi_info may allocate nothing but is given a small budget anyway, in case a future stb does.
+constexpr std::size_t kInfoBudget = std::size_t(1) << 20;
+
 bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
     if (size > std::size_t(0x7fffffff)) { *why = "file too large"; return false; }
     int len = int(size);
+    g_budget = kInfoBudget;
+    g_used = 0;
     if (!stbi_info_from_memory(data, len, w, h, channels)) {
         *why = stbi_failure_reason() ? stbi_failure_reason() : "not a PNG";
         return false;
     }
     *is16 = stbi_is_16_bit_from_memory(data, len) != 0;
+    return true;
+}
+
+// Copies stb's interleaved pixels into gray, after checking they are the size png_info promised.
+template <class T>
+static bool to_gray(const T* px, int w, int h, int got, PngImage* out, std::string* why) {
+    if (w != out->width || h != out->height || got < 1 || got > 4) {
+        *why = "decoder returned an unexpected size";
+        return false;
+    }
+    out->channels = got;
+    std::size_t n = std::size_t(w) * std::size_t(h);
+    out->gray.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const T* p = px + i * std::size_t(got);
+        // Luma by BT.601 weights, rounded: (299 R + 587 G + 114 B) / 1000.
+        out->gray[i] = got >= 3 ? std::uint16_t((299u * p[0] + 587u * p[1] + 114u * p[2] + 500u) / 1000u) : std::uint16_t(p[0]);
+    }
     return true;
 }
 
@@ -89,28 +112,21 @@ bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_
     out->height = h;
     out->channels = ch;
     out->bits = is16 ? 16 : 8;
-    std::size_t n = std::size_t(w) * std::size_t(h);
-    out->gray.assign(n, 0);
-    // Luma by BT.601 weights, rounded: (299 R + 587 G + 114 B) / 1000.
-    auto luma = [](unsigned r, unsigned g, unsigned b) { return std::uint16_t((299u * r + 587u * g + 114u * b + 500u) / 1000u); };
+    bool ok = false;
+    // 16-bit files go through stbi_load_16 only (INPUTS.md); 8-bit and lower through stbi_load.
     if (is16) {
         stbi_us* px = stbi_load_16_from_memory(data, len, &w, &h, &got, 0);
         if (!px) { *why = stbi_failure_reason() ? stbi_failure_reason() : "decode failed"; return false; }
-        for (std::size_t i = 0; i < n; ++i) {
-            const stbi_us* p = px + i * std::size_t(ch);
-            out->gray[i] = ch >= 3 ? luma(p[0], p[1], p[2]) : p[0];
-        }
+        ok = to_gray(px, w, h, got, out, why);
         stbi_image_free(px);
     } else {
         stbi_uc* px = stbi_load_from_memory(data, len, &w, &h, &got, 0);
         if (!px) { *why = stbi_failure_reason() ? stbi_failure_reason() : "decode failed"; return false; }
-        for (std::size_t i = 0; i < n; ++i) {
-            const stbi_uc* p = px + i * std::size_t(ch);
-            out->gray[i] = ch >= 3 ? luma(p[0], p[1], p[2]) : p[0];
-        }
+        ok = to_gray(px, w, h, got, out, why);
         stbi_image_free(px);
     }
-    return true;
+    g_budget = 0;
+    return ok;
 }
 
 static void append(void* ctx, void* data, int size) {
