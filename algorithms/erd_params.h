@@ -1,0 +1,63 @@
+// Automatic selection of the step-1 parameters beta, r, l and epsilon (thesis 3.4.1).
+//
+// The thesis fixes r = 0.4, decides first whether the image is "simple" (few edges), picks
+// initial values from Tables 3.1/3.2 by sampling density, then loops: while the simplified
+// polylines hold more than 0.7 N points, beta := 0.75 beta and l := 2 l; when they hold fewer
+// than 0.35 N points, epsilon := 1 and the simplification is redone. Every parameter the user
+// set by flag stays fixed; the loop only moves the others.
+//
+// The selection is written against an abstract counter so it can be tested on synthetic counts
+// and so step 1 can cache the expensive part (the gradient) across iterations.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace erd {
+
+enum class ErdMethod { erded, erdgpi };
+
+// What step 1 reports for given parameters: the number of distinct points on the simplified
+// polylines that survive the length filter (the vertices that become endpoints of constraints).
+class ConstraintPointCounter {
+public:
+    virtual ~ConstraintPointCounter() = default;
+    // Runs edge detection (step 1.1) with these thresholds; later count() calls use its result.
+    virtual void detect(double beta, double r) = 0;
+    // Steps 1.2-1.3 on the last detection: polylines, Douglas-Peucker with eps, drop short ones.
+    virtual std::size_t count(int l, double eps) = 0;
+};
+
+// Parameters the user fixed by flag; a negative value (or simple = -1) means "choose".
+struct ErdParamRequest {
+    double beta = -1;   // -b
+    double r = -1;      // -r
+    int l = -1;         // -l
+    double eps = -1;    // -e
+    int simple = -1;    // -S: -1 automatic, 0 simple, anything else not simple (thesis flag text)
+};
+
+// The chosen values and how they were reached (for stats).
+struct ErdParams {
+    double beta = 0.055;
+    double r = 0.4;
+    int l = 5;
+    double eps = 1;
+    bool simple = false;
+    std::size_t simple_test_points = 0;  // constrained points of the simple test (0 when -S given)
+    std::size_t constrained_points = 0;  // constrained points with the final parameters
+    int loop_iterations = 0;             // edge detections in the selection loop
+};
+
+// Table 3.1 (ERDED) or 3.2 (ERDGPI): beta for a sampling density given in percent.
+// Densities at or above 5% take the last row.
+double erd_beta_table(ErdMethod method, double density_percent);
+
+// Largest number of edge detections the loop runs before it gives up shrinking beta.
+constexpr int kErdParamMaxIterations = 24;
+
+// Runs the selection for a W x H image and target size n. The counter's last detection/count
+// on return are those of the chosen parameters.
+ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t n,
+                            const ErdParamRequest& req, ConstraintPointCounter& counter);
+
+}  // namespace erd

@@ -1,0 +1,133 @@
+// Automatic parameter selection (thesis 3.4.1) on synthetic constraint-point counts.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "algorithms/erd_params.h"
+
+using namespace erd;
+
+namespace {
+
+// A counter whose count is a given function of (beta, l, eps); it records every call.
+struct FakeCounter : ConstraintPointCounter {
+    double (*fn)(double beta, int l, double eps);
+    double beta = 0;
+    std::vector<double> betas;
+    std::vector<int> ls;
+    std::vector<double> epss;
+    explicit FakeCounter(double (*f)(double, int, double)) : fn(f) {}
+    void detect(double b, double) override {
+        beta = b;
+        betas.push_back(b);
+    }
+    std::size_t count(int l, double eps) override {
+        ls.push_back(l);
+        epss.push_back(eps);
+        return std::size_t(std::lround(fn(beta, l, eps)));
+    }
+};
+
+}  // namespace
+
+TEST_CASE("beta tables 3.1 and 3.2", "[erd]") {
+    CHECK(erd_beta_table(ErdMethod::erded, 0.0) == 0.0095);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 0.0) == 0.0110);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 0.125) == 0.0110);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 0.20) == 0.0115);
+    CHECK(erd_beta_table(ErdMethod::erded, 0.25) == 0.0095);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 0.5) == 0.0118);
+    CHECK(erd_beta_table(ErdMethod::erded, 0.75) == 0.0280);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 1.0) == 0.0280);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 2.0) == 0.0550);
+    CHECK(erd_beta_table(ErdMethod::erded, 3.0) == 0.0830);
+    CHECK(erd_beta_table(ErdMethod::erded, 3.5) == 0.0950);
+    CHECK(erd_beta_table(ErdMethod::erdgpi, 12.0) == 0.0950);
+}
+
+TEST_CASE("not simple: initial choices from the table, no loop needed", "[erd]") {
+    // 1000 x 1000 image, N = 10000 (1%): 0.35N = 3500, 0.7N = 7000; grid threshold ~4.
+    FakeCounter c([](double, int, double) { return 5000.0; });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    CHECK_FALSE(p.simple);
+    CHECK(p.simple_test_points == 5000);
+    CHECK(c.betas.front() == 0.055);  // the simple test
+    CHECK(c.ls.front() == 5);
+    CHECK(c.epss.front() == 1.0);
+    CHECK(p.beta == 0.0280);
+    CHECK(p.l == 5);
+    CHECK(p.eps == 2.0);  // D = 1% is not > 1%
+    CHECK(p.r == 0.4);
+    CHECK(p.loop_iterations == 1);
+    CHECK(p.constrained_points == 5000);
+}
+
+TEST_CASE("density above 1% takes eps = 1", "[erd]") {
+    // 100 x 100, N = 300 (3%): counts between 0.35N = 105 and 0.7N = 210 need no loop.
+    FakeCounter c([](double, int, double) { return 150.0; });
+    ErdParams p = select_erd_params(ErdMethod::erded, 100, 100, 300, {}, c);
+    CHECK(p.eps == 1.0);
+    CHECK(p.beta == 0.0830);
+}
+
+TEST_CASE("too many constrained points: beta shrinks by 0.75 and l doubles", "[erd]") {
+    // Count proportional to beta / l: starts at 20000 with beta 0.028, l 5.
+    FakeCounter c([](double beta, int l, double) { return 20000.0 * (beta / 0.028) * (5.0 / l); });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    // 20000 -> 7500 -> 2812.5 (< 3500 but eps already... eps is 2 -> set 1, recount same) -> stop
+    REQUIRE(p.loop_iterations == 3);
+    CHECK(p.beta == Approx(0.028 * 0.75 * 0.75));
+    CHECK(p.l == 20);
+    CHECK(p.eps == 1.0);  // the last count fell below 0.35N, so eps was reset to 1
+}
+
+TEST_CASE("too few constrained points: eps := 1 and recount", "[erd]") {
+    FakeCounter c([](double, int, double eps) { return eps == 1.0 ? 6000.0 : 3000.0; });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    CHECK(p.eps == 1.0);
+    CHECK(p.constrained_points == 6000);
+    CHECK(p.loop_iterations == 1);
+}
+
+TEST_CASE("simple image test and -S override", "[erd]") {
+    // Threshold 0.001 * 1999 * 1999 = 3996: 3000 points is simple.
+    FakeCounter c([](double, int, double) { return 3000.0; });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    CHECK(p.simple);
+    CHECK(p.beta == 0.03);
+    CHECK(p.l == 1);
+    CHECK(p.eps == 1.0);
+
+    ErdParamRequest req;
+    req.simple = 1;  // thesis: -S nonzero means not simple
+    FakeCounter c2([](double, int, double) { return 3000.0; });
+    ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, req, c2);
+    CHECK_FALSE(q.simple);
+    CHECK(q.simple_test_points == 0);
+    CHECK(c2.betas.front() == 0.0280);  // no simple test ran
+
+    req.simple = 0;
+    FakeCounter c3([](double, int, double) { return 100000.0; });
+    ErdParams s = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, req, c3);
+    CHECK(s.simple);
+}
+
+TEST_CASE("manual flags stay fixed", "[erd]") {
+    FakeCounter c([](double beta, int, double) { return 20000.0 * beta / 0.028; });
+    ErdParamRequest req;
+    req.l = 3;
+    req.eps = 2.5;
+    req.r = 0.3;
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, req, c);
+    CHECK(p.l == 3);
+    CHECK(p.eps == 2.5);
+    CHECK(p.r == 0.3);
+    CHECK(p.beta < 0.028 * 0.7 * 0.75);
+
+    req.beta = 0.2;
+    FakeCounter c2([](double, int, double) { return 1e9; });
+    ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, req, c2);
+    CHECK(q.beta == 0.2);
+    CHECK(q.loop_iterations == 1);  // nothing it may move
+}
