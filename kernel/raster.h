@@ -1,0 +1,99 @@
+// Scan conversion: which lattice points a triangle owns, visited as horizontal spans.
+//
+// Ownership rule (exact, integer arithmetic only). A lattice point p of the closed domain
+// [0, max_x] x [0, max_y] (doubled coordinates) belongs to the face whose OPEN interior contains
+// the symbolically perturbed point
+//     p + (sx*eps, sy*eps^2),  eps -> 0+,
+//     sx = -1 if p.x == max_x else +1,   sy = -1 if p.y == max_y else +1.
+// The perturbed point always lies in the open domain and on no edge (the direction (sx, sy*eps)
+// is parallel to no segment for small eps), so for ANY triangulation of the rectangle every
+// lattice point of the closed domain (on edges, at vertices, on the outer boundary) is owned by
+// exactly one face. Away from the right and bottom borders this is the familiar top-left rule
+// with y pointing down: a point on an edge goes to the face on its right (larger x), a point on a
+// horizontal edge to the face below it (larger y). Points outside the closed domain are owned by
+// no face.
+//
+// Per edge a->b of a positively oriented triangle the test is on E(p) = orient2d(a, b, p):
+// E > 0, or E == 0 and sx*(a.y - b.y) > 0, or E == 0, a.y == b.y and sy*(b.x - a.x) > 0.
+//
+// Lattices. A lattice is given in "fine" coordinates, fine = scale * doubled coordinate; its point
+// (i, j) is at fine (phase_x + step_x*i, phase_y + step_y*j). One routine serves:
+//   pixels():      scale 1, step 2, phase 0: index (i, j) is pixel (x, y) (doubled (2x, 2y));
+//   supersample(): scale 4 (fine = 8 * pixel), step 2, phase -3: index i = 4x + k is the
+//                  sub-sample at x + (2k - 3)/8, k = 0..3, i.e. offsets -0.375 -0.125 0.125 0.375;
+//   the clamping lattices of reconstruction (samples moved onto the border of the domain).
+// Fine coordinates must stay below 2^28 in magnitude (doubled coordinates < 2^24, scale <= 4,
+// |phase| and step small): every product below is then exact in int64.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/model.h"
+
+namespace erd {
+
+// A regular lattice of sample points (see the header comment).
+struct Lattice {
+    std::int32_t scale = 1;   // fine coordinate = scale * doubled coordinate
+    std::int32_t step_x = 2;  // spacing in fine units, >= 1
+    std::int32_t step_y = 2;
+    std::int32_t phase_x = 0;  // fine coordinate of index 0
+    std::int32_t phase_y = 0;
+
+    std::int64_t fine_x(std::int64_t i) const { return phase_x + step_x * i; }
+    std::int64_t fine_y(std::int64_t j) const { return phase_y + step_y * j; }
+
+    // Pixel centres: index (i, j) = pixel (x, y).
+    static Lattice pixels() { return Lattice{}; }
+    // 4x4 supersampling: index i = 4x + k is the sub-sample at x + (2k - 3)/8 pixel (same in y).
+    static Lattice supersample() { return Lattice{4, 2, 2, -3, -3}; }
+};
+
+// The domain rectangle [0, max_x] x [0, max_y] in doubled coordinates (max = 2W-2, 2H-2).
+struct RasterDomain {
+    std::int32_t max_x = 0;
+    std::int32_t max_y = 0;
+};
+
+// One row of owned lattice points: row index y, column indices x_begin..x_end INCLUSIVE.
+struct Span {
+    std::int32_t y = 0;
+    std::int32_t x_begin = 0;
+    std::int32_t x_end = 0;
+};
+
+// Clears *out and appends the spans of the lattice points that triangle (a, b, c) owns, rows top
+// to bottom (increasing y), never an empty span. The triangle may have either orientation; a
+// degenerate (zero-area) triangle owns nothing. Returns the number of points owned. The vector is
+// the caller's, so a loop over faces allocates nothing after its first large face.
+std::int64_t scan_triangle(const Lattice& lattice, RasterDomain domain, LatticePoint a, LatticePoint b,
+                           LatticePoint c, std::vector<Span>* out);
+
+// The same rule for one lattice point (i, j): true when triangle (a, b, c) owns it.
+bool triangle_owns(const Lattice& lattice, RasterDomain domain, LatticePoint a, LatticePoint b, LatticePoint c,
+                   std::int32_t i, std::int32_t j);
+
+// A linear function through three (point, value) pairs, for evaluating a face's plane along
+// spans: v = at(lattice, span.x_begin, span.y), then v += step_x(lattice) per point. Set up
+// relative to p0 in doubled coordinates, so values stay accurate far from the origin.
+struct SpanPlane {
+    double x0 = 0.0;  // doubled coordinates of p0
+    double y0 = 0.0;
+    double z0 = 0.0;  // value at p0
+    double gx = 0.0;  // dz/dX, dz/dY per doubled unit
+    double gy = 0.0;
+
+    // The plane through (p0, z0), (p1, z1), (p2, z2); false (and a constant plane z0) when the
+    // points are collinear.
+    bool set(LatticePoint p0, double z0v, LatticePoint p1, double z1v, LatticePoint p2, double z2v);
+    // Value at doubled coordinates (X, Y).
+    double at(double X, double Y) const { return z0 + gx * (X - x0) + gy * (Y - y0); }
+    // Value at lattice point (i, j).
+    double at(const Lattice& l, std::int32_t i, std::int32_t j) const {
+        return at(double(l.fine_x(i)) / l.scale, double(l.fine_y(j)) / l.scale);
+    }
+    // Increment from lattice point (i, j) to (i + 1, j).
+    double step_x(const Lattice& l) const { return gx * l.step_x / l.scale; }
+};
+
+}  // namespace erd
