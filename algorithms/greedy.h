@@ -28,21 +28,10 @@
 #include "algorithms/image.h"
 #include "algorithms/model.h"
 #include "kernel/cdt.h"
+#include "kernel/raster.h"
 #include "kernel/status.h"
 
 namespace erd {
-
-// A plane z(X, Y) = a*X + b*Y + c in DOUBLED lattice coordinates (X = 2x, Y = 2y).
-struct Plane {
-    double a = 0.0;
-    double b = 0.0;
-    double c = 0.0;
-    double at(double X, double Y) const { return a * X + b * Y + c; }
-};
-
-// The plane through (p0, z0), (p1, z1), (p2, z2). The points must not be collinear (every face
-// of the triangulation has positive area). Exact at the three points up to rounding of doubles.
-Plane plane_through(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2);
 
 // What the greedy loop needs from a mesh model. One instance lives for one refinement run; it may
 // keep its own per-vertex or per-wedge state (values, wedge values) keyed by kernel indices.
@@ -59,10 +48,11 @@ class GreedyModel {
 public:
     virtual ~GreedyModel() = default;
 
-    // The approximating plane on face f of the current triangulation. Called for every face when
-    // the loop starts and for each face to re-scan after an insertion, always after
+    // The approximating plane on face f of the current triangulation (kernel/raster.h SpanPlane,
+    // the type reconstruction evaluates too, so both compute the same values). Called for every
+    // face when the loop starts and for each face to re-scan after an insertion, always after
     // on_vertex_inserted for that insertion. Must be deterministic.
-    virtual Plane face_plane(const Cdt& cdt, FaceInd f) const = 0;
+    virtual SpanPlane face_plane(const Cdt& cdt, FaceInd f) const = 0;
 
     // Called once after each insertion that created the new vertex v (cdt.changes() describes
     // the insertion and is still valid). Assign the vertex's value(s) here. Append to *dirty any
