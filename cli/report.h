@@ -31,4 +31,10 @@ private:
     bool quiet_ = false;
 };
 
+// A JSON string literal (quotes included) with the escapes JSON requires, for --json outputs.
+std::string json_string(const std::string& s);
+
+// A JSON number: shortest round-trip form ("%.17g" trimmed); "null" for NaN or infinity.
+std::string json_number(double v);
+
 }  // namespace erd::cli

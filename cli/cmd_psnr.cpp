@@ -1,0 +1,61 @@
+// erd psnr ORIGINAL APPROX [--json]: the thesis's Cal_PSNR.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "algorithms/metrics.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/image_io.h"
+#include "cli/report.h"
+
+namespace erd::cli {
+
+int cmd_psnr(int argc, char** argv) {
+    Reporter rep("psnr");
+    static const std::vector<OptionSpec> specs = {
+        {0, "json", nullptr, "{\"mse\":..,\"peak\":..,\"psnr\":..} on stdout (psnr null when identical)"},
+        {'q', "quiet", nullptr, "no warnings"},
+        {'h', "help", nullptr, "show this help"},
+    };
+    const char* usage = "erd psnr ORIGINAL APPROX [--json]";
+    Args args;
+    Status st = args.parse(argc, argv, 1, specs);
+    if (!st) return rep.usage(st.message, usage);
+    if (args.has("help")) {
+        std::printf("usage: %s\n\nPrints the PSNR of APPROX against ORIGINAL in dB with 4 decimals (\"inf\" when they are\n"
+                    "identical). Peak = 2^p - 1 with p = ceil(log2(maxval + 1)) of the original; PSNR =\n"
+                    "10 log10(peak^2 / MSE). Both images must have the same size and maxval.\n\n%s",
+                    usage, describe(specs).c_str());
+        return 0;
+    }
+    rep.set_quiet(args.has("quiet"));
+    if (args.positional().size() != 2) return rep.usage("expected ORIGINAL and APPROX", usage);
+    const std::string& a = args.positional()[0];
+    const std::string& b = args.positional()[1];
+    if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin", usage);
+
+    Image orig, approx;
+    std::string warning;
+    if (!(st = read_image(a, &orig, &warning))) return rep.fail(st);
+    rep.warn(warning);
+    if (!(st = read_image(b, &approx, &warning))) return rep.fail(st);
+    rep.warn(warning);
+
+    double e = 0, p = 0;
+    if (!(st = mse(orig, approx, &e)) || !(st = psnr(orig, approx, &p)))
+        return rep.fail(Status::bad_input(a + " and " + b + ": " + st.message));
+    const double peak = psnr_peak(orig.maxval);
+    if (args.has("json")) {
+        std::printf("{\"mse\":%s,\"peak\":%s,\"psnr\":%s}\n", json_number(e).c_str(), json_number(peak).c_str(),
+                    json_number(p).c_str());
+    } else if (std::isinf(p)) {
+        std::printf("inf\n");
+    } else {
+        std::printf("%.4f\n", p);
+    }
+    return 0;
+}
+
+}  // namespace erd::cli
