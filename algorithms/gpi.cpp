@@ -1,0 +1,101 @@
+#include "algorithms/gpi.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "algorithms/methods.h"
+
+namespace erd {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string format_real(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+
+}  // namespace
+
+double BasicGreedyModel::sample_at(LatticePoint p) const { return double(image_.at(p.x / 2, p.y / 2)); }
+
+SpanPlane BasicGreedyModel::face_plane(const Cdt& cdt, FaceInd f) const {
+    LatticePoint p0 = cdt.point(cdt.face_vertex(f, 0));
+    LatticePoint p1 = cdt.point(cdt.face_vertex(f, 1));
+    LatticePoint p2 = cdt.point(cdt.face_vertex(f, 2));
+    SpanPlane plane;
+    plane.set(p0, sample_at(p0), p1, sample_at(p1), p2, sample_at(p2));
+    return plane;
+}
+
+Status BasicGreedyModel::on_vertex_inserted(const Cdt&, VertInd, std::vector<FaceInd>*) {
+    return Status::success();  // values are read from the image in face_plane
+}
+
+Model basic_model(const Cdt& cdt, const Image& image) {
+    Model m;
+    m.kind = ModelKind::basic;
+    m.width = image.width;
+    m.height = image.height;
+    m.maxval = image.maxval;
+    m.vertices = cdt.points();
+    m.values.reserve(m.vertices.size());
+    for (LatticePoint p : m.vertices) m.values.push_back(double(image.at(p.x / 2, p.y / 2)));
+    std::vector<std::array<VertInd, 3>> faces;
+    cdt.export_faces(&faces);
+    m.faces.assign(faces.begin(), faces.end());
+    return m;
+}
+
+Status check_meshable(const Image& image) {
+    if (image.width < 2 || image.height < 2)
+        return Status::bad_input("image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                 "; meshing needs at least 2x2 pixels");
+    return Status::success();
+}
+
+Status generate_gpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    *result = GenerateResult();
+    Status st = check_meshable(image);
+    if (!st) return st;
+    std::int64_t n = target_points(options, image.width, image.height);
+    st = check_target(n, image.width, image.height);
+    if (!st) return st;
+    result->requested = std::size_t(n);
+
+    auto t0 = std::chrono::steady_clock::now();
+    Cdt cdt;
+    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
+    if (!st) return st;
+    cdt.reserve(std::size_t(n));
+    result->stages.push_back({"triangulate corners", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    BasicGreedyModel model(image);
+    GreedyOptions go;
+    go.target_vertices = std::size_t(n);
+    go.max_error = options.max_error;
+    go.psnr = options.psnr;
+    go.round_values = options.round_values;
+    GreedyStats gs;
+    st = greedy_refine(cdt, image, model, go, &gs);
+    if (!st) return st;
+    result->stages.push_back({"greedy insertion", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    result->model = basic_model(cdt, image);
+    result->achieved = result->model.size();
+    result->stages.push_back({"model", seconds_since(t0)});
+    result->notes.push_back(std::string("stop: ") + to_string(gs.stop));
+    result->notes.push_back("insertions: " + std::to_string(gs.insertions));
+    result->notes.push_back("max abs error: " + format_real("%.4g", gs.max_error));
+    result->notes.push_back("psnr (point evaluation): " + format_real("%.4f", gs.psnr));
+    return Status::success();
+}
+
+}  // namespace erd

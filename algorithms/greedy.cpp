@@ -1,0 +1,193 @@
+#include "algorithms/greedy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "algorithms/heap.h"
+
+namespace erd {
+
+const char* to_string(GreedyStop s) {
+    switch (s) {
+        case GreedyStop::target: return "target";
+        case GreedyStop::max_error: return "max-error";
+        case GreedyStop::psnr: return "psnr";
+        case GreedyStop::exhausted: return "exhausted";
+    }
+    return "?";
+}
+
+namespace {
+
+// Per-face bookkeeping: the face's squared-error sum over the pixels it owns and its candidate.
+struct FaceState {
+    double sum = 0.0;
+    double cand_error = -1.0;  // < 0: no admissible candidate
+    LatticePoint cand;
+};
+
+std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
+
+class Refiner {
+public:
+    Refiner(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options)
+        : cdt_(cdt), image_(image), model_(model), options_(options),
+          banned_(std::size_t(image.width) * std::size_t(image.height), 0),
+          domain_{cdt.max_x(), cdt.max_y()} {
+        peak_ = std::pow(2.0, image.bits()) - 1.0;
+        track_max_ = options.max_error >= 0.0;
+        // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
+        std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
+        by_sum_.reserve(faces);
+        if (track_max_) by_max_.reserve(faces);
+        faces_.reserve(faces);
+        stamp_.reserve(faces);
+    }
+
+    Status run(GreedyStats* stats) {
+        for (LatticePoint p : cdt_.points()) ban(p);
+        grow();
+        for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) rescan(f);
+
+        GreedyStop stop;
+        std::vector<FaceInd> dirty;
+        for (;;) {
+            if (cdt_.vertex_count() >= options_.target_vertices) { stop = GreedyStop::target; break; }
+            if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
+            if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }
+            if (by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
+
+            const FaceInd f = by_sum_.top();
+            const LatticePoint p = faces_[f].cand;
+            if (!model_.admissible(cdt_, p)) {
+                ban(p);
+                ++stats->banned;
+                rescan(f);
+                continue;
+            }
+            const std::size_t before = cdt_.vertex_count();
+            VertInd v = noVertex;
+            Status st = cdt_.insert_point(p, &v, f);
+            if (!st) return st;
+            ban(p);
+            if (cdt_.vertex_count() == before) {  // already a vertex: cannot happen with p banned
+                rescan(f);
+                continue;
+            }
+            ++stats->insertions;
+            dirty.clear();
+            st = model_.on_vertex_inserted(cdt_, v, &dirty);
+            if (!st) return st;
+            grow();
+            ++generation_;
+            for (FaceInd c : cdt_.changes().created) rescan(c);
+            for (FaceInd d : dirty)
+                if (d < faces_.size() && stamp_[d] != generation_) rescan(d);
+        }
+        stats->stop = stop;
+        stats->total_squared_error = total_;
+        stats->max_error = current_max();
+        stats->psnr = psnr();
+        return Status::success();
+    }
+
+private:
+    void ban(LatticePoint p) {
+        if ((p.x & 1) || (p.y & 1)) return;  // half-pixel points are never candidates anyway
+        banned_[std::size_t(p.y / 2) * std::size_t(image_.width) + std::size_t(p.x / 2)] = 1;
+    }
+
+    void grow() {
+        if (faces_.size() < cdt_.face_count()) {
+            faces_.resize(cdt_.face_count());
+            stamp_.resize(cdt_.face_count(), 0);
+        }
+    }
+
+    double current_max() const { return by_max_.empty() ? 0.0 : by_max_.top_key(); }
+
+    double psnr() const {
+        if (total_ <= 0.0) return std::numeric_limits<double>::infinity();
+        double mse = total_ / (double(image_.width) * double(image_.height));
+        return 10.0 * std::log10(peak_ * peak_ / mse);
+    }
+
+    // Scans the pixels face f owns against the model's plane: new sum and candidate.
+    void rescan(FaceInd f) {
+        stamp_[f] = generation_;
+        FaceState& fs = faces_[f];
+        total_ -= fs.sum;
+        const SpanPlane plane = model_.face_plane(cdt_, f);
+        const Lattice lat = Lattice::pixels();
+        scan_triangle(lat, domain_, cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
+                      cdt_.point(cdt_.face_vertex(f, 2)), &spans_);
+        const double dv = plane.step_x(lat);
+        const double maxval = double(image_.maxval);
+        const bool round = options_.round_values;
+        double sum = 0.0, best = -1.0;
+        std::int32_t bx = 0, by = 0;
+        for (const Span& s : spans_) {
+            const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
+            const std::uint16_t* samples = image_.samples.data() + row;
+            const std::uint8_t* banned = banned_.data() + row;
+            double v = plane.at(lat, s.x_begin, s.y);
+            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) {
+                double approx = v;
+                if (round) {
+                    approx = std::floor(v + 0.5);
+                    approx = approx < 0.0 ? 0.0 : (approx > maxval ? maxval : approx);
+                }
+                const double e = double(samples[x]) - approx;
+                sum += e * e;
+                const double ae = std::fabs(e);
+                if (ae > best && !banned[x]) {
+                    best = ae;
+                    bx = x;
+                    by = s.y;
+                }
+            }
+        }
+        fs.sum = sum;
+        total_ += sum;
+        if (best > 0.0) {
+            fs.cand_error = best;
+            fs.cand = LatticePoint{2 * bx, 2 * by};
+            by_sum_.set(f, sum, tie_of(fs.cand));
+            if (track_max_) by_max_.set(f, best, tie_of(fs.cand));
+        } else {
+            fs.cand_error = -1.0;
+            by_sum_.remove(f);
+            if (track_max_) by_max_.remove(f);
+        }
+    }
+
+    Cdt& cdt_;
+    const Image& image_;
+    GreedyModel& model_;
+    const GreedyOptions& options_;
+    std::vector<std::uint8_t> banned_;  // per pixel: vertex already, or refused by the model
+    RasterDomain domain_;
+    std::vector<FaceState> faces_;
+    std::vector<std::uint32_t> stamp_;  // generation in which the face was last scanned
+    std::uint32_t generation_ = 1;
+    IndexedMaxHeap by_sum_;  // faces with a candidate, keyed on squared-error sum
+    IndexedMaxHeap by_max_;  // the same faces keyed on candidate error (only for --max-error)
+    bool track_max_ = false;
+    double total_ = 0.0;  // whole-image squared error (sum of the face sums)
+    double peak_ = 255.0;
+    std::vector<Span> spans_;
+};
+
+}  // namespace
+
+Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options,
+                     GreedyStats* stats) {
+    *stats = GreedyStats();
+    if (cdt.max_x() != 2 * (image.width - 1) || cdt.max_y() != 2 * (image.height - 1))
+        return Status::failure("greedy_refine: triangulation and image sizes differ");
+    Refiner r(cdt, image, model, options);
+    return r.run(stats);
+}
+
+}  // namespace erd

@@ -1,0 +1,50 @@
+#include "algorithms/methods.h"
+
+#include <cmath>
+
+#include "algorithms/ed.h"
+#include "algorithms/gpi.h"
+// ERD methods (erdmodel helper): include their header here and add their rows to kMethods.
+
+namespace erd {
+
+namespace {
+
+const Method kMethods[] = {
+    {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", generate_ed},
+    {"gpi", "greedy point insertion (thesis 3.2.2, gpi), basic model", generate_gpi},
+    // {"erded", "...", generate_erded},
+    // {"erdgpi", "...", generate_erdgpi},
+};
+
+}  // namespace
+
+const Method* methods(std::size_t* count) {
+    *count = sizeof kMethods / sizeof kMethods[0];
+    return kMethods;
+}
+
+const Method* find_method(const std::string& name) {
+    for (const Method& m : kMethods)
+        if (name == m.name) return &m;
+    return nullptr;
+}
+
+std::int64_t target_points(const GenerateOptions& o, int width, int height) {
+    if (o.points > 0 && !o.density_given) return o.points;
+    // D is a percentage; round half away from zero (7864 for 3% of 512 x 512 = 7864.32).
+    return std::int64_t(std::llround(o.density * double(width) * double(height) / 100.0));
+}
+
+Status check_target(std::int64_t n, int width, int height) {
+    std::int64_t pixels = std::int64_t(width) * std::int64_t(height);
+    if (n < 4)
+        return Status::bad_input("target of " + std::to_string(n) +
+                                 " points is below 4 (the four corners are always vertices)");
+    if (n > pixels)
+        return Status::bad_input("target of " + std::to_string(n) + " points exceeds the " +
+                                 std::to_string(pixels) + " pixels of the image");
+    return Status::success();
+}
+
+}  // namespace erd
