@@ -1,0 +1,86 @@
+#include "algorithms/polylines.h"
+
+#include <cstddef>
+
+#include "algorithms/douglas_peucker.h"
+
+namespace erd {
+
+std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
+    std::vector<Polyline> out;
+    const int w = edges.width, h = edges.height;
+    if (w <= 0 || h <= 0) return out;
+    const int s = w + 2;
+    // Zero-framed copy; `used` holds one bit per direction for links already part of a polyline.
+    std::vector<std::uint8_t> b(std::size_t(s) * std::size_t(h + 2), 0), used(b.size(), 0), degree(b.size(), 0);
+    const int dx[8] = {1, 1, 0, -1, -1, -1, 0, 1};  // E, SE, S, SW, W, NW, N, NE
+    const int dy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+    std::ptrdiff_t off[8];
+    for (int d = 0; d < 8; ++d) off[d] = std::ptrdiff_t(dy[d]) * s + dx[d];
+    auto index = [&](int x, int y) { return std::size_t(y + 1) * std::size_t(s) + std::size_t(x + 1); };
+    auto point = [&](std::size_t i) {
+        return LatticePoint{std::int32_t(int(i % std::size_t(s)) - 1), std::int32_t(int(i / std::size_t(s)) - 1)};
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) b[index(x, y)] = edges(x, y) != 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = index(x, y);
+            if (!b[i]) continue;
+            int n = 0;
+            for (int d = 0; d < 8; ++d) n += b[std::size_t(std::ptrdiff_t(i) + off[d])];
+            degree[i] = std::uint8_t(n);
+        }
+    auto use = [&](std::size_t i, int d) {
+        used[i] |= std::uint8_t(1u << d);
+        used[std::size_t(std::ptrdiff_t(i) + off[d])] |= std::uint8_t(1u << ((d + 4) & 7));
+    };
+    auto free_link = [&](std::size_t i) {
+        for (int d = 0; d < 8; ++d)
+            if (b[std::size_t(std::ptrdiff_t(i) + off[d])] && !(used[i] & (1u << d))) return d;
+        return -1;
+    };
+    // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
+    // no free link left, or the start again.
+    auto run = [&](std::size_t start, int d) {
+        Polyline line{point(start)};
+        std::size_t cur = start;
+        for (;;) {
+            use(cur, d);
+            cur = std::size_t(std::ptrdiff_t(cur) + off[d]);
+            line.push_back(point(cur));
+            if (cur == start || degree[cur] != 2) break;
+            d = free_link(cur);
+            if (d < 0) break;
+        }
+        out.push_back(std::move(line));
+    };
+
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = index(x, y);
+            if (!b[i] || degree[i] == 2) continue;
+            if (degree[i] == 0) { out.push_back(Polyline{point(i)}); continue; }
+            for (int d; (d = free_link(i)) >= 0;) run(i, d);
+        }
+    // What is left are closed curves made of degree-2 points only.
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = index(x, y);
+            if (!b[i]) continue;
+            for (int d; (d = free_link(i)) >= 0;) run(i, d);
+        }
+    return out;
+}
+
+Status edge_polylines(const Image& im, const EdgePolylineParams& params, Grid<std::uint8_t>* edges,
+                      std::vector<Polyline>* polylines, CannyStats* stats) {
+    if (params.epsilon < 0 || params.epsilon != params.epsilon)
+        return Status::bad_input("polylines: epsilon must be >= 0");
+    Status st = detect_edges(im, params.canny, edges, stats);
+    if (!st) return st;
+    *polylines = simplify_polylines(trace_polylines(*edges), params.epsilon, params.min_points);
+    return Status::success();
+}
+
+}  // namespace erd

@@ -1,0 +1,98 @@
+#include "algorithms/thinning.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace erd {
+
+namespace {
+
+// Neighbours of a point in the order of Zhang and Suen: P2 = N, P3 = NE, P4 = E, P5 = SE, P6 = S,
+// P7 = SW, P8 = W, P9 = NW, as bits 0..7 of one byte.
+inline unsigned ring(const std::uint8_t* p, std::ptrdiff_t s) {
+    return unsigned(p[-s] != 0) | unsigned(p[-s + 1] != 0) << 1 | unsigned(p[1] != 0) << 2 |
+           unsigned(p[s + 1] != 0) << 3 | unsigned(p[s] != 0) << 4 | unsigned(p[s - 1] != 0) << 5 |
+           unsigned(p[-1] != 0) << 6 | unsigned(p[-s - 1] != 0) << 7;
+}
+
+inline int popcount8(unsigned v) {
+    int n = 0;
+    for (; v; v &= v - 1) ++n;
+    return n;
+}
+
+// Number of 0 -> 1 transitions around the ring P2, P3, ..., P9, P2.
+inline int transitions(unsigned r) {
+    int a = 0;
+    for (int k = 0; k < 8; ++k) a += !((r >> k) & 1u) && ((r >> ((k + 1) & 7)) & 1u);
+    return a;
+}
+
+// Yokoi's 8-connectivity number: the number of 8-connected components of set neighbours that the
+// point touches, counted over the four 4-neighbours (N, E, S, W at bits 0, 2, 4, 6).
+inline int connectivity8(unsigned r) {
+    const unsigned c = ~r & 0xFFu;  // complement
+    int n = 0;
+    for (int k = 0; k < 8; k += 2) {
+        const unsigned a = (c >> k) & 1u, b = (c >> ((k + 1) & 7)) & 1u, d = (c >> ((k + 2) & 7)) & 1u;
+        n += int(a - a * b * d);
+    }
+    return n;
+}
+
+}  // namespace
+
+void thin_edges(Grid<std::uint8_t>* map) {
+    const int w = map->width, h = map->height;
+    if (w <= 0 || h <= 0) return;
+    // Work on a copy with a zero frame so the ring never leaves the buffer.
+    const int s = w + 2;
+    std::vector<std::uint8_t> b(std::size_t(s) * std::size_t(h + 2), 0);
+    std::vector<std::ptrdiff_t> live;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if ((*map)(x, y)) {
+                const std::ptrdiff_t i = std::ptrdiff_t(y + 1) * s + x + 1;
+                b[std::size_t(i)] = 1;
+                live.push_back(i);
+            }
+
+    std::vector<std::ptrdiff_t> doomed;
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int step = 0; step < 2; ++step) {
+            doomed.clear();
+            for (std::ptrdiff_t i : live) {
+                const unsigned r = ring(&b[std::size_t(i)], s);
+                const int n = popcount8(r);
+                if (n < 2 || n > 6 || transitions(r) != 1) continue;
+                const unsigned N = r & 1u, E = (r >> 2) & 1u, S = (r >> 4) & 1u, Wb = (r >> 6) & 1u;
+                const bool ok = step == 0 ? (N & E & S) == 0 && (E & S & Wb) == 0 : (N & E & Wb) == 0 && (N & S & Wb) == 0;
+                if (ok) doomed.push_back(i);
+            }
+            for (std::ptrdiff_t i : doomed) b[std::size_t(i)] = 0;
+            if (!doomed.empty()) {
+                changed = true;
+                std::size_t k = 0;
+                for (std::ptrdiff_t i : live)
+                    if (b[std::size_t(i)]) live[k++] = i;
+                live.resize(k);
+            }
+        }
+    }
+
+    // Staircase corners: a point whose set 4-neighbours are exactly two at a right angle (N+E, E+S,
+    // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time, so the
+    // decision for a point sees earlier deletions and a corner pair never loses both points.
+    for (std::ptrdiff_t i : live) {
+        const unsigned r = ring(&b[std::size_t(i)], s);
+        const unsigned four = r & 0x55u;
+        const bool corner = four == 0x05u || four == 0x14u || four == 0x50u || four == 0x41u;
+        if (corner && connectivity8(r) == 1) b[std::size_t(i)] = 0;
+    }
+
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) (*map)(x, y) = b[std::size_t(y + 1) * std::size_t(s) + std::size_t(x) + 1];
+}
+
+}  // namespace erd
