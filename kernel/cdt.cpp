@@ -1,0 +1,406 @@
+// Cdt core: reset, point location, point insertion (splits + Lawson flips), change tracking.
+// Constraint insertion lives in cdt_constraints.cpp, queries and verify() in cdt_query.cpp.
+#include "kernel/cdt.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace erd {
+
+Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
+    if (max_x < 1 || max_y < 1 || max_x >= kMaxCoord || max_y >= kMaxCoord)
+        return Status::bad_input("triangulation rectangle " + std::to_string(max_x) + "x" + std::to_string(max_y) +
+                                 " (doubled) outside 1.." + std::to_string(kMaxCoord - 1));
+    max_x_ = max_x;
+    max_y_ = max_y;
+    points_.clear();
+    out_.clear();
+    vert_.clear();
+    twin_.clear();
+    flags_.clear();
+    segments_.clear();
+    stamp_.clear();
+    change_id_ = 0;
+    last_face_ = 0;
+    begin_change();
+    add_vertex({0, 0});
+    add_vertex({max_x, 0});
+    add_vertex({max_x, max_y});
+    add_vertex({0, max_y});
+    const FaceInd f0 = new_face(), f1 = new_face();
+    set_face(f0, 0, 1, 2);
+    set_face(f1, 0, 2, 3);
+    link(3 * f0 + 2, 3 * f1 + 0);
+    // The four corners are cocircular: the tie rule picks the diagonal.
+    if (is_illegal(3 * f0 + 2)) flip(3 * f0 + 2);
+    return Status::success();
+}
+
+void Cdt::reserve(std::size_t points) {
+    const std::size_t faces = 2 * points + 8;
+    points_.reserve(points + 4);
+    out_.reserve(points + 4);
+    vert_.reserve(3 * faces);
+    twin_.reserve(3 * faces);
+    flags_.reserve(3 * faces);
+    stamp_.reserve(faces);
+}
+
+void Cdt::begin_change() {
+    if (++change_id_ == 0) {  // wrapped: old stamps could collide
+        std::fill(stamp_.begin(), stamp_.end(), 0u);
+        change_id_ = 1;
+    }
+    changes_.destroyed.clear();
+    changes_.created.clear();
+    changes_.old_face_count = face_count();
+}
+
+void Cdt::touch(FaceInd f) {
+    if (stamp_[f] == change_id_) return;
+    stamp_[f] = change_id_;
+    changes_.created.push_back(f);
+    if (f < changes_.old_face_count) changes_.destroyed.push_back(f);
+}
+
+FaceInd Cdt::new_face() {
+    const FaceInd f = static_cast<FaceInd>(face_count());
+    for (int i = 0; i < 3; ++i) {
+        vert_.push_back(noVertex);
+        twin_.push_back(noEdge);
+        flags_.push_back(0);
+    }
+    stamp_.push_back(0);
+    return f;
+}
+
+void Cdt::set_face(FaceInd f, VertInd a, VertInd b, VertInd c) {
+    const EdgeInd e = 3 * f;
+    vert_[e] = a;
+    vert_[e + 1] = b;
+    vert_[e + 2] = c;
+    out_[a] = e;
+    out_[b] = e + 1;
+    out_[c] = e + 2;
+    touch(f);
+}
+
+void Cdt::link(EdgeInd e, EdgeInd t) {
+    twin_[e] = t;
+    if (t != noEdge) twin_[t] = e;
+}
+
+VertInd Cdt::add_vertex(LatticePoint p) {
+    points_.push_back(p);
+    out_.push_back(noEdge);
+    return static_cast<VertInd>(points_.size() - 1);
+}
+
+bool Cdt::is_illegal(EdgeInd e) const {
+    const EdgeInd t = twin_[e];
+    if (t == noEdge || flags_[e]) return false;
+    const LatticePoint a = points_[vert_[e]], b = points_[vert_[t]];
+    const LatticePoint c = points_[vert_[prev_edge(e)]], d = points_[vert_[prev_edge(t)]];
+    return incircle_perturbed(a, b, c, d) > 0;
+}
+
+EdgeInd Cdt::flip(EdgeInd e) {
+    const EdgeInd t = twin_[e];
+    const FaceInd f1 = face_of(e), f2 = face_of(t);
+    const VertInd a = vert_[e], b = vert_[t], c = vert_[prev_edge(e)], d = vert_[prev_edge(t)];
+    const EdgeInd ebc = next_edge(e), eca = prev_edge(e), ead = next_edge(t), edb = prev_edge(t);
+    const EdgeInd tbc = twin_[ebc], tca = twin_[eca], tad = twin_[ead], tdb = twin_[edb];
+    const std::uint8_t fbc = flags_[ebc], fca = flags_[eca], fad = flags_[ead], fdb = flags_[edb];
+    set_face(f1, c, a, d);
+    set_face(f2, d, b, c);
+    link(3 * f1 + 0, tca);
+    flags_[3 * f1 + 0] = fca;
+    link(3 * f1 + 1, tad);
+    flags_[3 * f1 + 1] = fad;
+    link(3 * f2 + 0, tdb);
+    flags_[3 * f2 + 0] = fdb;
+    link(3 * f2 + 1, tbc);
+    flags_[3 * f2 + 1] = fbc;
+    link(3 * f1 + 2, 3 * f2 + 2);
+    flags_[3 * f1 + 2] = 0;
+    flags_[3 * f2 + 2] = 0;
+    return 3 * f1 + 2;
+}
+
+// Lawson flips after a split: stack_ holds the edges opposite the new vertex p (p = org(prev(e))).
+// A flip of such an edge creates two faces around p whose opposite edges are pushed in turn; the
+// other stack entries live in other faces of p's star, which a flip never touches.
+void Cdt::legalize_around(VertInd /*p*/) {
+    while (!stack_.empty()) {
+        const EdgeInd e = stack_.back();
+        stack_.pop_back();
+        if (!is_illegal(e)) continue;
+        const EdgeInd diag = flip(e);  // d->c in f1 = (c=p, a, d); f2 = (d, b, p)
+        const FaceInd f1 = face_of(diag), f2 = face_of(twin_[diag]);
+        stack_.push_back(3 * f1 + 1);  // a->d
+        stack_.push_back(3 * f2 + 0);  // d->b
+    }
+}
+
+// Face f = (a,b,c) becomes (a,b,p), (b,c,p), (c,a,p).
+void Cdt::split_face(FaceInd f, VertInd p) {
+    const EdgeInd e = 3 * f;
+    const VertInd a = vert_[e], b = vert_[e + 1], c = vert_[e + 2];
+    const EdgeInd tab = twin_[e], tbc = twin_[e + 1], tca = twin_[e + 2];
+    const std::uint8_t fab = flags_[e], fbc = flags_[e + 1], fca = flags_[e + 2];
+    const FaceInd n1 = new_face(), n2 = new_face();
+    set_face(f, a, b, p);
+    set_face(n1, b, c, p);
+    set_face(n2, c, a, p);
+    link(3 * f, tab);
+    flags_[3 * f] = fab;
+    link(3 * n1, tbc);
+    flags_[3 * n1] = fbc;
+    link(3 * n2, tca);
+    flags_[3 * n2] = fca;
+    link(3 * f + 1, 3 * n1 + 2);
+    link(3 * n1 + 1, 3 * n2 + 2);
+    link(3 * n2 + 1, 3 * f + 2);
+    flags_[3 * f + 1] = 0;
+    flags_[3 * f + 2] = 0;
+    stack_.clear();
+    stack_.push_back(3 * f);
+    stack_.push_back(3 * n1);
+    stack_.push_back(3 * n2);
+    legalize_around(p);
+}
+
+// Half-edge e = a->b of f = (a,b,c), twin b->a of g = (b,a,d), gets p in its interior:
+//   f = (c,a,p), n1 = (c,p,b), g = (d,b,p), n2 = (d,p,a).
+// The halves a->p, p->b inherit the constrained flag. Both sides are legalised, so a point on a
+// constrained edge finds its conflicts on both sides (the CGAL 3.5.1 bug of thesis A.6).
+void Cdt::split_edge(EdgeInd e, VertInd p) {
+    const EdgeInd t = twin_[e];
+    const FaceInd f = face_of(e);
+    const VertInd a = vert_[e], b = vert_[next_edge(e)], c = vert_[prev_edge(e)];
+    const EdgeInd ebc = next_edge(e), eca = prev_edge(e);
+    const EdgeInd tbc = twin_[ebc], tca = twin_[eca];
+    const std::uint8_t fbc = flags_[ebc], fca = flags_[eca], fe = flags_[e];
+    FaceInd g = noFace;
+    VertInd d = noVertex;
+    EdgeInd tad = noEdge, tdb = noEdge;
+    std::uint8_t fad = 0, fdb = 0;
+    if (t != noEdge) {
+        g = face_of(t);
+        d = vert_[prev_edge(t)];
+        const EdgeInd ead = next_edge(t), edb = prev_edge(t);
+        tad = twin_[ead];
+        tdb = twin_[edb];
+        fad = flags_[ead];
+        fdb = flags_[edb];
+    }
+    const FaceInd n1 = new_face();
+    set_face(f, c, a, p);
+    set_face(n1, c, p, b);
+    link(3 * f + 0, tca);
+    flags_[3 * f + 0] = fca;
+    link(3 * n1 + 2, tbc);
+    flags_[3 * n1 + 2] = fbc;
+    link(3 * f + 2, 3 * n1 + 0);
+    flags_[3 * f + 2] = 0;
+    flags_[3 * n1 + 0] = 0;
+    flags_[3 * f + 1] = fe;
+    flags_[3 * n1 + 1] = fe;
+    stack_.clear();
+    stack_.push_back(3 * f + 0);
+    stack_.push_back(3 * n1 + 2);
+    if (t != noEdge) {
+        const FaceInd n2 = new_face();
+        set_face(g, d, b, p);
+        set_face(n2, d, p, a);
+        link(3 * g + 0, tdb);
+        flags_[3 * g + 0] = fdb;
+        link(3 * n2 + 2, tad);
+        flags_[3 * n2 + 2] = fad;
+        link(3 * g + 2, 3 * n2 + 0);
+        flags_[3 * g + 2] = 0;
+        flags_[3 * n2 + 0] = 0;
+        flags_[3 * g + 1] = fe;
+        flags_[3 * n2 + 1] = fe;
+        link(3 * f + 1, 3 * n2 + 1);
+        link(3 * n1 + 1, 3 * g + 1);
+        stack_.push_back(3 * g + 0);
+        stack_.push_back(3 * n2 + 2);
+    } else {
+        twin_[3 * f + 1] = noEdge;
+        twin_[3 * n1 + 1] = noEdge;
+    }
+    legalize_around(p);
+}
+
+// Visibility walk with a randomised order of the edge tests (the remembering stochastic walk of
+// Devillers et al.), which terminates on any triangulation, constrained or not. The randomness only
+// chooses the path, never the answer. A generous step limit falls back to a scan, so a corrupted
+// mesh cannot hang the caller.
+Location Cdt::walk(LatticePoint p, FaceInd start) const {
+    FaceInd f = start;
+    EdgeInd from = noEdge;
+    const std::size_t limit = 4 * face_count() + 64;
+    for (std::size_t steps = 0; steps < limit; ++steps) {
+        const EdgeInd base = 3 * f;
+        rng_ = rng_ * 1664525u + 1013904223u;
+        const unsigned r = (rng_ >> 16) % 3;
+        int o[3] = {1, 1, 1};
+        bool moved = false;
+        for (unsigned k = 0; k < 3; ++k) {
+            const unsigned i = (r + k) % 3;
+            const EdgeInd e = base + i;
+            if (e == from) continue;
+            const std::int64_t s = orient2d(points_[vert_[e]], points_[vert_[next_edge(e)]], p);
+            if (s < 0) {
+                const EdgeInd t = twin_[e];
+                if (t == noEdge) return Location{};  // outside the rectangle
+                from = t;
+                f = face_of(t);
+                moved = true;
+                break;
+            }
+            o[i] = s > 0 ? 1 : 0;
+        }
+        if (moved) continue;
+        last_face_ = f;
+        Location loc;
+        const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+        if (zeros == 0) {
+            loc.kind = Location::Kind::in_face;
+            loc.face = f;
+        } else if (zeros == 1) {
+            const unsigned i = o[0] == 0 ? 0 : (o[1] == 0 ? 1 : 2);
+            loc.kind = Location::Kind::on_edge;
+            loc.edge = base + i;
+            loc.face = f;
+        } else {
+            // Two edges through p: p is their shared vertex, the origin of the later one.
+            unsigned v = 0;
+            if (o[0] == 0 && o[1] == 0) v = 1;
+            else if (o[1] == 0 && o[2] == 0) v = 2;
+            else v = 0;  // o[2] == 0 && o[0] == 0
+            loc.kind = Location::Kind::on_vertex;
+            loc.vertex = vert_[base + v];
+            loc.face = f;
+        }
+        return loc;
+    }
+    return locate_brute(p);
+}
+
+Location Cdt::locate_brute(LatticePoint p) const {
+    for (FaceInd f = 0; f < face_count(); ++f) {
+        const EdgeInd base = 3 * f;
+        int o[3];
+        bool inside = true;
+        for (unsigned i = 0; i < 3 && inside; ++i) {
+            const std::int64_t s = orient2d(points_[vert_[base + i]], points_[vert_[next_edge(base + i)]], p);
+            if (s < 0) inside = false;
+            o[i] = s > 0 ? 1 : 0;
+        }
+        if (!inside) continue;
+        Location loc;
+        loc.face = f;
+        const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+        if (zeros == 0) {
+            loc.kind = Location::Kind::in_face;
+        } else if (zeros == 1) {
+            loc.kind = Location::Kind::on_edge;
+            loc.edge = base + (o[0] == 0 ? 0u : (o[1] == 0 ? 1u : 2u));
+        } else {
+            unsigned v = 0;
+            if (o[0] == 0 && o[1] == 0) v = 1;
+            else if (o[1] == 0 && o[2] == 0) v = 2;
+            loc.kind = Location::Kind::on_vertex;
+            loc.vertex = vert_[base + v];
+        }
+        return loc;
+    }
+    return Location{};
+}
+
+Location Cdt::locate(LatticePoint p, FaceInd hint) const {
+    if (face_count() == 0 || p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_) return Location{};
+    FaceInd start = hint < face_count() ? hint : last_face_;
+    if (start >= face_count()) start = 0;
+    return walk(p, start);
+}
+
+Status Cdt::insert_point(LatticePoint p, VertInd* v, FaceInd hint) {
+    begin_change();
+    return insert_one(p, v, hint);
+}
+
+// insert_point without starting a new change report (insert_points accumulates one).
+Status Cdt::insert_one(LatticePoint p, VertInd* v, FaceInd hint) {
+    if (face_count() == 0) return Status::failure("triangulation not initialised (call reset first)");
+    if (p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_)
+        return Status::bad_input("point (" + std::to_string(p.x) + "," + std::to_string(p.y) +
+                                 ") outside the rectangle [0," + std::to_string(max_x_) + "]x[0," +
+                                 std::to_string(max_y_) + "]");
+    if (points_.size() >= std::size_t(noVertex / 8)) return Status::failure("triangulation too large");
+    const Location loc = locate(p, hint);
+    if (loc.kind == Location::Kind::on_vertex) {
+        if (v) *v = loc.vertex;
+        return Status::success();
+    }
+    if (loc.kind == Location::Kind::outside) return Status::failure("point location failed");
+    const VertInd nv = add_vertex(p);
+    if (loc.kind == Location::Kind::in_face)
+        split_face(loc.face, nv);
+    else
+        split_edge(loc.edge, nv);
+    last_face_ = face_of(out_[nv]);
+    if (v) *v = nv;
+    return Status::success();
+}
+
+namespace {
+
+// Index of (x, y) along a Hilbert curve filling [0, 2^order)^2.
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
+    std::uint64_t d = 0;
+    for (std::uint32_t s = std::uint32_t(1) << (order - 1); s > 0; s >>= 1) {
+        const std::uint32_t rx = (x & s) ? 1u : 0u;
+        const std::uint32_t ry = (y & s) ? 1u : 0u;
+        d += std::uint64_t(s) * s * ((3u * rx) ^ ry);
+        if (ry == 0) {
+            if (rx == 1) {
+                x = s - 1 - (x & (s - 1));
+                y = s - 1 - (y & (s - 1));
+            }
+            std::swap(x, y);
+        }
+    }
+    return d;
+}
+
+}  // namespace
+
+Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<VertInd>* v) {
+    begin_change();
+    if (face_count() == 0) return Status::failure("triangulation not initialised (call reset first)");
+    for (const LatticePoint& p : pts)
+        if (p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_)
+            return Status::bad_input("point (" + std::to_string(p.x) + "," + std::to_string(p.y) +
+                                     ") outside the rectangle");
+    int order = 1;
+    while ((std::int64_t(1) << order) <= std::max(max_x_, max_y_)) ++order;
+    sort_buf_.resize(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        sort_buf_[i] = {hilbert_index(std::uint32_t(pts[i].x), std::uint32_t(pts[i].y), order),
+                        static_cast<std::uint32_t>(i)};
+    std::sort(sort_buf_.begin(), sort_buf_.end());
+    if (v) v->assign(pts.size(), noVertex);
+    reserve(points_.size() + pts.size());
+    for (const auto& ki : sort_buf_) {
+        VertInd nv = noVertex;
+        const Status s = insert_one(pts[ki.second], &nv, noFace);
+        if (!s.ok()) return s;
+        if (v) (*v)[ki.second] = nv;
+    }
+    return Status::success();
+}
+
+}  // namespace erd
