@@ -1,0 +1,237 @@
+// Pictures, exports, statistics: render (SVG + raster), OBJ/PLY export with wedge copies,
+// the --stats JSON of generate, and the CLI commands render/export.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "algorithms/export.h"
+#include "algorithms/mesh_edges.h"
+#include "algorithms/render.h"
+
+using namespace erd;
+
+namespace {
+
+// Thesis Appendix A.4.2 (simple.erd), on a 50 x 50 image: the diagonal from vertex 1 to vertex 2
+// is constrained, so vertices 1 and 2 have two wedges each (values 73 | 54).
+Model diagonal_erd() {
+    Model m;
+    m.kind = ModelKind::erd;
+    m.width = m.height = 50;
+    m.maxval = 255;
+    m.vertices = {{0, 0}, {0, 98}, {98, 0}, {98, 98}};
+    m.values = {127, 63.5, 63.5, 90};
+    m.faces = {{0, 2, 1}, {1, 2, 3}};
+    m.corner_values = {{127, 73, 73}, {54, 54, 90}};
+    return m;
+}
+
+Model diagonal_basic() {
+    Model m = diagonal_erd();
+    m.kind = ModelKind::basic;
+    m.corner_values.clear();
+    m.values = {127, 64, 64, 90};
+    return m;
+}
+
+std::size_t count(const std::string& s, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + what.size())) ++n;
+    return n;
+}
+
+// The text between `<g id="ID"` and the next `</g>`.
+std::string group(const std::string& svg, const std::string& id) {
+    std::size_t a = svg.find("<g id=\"" + id + "\"");
+    if (a == std::string::npos) return "";
+    std::size_t b = svg.find("</g>", a);
+    return svg.substr(a, b - a);
+}
+
+std::vector<std::string> lines_starting(const std::string& text, const std::string& prefix) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (line.compare(0, prefix.size(), prefix) == 0) out.push_back(line);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constrained", "[people]") {
+    std::vector<MeshEdge> edges;
+    REQUIRE(mesh_edges(diagonal_erd(), &edges).ok());
+    REQUIRE(edges.size() == 5);
+    int constrained = 0, hull = 0;
+    for (const auto& e : edges) {
+        if (e.constrained) { ++constrained; CHECK(e.a == 1); CHECK(e.b == 2); }
+        if (e.right == kNoFace) ++hull;
+    }
+    CHECK(constrained == 1);
+    CHECK(hull == 4);
+
+    // The basic model is continuous: nothing constrained; an explicit list is honoured.
+    Model b = diagonal_basic();
+    REQUIRE(mesh_edges(b, &edges).ok());
+    for (const auto& e : edges) CHECK_FALSE(e.constrained);
+    b.constraints = {{2, 1}};
+    REQUIRE(mesh_edges(b, &edges).ok());
+    // Sorted: 0-1, 0-2, 1-2, 1-3, 2-3.
+    CHECK(edges[2].a == 1);
+    CHECK(edges[2].b == 2);
+    CHECK(edges[2].constrained);
+
+    Model bad = diagonal_basic();
+    bad.faces[1][2] = 7;
+    CHECK(mesh_edges(bad, &edges).code == Code::input);
+}
+
+TEST_CASE("wedges of the A.4.2 diagonal: corners 1 and 2 have two each", "[people]") {
+    Model m = diagonal_erd();
+    std::vector<MeshEdge> edges;
+    REQUIRE(mesh_edges(m, &edges).ok());
+    std::vector<std::array<std::uint32_t, 3>> wedge;
+    std::vector<std::uint32_t> first;
+    std::uint32_t n = 0;
+    corner_wedges(m, edges, &wedge, &first, &n);
+    CHECK(n == 6);
+    CHECK(first == std::vector<std::uint32_t>{0, 1, 3, 5, 6});
+    // Face 0 = (0, 2, 1) holds the first wedge of each vertex, face 1 = (1, 2, 3) the second.
+    CHECK(wedge[0] == std::array<std::uint32_t, 3>{0, 3, 1});
+    CHECK(wedge[1] == std::array<std::uint32_t, 3>{2, 4, 5});
+    // Equal values across the diagonal: one wedge per vertex again.
+    m.corner_values = {{127, 60, 60}, {60, 60, 90}};
+    REQUIRE(mesh_edges(m, &edges).ok());
+    corner_wedges(m, edges, &wedge, &first, &n);
+    CHECK(n == 4);
+}
+
+TEST_CASE("OBJ of the diagonal: 6 vertex copies for ERD, 4 for basic, faces point up", "[people]") {
+    std::string obj;
+    ExportCounts c;
+    ExportOptions o;
+    o.zscale = 0.5;
+    REQUIRE(export_mesh(diagonal_erd(), o, &obj, &c).ok());
+    CHECK(c.vertices == 6);
+    CHECK(c.faces == 2);
+    auto v = lines_starting(obj, "v ");
+    auto f = lines_starting(obj, "f ");
+    REQUIRE(v.size() == 6);
+    REQUIRE(f.size() == 2);
+    // Copies in vertex order, wedges by first face: v0, v1 (73), v1 (54), v2 (73), v2 (54), v3.
+    // y is flipped: y = 49 - Y/2.
+    CHECK(v[0] == "v 0 49 63.5");
+    CHECK(v[1] == "v 0 0 36.5");
+    CHECK(v[2] == "v 0 0 27");
+    CHECK(v[3] == "v 49 49 36.5");
+    CHECK(v[4] == "v 49 49 27");
+    CHECK(v[5] == "v 49 0 45");
+    // Face (0, 2, 1) -> copies (1, 4, 2) 1-based, written 0, 2, 1 for counter-clockwise with y up.
+    CHECK(f[0] == "f 1 2 4");
+    CHECK(f[1] == "f 3 6 5");
+
+    REQUIRE(export_mesh(diagonal_basic(), o, &obj, &c).ok());
+    CHECK(c.vertices == 4);
+    CHECK(lines_starting(obj, "v ").size() == 4);
+    CHECK(lines_starting(obj, "f ")[0] == "f 1 2 3");
+
+    // Default zscale: max(W, H) / (10 maxval).
+    CHECK(default_zscale(diagonal_basic()) == Approx(50.0 / 2550.0));
+}
+
+TEST_CASE("PLY of the diagonal: header counts and index lists", "[people]") {
+    std::string ply;
+    ExportOptions o;
+    o.format = MeshFormat::ply;
+    o.zscale = 1;
+    REQUIRE(export_mesh(diagonal_erd(), o, &ply).ok());
+    CHECK(ply.compare(0, 4, "ply\n") == 0);
+    CHECK(count(ply, "element vertex 6\n") == 1);
+    CHECK(count(ply, "element face 2\n") == 1);
+    auto tail = ply.substr(ply.find("end_header\n") + 11);
+    auto faces = lines_starting(tail, "3 ");
+    REQUIRE(faces.size() == 2);
+    CHECK(faces[0] == "3 0 1 3");
+    CHECK(lines_starting(tail, "0 49 127").size() == 1);
+}
+
+TEST_CASE("SVG of the diagonal: 4 thin edges, 1 constrained, 4 vertex dots", "[people]") {
+    RenderOptions o;
+    o.scale = 2;
+    o.vertices = true;
+    std::string svg;
+    REQUIRE(render_svg(diagonal_erd(), "", o, &svg).ok());
+    CHECK(count(svg, "<svg ") == 1);
+    CHECK(count(svg, "width=\"100\" height=\"100\"") == 2);  // svg element and background rect
+    CHECK(count(group(svg, "edges"), "<line ") == 4);
+    std::string cons = group(svg, "constrained");
+    CHECK(count(cons, "<line ") == 1);
+    CHECK(count(cons, "stroke=\"#eb1919\" stroke-width=\"2.5\"") == 1);
+    // Vertex 1 = (0, 49) px -> (1, 99); vertex 2 = (49, 0) px -> (99, 1).
+    CHECK(count(cons, "x1=\"1\" y1=\"99\" x2=\"99\" y2=\"1\"") == 1);
+    CHECK(count(group(svg, "vertices"), "<circle ") == 4);
+    CHECK(count(svg, "<line ") == 5);
+
+    // A crop keeps only the edges that reach it.
+    o.crop_x = 0; o.crop_y = 0; o.crop_w = 10; o.crop_h = 10;
+    REQUIRE(render_svg(diagonal_erd(), "data:image/png;base64,AAAA", o, &svg).ok());
+    // The top and left hull edges, and the diagonal (culling is by bounding box only); not the
+    // right and bottom hull edges.
+    CHECK(count(svg, "<line ") == 3);
+    CHECK(count(svg, "<image id=\"background\"") == 1);
+    o.crop_x = 45;
+    CHECK(render_svg(diagonal_erd(), "", o, &svg).code == Code::input);
+}
+
+TEST_CASE("raster render: constrained edge red and thick, hull blue, interior white", "[people]") {
+    RenderOptions o;
+    o.scale = 4;
+    RgbImage im;
+    REQUIRE(render_raster(diagonal_erd(), nullptr, o, &im).ok());
+    REQUIRE(im.width == 200);
+    REQUIRE(im.height == 200);
+    auto at = [&](int x, int y, int k) { return int(im.pixels[(std::size_t(y) * 200 + std::size_t(x)) * 3 + std::size_t(k)]); };
+    // The diagonal runs from (2, 198) to (198, 2): pixel (99, 100) has its centre on it.
+    CHECK(at(99, 100, 0) == 235);
+    CHECK(at(99, 100, 1) == 25);
+    // 1.5 px off the diagonal (perpendicular distance ~1.06) still partly red: the line is 2.5 wide.
+    CHECK(at(100, 100, 1) < 255);
+    CHECK(at(100, 100, 0) > at(100, 100, 1));
+    // The left hull edge x = 2 is one pixel wide and blue: pixel column 1 is centred 0.5 px away.
+    CHECK(at(1, 50, 2) == 255);
+    CHECK(at(1, 50, 0) < 255);
+    CHECK(at(5, 50, 0) == 255);
+    // Far from every edge: white.
+    CHECK(at(60, 60, 0) == 255);
+    CHECK(at(60, 60, 1) == 255);
+    CHECK(at(60, 60, 2) == 255);
+
+    // Background scaled pixel for pixel; the model size must match.
+    RgbImage bg(50, 50, 100);
+    REQUIRE(render_raster(diagonal_erd(), &bg, o, &im).ok());
+    CHECK(at(60, 60, 0) == 100);
+    RgbImage wrong(10, 10, 0);
+    CHECK(render_raster(diagonal_erd(), &wrong, o, &im).code == Code::input);
+    o.scale = 1000;
+    CHECK(render_raster(diagonal_erd(), nullptr, o, &im).code == Code::input);
+}
+
+TEST_CASE("error map ramp: zero black, full scale white, sizes checked", "[people]") {
+    Image a(3, 1, 255), b(3, 1, 255);
+    a.samples = {10, 10, 10};
+    b.samples = {10, 42, 200};
+    RgbImage out;
+    REQUIRE(error_map(a, b, 0, &out).ok());  // full = 255/8 = 31.875
+    CHECK(out.pixels[0] == 0);
+    CHECK(out.pixels[1] == 0);
+    CHECK(out.pixels[2] == 0);
+    for (int k = 3; k < 9; ++k) CHECK(out.pixels[std::size_t(k)] == 255);
+    Image c(2, 1, 255);
+    CHECK(error_map(a, c, 0, &out).code == Code::input);
+    CHECK(auto_scale(50, 50) == 11);
+    CHECK(auto_scale(1024, 768) == 1);
+}
