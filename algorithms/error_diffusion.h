@@ -6,12 +6,13 @@
 // eq. 3.5); the error v - emitted goes 7/16 ahead, 3/16 behind-below, 5/16 below, 1/16 ahead-below
 // (mirrored on right-to-left rows). Points outside the image receive no error (it is lost).
 //
-// Count search: rho is searched until the pass chooses exactly K points. The count falls as rho
-// grows but not strictly monotonically, so the search keeps a bracket (count > K below, count < K
-// above), proposes rho from the sum/(2 rho) model fitted through the bracket (falling back to
-// bisection), and stops on an exact count, when the bracket closes to adjacent doubles, or after
-// max_passes passes. Without an exact count it returns the pass whose count was nearest to K
-// (ties: the smaller count) with exact = false.
+// Count search: rho is searched until the pass chooses exactly K points. The count follows the
+// sum / (2 rho) model of eq. 3.5 but is not monotone in rho: below relative changes of about 1/K it
+// jitters by several points either way, so plain bisection stalls on a jump across K. The search
+// steps with the model while the count is far from K, then samples rho on a deterministic
+// golden-ratio sequence within +-3/K (relative) of the model's estimate, until the count is exact
+// or max_passes passes have run. Without an exact count it returns the pass whose count was
+// nearest to K (ties: the smaller count) with exact = false.
 #pragma once
 #include <cstddef>
 #include <cstdint>
