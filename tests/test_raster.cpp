@@ -1,0 +1,251 @@
+// Scan conversion: exact-once ownership over arbitrary triangulations of the rectangle.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "kernel/predicates.h"
+#include "kernel/raster.h"
+
+using erd::Lattice;
+using erd::LatticePoint;
+using erd::RasterDomain;
+using erd::Span;
+
+namespace {
+
+using Tri = std::array<LatticePoint, 3>;
+
+// A random triangulation of [0,mx]x[0,my] built without the kernel: split the face containing
+// each random point (into three inside a face, into two per side on an edge), then flip random
+// convex quads. Degenerate-looking configurations (points on edges, collinear runs, vertices on
+// the border) are frequent because the lattice is coarse.
+std::vector<Tri> random_triangulation(std::mt19937& rng, std::int32_t mx, std::int32_t my, int points, bool even) {
+    std::vector<Tri> t;
+    const LatticePoint c00{0, 0}, c10{mx, 0}, c01{0, my}, c11{mx, my};
+    t.push_back({c00, c10, c11});
+    t.push_back({c00, c11, c01});
+    std::uniform_int_distribution<std::int32_t> dx(0, even ? mx / 2 : mx), dy(0, even ? my / 2 : my);
+    for (int n = 0; n < points; ++n) {
+        LatticePoint p{dx(rng), dy(rng)};
+        if (even) p = {2 * p.x, 2 * p.y};
+        std::vector<Tri> next;
+        bool vertex = false;
+        for (const Tri& f : t)
+            for (const LatticePoint& q : f) vertex = vertex || q == p;
+        if (vertex) continue;
+        for (const Tri& f : t) {
+            std::int64_t o[3];
+            for (int k = 0; k < 3; ++k) o[k] = erd::orient2d(f[k], f[(k + 1) % 3], p);
+            const bool sgn = erd::orient2d(f[0], f[1], f[2]) > 0;
+            bool inside = true;
+            for (int k = 0; k < 3; ++k) inside = inside && (sgn ? o[k] >= 0 : o[k] <= 0);
+            if (!inside) {
+                next.push_back(f);
+                continue;
+            }
+            // Split into the sub-triangles with nonzero area.
+            for (int k = 0; k < 3; ++k)
+                if (o[k] != 0) next.push_back({f[k], f[(k + 1) % 3], p});
+        }
+        t.swap(next);
+    }
+    // Random flips of strictly convex quads.
+    std::uniform_int_distribution<std::size_t> pick(0, t.size() - 1);
+    for (std::size_t round = 0; round < t.size() * 3; ++round) {
+        const std::size_t f = pick(rng);
+        const int k = int(round % 3);
+        const LatticePoint a = t[f][std::size_t(k)], b = t[f][std::size_t((k + 1) % 3)], c = t[f][std::size_t((k + 2) % 3)];
+        for (std::size_t g = 0; g < t.size(); ++g) {
+            if (g == f) continue;
+            int ia = -1, ib = -1, id = -1;
+            for (int m = 0; m < 3; ++m) {
+                if (t[g][std::size_t(m)] == a) ia = m;
+                else if (t[g][std::size_t(m)] == b) ib = m;
+                else id = m;
+            }
+            if (ia < 0 || ib < 0) continue;
+            const LatticePoint d = t[g][std::size_t(id)];
+            // Quad a, d, b, c (c and d on opposite sides of ab); flip ab -> cd if strictly convex.
+            const std::int64_t s1 = erd::orient2d(c, d, a), s2 = erd::orient2d(c, d, b);
+            if ((s1 > 0 && s2 < 0) || (s1 < 0 && s2 > 0)) {
+                t[f] = {c, a, d};
+                t[g] = {c, d, b};
+            }
+            break;
+        }
+    }
+    return t;
+}
+
+// Counts, for every lattice point of the index box [0,ni)x[0,nj), how many faces own it.
+std::vector<int> coverage(const std::vector<Tri>& t, const Lattice& l, RasterDomain d, int ni, int nj,
+                          std::int64_t* outside) {
+    std::vector<int> cnt(std::size_t(ni) * std::size_t(nj), 0);
+    std::vector<Span> spans;
+    *outside = 0;
+    for (const Tri& f : t) {
+        const std::int64_t n = erd::scan_triangle(l, d, f[0], f[1], f[2], &spans);
+        std::int64_t seen = 0;
+        std::int32_t last_y = INT32_MIN;
+        for (const Span& s : spans) {
+            REQUIRE(s.x_begin <= s.x_end);
+            REQUIRE(s.y > last_y);  // top to bottom, one span per row
+            last_y = s.y;
+            for (std::int32_t i = s.x_begin; i <= s.x_end; ++i) {
+                ++seen;
+                if (i < 0 || s.y < 0 || i >= ni || s.y >= nj) {
+                    ++*outside;
+                    continue;
+                }
+                ++cnt[std::size_t(s.y) * std::size_t(ni) + std::size_t(i)];
+            }
+        }
+        REQUIRE(seen == n);
+    }
+    return cnt;
+}
+
+}  // namespace
+
+TEST_CASE("raster: pixel lattice, every pixel owned exactly once", "[raster]") {
+    std::mt19937 rng(12345);
+    for (int trial = 0; trial < 60; ++trial) {
+        const int W = 2 + int(rng() % 14), H = 2 + int(rng() % 14);
+        const RasterDomain d{2 * W - 2, 2 * H - 2};
+        const bool even = trial % 2 == 0;
+        const auto t = random_triangulation(rng, d.max_x, d.max_y, 4 + int(rng() % 40), even);
+        std::int64_t outside = 0;
+        const auto cnt = coverage(t, Lattice::pixels(), d, W, H, &outside);
+        CHECK(outside == 0);
+        int bad = 0;
+        for (int c : cnt) bad += c != 1;
+        INFO("trial " << trial << " W " << W << " H " << H << " faces " << t.size());
+        CHECK(bad == 0);
+    }
+}
+
+TEST_CASE("raster: supersampling lattice, every sub-sample inside the domain owned exactly once", "[raster]") {
+    std::mt19937 rng(777);
+    const Lattice l = Lattice::supersample();
+    for (int trial = 0; trial < 40; ++trial) {
+        const int W = 2 + int(rng() % 9), H = 2 + int(rng() % 9);
+        const RasterDomain d{2 * W - 2, 2 * H - 2};
+        const auto t = random_triangulation(rng, d.max_x, d.max_y, 4 + int(rng() % 30), trial % 3 == 0);
+        std::int64_t outside = 0;
+        const int ni = 4 * W, nj = 4 * H;
+        const auto cnt = coverage(t, l, d, ni, nj, &outside);
+        CHECK(outside == 0);
+        int bad = 0;
+        for (int j = 0; j < nj; ++j)
+            for (int i = 0; i < ni; ++i) {
+                // Sub-samples 0,1 and 4W-2,4W-1 of a row lie outside Gamma (clamped by the caller).
+                const bool in = l.fine_x(i) >= 0 && l.fine_x(i) <= 4 * d.max_x && l.fine_y(j) >= 0 &&
+                                l.fine_y(j) <= 4 * d.max_y;
+                bad += cnt[std::size_t(j) * std::size_t(ni) + std::size_t(i)] != (in ? 1 : 0);
+            }
+        INFO("trial " << trial);
+        CHECK(bad == 0);
+    }
+}
+
+TEST_CASE("raster: border lattices (clamped sub-samples) owned exactly once", "[raster]") {
+    std::mt19937 rng(99);
+    for (int trial = 0; trial < 30; ++trial) {
+        const int W = 2 + int(rng() % 9), H = 2 + int(rng() % 9);
+        const RasterDomain d{2 * W - 2, 2 * H - 2};
+        const auto t = random_triangulation(rng, d.max_x, d.max_y, 4 + int(rng() % 30), false);
+        // Columns x = 0 and x = max_x at sub-sample rows; rows y = 0, max_y at sub-sample columns;
+        // the four corners.
+        const Lattice cols{4, 4 * d.max_x, 2, 0, -3}, rows{4, 2, 4 * d.max_y, -3, 0},
+            corners{4, 4 * d.max_x, 4 * d.max_y, 0, 0};
+        std::int64_t outside = 0;
+        auto c1 = coverage(t, cols, d, 2, 4 * H, &outside);
+        for (int j = 0; j < 4 * H; ++j)
+            for (int i = 0; i < 2; ++i) {
+                const bool in = j >= 2 && j < 4 * H - 2;
+                CHECK(c1[std::size_t(j * 2 + i)] == (in ? 1 : 0));
+            }
+        auto c2 = coverage(t, rows, d, 4 * W, 2, &outside);
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 4 * W; ++i) CHECK(c2[std::size_t(j * 4 * W + i)] == ((i >= 2 && i < 4 * W - 2) ? 1 : 0));
+        auto c3 = coverage(t, corners, d, 2, 2, &outside);
+        for (int c : c3) CHECK(c == 1);
+        CHECK(outside == 0);
+    }
+}
+
+TEST_CASE("raster: spans agree with the point-by-point rule", "[raster]") {
+    std::mt19937 rng(4242);
+    const Lattice lats[2] = {Lattice::pixels(), Lattice::supersample()};
+    for (int trial = 0; trial < 20; ++trial) {
+        const int W = 2 + int(rng() % 8), H = 2 + int(rng() % 8);
+        const RasterDomain d{2 * W - 2, 2 * H - 2};
+        const auto t = random_triangulation(rng, d.max_x, d.max_y, 10, false);
+        for (const Lattice& l : lats) {
+            const int ni = l.scale == 1 ? W : 4 * W, nj = l.scale == 1 ? H : 4 * H;
+            std::vector<Span> spans;
+            for (const Tri& f : t) {
+                erd::scan_triangle(l, d, f[0], f[1], f[2], &spans);
+                std::vector<char> mark(std::size_t(ni) * std::size_t(nj), 0);
+                for (const Span& s : spans)
+                    for (int i = s.x_begin; i <= s.x_end; ++i) mark[std::size_t(s.y * ni + i)] = 1;
+                int mismatch = 0;
+                for (int j = 0; j < nj; ++j)
+                    for (int i = 0; i < ni; ++i)
+                        mismatch += (erd::triangle_owns(l, d, f[0], f[1], f[2], i, j) ? 1 : 0) !=
+                                    mark[std::size_t(j * ni + i)];
+                CHECK(mismatch == 0);
+                // Orientation does not matter.
+                std::vector<Span> rev;
+                erd::scan_triangle(l, d, f[0], f[2], f[1], &rev);
+                REQUIRE(rev.size() == spans.size());
+                for (std::size_t k = 0; k < rev.size(); ++k) {
+                    CHECK(rev[k].y == spans[k].y);
+                    CHECK(rev[k].x_begin == spans[k].x_begin);
+                    CHECK(rev[k].x_end == spans[k].x_end);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("raster: tie rule on a hand-made case", "[raster]") {
+    // 3x3 pixels, domain [0,4]^2 doubled, split by the diagonal (0,0)-(4,4).
+    const RasterDomain d{4, 4};
+    const LatticePoint a{0, 0}, b{4, 0}, c{4, 4}, e{0, 4};
+    std::vector<Span> s;
+    // Upper-right triangle (y down): points with x > y, plus the diagonal (ties go right: it is
+    // the face on the right of the diagonal), plus the border column x = 4 except the corner
+    // (4,4), whose perturbation (-eps, -eps^2) falls below the diagonal.
+    CHECK(erd::scan_triangle(Lattice::pixels(), d, a, b, c, &s) == 5);
+    REQUIRE(s.size() == 2);
+    CHECK((s[0].y == 0 && s[0].x_begin == 0 && s[0].x_end == 2));
+    CHECK((s[1].y == 1 && s[1].x_begin == 1 && s[1].x_end == 2));
+    CHECK(erd::scan_triangle(Lattice::pixels(), d, a, c, e, &s) == 4);
+    REQUIRE(s.size() == 2);
+    CHECK((s[0].y == 1 && s[0].x_begin == 0 && s[0].x_end == 0));
+    CHECK((s[1].y == 2 && s[1].x_begin == 0 && s[1].x_end == 2));
+    // Degenerate triangles own nothing.
+    CHECK(erd::scan_triangle(Lattice::pixels(), d, a, c, LatticePoint{2, 2}, &s) == 0);
+    CHECK(s.empty());
+}
+
+TEST_CASE("raster: SpanPlane evaluates the plane along spans", "[raster]") {
+    erd::SpanPlane p;
+    REQUIRE(p.set({0, 0}, 10.0, {8, 0}, 50.0, {0, 6}, 4.0));
+    CHECK(p.at(0, 0) == Approx(10.0));
+    CHECK(p.at(8, 0) == Approx(50.0));
+    CHECK(p.at(0, 6) == Approx(4.0));
+    CHECK(p.at(4, 3) == Approx(10.0 + 20.0 - 3.0));
+    const Lattice px = Lattice::pixels();
+    double v = p.at(px, 1, 2);
+    for (int i = 1; i <= 4; ++i, v += p.step_x(px)) CHECK(v == Approx(p.at(2.0 * i, 4.0)));
+    const Lattice ss = Lattice::supersample();
+    CHECK(p.at(ss, 0, 3) == Approx(p.at(-3.0 / 4, 3.0 / 4)));
+    CHECK(p.step_x(ss) == Approx(5.0 / 2));
+    erd::SpanPlane q;
+    CHECK_FALSE(q.set({0, 0}, 1.0, {2, 2}, 2.0, {4, 4}, 3.0));
+}
