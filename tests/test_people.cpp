@@ -2,6 +2,8 @@
 // the --stats JSON of generate, and the CLI commands render/export.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include "algorithms/export.h"
 #include "algorithms/mesh_edges.h"
 #include "algorithms/render.h"
+#include "cli/stats_json.h"
 
 using namespace erd;
 
@@ -58,6 +61,92 @@ std::vector<std::string> lines_starting(const std::string& text, const std::stri
     for (std::string line; std::getline(in, line);)
         if (line.compare(0, prefix.size(), prefix) == 0) out.push_back(line);
     return out;
+}
+
+// A small JSON reader, enough for the --stats object: objects, arrays, strings without escapes
+// beyond \" and \\, numbers, true/false/null. Fails the test on anything malformed.
+struct Json {
+    enum Kind { null, boolean, number, string, array, object } kind = null;
+    bool b = false;
+    double n = 0;
+    std::string s;
+    std::vector<Json> items;
+    std::vector<std::pair<std::string, Json>> fields;
+
+    const Json& operator[](const std::string& key) const {
+        for (const auto& f : fields)
+            if (f.first == key) return f.second;
+        FAIL("missing key " << key);
+        return *this;
+    }
+    bool has(const std::string& key) const {
+        for (const auto& f : fields)
+            if (f.first == key) return true;
+        return false;
+    }
+};
+
+struct JsonReader {
+    const std::string& t;
+    std::size_t i = 0;
+    void ws() { while (i < t.size() && std::isspace(static_cast<unsigned char>(t[i]))) ++i; }
+    bool eat(char c) { ws(); if (i < t.size() && t[i] == c) { ++i; return true; } return false; }
+    std::string str() {
+        REQUIRE(eat('"'));
+        std::string out;
+        while (i < t.size() && t[i] != '"') {
+            if (t[i] == '\\') ++i;
+            REQUIRE(i < t.size());
+            out += t[i++];
+        }
+        REQUIRE(i < t.size());
+        ++i;
+        return out;
+    }
+    Json value() {
+        ws();
+        REQUIRE(i < t.size());
+        Json v;
+        char c = t[i];
+        if (c == '{') {
+            v.kind = Json::object;
+            ++i;
+            if (eat('}')) return v;
+            do {
+                std::string k = str();
+                REQUIRE(eat(':'));
+                v.fields.emplace_back(k, value());
+            } while (eat(','));
+            REQUIRE(eat('}'));
+        } else if (c == '[') {
+            v.kind = Json::array;
+            ++i;
+            if (eat(']')) return v;
+            do v.items.push_back(value()); while (eat(','));
+            REQUIRE(eat(']'));
+        } else if (c == '"') {
+            v.kind = Json::string;
+            v.s = str();
+        } else if (t.compare(i, 4, "true") == 0) { v.kind = Json::boolean; v.b = true; i += 4; }
+        else if (t.compare(i, 5, "false") == 0) { v.kind = Json::boolean; i += 5; }
+        else if (t.compare(i, 4, "null") == 0) { i += 4; }
+        else {
+            v.kind = Json::number;
+            std::size_t used = 0;
+            v.n = std::stod(t.substr(i), &used);
+            REQUIRE(used > 0);
+            i += used;
+        }
+        return v;
+    }
+};
+
+Json parse_json(const std::string& text) {
+    JsonReader r{text};
+    Json v = r.value();
+    r.ws();
+    CHECK(r.i == text.size());
+    return v;
 }
 
 }  // namespace
@@ -234,4 +323,63 @@ TEST_CASE("error map ramp: zero black, full scale white, sizes checked", "[peopl
     CHECK(error_map(a, c, 0, &out).code == Code::input);
     CHECK(auto_scale(50, 50) == 11);
     CHECK(auto_scale(1024, 768) == 1);
+}
+
+TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[people]") {
+    GenerateResult r;
+    r.model = diagonal_erd();
+    r.requested = 5;
+    r.achieved = 4;
+    r.stages = {{"edges", 0.25}, {"greedy \"insertion\"", 1.5}};
+    Image im(50, 50, 255);
+    cli::GenerateStats s = cli::collect_stats("erdgpi", im, r);
+    CHECK(s.constrained_edges == 1);
+    CHECK(s.constrained_vertices == 2);
+    s.has_params = true;
+    s.beta = 0.055;
+    s.r = 0.4;
+    s.l = 5;
+    s.epsilon = 1;
+    s.dropped_constraints = 3;
+    s.stop = "target";
+    s.total_seconds = 2;
+    s.peak_memory_bytes = cli::peak_memory_bytes();
+    CHECK(s.peak_memory_bytes > 0);
+    s.has_psnr = true;
+    s.psnr = 31.25;
+    std::string text = cli::stats_json(s);
+    CHECK(text.back() == '\n');
+    CHECK(std::count(text.begin(), text.end(), '\n') == 1);
+    Json j = parse_json(text.substr(0, text.size() - 1));
+    REQUIRE(j.kind == Json::object);
+    CHECK(j["method"].s == "erdgpi");
+    CHECK(j["model"].s == "erd");
+    CHECK(j["image"]["width"].n == 50);
+    CHECK(j["image"]["maxval"].n == 255);
+    CHECK(j["points"]["requested"].n == 5);
+    CHECK(j["points"]["achieved"].n == 4);
+    CHECK(j["vertices"].n == 4);
+    CHECK(j["faces"].n == 2);
+    CHECK(j["constrained_edges"].n == 1);
+    CHECK(j["constrained_vertices"].n == 2);
+    CHECK(j["dropped_constraints"].n == 3);
+    CHECK(j["parameters"]["beta"].n == 0.055);
+    CHECK(j["parameters"]["l"].n == 5);
+    CHECK(j["parameters"]["simple"].kind == Json::boolean);
+    CHECK(j["stop"].s == "target");
+    REQUIRE(j["stages"].items.size() == 2);
+    CHECK(j["stages"].items[1]["name"].s == "greedy \"insertion\"");
+    CHECK(j["stages"].items[1]["seconds"].n == 1.5);
+    CHECK(j["peak_memory_bytes"].n > 0);
+    CHECK(j["psnr"].n == 31.25);
+
+    // A basic model without --psnr-report: null parameters, no psnr key.
+    r.model = diagonal_basic();
+    s = cli::collect_stats("gpi", im, r);
+    j = parse_json(cli::stats_json(s));
+    CHECK(j["model"].s == "basic");
+    CHECK(j["parameters"].kind == Json::null);
+    CHECK(j["stop"].kind == Json::null);
+    CHECK(j["constrained_edges"].n == 0);
+    CHECK_FALSE(j.has("psnr"));
 }
