@@ -36,20 +36,22 @@ bool is_digit(unsigned char c) { return c >= '0' && c <= '9'; }
 
 // A few bytes from data[i] for a message: printable ASCII as is, others as \xNN.
 std::string show(const unsigned char* data, std::size_t size, std::size_t i, std::size_t max_chars = 12) {
+    static const char hex[] = "0123456789abcdef";
     std::string s;
-    for (std::size_t k = i; k < size && k - i < max_chars; ++k) {
+    std::size_t k = i;
+    for (; k < size && k - i < max_chars; ++k) {
         unsigned char c = data[k];
-        if (k > i && (is_space(c) || c == '#')) break;
+        if (k > i && (is_space(c) || c == '#')) return s;
         if (c >= 0x21 && c < 0x7f) {
             s += char(c);
         } else {
-            static const char hex[] = "0123456789abcdef";
             s += "\\x";
             s += hex[c >> 4];
             s += hex[c & 15];
         }
     }
-    if (i + max_chars < size && !is_space(data[i + max_chars]) && data[i + max_chars] != '#') s += "...";
+    // Cut short in the middle of a token: say so.
+    if (k < size && !is_space(data[k]) && data[k] != '#') s += "...";
     return s;
 }
 
@@ -151,7 +153,7 @@ Status check_side(const char* what, std::uint64_t v, const ImageLimits& limits) 
     if (v > std::uint64_t(limits.max_side))
         return Status::bad_input(std::string(what) + " " + std::to_string(v) + " is above the limit of " +
                                  std::to_string(limits.max_side) +
-                                 " pixels a side (it keeps the exact predicates exact)");
+                                 " pixels (the bound under which the mesh arithmetic is exact; see docs/manual.md)");
     return Status::success();
 }
 
@@ -294,7 +296,16 @@ Status decode_png(const unsigned char* data, std::size_t size, Image* out, std::
     int w = 0, h = 0, ch = 0;
     bool is16 = false;
     std::string why;
-    if (!stb::png_info(data, size, &w, &h, &ch, &is16, &why)) return Status::bad_input("PNG: " + why);
+    // Sizes from IHDR ourselves first, so a too-large image gets our message, not stb's "too large".
+    if (size >= 24 && std::memcmp(data + 12, "IHDR", 4) == 0) {
+        auto be32 = [&](std::size_t k) {
+            return std::uint64_t(data[k]) << 24 | std::uint64_t(data[k + 1]) << 16 | std::uint64_t(data[k + 2]) << 8 | data[k + 3];
+        };
+        Status s = check_side("PNG width", be32(16), limits);
+        if (s) s = check_side("PNG height", be32(20), limits);
+        if (!s) return s;
+    }
+    if (!stb::png_info(data, size, &w, &h, &ch, &is16, &why)) return Status::bad_input("PNG rejected by the decoder: " + why);
     if (w <= 0 || h <= 0) return Status::bad_input("PNG: width or height is 0");
     Status s = check_side("PNG width", std::uint64_t(w), limits);
     if (!s) return s;
@@ -314,7 +325,7 @@ Status decode_png(const unsigned char* data, std::size_t size, Image* out, std::
     // Room for the compressed stream, the inflated rows and the output, with slack for stb's growth.
     const std::size_t budget = std::size_t(3 * raw + 2 * pixels * bytes_per + 4 * std::uint64_t(size) + (1u << 20));
     stb::PngImage png;
-    if (!stb::png_decode(data, size, budget, &png, &why)) return Status::bad_input("PNG: " + why);
+    if (!stb::png_decode(data, size, budget, &png, &why)) return Status::bad_input("PNG rejected by the decoder: " + why);
     Image im;
     im.width = png.width;
     im.height = png.height;

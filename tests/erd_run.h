@@ -1,0 +1,100 @@
+// Test helpers shared by the CLI-level tests: a temporary folder that cleans up after itself,
+// file helpers, and a runner for the real `erd` binary (env ERD_BIN, default build/erd).
+#pragma once
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace erd_test {
+
+inline std::string erd_bin() {
+    const char* b = std::getenv("ERD_BIN");
+    return b && *b ? b : "build/erd";
+}
+
+// Single-quotes s for /bin/sh.
+inline std::string sh_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+inline std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+inline void spit(const std::string& path, const std::string& bytes) {
+    std::ofstream f(path, std::ios::binary);
+    f.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+inline bool exists(const std::string& path) {
+    struct stat st;
+    return ::lstat(path.c_str(), &st) == 0;
+}
+
+// A fresh folder under $TMPDIR (or /tmp), removed with its contents at scope exit.
+struct TempDir {
+    std::string path;
+    TempDir() {
+        const char* t = std::getenv("TMPDIR");
+        std::string tmpl = std::string(t && *t ? t : "/tmp") + "/erd-test-XXXXXX";
+        char* p = ::mkdtemp(&tmpl[0]);
+        path = p ? p : "";
+    }
+    ~TempDir() {
+        if (!path.empty()) {
+            std::string cmd = "chmod -R u+w " + sh_quote(path) + " 2>/dev/null; rm -rf " + sh_quote(path);
+            int rc = std::system(cmd.c_str());
+            (void)rc;
+        }
+    }
+    std::string file(const std::string& name) const { return path + "/" + name; }
+    // Names in the folder (dot files included), sorted, space separated.
+    std::string listing() const {
+        std::string cmd = "ls -A " + sh_quote(path) + " 2>/dev/null";
+        std::string out;
+        if (FILE* f = ::popen(cmd.c_str(), "r")) {
+            char buf[256];
+            while (std::fgets(buf, sizeof buf, f)) out += buf;
+            ::pclose(f);
+        }
+        for (auto& c : out) if (c == '\n') c = ' ';
+        return out;
+    }
+};
+
+struct RunResult {
+    int status = -1;  // exit status, or 128 + signal
+    std::string out, err;
+};
+
+// Runs `sh -c "PREFIX ERD ARGS"`; args are passed to the shell as written (quote paths with sh_quote).
+inline RunResult run_erd(const std::string& args, const std::string& prefix = "") {
+    TempDir io;
+    std::string cmd = prefix + " " + sh_quote(erd_bin()) + " " + args + " >" + sh_quote(io.file("out")) + " 2>" +
+                      sh_quote(io.file("err"));
+    int rc = std::system(cmd.c_str());
+    RunResult r;
+    if (WIFEXITED(rc)) r.status = WEXITSTATUS(rc);
+    else if (WIFSIGNALED(rc)) r.status = 128 + WTERMSIG(rc);
+    r.out = slurp(io.file("out"));
+    r.err = slurp(io.file("err"));
+    return r;
+}
+
+inline bool binary_available() {
+    struct stat st;
+    return ::stat(erd_bin().c_str(), &st) == 0 && (st.st_mode & S_IXUSR);
+}
+
+}  // namespace erd_test
