@@ -72,10 +72,10 @@ Status mesh_edges(const Model& m, std::vector<MeshEdge>* out) {
         e.left = hs[i].face;
         if (j - i == 2) e.right = hs[i + 1].face;
         e.constrained = std::binary_search(cons.begin(), cons.end(), std::array<std::uint32_t, 2>{e.a, e.b});
-        if (!e.constrained && e.right != kNoFace && m.kind == ModelKind::erd && m.corner_values.size() == m.faces.size()) {
+        if (!e.constrained && e.right != kNoMeshFace && m.kind == ModelKind::erd && m.corner_values.size() == m.faces.size()) {
             for (std::uint32_t v : {e.a, e.b}) {
-                double l = corner_value(m, e.left, corner_of(m, e.left, v));
-                double r = corner_value(m, e.right, corner_of(m, e.right, v));
+                double l = face_corner_value(m, e.left, corner_of(m, e.left, v));
+                double r = face_corner_value(m, e.right, corner_of(m, e.right, v));
                 if (l != r) e.constrained = true;
             }
         }
@@ -92,7 +92,7 @@ void corner_wedges(const Model& m, const std::vector<MeshEdge>& edges,
     std::vector<std::uint32_t> parent(nf * 3);
     std::iota(parent.begin(), parent.end(), 0u);
     for (const MeshEdge& e : edges) {
-        if (e.constrained || e.right == kNoFace) continue;
+        if (e.constrained || e.right == kNoMeshFace) continue;
         for (std::uint32_t v : {e.a, e.b}) {
             std::uint32_t x = find_root(parent, e.left * 3 + std::uint32_t(corner_of(m, e.left, v)));
             std::uint32_t y = find_root(parent, e.right * 3 + std::uint32_t(corner_of(m, e.right, v)));

@@ -16,12 +16,12 @@
 
 namespace erd {
 
-constexpr std::uint32_t kNoFace = 0xffffffffu;
+constexpr std::uint32_t kNoMeshFace = 0xffffffffu;
 
-// One undirected edge, a < b, with the faces on its two sides (right = kNoFace on the hull).
+// One undirected edge, a < b, with the faces on its two sides (right = kNoMeshFace on the hull).
 struct MeshEdge {
     std::uint32_t a = 0, b = 0;
-    std::uint32_t left = kNoFace, right = kNoFace;
+    std::uint32_t left = kNoMeshFace, right = kNoMeshFace;
     bool constrained = false;
 };
 
@@ -39,7 +39,7 @@ void corner_wedges(const Model& m, const std::vector<MeshEdge>& edges,
                    std::uint32_t* count);
 
 // Value of corner i of face f: the corner value for an ERD model, else the vertex value.
-inline double corner_value(const Model& m, std::size_t f, int i) {
+inline double face_corner_value(const Model& m, std::size_t f, int i) {
     if (m.kind == ModelKind::erd && f < m.corner_values.size()) return m.corner_values[f][std::size_t(i)];
     return m.values[m.faces[f][std::size_t(i)]];
 }

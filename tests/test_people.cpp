@@ -158,7 +158,7 @@ TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constraine
     int constrained = 0, hull = 0;
     for (const auto& e : edges) {
         if (e.constrained) { ++constrained; CHECK(e.a == 1); CHECK(e.b == 2); }
-        if (e.right == kNoFace) ++hull;
+        if (e.right == kNoMeshFace) ++hull;
     }
     CHECK(constrained == 1);
     CHECK(hull == 4);
