@@ -4,7 +4,8 @@
 
 #include "algorithms/ed.h"
 #include "algorithms/gpi.h"
-// ERD methods (erdmodel helper): include their header here and add their rows to kMethods.
+#include "algorithms/erded.h"
+#include "algorithms/erdgpi.h"
 
 namespace erd {
 
@@ -13,8 +14,8 @@ namespace {
 const Method kMethods[] = {
     {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", generate_ed},
     {"gpi", "greedy point insertion (thesis 3.2.2, gpi), basic model", generate_gpi},
-    // {"erded", "...", generate_erded},
-    // {"erdgpi", "...", generate_erdgpi},
+    {"erded", "ERD model, error-diffusion refinement (thesis 3.4.2, erd_ed)", generate_erded},
+    {"erdgpi", "ERD model, greedy point insertion (thesis 3.4.3, erd_gpi)", generate_erdgpi},
 };
 
 }  // namespace

@@ -1,0 +1,157 @@
+#include "algorithms/erd_model.h"
+
+#include <cmath>
+#include <limits>
+
+#include "algorithms/bilinear.h"
+#include "algorithms/mmsodd.h"
+
+namespace erd {
+
+void wedge_bisector(LatticePoint u1, LatticePoint u2, double* dx, double* dy) {
+    const double kTwoPi = 6.283185307179586476925286766559;
+    const double t1 = std::atan2(double(u1.y), double(u1.x));
+    const double t2 = std::atan2(double(u2.y), double(u2.x));
+    // Positive rotation in the doubled frame is increasing atan2 (orient2d > 0 <=> cross > 0).
+    double sweep = t2 - t1;
+    if (sweep <= 0) sweep += kTwoPi;
+    const double t = t1 + 0.5 * sweep;
+    *dx = std::cos(t);
+    *dy = std::sin(t);
+}
+
+ErdModel::ErdModel(const Grid<double>& phi, const WedgeValueOptions& options) : phi_(phi), options_(options) {}
+
+double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
+    const LatticePoint p = cdt.point(v);
+    EdgeInd last = w.first;
+    for (std::uint32_t i = 1; i < w.count; ++i) last = cdt.rot_next(last);
+    const LatticePoint a = cdt.point(cdt.dest(w.first));
+    const LatticePoint b = cdt.point(cdt.org(prev_edge(last)));
+    double dx = 0, dy = 0;
+    wedge_bisector({a.x - p.x, a.y - p.y}, {b.x - p.x, b.y - p.y}, &dx, &dy);
+    const double x = 0.5 * p.x, y = 0.5 * p.y;
+    const double max_x = phi_.width - 1, max_y = phi_.height - 1;
+    auto clamp = [](double t, double hi) { return t < 0 ? 0.0 : (t > hi ? hi : t); };
+    ++stats_.multi_wedges;
+    if (options_.rule == 0) return bilinear(phi_, clamp(x + dx, max_x), clamp(y + dy, max_y));
+    if (!have_mmsodd_) {
+        mmsodd_ = mmsodd(phi_, options_.smoothing_order);
+        have_mmsodd_ = true;
+    }
+    const int steps = int(std::lround(0.5 / kWedgeAlphaStep));
+    double best = -1, bx = x, by = y;
+    int best_i = 0;
+    for (int i = 0; i <= steps; ++i) {
+        const double alpha = 1.0 + kWedgeAlphaStep * i;
+        const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
+        const double f = bilinear(mmsodd_, qx, qy);
+        if (f > best) {
+            best = f;
+            bx = qx;
+            by = qy;
+            best_i = i;
+        }
+    }
+    if (best_i == 0) ++stats_.alpha_first;
+    if (best_i == steps) ++stats_.alpha_last;
+    return bilinear(phi_, bx, by);
+}
+
+void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {
+    if (first_.size() <= v) {
+        first_.resize(std::size_t(v) + 1, 0);
+        count_.resize(std::size_t(v) + 1, 0);
+    }
+    first_[v] = std::uint32_t(entries_.size());
+    if (cdt.wedge_count(v) <= 1) {
+        const LatticePoint p = cdt.point(v);
+        entries_.push_back({kOnlyWedge, bilinear_doubled(phi_, p.x, p.y)});
+        count_[v] = 1;
+        return;
+    }
+    cdt.wedges(v, &scratch_);
+    for (const Wedge& w : scratch_) entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
+    count_[v] = std::uint32_t(scratch_.size());
+}
+
+void ErdModel::assign_all(const Cdt& cdt) {
+    const std::size_t n = cdt.vertex_count();
+    first_.assign(n, 0);
+    count_.assign(n, 0);
+    entries_.clear();
+    entries_.reserve(n + n / 4);
+    for (std::size_t v = 0; v < n; ++v) assign_vertex(cdt, VertInd(v));
+}
+
+double ErdModel::wedge_value(VertInd v, WedgeId id) const {
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    const Entry* e = &entries_[first_[v]];
+    if (count_[v] == 1) return e->value;
+    for (std::uint32_t i = 0; i < count_[v]; ++i)
+        if (e[i].id == id) return e[i].value;
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
+    const VertInd v = cdt.org(e);
+    if (v < count_.size() && count_[v] == 1) return entries_[first_[v]].value;
+    return wedge_value(v, cdt.wedge_id(e));
+}
+
+double ErdModel::vertex_value(VertInd v) const {
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    double s = 0;
+    for (std::uint32_t i = 0; i < count_[v]; ++i) s += entries_[first_[v] + i].value;
+    return s / count_[v];
+}
+
+SpanPlane ErdModel::face_plane(const Cdt& cdt, FaceInd f) const {
+    const EdgeInd e = 3 * f;
+    SpanPlane plane;
+    plane.set(cdt.point(cdt.org(e)), corner_value(cdt, e), cdt.point(cdt.org(e + 1)), corner_value(cdt, e + 1),
+              cdt.point(cdt.org(e + 2)), corner_value(cdt, e + 2));
+    return plane;
+}
+
+double ErdModel::evaluate(const Cdt& cdt, LatticePoint p) const {
+    const Location loc = cdt.locate(p);
+    switch (loc.kind) {
+        case Location::Kind::on_vertex: return vertex_value(loc.vertex);
+        case Location::Kind::on_edge: {
+            const double z = face_plane(cdt, face_of(loc.edge)).at(p.x, p.y);
+            const EdgeInd t = cdt.twin(loc.edge);
+            if (!cdt.constrained(loc.edge) || t == noEdge) return z;
+            return 0.5 * (z + face_plane(cdt, face_of(t)).at(p.x, p.y));
+        }
+        case Location::Kind::in_face: return face_plane(cdt, loc.face).at(p.x, p.y);
+        case Location::Kind::outside: break;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+void ErdModel::to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const {
+    out->kind = ModelKind::erd;
+    out->width = width;
+    out->height = height;
+    out->maxval = maxval;
+    const std::size_t nv = cdt.vertex_count(), nf = cdt.face_count();
+    out->vertices.assign(cdt.points().begin(), cdt.points().end());
+    out->values.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) out->values[v] = vertex_value(VertInd(v));
+    out->faces.resize(nf);
+    out->corner_values.resize(nf);
+    for (std::size_t f = 0; f < nf; ++f) {
+        for (int i = 0; i < 3; ++i) {
+            const EdgeInd e = EdgeInd(3 * f + std::size_t(i));
+            out->faces[f][std::size_t(i)] = cdt.org(e);
+            out->corner_values[f][std::size_t(i)] = corner_value(cdt, e);
+        }
+    }
+    std::vector<std::array<VertInd, 2>> cons;
+    cdt.export_constraints(&cons);
+    out->constraints.resize(cons.size());
+    for (std::size_t i = 0; i < cons.size(); ++i) out->constraints[i] = {cons[i][0], cons[i][1]};
+}
+
+}  // namespace erd

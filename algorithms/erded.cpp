@@ -1,0 +1,188 @@
+#include "algorithms/erded.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <numeric>
+#include <string>
+
+#include "algorithms/erd_mesh.h"
+#include "algorithms/erd_model.h"
+#include "algorithms/erdgpi.h"
+#include "algorithms/error_diffusion.h"
+#include "algorithms/gpi.h"
+#include "algorithms/methods.h"
+#include "algorithms/mmsodd.h"
+
+namespace erd {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::int64_t gcd64(std::int64_t a, std::int64_t b) {
+    a = std::llabs(a);
+    b = std::llabs(b);
+    while (b != 0) {
+        const std::int64_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+// splitmix64: a small fixed-seed generator, so -f 0 output is the same on every platform.
+std::uint64_t next_random(std::uint64_t* state) {
+    std::uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+// Chooses k usable pixels uniformly at random (partial Fisher-Yates), in row-major order.
+std::vector<LatticePoint> random_points(const Grid<std::uint8_t>& occupied, std::size_t k, std::uint64_t seed) {
+    std::vector<std::uint32_t> free;
+    for (std::size_t i = 0; i < occupied.size(); ++i)
+        if (!occupied.data[i]) free.push_back(std::uint32_t(i));
+    k = std::min(k, free.size());
+    std::uint64_t state = seed;
+    for (std::size_t i = 0; i < k; ++i) {
+        const std::size_t j = i + std::size_t(next_random(&state) % (free.size() - i));
+        std::swap(free[i], free[j]);
+    }
+    free.resize(k);
+    std::sort(free.begin(), free.end());
+    std::vector<LatticePoint> pts;
+    pts.reserve(k);
+    const std::uint32_t w = std::uint32_t(occupied.width);
+    for (std::uint32_t i : free) pts.push_back({std::int32_t(2 * (i % w)), std::int32_t(2 * (i / w))});
+    return pts;
+}
+
+// Brings the diffusion's nearest pass to exactly k points: adds the densest unchosen usable
+// pixels, or drops the least dense chosen ones (ties: row-major order). Returns the change.
+std::size_t adjust_count(const Grid<double>& density, const Grid<std::uint8_t>& occupied, std::size_t k,
+                         std::vector<LatticePoint>* pts) {
+    const int w = density.width;
+    auto index = [w](LatticePoint p) { return std::size_t(p.y / 2) * std::size_t(w) + std::size_t(p.x / 2); };
+    std::size_t changed = 0;
+    if (pts->size() > k) {
+        std::vector<std::size_t> order(pts->size());
+        std::iota(order.begin(), order.end(), std::size_t(0));
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return density.data[index((*pts)[a])] < density.data[index((*pts)[b])];
+        });
+        std::vector<std::uint8_t> drop(pts->size(), 0);
+        changed = pts->size() - k;
+        for (std::size_t i = 0; i < changed; ++i) drop[order[i]] = 1;
+        std::vector<LatticePoint> kept;
+        for (std::size_t i = 0; i < pts->size(); ++i)
+            if (!drop[i]) kept.push_back((*pts)[i]);
+        *pts = std::move(kept);
+    } else if (pts->size() < k) {
+        std::vector<std::uint8_t> taken(density.size(), 0);
+        for (LatticePoint p : *pts) taken[index(p)] = 1;
+        std::vector<std::uint32_t> cand;
+        for (std::size_t i = 0; i < density.size(); ++i)
+            if (!taken[i] && !occupied.data[i]) cand.push_back(std::uint32_t(i));
+        const std::size_t need = std::min(k - pts->size(), cand.size());
+        std::partial_sort(cand.begin(), cand.begin() + std::ptrdiff_t(need), cand.end(),
+                          [&](std::uint32_t a, std::uint32_t b) {
+                              return density.data[a] > density.data[b] || (density.data[a] == density.data[b] && a < b);
+                          });
+        for (std::size_t i = 0; i < need; ++i)
+            pts->push_back({std::int32_t(2 * (cand[i] % std::uint32_t(w))), std::int32_t(2 * (cand[i] / std::uint32_t(w)))});
+        changed = need;
+    }
+    return changed;
+}
+
+}  // namespace
+
+Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height) {
+    Grid<std::uint8_t> occ(width, height, 0);
+    for (LatticePoint p : cdt.points())
+        if (p.x % 2 == 0 && p.y % 2 == 0) occ(p.x / 2, p.y / 2) = 1;
+    std::vector<std::array<VertInd, 2>> cons;
+    cdt.export_constraints(&cons);
+    for (const auto& c : cons) {
+        const LatticePoint a = cdt.point(c[0]), b = cdt.point(c[1]);
+        const std::int64_t dx = b.x - a.x, dy = b.y - a.y, g = gcd64(dx, dy);
+        if (g == 0) continue;
+        const std::int64_t sx = dx / g, sy = dy / g;
+        for (std::int64_t i = 1; i < g; ++i) {
+            const std::int64_t x = a.x + i * sx, y = a.y + i * sy;
+            if (x % 2 == 0 && y % 2 == 0) occ(int(x / 2), int(y / 2)) = 1;
+        }
+    }
+    return occ;
+}
+
+Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    *result = GenerateResult();
+    Status st = check_meshable(image);
+    if (!st) return st;
+    const std::int64_t n = target_points(options, image.width, image.height);
+    st = check_target(n, image.width, image.height);
+    if (!st) return st;
+    result->requested = std::size_t(n);
+    const Grid<double> phi = to_grid(image);
+
+    auto t0 = std::chrono::steady_clock::now();
+    Cdt cdt;
+    InitialMeshOptions mo;
+    mo.method = ErdMethod::erded;
+    mo.target = std::size_t(n);
+    mo.request = param_request(options);
+    InitialMesh mesh;
+    st = build_initial_mesh(image, phi, mo, &cdt, &mesh);
+    if (!st) return st;
+    result->stages.push_back({"initial mesh", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    const std::size_t k = cdt.vertex_count() < std::size_t(n) ? std::size_t(n) - cdt.vertex_count() : 0;
+    const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
+    std::vector<LatticePoint> pts;
+    std::size_t adjusted = 0;
+    int passes = 0;
+    if (k > 0 && options.ed_select == 0) {
+        pts = random_points(occupied, k, options.seed);
+    } else if (k > 0) {
+        Grid<double> density = ed_density(mmsodd(phi, 5), 0.5);
+        const Grid<std::uint8_t> on_edge = edge_pixels(mesh.edges);
+        for (std::size_t i = 0; i < density.size(); ++i)
+            if (on_edge.data[i]) density.data[i] = 0.0;
+        DiffusionParams dp;
+        dp.startup = options.startup == 1 ? Startup::force : options.startup == 2 ? Startup::none : Startup::mirror;
+        dp.forbidden = &occupied;
+        DiffusionResult dr;
+        st = select_points(density, k, dp, &dr);
+        if (!st) return st;
+        passes = dr.passes;
+        pts = std::move(dr.points);
+        if (!dr.exact) adjusted = adjust_count(density, occupied, k, &pts);
+    }
+    result->stages.push_back({"sample selection", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    std::vector<VertInd> ids;
+    st = cdt.insert_points(pts, &ids);
+    if (!st) return st;
+    ErdModel model(phi, wedge_options(options));
+    model.assign_all(cdt);
+    result->stages.push_back({"triangulation and wedge values", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    model.to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    result->achieved = result->model.size();
+    result->polylines = std::move(mesh.polylines);
+    result->stages.push_back({"model", seconds_since(t0)});
+    add_param_notes(mesh, model, result);
+    result->notes.push_back("error-diffusion passes: " + std::to_string(passes));
+    result->notes.push_back("points added/removed to reach N exactly: " + std::to_string(adjusted));
+    return Status::success();
+}
+
+}  // namespace erd

@@ -1,0 +1,117 @@
+#include "algorithms/erdgpi.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "algorithms/erd_mesh.h"
+#include "algorithms/gpi.h"
+#include "algorithms/methods.h"
+
+namespace erd {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string real(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+
+}  // namespace
+
+Status ErdGreedyModel::on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>*) {
+    // Every face around v is new, and no other vertex's wedges changed (a split keeps the wedge
+    // ids of the edge's end points), so nothing else is dirty.
+    model_.assign_vertex(cdt, v);
+    return Status::success();
+}
+
+WedgeValueOptions wedge_options(const GenerateOptions& options) {
+    WedgeValueOptions w;
+    w.rule = options.wedge_rule == 0 ? 0 : 1;
+    w.smoothing_order = options.wedge_order;
+    return w;
+}
+
+ErdParamRequest param_request(const GenerateOptions& options) {
+    ErdParamRequest r;
+    r.beta = options.beta;
+    r.r = options.ratio;
+    r.l = options.min_length;
+    r.eps = options.epsilon;
+    r.simple = options.simple;
+    return r;
+}
+
+void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateResult* result) {
+    const ErdParams& p = mesh.params;
+    result->notes.push_back("beta: " + real("%.6g", p.beta));
+    result->notes.push_back("r: " + real("%.6g", p.r));
+    result->notes.push_back("l: " + std::to_string(p.l));
+    result->notes.push_back("eps: " + real("%.6g", p.eps));
+    result->notes.push_back(std::string("simple: ") + (p.simple ? "yes" : "no"));
+    result->notes.push_back("parameter loop iterations: " + std::to_string(p.loop_iterations));
+    result->notes.push_back("polylines: " + std::to_string(mesh.polylines.size()));
+    result->notes.push_back("initial mesh vertices: " + std::to_string(mesh.n0));
+    result->notes.push_back("dropped crossing constraints: " + std::to_string(mesh.dropped_crossing));
+    result->notes.push_back("multi-wedge values: " + std::to_string(model.stats().multi_wedges));
+}
+
+Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    *result = GenerateResult();
+    Status st = check_meshable(image);
+    if (!st) return st;
+    const std::int64_t n = target_points(options, image.width, image.height);
+    st = check_target(n, image.width, image.height);
+    if (!st) return st;
+    result->requested = std::size_t(n);
+    const Grid<double> phi = to_grid(image);
+
+    auto t0 = std::chrono::steady_clock::now();
+    Cdt cdt;
+    InitialMeshOptions mo;
+    mo.method = ErdMethod::erdgpi;
+    mo.target = std::size_t(n);
+    mo.request = param_request(options);
+    InitialMesh mesh;
+    st = build_initial_mesh(image, phi, mo, &cdt, &mesh);
+    if (!st) return st;
+    result->stages.push_back({"initial mesh", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    ErdModel model(phi, wedge_options(options));
+    model.assign_all(cdt);
+    result->stages.push_back({"wedge values", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    ErdGreedyModel greedy(model);
+    GreedyOptions go;
+    go.target_vertices = std::size_t(n);
+    go.max_error = options.max_error;
+    go.psnr = options.psnr;
+    go.round_values = options.round_values;
+    GreedyStats gs;
+    if (cdt.vertex_count() < std::size_t(n)) {
+        st = greedy_refine(cdt, image, greedy, go, &gs);
+        if (!st) return st;
+    }
+    result->stages.push_back({"greedy insertion", seconds_since(t0)});
+
+    t0 = std::chrono::steady_clock::now();
+    model.to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    result->achieved = result->model.size();
+    result->polylines = std::move(mesh.polylines);
+    result->stages.push_back({"model", seconds_since(t0)});
+    add_param_notes(mesh, model, result);
+    result->notes.push_back(std::string("stop: ") + to_string(gs.stop));
+    result->notes.push_back("insertions: " + std::to_string(gs.insertions));
+    result->notes.push_back("psnr (point evaluation): " + real("%.4f", gs.psnr));
+    return Status::success();
+}
+
+}  // namespace erd

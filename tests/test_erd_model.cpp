@@ -1,0 +1,288 @@
+// The ERD model: wedge bisectors, wedge values, the approximating function, and the two ERD
+// methods on small synthetic images (exact N, valid CDT, wedge-consistent corner values,
+// determinism).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "algorithms/erd_mesh.h"
+#include "algorithms/erd_model.h"
+#include "algorithms/erded.h"
+#include "algorithms/erdgpi.h"
+#include "kernel/cdt.h"
+
+using namespace erd;
+
+namespace {
+
+// A W x H image: value `left` where x < split_x (pixel units), `right` elsewhere.
+Image step_image(int w, int h, double split_x, std::uint16_t left, std::uint16_t right) {
+    Image im(w, h, 255);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) im.at(x, y) = x < split_x ? left : right;
+    return im;
+}
+
+// A disk of radius r (dark) on a horizontal ramp, plus a bright bar: edges, junction-free curves
+// and smooth parts, all deterministic.
+Image scene(int w, int h) {
+    Image im(w, h, 255);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            double v = 60 + 120.0 * x / (w - 1);
+            const double dx = x - 0.45 * w, dy = y - 0.5 * h;
+            if (dx * dx + dy * dy < 0.09 * w * h) v = 30 + 0.3 * y;
+            if (y > 0.75 * h && y < 0.85 * h && x > 0.1 * w) v = 240;
+            im.at(x, y) = std::uint16_t(std::lround(v));
+        }
+    return im;
+}
+
+std::uint64_t key(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
+
+// Rebuilds the CDT of an ERD model from its points and constraints, checks it with verify(),
+// checks that its faces are the model's faces, and that every face corner carries the value of
+// the wedge it lies in (faces of one wedge agree; the vertex value is the mean of its wedges).
+void check_model(const Model& m) {
+    REQUIRE(m.kind == ModelKind::erd);
+    Cdt cdt;
+    REQUIRE(cdt.reset(2 * m.width - 2, 2 * m.height - 2).ok());
+    std::vector<VertInd> ids;
+    REQUIRE(cdt.insert_points(m.vertices, &ids).ok());
+    REQUIRE(cdt.vertex_count() == m.vertices.size());  // no duplicates
+    for (const auto& c : m.constraints) {
+        ConstraintReport rep;
+        REQUIRE(cdt.insert_constraint(ids[c[0]], ids[c[1]], &rep).ok());
+        CHECK(rep.dropped_crossing == 0);
+    }
+    std::string why;
+    INFO(why);
+    REQUIRE(cdt.verify(&why));
+    REQUIRE(cdt.face_count() == m.faces.size());
+
+    // Model faces by their point triple (rotated to start at the smallest key).
+    std::map<std::array<std::uint64_t, 3>, std::size_t> face_of_points;
+    auto triple = [](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+        std::array<std::uint64_t, 3> t{a, b, c};
+        while (!(t[0] < t[1] && t[0] < t[2])) t = {t[1], t[2], t[0]};
+        return t;
+    };
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+        const LatticePoint a = m.vertices[m.faces[f][0]], b = m.vertices[m.faces[f][1]], c = m.vertices[m.faces[f][2]];
+        const std::int64_t area = std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(c.x - a.x) * (b.y - a.y);
+        REQUIRE(area > 0);
+        face_of_points[triple(key(a), key(b), key(c))] = f;
+    }
+    // Corner value of model face f at its vertex with point p.
+    auto corner = [&](FaceInd cf, VertInd v) {
+        const EdgeInd e = 3 * cf;
+        const auto t = triple(key(cdt.point(cdt.org(e))), key(cdt.point(cdt.org(e + 1))), key(cdt.point(cdt.org(e + 2))));
+        auto it = face_of_points.find(t);
+        REQUIRE(it != face_of_points.end());
+        const std::size_t f = it->second;
+        for (int i = 0; i < 3; ++i)
+            if (m.vertices[m.faces[f][std::size_t(i)]] == cdt.point(v)) return m.corner_values[f][std::size_t(i)];
+        FAIL("vertex not in face");
+        return 0.0;
+    };
+    std::vector<std::size_t> model_index(cdt.vertex_count(), 0);
+    for (std::size_t i = 0; i < ids.size(); ++i) model_index[ids[i]] = i;
+    std::vector<Wedge> wedges;
+    for (VertInd v = 0; v < cdt.vertex_count(); ++v) {
+        cdt.wedges(v, &wedges);
+        REQUIRE(!wedges.empty());
+        double sum = 0;
+        for (const Wedge& w : wedges) {
+            EdgeInd e = w.first;
+            const double z = corner(face_of(e), v);
+            for (std::uint32_t i = 0; i < w.count; ++i) {
+                CHECK(corner(face_of(e), v) == z);
+                e = cdt.rot_next(e);
+            }
+            sum += z;
+        }
+        CHECK(m.values[model_index[v]] == Approx(sum / double(wedges.size())));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("wedge bisectors", "[erd]") {
+    double dx = 0, dy = 0;
+    wedge_bisector({2, 0}, {0, 2}, &dx, &dy);
+    CHECK(dx == Approx(std::sqrt(0.5)));
+    CHECK(dy == Approx(std::sqrt(0.5)));
+    wedge_bisector({2, 0}, {-4, 0}, &dx, &dy);  // half plane y > 0
+    CHECK(dx == Approx(0).margin(1e-12));
+    CHECK(dy == Approx(1));
+    wedge_bisector({0, 2}, {2, 0}, &dx, &dy);  // three quarters, bisected away from the first
+    CHECK(dx == Approx(-std::sqrt(0.5)));
+    CHECK(dy == Approx(-std::sqrt(0.5)));
+}
+
+TEST_CASE("wedge values on a step image take the two intensities", "[erd]") {
+    // 16 x 16, columns 0..7 = 50, 8..15 = 200; the edge x = 7.5 is the vertical constraint
+    // X = 15 from the top to the bottom border, split by a vertex in the middle.
+    const Image im = step_image(16, 16, 8, 50, 200);
+    const Grid<double> phi = to_grid(im);
+    for (int rule : {1, 0}) {
+        Cdt cdt;
+        REQUIRE(cdt.reset(30, 30).ok());
+        VertInd top = 0, mid = 0, bottom = 0;
+        REQUIRE(cdt.insert_point({15, 0}, &top).ok());
+        REQUIRE(cdt.insert_point({15, 16}, &mid).ok());
+        REQUIRE(cdt.insert_point({15, 30}, &bottom).ok());
+        REQUIRE(cdt.insert_constraint(top, bottom).ok());
+        WedgeValueOptions wo;
+        wo.rule = rule;
+        ErdModel model(phi, wo);
+        model.assign_all(cdt);
+        for (VertInd v : {top, mid, bottom}) {
+            REQUIRE(model.wedge_count(v) == 2);
+            std::vector<Wedge> ws;
+            cdt.wedges(v, &ws);
+            std::vector<double> z;
+            for (const Wedge& w : ws) z.push_back(model.wedge_value(v, w.id));
+            std::sort(z.begin(), z.end());
+            CHECK(z[0] == Approx(50));
+            CHECK(z[1] == Approx(200));
+            CHECK(model.vertex_value(v) == Approx(125));
+        }
+        CHECK(model.wedge_count(0) == 1);
+        CHECK(model.vertex_value(0) == 50);
+        CHECK(model.vertex_value(1) == 200);
+
+        // The approximating function: each side flat, the mean on the constrained edge and at
+        // the multi-wedge vertices.
+        CHECK(model.evaluate(cdt, {4, 10}) == Approx(50));
+        CHECK(model.evaluate(cdt, {14, 7}) == Approx(50));
+        CHECK(model.evaluate(cdt, {16, 7}) == Approx(200));
+        CHECK(model.evaluate(cdt, {29, 29}) == Approx(200));
+        CHECK(model.evaluate(cdt, {15, 7}) == Approx(125));   // on the constrained edge
+        CHECK(model.evaluate(cdt, {15, 16}) == Approx(125));  // at the middle vertex
+        CHECK(model.evaluate(cdt, {0, 0}) == Approx(50));     // a single-wedge corner
+    }
+}
+
+TEST_CASE("approximating function on a hand-made mesh with a diagonal constraint", "[erd]") {
+    // 9 x 9 image: 100 above the anti-diagonal-free main diagonal (x > y), 20 below, 60 on it.
+    // Constraint from corner (0,0) to corner (16,16) (doubled): every corner vertex on it has two
+    // wedges, as in the .erd example of thesis Appendix A.4.2.
+    Image im(9, 9, 255);
+    for (int y = 0; y < 9; ++y)
+        for (int x = 0; x < 9; ++x) im.at(x, y) = x > y ? 100 : x < y ? 20 : 60;
+    const Grid<double> phi = to_grid(im);
+    Cdt cdt;
+    REQUIRE(cdt.reset(16, 16).ok());
+    REQUIRE(cdt.insert_constraint(0, 2).ok());
+    ErdModel model(phi, WedgeValueOptions{});
+    model.assign_all(cdt);
+    REQUIRE(model.wedge_count(0) == 2);
+    REQUIRE(model.wedge_count(2) == 2);
+    REQUIRE(model.wedge_count(1) == 1);
+    // The line search from (0,0) along the bisector of each side lands strictly inside a side:
+    // bilinear values there are between the side value and the diagonal's 60, closer to the side.
+    std::vector<Wedge> ws;
+    cdt.wedges(0, &ws);
+    std::vector<double> z;
+    for (const Wedge& w : ws) z.push_back(model.wedge_value(0, w.id));
+    std::sort(z.begin(), z.end());
+    CHECK(z[0] < 45);
+    CHECK(z[1] > 75);
+    // Face planes: corner 1 (top right, 100) and corner 3 (bottom left, 20) are single-wedge.
+    const double upper = model.evaluate(cdt, {12, 2});
+    const double lower = model.evaluate(cdt, {2, 12});
+    CHECK(upper > 75);
+    CHECK(lower < 45);
+    CHECK(model.evaluate(cdt, {8, 8}) == Approx(0.5 * (model.evaluate(cdt, {9, 7}) + model.evaluate(cdt, {7, 9})))
+                                             .margin(1.0));
+    // Exactly the mean of the two planes on the constraint.
+    const LatticePoint on{6, 6};
+    const Location loc = cdt.locate(on);
+    REQUIRE(loc.kind == Location::Kind::on_edge);
+    const double a = model.face_plane(cdt, face_of(loc.edge)).at(6, 6);
+    const double b = model.face_plane(cdt, face_of(cdt.twin(loc.edge))).at(6, 6);
+    CHECK(model.evaluate(cdt, on) == Approx(0.5 * (a + b)));
+    CHECK(std::abs(a - b) > 30);
+    Model m;
+    model.to_model(cdt, 9, 9, 255, &m);
+    check_model(m);
+}
+
+TEST_CASE("ERDGPI and ERDED on a synthetic scene: exact N, valid CDT, wedge-consistent values", "[erd]") {
+    const Image im = scene(64, 48);
+    for (const char* method : {"erdgpi", "erded"}) {
+        for (int n : {40, 150, 400}) {
+            INFO(method << " N=" << n);
+            GenerateOptions o;
+            o.points = n;
+            o.density_given = false;
+            GenerateResult r;
+            const Status st = std::string(method) == "erdgpi" ? generate_erdgpi(im, o, &r) : generate_erded(im, o, &r);
+            REQUIRE(st.ok());
+            CHECK(r.requested == std::size_t(n));
+            CHECK(r.achieved == std::size_t(n));
+            CHECK(r.model.size() == std::size_t(n));
+            CHECK_FALSE(r.model.constraints.empty());
+            check_model(r.model);
+        }
+    }
+}
+
+TEST_CASE("ERD methods are deterministic and honour -w, -B, -f", "[erd]") {
+    const Image im = scene(48, 40);
+    auto run = [&](const char* method, GenerateOptions o) {
+        GenerateResult r;
+        const Status st = std::string(method) == "erdgpi" ? generate_erdgpi(im, o, &r) : generate_erded(im, o, &r);
+        REQUIRE(st.ok());
+        return r.model;
+    };
+    auto same = [](const Model& a, const Model& b) {
+        return a.vertices == b.vertices && a.faces == b.faces && a.corner_values == b.corner_values &&
+               a.constraints == b.constraints;
+    };
+    GenerateOptions o;
+    o.points = 120;
+    for (const char* method : {"erdgpi", "erded"}) {
+        const Model a = run(method, o), b = run(method, o);
+        CHECK(same(a, b));
+    }
+    GenerateOptions w0 = o;
+    w0.wedge_rule = 0;
+    const Model fixed = run("erdgpi", w0);
+    check_model(fixed);
+    CHECK(fixed.size() == 120);
+    for (int startup : {0, 1, 2}) {
+        for (int sel : {1, 0}) {
+            GenerateOptions e = o;
+            e.startup = startup;
+            e.ed_select = sel;
+            const Model m = run("erded", e);
+            CHECK(m.size() == 120);
+            check_model(m);
+        }
+    }
+}
+
+TEST_CASE("step 1: forced parameters and tiny N keep the mesh within N", "[erd]") {
+    const Image im = scene(64, 48);
+    const Grid<double> phi = to_grid(im);
+    InitialMeshOptions mo;
+    mo.target = 8;  // far fewer than the polylines hold
+    mo.request.beta = 0.2;
+    mo.request.l = 2;
+    Cdt cdt;
+    InitialMesh mesh;
+    REQUIRE(build_initial_mesh(im, phi, mo, &cdt, &mesh).ok());
+    CHECK(mesh.params.beta == 0.2);
+    CHECK(mesh.params.l == 2);
+    CHECK(mesh.n0 <= 8);
+    CHECK(mesh.n0 == cdt.vertex_count());
+    CHECK(mesh.dropped_polylines > 0);
+    std::string why;
+    CHECK(cdt.verify(&why));
+}
