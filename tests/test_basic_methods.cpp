@@ -1,0 +1,245 @@
+// ED and GPI on small synthetic images: exact counts, valid Delaunay meshes, vertex values equal to
+// the samples, early stop on planar images, determinism. (CLI behaviour: test_basic_cli.cpp.)
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "algorithms/ed.h"
+#include "algorithms/gpi.h"
+#include "algorithms/greedy.h"
+#include "algorithms/methods.h"
+#include "kernel/cdt.h"
+
+using namespace erd;
+
+namespace {
+
+// A smooth bump, a vertical step and mild noise: nothing special about any pixel.
+Image synthetic(int w, int h, unsigned seed) {
+    Image im(w, h, 255);
+    std::mt19937 rng(seed);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            double v = 90.0 + 60.0 * std::sin(x / 5.0) * std::cos(y / 7.0) + (x > w / 2 ? 50.0 : 0.0) +
+                       double(rng() % 9) - 4.0;
+            im.at(x, y) = std::uint16_t(std::clamp(std::lround(v), 0L, 255L));
+        }
+    return im;
+}
+
+// The model must be THE Delaunay triangulation of its vertices (the kernel's tie rule makes it
+// unique): rebuild it from the points alone and compare canonical faces; verify() the rebuild.
+void require_delaunay(const Model& m) {
+    Cdt cdt;
+    REQUIRE(cdt.reset(2 * (m.width - 1), 2 * (m.height - 1)).ok());
+    std::vector<LatticePoint> pts;
+    for (LatticePoint p : m.vertices) {
+        bool corner = (p.x == 0 || p.x == 2 * (m.width - 1)) && (p.y == 0 || p.y == 2 * (m.height - 1));
+        if (!corner) pts.push_back(p);
+    }
+    std::vector<VertInd> ids;
+    REQUIRE(cdt.insert_points(pts, &ids).ok());
+    std::string why;
+    INFO(why);
+    REQUIRE(cdt.verify(&why));
+    REQUIRE(cdt.vertex_count() == m.vertices.size());
+    auto expected = canonical_faces(cdt);
+    std::vector<std::array<std::int32_t, 6>> got;
+    for (const auto& f : m.faces) {
+        std::array<LatticePoint, 3> q = {m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]};
+        // positive orientation as the model promises
+        std::int64_t o = orient2d(q[0], q[1], q[2]);
+        REQUIRE(o > 0);
+        int first = 0;
+        for (int i = 1; i < 3; ++i)
+            if (q[i].y < q[first].y || (q[i].y == q[first].y && q[i].x < q[first].x)) first = i;
+        std::array<std::int32_t, 6> c;
+        for (int i = 0; i < 3; ++i) {
+            c[2 * i] = q[(first + i) % 3].x;
+            c[2 * i + 1] = q[(first + i) % 3].y;
+        }
+        got.push_back(c);
+    }
+    std::sort(got.begin(), got.end());
+    REQUIRE(got == expected);
+}
+
+void require_samples_at_vertices(const Model& m, const Image& im) {
+    REQUIRE(m.values.size() == m.vertices.size());
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+        LatticePoint p = m.vertices[i];
+        REQUIRE(p.x % 2 == 0);
+        REQUIRE(p.y % 2 == 0);
+        REQUIRE(m.values[i] == double(im.at(p.x / 2, p.y / 2)));
+    }
+}
+
+GenerateOptions with_points(std::int64_t n) {
+    GenerateOptions o;
+    o.points = n;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("target points: density wins, rounds half away, default 3%", "[basic]") {
+    GenerateOptions o;
+    CHECK(target_points(o, 512, 512) == 7864);
+    o.points = 100;
+    CHECK(target_points(o, 512, 512) == 100);
+    o.density = 1.0;
+    o.density_given = true;
+    CHECK(target_points(o, 512, 512) == 2621);  // 2621.44
+    o.density = 0.125;
+    CHECK(target_points(o, 1024, 768) == 983);  // 983.04
+    CHECK(check_target(3, 10, 10).code == Code::input);
+    CHECK(check_target(101, 10, 10).code == Code::input);
+    CHECK(check_target(100, 10, 10).ok());
+}
+
+TEST_CASE("registry finds ed and gpi by name", "[basic]") {
+    REQUIRE(find_method("ed") != nullptr);
+    REQUIRE(find_method("gpi") != nullptr);
+    CHECK(find_method("nonesuch") == nullptr);
+    std::size_t n = 0;
+    const Method* m = methods(&n);
+    REQUIRE(n >= 2);
+    CHECK(std::string(m[0].name) == "ed");
+}
+
+TEST_CASE("GPI: exact N, Delaunay, sample values at vertices", "[basic]") {
+    Image im = synthetic(41, 29, 7);
+    for (std::int64_t n : {4, 5, 37, 120, 400}) {
+        GenerateResult r;
+        REQUIRE(generate_gpi(im, with_points(n), &r).ok());
+        CHECK(r.requested == std::size_t(n));
+        CHECK(r.achieved == std::size_t(n));
+        REQUIRE(r.model.size() == std::size_t(n));
+        CHECK(r.model.kind == ModelKind::basic);
+        require_delaunay(r.model);
+        require_samples_at_vertices(r.model, im);
+    }
+}
+
+TEST_CASE("GPI: more points never raise the final error", "[basic]") {
+    Image im = synthetic(33, 33, 3);
+    double prev = 1e300;
+    for (std::int64_t n : {10, 40, 160, 640}) {
+        BasicGreedyModel model(im);
+        Cdt cdt;
+        REQUIRE(cdt.reset(64, 64).ok());
+        GreedyOptions go;
+        go.target_vertices = std::size_t(n);
+        go.round_values = true;
+        GreedyStats gs;
+        REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+        CHECK(gs.stop == GreedyStop::target);
+        CHECK(gs.total_squared_error < prev);
+        prev = gs.total_squared_error;
+    }
+}
+
+TEST_CASE("GPI: a planar image stops early with zero error", "[basic]") {
+    Image im(30, 20, 255);
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < 30; ++x) im.at(x, y) = std::uint16_t(10 + 3 * x + 2 * y);  // exact plane
+    GenerateResult r;
+    REQUIRE(generate_gpi(im, with_points(50), &r).ok());
+    CHECK(r.achieved == 4);  // the corners already interpolate the plane everywhere
+    CHECK(r.requested == 50);
+
+    Image flat(16, 16, 255);
+    std::fill(flat.samples.begin(), flat.samples.end(), std::uint16_t(77));
+    REQUIRE(generate_gpi(flat, with_points(20), &r).ok());
+    CHECK(r.achieved == 4);
+}
+
+TEST_CASE("GPI: --psnr and --max-error stop rules", "[basic]") {
+    Image im = synthetic(40, 40, 11);
+    BasicGreedyModel model(im);
+    Cdt cdt;
+    REQUIRE(cdt.reset(78, 78).ok());
+    GreedyOptions go;
+    go.target_vertices = 1600;
+    go.psnr = 30.0;
+    go.round_values = true;
+    GreedyStats gs;
+    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    CHECK(gs.stop == GreedyStop::psnr);
+    CHECK(gs.psnr >= 30.0);
+    CHECK(cdt.vertex_count() < 1600);
+    // The incremental total equals a fresh scan: refine again to the same count without the rule.
+    GreedyOptions go2;
+    go2.target_vertices = cdt.vertex_count();
+    go2.round_values = true;
+    Cdt cdt2;
+    REQUIRE(cdt2.reset(78, 78).ok());
+    GreedyStats gs2;
+    REQUIRE(greedy_refine(cdt2, im, model, go2, &gs2).ok());
+    CHECK(gs2.total_squared_error == gs.total_squared_error);
+    CHECK(canonical_faces(cdt2) == canonical_faces(cdt));
+
+    Cdt cdt3;
+    REQUIRE(cdt3.reset(78, 78).ok());
+    GreedyOptions go3;
+    go3.target_vertices = 1600;
+    go3.max_error = 6.0;
+    go3.round_values = true;
+    GreedyStats gs3;
+    REQUIRE(greedy_refine(cdt3, im, model, go3, &gs3).ok());
+    CHECK(gs3.stop == GreedyStop::max_error);
+    CHECK(gs3.max_error <= 6.0);
+}
+
+TEST_CASE("GPI and ED are deterministic", "[basic]") {
+    Image im = synthetic(37, 23, 5);
+    for (const char* name : {"gpi", "ed"}) {
+        const Method* m = find_method(name);
+        REQUIRE(m);
+        GenerateResult a, b;
+        REQUIRE(m->run(im, with_points(60), &a).ok());
+        REQUIRE(m->run(im, with_points(60), &b).ok());
+        CHECK(a.model.vertices == b.model.vertices);
+        CHECK(a.model.faces == b.model.faces);
+        CHECK(a.model.values == b.model.values);
+    }
+}
+
+TEST_CASE("ED: exactly N points including the corners, Delaunay", "[basic]") {
+    Image im = synthetic(48, 36, 9);
+    for (std::int64_t n : {8, 30, 87, 200}) {
+        GenerateResult r;
+        REQUIRE(generate_ed(im, with_points(n), &r).ok());
+        INFO("N = " << n);
+        CHECK(r.achieved == std::size_t(n));
+        require_delaunay(r.model);
+        require_samples_at_vertices(r.model, im);
+        int corners = 0;
+        for (LatticePoint p : r.model.vertices)
+            if ((p.x == 0 || p.x == 94) && (p.y == 0 || p.y == 70)) ++corners;
+        CHECK(corners == 4);
+    }
+}
+
+TEST_CASE("ED on an all-zero image reports the shortfall instead of failing", "[basic]") {
+    // (A constant nonzero image still has density along its frame: zero extension.)
+    Image flat(20, 20, 255);
+    GenerateResult r;
+    REQUIRE(generate_ed(flat, with_points(30), &r).ok());
+    CHECK(r.requested == 30);
+    CHECK(r.achieved == 4);  // the density is zero everywhere: only the corners
+    require_delaunay(r.model);
+}
+
+TEST_CASE("methods refuse impossible targets and tiny images", "[basic]") {
+    Image im = synthetic(10, 10, 1);
+    GenerateResult r;
+    CHECK(generate_gpi(im, with_points(101), &r).code == Code::input);
+    CHECK(generate_ed(im, with_points(3), &r).code == Code::input);
+    Image line(1, 10, 255);
+    CHECK(generate_gpi(line, with_points(4), &r).code == Code::input);
+}
