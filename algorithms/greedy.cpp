@@ -87,7 +87,8 @@ public:
         }
         stats->stop = stop;
         stats->total_squared_error = total_;
-        stats->max_error = current_max();
+        stats->max_error = 0.0;
+        for (const FaceState& fs : faces_) stats->max_error = std::max(stats->max_error, fs.cand_error);
         stats->psnr = psnr();
         return Status::success();
     }

@@ -1,0 +1,204 @@
+// erd generate: mesh an image with one of the registered methods (algorithms/methods.h) and write
+// the model (.model for the basic model, .erd for the ERD model), optionally the triangulation
+// (-t) and the polylines (-p). The thesis's ywb, gpi, erd_ed and erd_gpi in one subcommand.
+//
+// Exit modes (-x, thesis A.5.1) when the method could not reach N points exactly:
+//   0: "ERROR: target sampling density not achieved exactly (requested N but got M)", exit 3, and
+//      nothing is written (the thesis's program exits at that point);
+//   1: the same line with "WARNING:" and the files are written, exit 0;  2: silent, exit 0.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "algorithms/methods.h"
+#include "algorithms/model_io.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/fileio.h"
+#include "cli/image_io.h"
+#include "cli/report.h"
+
+namespace erd::cli {
+
+namespace {
+
+const char* const kUsage =
+    "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
+    "[--max-error E] [--psnr P] [-q]";
+
+const std::vector<OptionSpec>& specs() {
+    static const std::vector<OptionSpec> s = {
+        {'m', "method", "NAME", "mesh-generation method (see the list below)"},
+        {'i', "input", "FILE", "input image, PGM or PNG (- = stdin)"},
+        {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
+        {'n', "points", "N", "number of sample points, corners included"},
+        {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
+        {'t', "triangulation", "FILE", "also write the triangulation (erd-triangulation 1)"},
+        {'p', "polylines", "FILE", "also write the polylines (erd-polylines 1; none for ed, gpi)"},
+        {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
+        {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E"},
+        {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
+        {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
+        {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
+        {'r', "ratio", "R", "ERD: tau_low / tau_high (default automatic: 0.4)"},
+        {'e', "epsilon", "E", "ERD: Douglas-Peucker tolerance (default automatic)"},
+        {'f', "select", "0|1", "ERDED: 1 error diffusion (default), 0 random points"},
+        {'w', "wedge-rule", "0|1", "ERD: wedge values by 1 MMSODD line search (default), 0 fixed distance"},
+        {'s', "wedge-order", "K", "ERD: binomial order of the wedge-value MMSODD (default 5)"},
+        {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
+        {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
+        {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
+        {'q', "quiet", nullptr, "no progress or timing lines"},
+        {'h', "help", nullptr, "this help"},
+    };
+    return s;
+}
+
+std::string method_list() {
+    std::size_t count = 0;
+    const Method* m = methods(&count);
+    std::string out;
+    for (std::size_t i = 0; i < count; ++i) out += std::string("  ") + m[i].name + "\t" + m[i].summary + "\n";
+    return out;
+}
+
+std::string method_names() {
+    std::size_t count = 0;
+    const Method* m = methods(&count);
+    std::string out;
+    for (std::size_t i = 0; i < count; ++i) out += (i ? ", " : "") + std::string(m[i].name);
+    return out;
+}
+
+std::string polylines_text(const std::vector<std::vector<LatticePoint>>& lines) {
+    std::string s = "erd-polylines 1\n" + std::to_string(lines.size()) + "\n";
+    for (const auto& line : lines) {
+        s += std::to_string(line.size());
+        for (LatticePoint p : line) s += " " + std::to_string(p.x) + " " + std::to_string(p.y);
+        s += "\n";
+    }
+    return s;
+}
+
+// Fills *o from the parsed flags; the first bad value sets *st.
+void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st) {
+    const double big = 1e300;
+    if (a.has("density")) {
+        o->density = a.real("density", 3.0, -big, big, st);
+        o->density_given = true;
+        if (st->ok() && !(o->density > 0.0))
+            *st = Status::bad_input("--density: " + a.str("density") + " is not a positive percentage");
+    }
+    if (a.has("points")) o->points = a.integer("points", 0, 1, (1LL << 40), st);
+    *exit_mode = int(a.integer("exit-mode", 0, 0, 2, st));
+    if (a.has("max-error")) o->max_error = a.real("max-error", -1.0, 0.0, big, st);
+    if (a.has("psnr")) {
+        o->psnr = a.real("psnr", 0.0, -big, big, st);
+        if (st->ok() && !(o->psnr > 0.0)) *st = Status::bad_input("--psnr: " + a.str("psnr") + " is not a positive dB value");
+    }
+    o->min_length = int(a.integer("min-length", -1, 1, 1 << 20, st));
+    if (a.has("beta")) o->beta = a.real("beta", -1.0, 1e-9, 1.0, st);
+    if (a.has("ratio")) o->ratio = a.real("ratio", -1.0, 1e-9, 1.0, st);
+    if (a.has("epsilon")) o->epsilon = a.real("epsilon", -1.0, 0.0, big, st);
+    o->ed_select = int(a.integer("select", 1, 0, 1, st));
+    o->wedge_rule = int(a.integer("wedge-rule", 1, 0, 1, st));
+    o->wedge_order = int(a.integer("wedge-order", 5, 1, 31, st));
+    if (st->ok() && o->wedge_order % 2 == 0)
+        *st = Status::bad_input("--wedge-order: " + a.str("wedge-order") + " is not an odd filter order");
+    o->startup = int(a.integer("startup", 0, 0, 2, st));
+    if (a.has("simple")) o->simple = int(a.integer("simple", -1, 0, 1 << 30, st));
+    if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));
+}
+
+}  // namespace
+
+int cmd_generate(int argc, char** argv) {
+    Reporter rep("generate");
+    Args a;
+    Status st = a.parse(argc, argv, 1, specs());
+    if (!st) return rep.usage(st.message, kUsage);
+    if (a.has("help")) {
+        std::printf("usage: %s\n\nMesh an image. N = round(D*W*H/100) with -d (default 3%%), or -n N.\n\n%s\nMethods:\n%s",
+                    kUsage, describe(specs()).c_str(), method_list().c_str());
+        return 0;
+    }
+    rep.set_quiet(a.has("quiet"));
+    if (!a.positional().empty()) return rep.usage("unexpected argument '" + a.positional()[0] + "'", kUsage);
+    if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")", kUsage);
+    const Method* method = find_method(a.str("method"));
+    if (!method)
+        return rep.usage("unknown method '" + a.str("method") + "'; available: " + method_names(), kUsage);
+    if (!a.has("input")) return rep.usage("-i IMAGE is required", kUsage);
+    if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)", kUsage);
+
+    GenerateOptions opt;
+    int exit_mode = 0;
+    parse_options(a, &opt, &exit_mode, &st);
+    if (!st) return rep.usage(st.message, kUsage);
+
+    const std::string in = a.str("input"), out = a.str("output");
+    const std::string tri = a.str("triangulation"), poly = a.str("polylines");
+    std::vector<std::string> outs = {out};
+    if (!tri.empty()) outs.push_back(tri);
+    if (!poly.empty()) outs.push_back(poly);
+    int to_stdout = 0;
+    for (std::size_t i = 0; i < outs.size(); ++i) {
+        if (outs[i].empty()) return rep.usage("empty output file name", kUsage);
+        if (outs[i] == "-") ++to_stdout;
+        st = refuse_overwrite(outs[i], {in});
+        if (!st) return rep.fail(st);
+        for (std::size_t j = 0; j < i; ++j) {
+            st = outs[i] == "-" ? Status::success() : refuse_overwrite(outs[i], {outs[j]});
+            if (!st) return rep.fail(Status::bad_input(outs[i] + ": named for two outputs"));
+        }
+    }
+    if (to_stdout > 1) return rep.usage("only one output can go to stdout", kUsage);
+
+    Image image;
+    std::string warning;
+    st = read_image(in, &image, &warning);
+    if (!st) return rep.fail(st);
+    rep.warn(warning);
+
+    // Same checks the methods make, here first so the message names the flags.
+    std::int64_t n = target_points(opt, image.width, image.height);
+    st = check_target(n, image.width, image.height);
+    if (!st) return rep.fail(Status::bad_input(in + ": " + st.message));
+
+    GenerateResult res;
+    st = method->run(image, opt, &res);
+    if (!st) return rep.fail(st.code == Code::input ? Status::bad_input(in + ": " + st.message) : st);
+    for (const StageTime& s : res.stages) {
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "%-22s %9.3f ms", s.name.c_str(), s.seconds * 1e3);
+        rep.note(buf);
+    }
+    for (const std::string& s : res.notes) rep.note(s);
+
+    if (res.achieved != res.requested && exit_mode != 2) {
+        std::fprintf(stderr, "%s: target sampling density not achieved exactly (requested %zu but got %zu)\n",
+                     exit_mode == 0 ? "ERROR" : "WARNING", res.requested, res.achieved);
+        if (exit_mode == 0) return int(Code::density);
+    }
+
+    std::string bytes;
+    st = write_model(res.model, &bytes);
+    if (!st) return rep.fail(st);
+    st = write_file_atomic(out, bytes);
+    if (!st) return rep.fail(st);
+    if (!tri.empty()) {
+        std::string tri_bytes;
+        st = write_triangulation(res.model, &tri_bytes);
+        if (!st) return rep.fail(st);
+        st = write_file_atomic(tri, tri_bytes);
+        if (!st) return rep.fail(st);
+    }
+    if (!poly.empty()) {
+        st = write_file_atomic(poly, polylines_text(res.polylines));
+        if (!st) return rep.fail(st);
+    }
+    return 0;
+}
+
+}  // namespace erd::cli
