@@ -1,0 +1,619 @@
+// Readers and writers of .model, .erd and -t files (formats in model_io.h).
+#include "algorithms/model_io.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "algorithms/image.h"
+#include "algorithms/model_topology.h"
+#include "kernel/predicates.h"
+
+namespace erd {
+namespace {
+
+// Values further from zero than this are refused: no approximating function of a 16-bit image
+// needs them, and they keep every plane computation far from overflow.
+constexpr double kMaxAbsValue = 1e9;
+// Largest doubled coordinate of an accepted image.
+constexpr std::int64_t kMaxDoubled = 2 * std::int64_t(kMaxImageSide) - 2;
+
+std::string show(std::string_view tok) {
+    std::string s;
+    for (char ch : tok.substr(0, 24)) {
+        const unsigned char u = static_cast<unsigned char>(ch);
+        if (u >= 32 && u < 127) {
+            s += ch;
+        } else {
+            static const char hex[] = "0123456789abcdef";
+            s += "\\x";
+            s += hex[u >> 4];
+            s += hex[u & 15];
+        }
+    }
+    if (tok.size() > 24) s += "...";
+    return s;
+}
+
+// Whitespace-separated tokens with '#' comments; tracks line numbers for messages.
+class Tokens {
+public:
+    explicit Tokens(const std::string& text) : s_(text) {}
+
+    // The next token, or false at the end of the text.
+    bool next(std::string_view* tok) {
+        skip();
+        if (pos_ >= s_.size()) return false;
+        line_ = cur_line_;
+        const std::size_t b = pos_;
+        while (pos_ < s_.size() && !space(s_[pos_]) && s_[pos_] != '#') ++pos_;
+        *tok = std::string_view(s_).substr(b, pos_ - b);
+        return true;
+    }
+    bool at_end() {
+        skip();
+        return pos_ >= s_.size();
+    }
+    std::size_t remaining() {
+        skip();
+        return s_.size() - pos_;
+    }
+    int line() const { return line_; }
+    std::string where() const { return "line " + std::to_string(line_) + ": "; }
+
+    // Unsigned integer in [lo, hi].
+    Status uint(const std::string& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
+        std::uint64_t x = 0;
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size()) {
+            if (r.ec == std::errc::result_out_of_range)
+                return Status::bad_input(where() + what + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
+            return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
+        }
+        if (x < lo || x > hi)
+            return Status::bad_input(where() + what + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
+                                     ".." + std::to_string(hi) + ")");
+        *v = x;
+        return Status::success();
+    }
+
+    // Signed integer (coordinates: a '-' gets "outside the image" rather than "junk").
+    Status sint(const std::string& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
+        std::int64_t x = 0;
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size()) {
+            if (r.ec == std::errc::result_out_of_range)
+                return Status::bad_input(where() + what + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
+            return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
+        }
+        if (x < lo || x > hi)
+            return Status::bad_input(where() + what + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
+                                     ".." + std::to_string(hi) + ")");
+        *v = x;
+        return Status::success();
+    }
+
+    // A finite real of moderate size.
+    Status real(const std::string& what, double* v) {
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
+        double x = 0.0;
+        const char* b = t.data();
+        if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
+        const auto r = std::from_chars(b, t.data() + t.size(), x);
+        if (t.empty() || r.ptr != t.data() + t.size() || r.ec == std::errc::invalid_argument)
+            return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
+        if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
+            return Status::bad_input(where() + what + " '" + show(t) + "' is not a finite number");
+        if (std::fabs(x) > kMaxAbsValue)
+            return Status::bad_input(where() + what + " " + show(t) + " out of range (|value| <= 1e9)");
+        *v = x;
+        return Status::success();
+    }
+
+private:
+    static bool space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+    void skip() {
+        while (pos_ < s_.size()) {
+            const char c = s_[pos_];
+            if (c == '\n') {
+                ++cur_line_;
+                ++pos_;
+            } else if (space(c)) {
+                ++pos_;
+            } else if (c == '#') {
+                while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+            } else {
+                break;
+            }
+        }
+    }
+    const std::string& s_;
+    std::size_t pos_ = 0;
+    int cur_line_ = 1;
+    int line_ = 1;
+};
+
+// A count of records of at least min_bytes bytes each (separator included) must fit in the rest
+// of the text: refuses absurd counts before anything is allocated.
+Status count(Tokens& tk, const std::string& what, std::uint64_t lo, std::uint64_t min_bytes, std::uint64_t* n) {
+    if (Status s = tk.uint(what, lo, std::uint64_t(1) << 40, n); !s) return s;
+    if (*n > 0 && *n * min_bytes > tk.remaining() + 1)
+        return Status::bad_input(tk.where() + what + " " + std::to_string(*n) + " is more than the rest of the file holds" +
+                                 (tk.remaining() == 0 ? " (file ends early)" : ""));
+    return Status::success();
+}
+
+std::string vname(std::size_t i) { return "vertex " + std::to_string(i); }
+std::string fname(std::size_t i) { return "face " + std::to_string(i); }
+
+// Faces: indices in range, three distinct vertices, nonzero area; orientation made positive
+// (with the ERD corner values, if any, swapped along).
+Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<std::array<std::uint32_t, 3>>* faces,
+                  std::vector<int>* lines) {
+    std::uint64_t nf = 0;
+    if (Status s = count(tk, "face count", 1, 6, &nf); !s) return s;
+    faces->resize(nf);
+    lines->resize(nf);
+    const std::uint64_t nv = pts.size();
+    for (std::uint64_t f = 0; f < nf; ++f) {
+        std::array<std::uint32_t, 3>& fc = (*faces)[f];
+        for (int k = 0; k < 3; ++k) {
+            std::uint64_t v = 0;
+            const std::string what = "vertex index " + std::to_string(k + 1) + " of " + fname(f);
+            if (Status s = tk.uint(what, 0, std::uint64_t(1) << 40, &v); !s) return s;
+            if (v >= nv)
+                return Status::bad_input(tk.where() + fname(f) + ": vertex index " + std::to_string(v) + " out of range (" +
+                                         std::to_string(nv) + " vertices)");
+            fc[std::size_t(k)] = std::uint32_t(v);
+        }
+        (*lines)[f] = tk.line();
+        if (fc[0] == fc[1] || fc[1] == fc[2] || fc[0] == fc[2])
+            return Status::bad_input(tk.where() + fname(f) + " repeats a vertex");
+        const std::int64_t o = orient2d(pts[fc[0]], pts[fc[1]], pts[fc[2]]);
+        if (o == 0) return Status::bad_input(tk.where() + fname(f) + " is degenerate (its vertices are collinear)");
+        if (o < 0) std::swap(fc[1], fc[2]);
+    }
+    // The same triangle twice.
+    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> sorted(nf);
+    for (std::size_t f = 0; f < nf; ++f) {
+        auto key = (*faces)[f];
+        std::sort(key.begin(), key.end());
+        sorted[f] = {key, std::uint32_t(f)};
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 1; i < sorted.size(); ++i)
+        if (sorted[i].first == sorted[i - 1].first)
+            return Status::bad_input("line " + std::to_string((*lines)[sorted[i].second]) + ": faces " +
+                                     std::to_string(sorted[i - 1].second) + " and " + std::to_string(sorted[i].second) +
+                                     " are the same triangle");
+    return Status::success();
+}
+
+// Distinct vertices; the domain [0, max] with its four corners as vertices; size limits.
+Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<int>& lines, bool need_even, int* w, int* h) {
+    std::vector<std::uint32_t> order(pts.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return pts[a].y != pts[b].y ? pts[a].y < pts[b].y : pts[a].x != pts[b].x ? pts[a].x < pts[b].x : a < b;
+    });
+    for (std::size_t i = 1; i < order.size(); ++i)
+        if (pts[order[i]] == pts[order[i - 1]])
+            return Status::bad_input("line " + std::to_string(lines[order[i]]) + ": vertices " + std::to_string(order[i - 1]) +
+                                     " and " + std::to_string(order[i]) + " coincide at (" + std::to_string(pts[order[i]].x) +
+                                     ", " + std::to_string(pts[order[i]].y) + ")");
+    std::int32_t mx = 0, my = 0;
+    for (const LatticePoint& p : pts) {
+        mx = std::max(mx, p.x);
+        my = std::max(my, p.y);
+    }
+    if (need_even && (mx % 2 != 0 || my % 2 != 0))
+        return Status::bad_input("the largest coordinates (" + std::to_string(mx) + ", " + std::to_string(my) +
+                                 ") are not even: the domain [0, 2W-2] x [0, 2H-2] must end on a pixel");
+    const LatticePoint corners[4] = {{0, 0}, {mx, 0}, {0, my}, {mx, my}};
+    for (const LatticePoint& c : corners) {
+        const auto it = std::lower_bound(order.begin(), order.end(), c, [&](std::uint32_t a, LatticePoint p) {
+            return pts[a].y != p.y ? pts[a].y < p.y : pts[a].x < p.x;
+        });
+        if (it == order.end() || pts[*it] != c)
+            return Status::bad_input("corner (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
+                                     ") of the image domain is not a vertex");
+    }
+    *w = mx / 2 + 1;
+    *h = my / 2 + 1;
+    if (std::int64_t(*w) * *h > kMaxImagePixels)
+        return Status::bad_input("image " + std::to_string(*w) + " x " + std::to_string(*h) + " is larger than the limit of " +
+                                 std::to_string(kMaxImagePixels) + " pixels");
+    return Status::success();
+}
+
+// Assigns the corner values of an ERD model from its wedge lines (see model_io.h).
+Status apply_wedges(Tokens& tk, Model* m) {
+    const std::size_t nv = m->vertices.size(), nf = m->faces.size();
+    std::uint64_t nw = 0;
+    if (Status s = count(tk, "wedge count", 0, 6, &nw); !s) return s;
+    m->corner_values.assign(nf, {0.0, 0.0, 0.0});
+    std::vector<std::uint8_t> set(3 * nf, 0);
+    std::vector<std::uint8_t> listed(nv, 0);
+    for (std::uint64_t i = 0; i < nw; ++i) {
+        const std::string what = " of wedge line " + std::to_string(i);
+        std::uint64_t v = 0, f = 0;
+        double z = 0.0;
+        if (Status s = tk.uint("vertex index" + what, 0, std::uint64_t(1) << 40, &v); !s) return s;
+        if (v >= nv)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": vertex index " + std::to_string(v) +
+                                     " out of range (" + std::to_string(nv) + " vertices)");
+        if (Status s = tk.uint("face index" + what, 0, std::uint64_t(1) << 40, &f); !s) return s;
+        if (f >= nf)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face index " + std::to_string(f) +
+                                     " out of range (" + std::to_string(nf) + " faces)");
+        if (Status s = tk.real("wedge value" + what, &z); !s) return s;
+        int k = -1;
+        for (int c = 0; c < 3; ++c)
+            if (m->faces[f][std::size_t(c)] == v) k = c;
+        if (k < 0)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face " + std::to_string(f) +
+                                     " is not incident on vertex " + std::to_string(v));
+        const std::size_t h = 3 * f + std::size_t(k);
+        if (set[h] && m->corner_values[f][std::size_t(k)] != z)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": conflicting values for vertex " +
+                                     std::to_string(v) + " in face " + std::to_string(f));
+        set[h] = 1;
+        listed[v] = 1;
+        m->corner_values[f][std::size_t(k)] = z;
+    }
+    if (!tk.at_end()) {
+        std::string_view t;
+        tk.next(&t);
+        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last wedge line (check the counts)");
+    }
+    ModelTopology topo;
+    if (Status s = build_topology(*m, &topo); !s)
+        return Status::bad_input("not a triangulation of the image domain: " + s.message);
+    std::vector<std::uint32_t> fan;
+    std::vector<int> known;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const std::uint32_t b = topo.corner_begin[v], e = topo.corner_begin[v + 1];
+        if (!listed[v]) {
+            for (std::uint32_t i = b; i < e; ++i) m->corner_values[topo.corners[i] / 3][topo.corners[i] % 3] = m->values[v];
+            continue;
+        }
+        bool complete = true;
+        for (std::uint32_t i = b; i < e; ++i) complete = complete && set[topo.corners[i]];
+        if (complete) continue;
+        // Propagate along the fan: a face takes the value of the nearest listed faces when both
+        // sides agree (or when only one side exists, at the open end of a border fan).
+        bool closed = false;
+        std::uint32_t missing = 0;
+        for (std::uint32_t i = b; i < e; ++i)
+            if (!set[topo.corners[i]]) missing = topo.corners[i] / 3;
+        const std::string undetermined = "the wedge of face " + std::to_string(missing) + " at vertex " + std::to_string(v) +
+                                         " is undetermined (give a wedge line for every face of a vertex with several wedges)";
+        if (!vertex_fan(topo, v, &fan, &closed)) return Status::bad_input(undetermined);
+        const int n = int(fan.size());
+        std::vector<double> val(std::size_t(n), 0.0);
+        for (int i = 0; i < n; ++i) val[std::size_t(i)] = m->corner_values[fan[std::size_t(i)] / 3][fan[std::size_t(i)] % 3];
+        for (int i = 0; i < n; ++i) {
+            const std::uint32_t c = fan[std::size_t(i)];
+            if (set[c]) continue;
+            int before = -1, after = -1;
+            for (int d = 1; d < n; ++d) {
+                const int j = i - d;
+                if (j < 0 && !closed) break;
+                const int jj = (j + n) % n;
+                if (set[fan[std::size_t(jj)]]) {
+                    before = jj;
+                    break;
+                }
+            }
+            for (int d = 1; d < n; ++d) {
+                const int j = i + d;
+                if (j >= n && !closed) break;
+                const int jj = j % n;
+                if (set[fan[std::size_t(jj)]]) {
+                    after = jj;
+                    break;
+                }
+            }
+            double z = 0.0;
+            if (before >= 0 && after >= 0 && val[std::size_t(before)] == val[std::size_t(after)]) z = val[std::size_t(before)];
+            else if (before >= 0 && after < 0) z = val[std::size_t(before)];
+            else if (after >= 0 && before < 0) z = val[std::size_t(after)];
+            else
+                return Status::bad_input("the wedge of face " + std::to_string(c / 3) + " at vertex " + std::to_string(v) +
+                                         " is undetermined (give a wedge line for every face of a vertex with several wedges)");
+            m->corner_values[c / 3][c % 3] = z;
+        }
+        for (int i = 0; i < n; ++i) set[fan[std::size_t(i)]] = 1;
+    }
+    // The vertex value of a vertex with wedge lines is the mean of its wedge values; the
+    // constraints are the edges across which values jump.
+    for (std::uint32_t v = 0; v < nv; ++v)
+        if (listed[v]) m->values[v] = vertex_wedges(*m, topo, v).mean;
+    m->constraints.clear();
+    for (std::uint32_t h = 0; h < topo.twin.size(); ++h)
+        if (topo.twin[h] != kNoHalfEdge && h < topo.twin[h] && is_discontinuity(*m, topo, h)) {
+            std::uint32_t a = m->faces[h / 3][h % 3], c = m->faces[h / 3][(h + 1) % 3];
+            if (a > c) std::swap(a, c);
+            m->constraints.push_back({a, c});
+        }
+    std::sort(m->constraints.begin(), m->constraints.end());
+    return Status::success();
+}
+
+void put_face(std::string* o, const std::array<std::uint32_t, 3>& f) {
+    *o += std::to_string(f[0]);
+    *o += ' ';
+    *o += std::to_string(f[1]);
+    *o += ' ';
+    *o += std::to_string(f[2]);
+    *o += '\n';
+}
+
+// Shared checks of the writers: indices, orientation, finite values.
+Status check_for_writing(const Model& m, bool values) {
+    const std::size_t nv = m.vertices.size();
+    if (values && m.values.size() != nv) return Status::failure("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices");
+    if (values && m.kind == ModelKind::erd && m.corner_values.size() != m.faces.size())
+        return Status::failure("ERD model has corner values for " + std::to_string(m.corner_values.size()) + " of " +
+                               std::to_string(m.faces.size()) + " faces");
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+        for (std::uint32_t v : m.faces[f])
+            if (v >= nv) return Status::failure(fname(f) + ": vertex index out of range");
+    if (values) {
+        for (double z : m.values)
+            if (!std::isfinite(z)) return Status::failure("model has a value that is not a finite number");
+        for (const auto& c : m.corner_values)
+            for (double z : c)
+                if (!std::isfinite(z)) return Status::failure("model has a wedge value that is not a finite number");
+    }
+    return Status::success();
+}
+
+}  // namespace
+
+std::string format_value(double v) {
+    if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e15) {
+        const long long i = static_cast<long long>(v);
+        return std::to_string(i);  // also turns -0 into 0
+    }
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+ModelFileKind model_kind_from_name(const std::string& name) {
+    const auto ends = [&](const char* ext) {
+        const std::string e(ext);
+        if (name.size() < e.size()) return false;
+        for (std::size_t i = 0; i < e.size(); ++i) {
+            char c = name[name.size() - e.size() + i];
+            if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+            if (c != e[i]) return false;
+        }
+        return true;
+    };
+    if (ends(".model")) return ModelFileKind::basic;
+    if (ends(".erd")) return ModelFileKind::erd;
+    if (ends(".tri")) return ModelFileKind::triangulation;
+    return ModelFileKind::unknown;
+}
+
+Status read_model(const std::string& text, ModelFileKind kind, Model* out) {
+    if (kind == ModelFileKind::triangulation) return read_triangulation(text, out);
+    Tokens tk(text);
+    if (tk.at_end()) return Status::bad_input("empty file");
+    Model m;
+    std::uint64_t maxval = 0, nv = 0;
+    if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    m.maxval = std::uint32_t(maxval);
+    if (Status s = count(tk, "vertex count", 4, 6, &nv); !s) return s;
+    m.vertices.resize(nv);
+    m.values.resize(nv);
+    std::vector<int> vlines(nv);
+    for (std::uint64_t i = 0; i < nv; ++i) {
+        std::int64_t x = 0, y = 0;
+        if (Status s = tk.sint("x coordinate of " + vname(i), 0, kMaxDoubled, &x); !s) return s;
+        if (Status s = tk.sint("y coordinate of " + vname(i), 0, kMaxDoubled, &y); !s) return s;
+        if (Status s = tk.real("value of " + vname(i), &m.values[i]); !s) return s;
+        m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
+        vlines[i] = tk.line();
+    }
+    std::vector<int> flines;
+    if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
+    if (kind == ModelFileKind::unknown) kind = tk.at_end() ? ModelFileKind::basic : ModelFileKind::erd;
+    if (kind == ModelFileKind::basic) {
+        m.kind = ModelKind::basic;
+        if (!tk.at_end()) {
+            std::string_view t;
+            tk.next(&t);
+            return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last face (check the counts)");
+        }
+        // Pixel coordinates in the file, doubled in the model.
+        for (std::size_t i = 0; i < nv; ++i) {
+            LatticePoint& p = m.vertices[i];
+            if (p.x > kMaxImageSide - 1 || p.y > kMaxImageSide - 1)
+                return Status::bad_input("line " + std::to_string(vlines[i]) + ": " + vname(i) + " (" + std::to_string(p.x) +
+                                         ", " + std::to_string(p.y) + ") outside the image (0.." +
+                                         std::to_string(kMaxImageSide - 1) + ")");
+            p = LatticePoint{2 * p.x, 2 * p.y};
+        }
+    } else {
+        m.kind = ModelKind::erd;
+    }
+    if (Status s = check_vertices(m.vertices, vlines, m.kind == ModelKind::erd, &m.width, &m.height); !s) return s;
+    if (m.kind == ModelKind::erd)
+        if (Status s = apply_wedges(tk, &m); !s) return s;
+    *out = std::move(m);
+    return Status::success();
+}
+
+Status write_model(const Model& m, std::string* out) {
+    if (Status s = check_for_writing(m, true); !s) return s;
+    const bool erd = m.kind == ModelKind::erd;
+    if (!erd)
+        for (const LatticePoint& p : m.vertices)
+            if (p.x % 2 != 0 || p.y % 2 != 0) return Status::failure("a basic model has a vertex off the pixel lattice");
+    std::string o;
+    o.reserve(m.vertices.size() * 16 + m.faces.size() * 18);
+    o += std::to_string(m.maxval) + "\n" + std::to_string(m.vertices.size()) + "\n";
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+        const LatticePoint p = m.vertices[i];
+        o += std::to_string(erd ? p.x : p.x / 2);
+        o += ' ';
+        o += std::to_string(erd ? p.y : p.y / 2);
+        o += ' ';
+        o += format_value(m.values[i]);
+        o += '\n';
+    }
+    // Positive orientation (corner values follow their vertices).
+    Model pos;
+    const Model* mm = &m;
+    bool flip = false;
+    for (const auto& f : m.faces) flip = flip || orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) < 0;
+    if (flip) {
+        pos = m;
+        for (std::size_t f = 0; f < pos.faces.size(); ++f)
+            if (orient2d(pos.vertices[pos.faces[f][0]], pos.vertices[pos.faces[f][1]], pos.vertices[pos.faces[f][2]]) < 0) {
+                std::swap(pos.faces[f][1], pos.faces[f][2]);
+                if (erd) std::swap(pos.corner_values[f][1], pos.corner_values[f][2]);
+            }
+        mm = &pos;
+    }
+    o += std::to_string(mm->faces.size()) + "\n";
+    for (const auto& f : mm->faces) put_face(&o, f);
+    if (erd) {
+        ModelTopology t;
+        if (Status s = build_topology(*mm, &t); !s) return Status::failure("cannot write the wedges: " + s.message);
+        std::vector<std::array<std::uint32_t, 2>> cons = mm->constraints;
+        for (auto& c : cons)
+            if (c[0] > c[1]) std::swap(c[0], c[1]);
+        std::sort(cons.begin(), cons.end());
+        const auto constrained = [&](std::uint32_t a, std::uint32_t b) {
+            std::array<std::uint32_t, 2> k{std::min(a, b), std::max(a, b)};
+            return std::binary_search(cons.begin(), cons.end(), k);
+        };
+        std::string lines;
+        std::size_t nw = 0;
+        for (std::uint32_t v = 0; v < mm->vertices.size(); ++v) {
+            const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1];
+            // Several wedges by the constraints, by the values, or a corner value that the
+            // vertex line alone would not give back: list every face.
+            int k = 0;
+            bool border = false, odd = false;
+            for (std::uint32_t i = b; i < e; ++i) {
+                const std::uint32_t c = t.corners[i];
+                if (t.twin[c] != kNoHalfEdge && constrained(v, mm->faces[c / 3][(c % 3 + 1) % 3])) ++k;
+                border = border || t.twin[c] == kNoHalfEdge || t.twin[ModelTopology::prev(c)] == kNoHalfEdge;
+                odd = odd || corner_value(*mm, c) != mm->values[v];
+            }
+            if (!(odd || k >= 2 || (k >= 1 && border) || vertex_wedges(*mm, t, v).count > 1)) continue;
+            for (std::uint32_t i = b; i < e; ++i) {
+                const std::uint32_t c = t.corners[i];
+                lines += std::to_string(v) + ' ' + std::to_string(c / 3) + ' ' + format_value(corner_value(*mm, c)) + '\n';
+                ++nw;
+            }
+        }
+        o += std::to_string(nw) + "\n" + lines;
+    }
+    *out = std::move(o);
+    return Status::success();
+}
+
+Status write_triangulation(const Model& m, std::string* out) {
+    if (Status s = check_for_writing(m, false); !s) return s;
+    std::string o = "erd-triangulation 1\n" + std::to_string(m.width) + " " + std::to_string(m.height) + "\n" +
+                    std::to_string(m.vertices.size()) + "\n";
+    for (const LatticePoint& p : m.vertices) o += std::to_string(p.x) + ' ' + std::to_string(p.y) + '\n';
+    o += std::to_string(m.faces.size()) + "\n";
+    for (auto f : m.faces) {
+        if (orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) < 0) std::swap(f[1], f[2]);
+        put_face(&o, f);
+    }
+    std::vector<std::array<std::uint32_t, 2>> cons = m.constraints;
+    for (auto& c : cons)
+        if (c[0] > c[1]) std::swap(c[0], c[1]);
+    std::sort(cons.begin(), cons.end());
+    o += std::to_string(cons.size()) + "\n";
+    for (const auto& c : cons) o += std::to_string(c[0]) + ' ' + std::to_string(c[1]) + '\n';
+    *out = std::move(o);
+    return Status::success();
+}
+
+Status read_triangulation(const std::string& text, Model* out) {
+    Tokens tk(text);
+    if (tk.at_end()) return Status::bad_input("empty file");
+    std::string_view t;
+    tk.next(&t);
+    if (t != "erd-triangulation")
+        return Status::bad_input(tk.where() + "not an erd triangulation file (expected 'erd-triangulation 1', found '" + show(t) + "')");
+    std::uint64_t version = 0, w = 0, h = 0, nv = 0, nc = 0;
+    if (Status s = tk.uint("format version", 1, 1, &version); !s) return s;
+    if (Status s = tk.uint("width", 2, kMaxImageSide, &w); !s) return s;
+    if (Status s = tk.uint("height", 2, kMaxImageSide, &h); !s) return s;
+    if (std::int64_t(w * h) > kMaxImagePixels)
+        return Status::bad_input(tk.where() + "image " + std::to_string(w) + " x " + std::to_string(h) + " is larger than the limit of " +
+                                 std::to_string(kMaxImagePixels) + " pixels");
+    Model m;
+    m.width = int(w);
+    m.height = int(h);
+    if (Status s = count(tk, "vertex count", 4, 4, &nv); !s) return s;
+    m.vertices.resize(nv);
+    std::vector<int> vlines(nv);
+    for (std::uint64_t i = 0; i < nv; ++i) {
+        std::int64_t x = 0, y = 0;
+        if (Status s = tk.sint("x coordinate of " + vname(i), 0, std::int64_t(2 * w - 2), &x); !s) return s;
+        if (Status s = tk.sint("y coordinate of " + vname(i), 0, std::int64_t(2 * h - 2), &y); !s) return s;
+        m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
+        vlines[i] = tk.line();
+    }
+    std::vector<int> flines;
+    if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
+    int cw = 0, ch = 0;
+    if (Status s = check_vertices(m.vertices, vlines, true, &cw, &ch); !s) return s;
+    if (cw != m.width || ch != m.height)
+        return Status::bad_input("the vertices span " + std::to_string(cw) + " x " + std::to_string(ch) + " pixels, not the " +
+                                 std::to_string(w) + " x " + std::to_string(h) + " of the header");
+    if (Status s = count(tk, "constraint count", 0, 4, &nc); !s) return s;
+    std::vector<std::uint64_t> edges;
+    edges.reserve(3 * m.faces.size());
+    for (const auto& f : m.faces)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
+            edges.push_back((std::min(a, b) << 32) | std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    m.constraints.resize(nc);
+    for (std::uint64_t i = 0; i < nc; ++i) {
+        std::uint64_t a = 0, b = 0;
+        const std::string what = " of constraint " + std::to_string(i);
+        if (Status s = tk.uint("first vertex index" + what, 0, std::uint64_t(1) << 40, &a); !s) return s;
+        if (Status s = tk.uint("second vertex index" + what, 0, std::uint64_t(1) << 40, &b); !s) return s;
+        if (a >= nv || b >= nv)
+            return Status::bad_input(tk.where() + "constraint " + std::to_string(i) + ": vertex index out of range (" +
+                                     std::to_string(nv) + " vertices)");
+        if (a > b) std::swap(a, b);
+        if (!std::binary_search(edges.begin(), edges.end(), (a << 32) | b))
+            return Status::bad_input(tk.where() + "constraint " + std::to_string(i) + " (" + std::to_string(a) + ", " +
+                                     std::to_string(b) + ") is not an edge of any face");
+        m.constraints[i] = {std::uint32_t(a), std::uint32_t(b)};
+    }
+    if (!tk.at_end()) {
+        tk.next(&t);
+        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last constraint (check the counts)");
+    }
+    std::sort(m.constraints.begin(), m.constraints.end());
+    m.kind = ModelKind::basic;
+    *out = std::move(m);
+    return Status::success();
+}
+
+}  // namespace erd

@@ -1,0 +1,138 @@
+// Adjacency of a Model from its face list (see model_topology.h).
+#include "algorithms/model_topology.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace erd {
+namespace {
+
+std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) { return (std::uint64_t(u) << 32) | v; }
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+}  // namespace
+
+Status build_topology(const Model& m, ModelTopology* t) {
+    const std::size_t nv = m.vertices.size(), nf = m.faces.size();
+    if (nf > (std::size_t(kNoHalfEdge) - 3) / 3) return Status::bad_input("too many faces");
+    for (std::size_t f = 0; f < nf; ++f)
+        for (std::uint32_t v : m.faces[f])
+            if (v >= nv)
+                return Status::bad_input("face " + std::to_string(f) + ": vertex index " + std::to_string(v) +
+                                         " out of range");
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(3 * nf);
+    for (std::size_t f = 0; f < nf; ++f)
+        for (std::size_t k = 0; k < 3; ++k)
+            keys[3 * f + k] = {edge_key(m.faces[f][k], m.faces[f][(k + 1) % 3]), std::uint32_t(3 * f + k)};
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+        if (keys[i].first == keys[i - 1].first) {
+            const std::uint32_t f = keys[i - 1].second / 3, g = keys[i].second / 3;
+            return Status::bad_input("faces " + std::to_string(f) + " and " + std::to_string(g) +
+                                     " overlap (both contain the edge " + std::to_string(keys[i].first >> 32) +
+                                     "->" + std::to_string(keys[i].first & 0xffffffffu) + ")");
+        }
+    t->twin.assign(3 * nf, kNoHalfEdge);
+    for (std::size_t h = 0; h < 3 * nf; ++h) {
+        const std::uint32_t u = m.faces[h / 3][h % 3], v = m.faces[h / 3][(h + 1) % 3];
+        const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(edge_key(v, u), std::uint32_t(0)));
+        if (it != keys.end() && it->first == edge_key(v, u)) t->twin[h] = it->second;
+    }
+    t->corner_begin.assign(nv + 1, 0);
+    for (const auto& f : m.faces)
+        for (std::uint32_t v : f) ++t->corner_begin[v + 1];
+    for (std::size_t v = 0; v < nv; ++v) t->corner_begin[v + 1] += t->corner_begin[v];
+    t->corners.assign(3 * nf, 0);
+    std::vector<std::uint32_t> fill(t->corner_begin.begin(), t->corner_begin.end() - 1);
+    for (std::size_t h = 0; h < 3 * nf; ++h) t->corners[fill[m.faces[h / 3][h % 3]]++] = std::uint32_t(h);
+    return Status::success();
+}
+
+double corner_value(const Model& m, std::uint32_t h) {
+    const std::size_t f = h / 3, k = h % 3;
+    if (m.kind == ModelKind::erd && f < m.corner_values.size()) return m.corner_values[f][k];
+    return m.values[m.faces[f][k]];
+}
+
+bool is_discontinuity(const Model& m, const ModelTopology& t, std::uint32_t h) {
+    if (m.kind != ModelKind::erd) return false;
+    const std::uint32_t o = t.twin[h];
+    if (o == kNoHalfEdge) return false;
+    // h runs u->w in one face, o runs w->u in the other.
+    return corner_value(m, h) != corner_value(m, ModelTopology::next(o)) ||
+           corner_value(m, ModelTopology::next(h)) != corner_value(m, o);
+}
+
+VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t v) {
+    const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1];
+    if (b == e) return {0, m.values[v]};
+    const double first = corner_value(m, t.corners[b]);
+    bool uniform = true;
+    for (std::uint32_t i = b + 1; i < e && uniform; ++i) uniform = corner_value(m, t.corners[i]) == first;
+    if (uniform) return {1, first};
+    // Runs of faces joined across edges that are not discontinuities (corners are sorted, so
+    // the neighbour's local index is found by binary search).
+    const std::uint32_t n = e - b;
+    std::vector<std::uint32_t> parent(n);
+    for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+    const auto first_c = t.corners.begin() + b, last_c = t.corners.begin() + e;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t c = t.corners[b + i];
+        if (t.twin[c] == kNoHalfEdge || is_discontinuity(m, t, c)) continue;
+        const std::uint32_t nb = ModelTopology::next(t.twin[c]);
+        const auto it = std::lower_bound(first_c, last_c, nb);
+        if (it == last_c || *it != nb) continue;
+        const std::uint32_t a = find_root(parent, i), r = find_root(parent, std::uint32_t(it - first_c));
+        if (a != r) parent[a] = r;
+    }
+    VertexWedges w;
+    double sum = 0.0;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (find_root(parent, i) == i) {
+            ++w.count;
+            sum += corner_value(m, t.corners[b + i]);
+        }
+    w.mean = sum / w.count;
+    return w;
+}
+
+Status vertex_fan(const ModelTopology& t, std::uint32_t v, std::vector<std::uint32_t>* fan, bool* closed) {
+    fan->clear();
+    const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1], n = e - b;
+    *closed = false;
+    if (n == 0) return Status::success();
+    const auto back = [&](std::uint32_t c) { return t.twin[ModelTopology::prev(c)]; };
+    const auto fwd = [&](std::uint32_t c) {
+        return t.twin[c] == kNoHalfEdge ? kNoHalfEdge : ModelTopology::next(t.twin[c]);
+    };
+    const std::uint32_t start = t.corners[b];
+    std::uint32_t first = start;
+    for (std::uint32_t steps = 0; steps <= n; ++steps) {
+        const std::uint32_t p = back(first);
+        if (p == kNoHalfEdge) break;
+        if (p == start) {
+            *closed = true;
+            break;
+        }
+        first = p;
+    }
+    std::uint32_t c = first;
+    for (std::uint32_t steps = 0; steps < n && c != kNoHalfEdge; ++steps) {
+        fan->push_back(c);
+        c = fwd(c);
+        if (c == first) break;
+    }
+    if (fan->size() != n || (*closed) != (c == first))
+        return Status::bad_input("the faces around vertex " + std::to_string(v) + " do not form a single fan");
+    return Status::success();
+}
+
+}  // namespace erd
