@@ -125,7 +125,7 @@ install: $(BUILD)/erd $(BUILD)/liberd.a
 	  '#pragma once' '#include "algorithms/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
 	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
 	  'Name: erd' 'Description: image meshes with explicit discontinuities (ERD model): mesh generation, reconstruction, PSNR' \
-	  'Version: $(ERD_PC_VERSION)' 'Cflags: -I$${includedir}/erd' 'Libs: -L$${libdir} -lerd' \
+	  'Version: $(ERD_PC_VERSION)' 'Cflags: -I$${includedir}/erd -I$${includedir}' 'Libs: -L$${libdir} -lerd' \
 	  > $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc
 	install -m 644 docs/erd.1 $(DESTDIR)$(MANDIR)/man1/erd.1
 

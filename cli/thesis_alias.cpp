@@ -16,7 +16,10 @@
 //
 // The thesis's flag texts say "if the value is 1 ... otherwise ..." for -f and -w and "0 simple,
 // otherwise non-simple" for -S, so any other integer is mapped onto the erd subcommand's 0/1.
-// When -d is given -n is dropped (the thesis: "$num is ignored").
+// When -d is given -n is dropped (the thesis: "$num is ignored"). Stage timings are silenced
+// (-q); without -i the image comes from standard input, without -o the model goes to standard
+// output. Error lines are those of the erd subcommand ("erd generate: FILE: problem"), except
+// usage errors against the thesis's flag lists, which name the program ("ywb: unknown option -l").
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -115,7 +118,11 @@ int run_generate(const Program& p, int argc, char** argv) {
     bool given[128] = {};
     if (int rc = parse_flags(p, argc, argv, values, given)) return rc;
 
-    std::vector<std::string> out = {"generate", "--method", p.method};
+    // -q: the thesis's programs print the -x lines and errors only, no stage timings. Without -i
+    // or -o they read standard input or write standard output (erd generate needs both named).
+    std::vector<std::string> out = {"generate", "--method", p.method, "-q"};
+    if (!given['i']) out.insert(out.end(), {"-i", "-"});
+    if (!given['o']) out.insert(out.end(), {"-o", "-"});
     for (const char* f = p.flags; *f; ++f) {
         const unsigned char c = static_cast<unsigned char>(*f);
         const std::string letter(1, *f);
