@@ -226,6 +226,7 @@ private:
     ChangeReport changes_;
     std::vector<std::uint32_t> stamp_;  // per face: change_id_ when last touched
     std::uint32_t change_id_ = 0;
+    bool batch_ = false;  // inside insert_points: touch() only stamps
     mutable FaceInd last_face_ = 0;
     mutable std::uint32_t rng_ = 0x9E3779B9u;  // walk randomisation only; never affects results
     // Scratch buffers reused across calls.

@@ -66,16 +66,12 @@ inline __int128 incircle(LatticePoint a, LatticePoint b, LatticePoint c, Lattice
 // The tie-breaking order: (Y, X) lexicographic. Smaller means "perturbed more".
 inline bool perturb_before(LatticePoint p, LatticePoint q) { return p.y != q.y ? p.y < q.y : p.x < q.x; }
 
-// Sign (+1 inside, -1 outside) of the in-circle test under the symbolic perturbation described
-// above; never 0 for four distinct points with orient2d(a,b,c) != 0. The lifted determinant is
-// linear in each lift, so its eps-term is
+// The tie case of incircle_perturbed (det == 0), kept out of line so the fast path stays small.
+// The lifted determinant is linear in each lift, so its eps-term is
 //   d_a*O(b,c,d) - d_b*O(a,c,d) + d_c*O(a,b,d) - d_d*O(a,b,c)
 // and the term of the point that comes first in (Y, X) order dominates. Four distinct cocircular
 // points never have three collinear, so that term is non-zero.
-inline int incircle_perturbed(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
-    const __int128 det = incircle(a, b, c, d);
-    if (det > 0) return 1;
-    if (det < 0) return -1;
+__attribute__((noinline)) inline int incircle_tie(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
     LatticePoint m = a;
     int which = 0;
     if (perturb_before(b, m)) { m = b; which = 1; }
@@ -89,6 +85,15 @@ inline int incircle_perturbed(LatticePoint a, LatticePoint b, LatticePoint c, La
         default: term = -orient2d(a, b, c); break;
     }
     return (term > 0) - (term < 0);
+}
+
+// Sign (+1 inside, -1 outside) of the in-circle test under the symbolic perturbation described
+// at the top; never 0 for four distinct points with orient2d(a,b,c) != 0.
+inline int incircle_perturbed(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
+    const __int128 det = incircle(a, b, c, d);
+    if (det > 0) return 1;
+    if (det < 0) return -1;
+    return incircle_tie(a, b, c, d);
 }
 
 }  // namespace erd
