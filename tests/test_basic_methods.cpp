@@ -12,6 +12,8 @@
 #include "algorithms/gpi.h"
 #include "algorithms/greedy.h"
 #include "algorithms/methods.h"
+#include "algorithms/metrics.h"
+#include "algorithms/reconstruct.h"
 #include "kernel/cdt.h"
 
 using namespace erd;
@@ -68,8 +70,14 @@ void require_delaunay(const Model& m) {
     REQUIRE(got == expected);
 }
 
+// Vertex values are the samples, and imgsyn (point reconstruction) gives them back exactly.
 void require_samples_at_vertices(const Model& m, const Image& im) {
     REQUIRE(m.values.size() == m.vertices.size());
+    Image rec;
+    REQUIRE(reconstruct(m, false, &rec).ok());
+    REQUIRE(rec.width == im.width);
+    REQUIRE(rec.height == im.height);
+    for (LatticePoint p : m.vertices) REQUIRE(rec.at(p.x / 2, p.y / 2) == im.at(p.x / 2, p.y / 2));
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {
         LatticePoint p = m.vertices[i];
         REQUIRE(p.x % 2 == 0);
@@ -171,6 +179,13 @@ TEST_CASE("GPI: --psnr and --max-error stop rules", "[basic]") {
     REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
     CHECK(gs.stop == GreedyStop::psnr);
     CHECK(gs.psnr >= 30.0);
+    {
+        // With rounded values the running total is exact: it is the imgsyn reconstruction's.
+        Model m = basic_model(cdt, im);
+        Image rec;
+        REQUIRE(reconstruct(m, false, &rec).ok());
+        CHECK(mse(im, rec) * double(im.pixels()) == gs.total_squared_error);
+    }
     CHECK(cdt.vertex_count() < 1600);
     // The incremental total equals a fresh scan: refine again to the same count without the rule.
     GreedyOptions go2;
