@@ -55,6 +55,22 @@ std::string show(const unsigned char* data, std::size_t size, std::size_t i, std
     return s;
 }
 
+// stb's reasons may quote raw bytes (an unknown chunk's name): keep messages one printable line.
+std::string printable(const std::string& why) {
+    std::string out;
+    for (unsigned char c : why) {
+        if (c >= 0x20 && c < 0x7f) {
+            out += char(c);
+        } else {
+            static const char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    return out;
+}
+
 std::string at(long long x, long long y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
 
 // Why a file that is not PGM is not: the formats people most often pass by mistake, named.
@@ -305,7 +321,7 @@ Status decode_png(const unsigned char* data, std::size_t size, Image* out, std::
         if (s) s = check_side("PNG height", be32(20), limits);
         if (!s) return s;
     }
-    if (!stb::png_info(data, size, &w, &h, &ch, &is16, &why)) return Status::bad_input("PNG rejected by the decoder: " + why);
+    if (!stb::png_info(data, size, &w, &h, &ch, &is16, &why)) return Status::bad_input("PNG rejected by the decoder: " + printable(why));
     if (w <= 0 || h <= 0) return Status::bad_input("PNG: width or height is 0");
     Status s = check_side("PNG width", std::uint64_t(w), limits);
     if (!s) return s;
@@ -325,7 +341,7 @@ Status decode_png(const unsigned char* data, std::size_t size, Image* out, std::
     // Room for the compressed stream, the inflated rows and the output, with slack for stb's growth.
     const std::size_t budget = std::size_t(3 * raw + 2 * pixels * bytes_per + 4 * std::uint64_t(size) + (1u << 20));
     stb::PngImage png;
-    if (!stb::png_decode(data, size, budget, &png, &why)) return Status::bad_input("PNG rejected by the decoder: " + why);
+    if (!stb::png_decode(data, size, budget, &png, &why)) return Status::bad_input("PNG rejected by the decoder: " + printable(why));
     Image im;
     im.width = png.width;
     im.height = png.height;

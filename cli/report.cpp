@@ -59,6 +59,10 @@ std::string json_string(const std::string& s) {
 std::string json_number(double v) {
     if (!std::isfinite(v)) return "null";
     char buf[40];
+    if (v == std::floor(v) && std::fabs(v) < 1e15) {
+        std::snprintf(buf, sizeof buf, "%.0f", v);  // integers without an exponent
+        return buf;
+    }
     // The shortest precision that reads back to the same double.
     for (int prec = 1; prec <= 17; ++prec) {
         std::snprintf(buf, sizeof buf, "%.*g", prec, v);

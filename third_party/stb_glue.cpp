@@ -37,6 +37,16 @@ void* budget_realloc(void* p, std::size_t n) {
 }
 }  // namespace
 
+// stb copies zero bytes from or to a null buffer when a PNG has an empty IDAT chunk
+// (memcpy(NULL, p, 0): undefined behaviour that UBSan reports; found by fuzz_png,
+// regression seed fuzz/corpus/fuzz_png/regress_empty_idat). Route its memcpy through a
+// version that does nothing for zero bytes.
+static inline void* stb_safe_memcpy(void* dst, const void* src, std::size_t n) {
+    return n == 0 ? dst : std::memcpy(dst, src, n);
+}
+#include <string.h>
+#define memcpy(d, s, n) stb_safe_memcpy(d, s, n)
+
 #define STBI_ONLY_PNG
 #define STBI_NO_STDIO
 #define STBI_NO_LINEAR
@@ -64,6 +74,7 @@ void* budget_realloc(void* p, std::size_t n) {
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
+#undef memcpy
 
 namespace erd::stb {
 

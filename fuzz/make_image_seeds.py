@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""Writes the small seed corpora of fuzz_pgm and fuzz_png (committed; rerun to regenerate).
+
+Usage: python3 fuzz/make_image_seeds.py   (from the repository root)
+"""
+import os
+import struct
+import zlib
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+
+
+def put(target, name, data):
+    d = os.path.join(ROOT, target)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data)
+
+
+def pgm_seeds():
+    raster = bytes((x * 37 + 11) % 256 for x in range(12))
+    put("fuzz_pgm", "p5_8bit", b"P5\n4 3\n255\n" + raster)
+    put("fuzz_pgm", "p5_16bit", b"P5\n2 2\n1000\n" + struct.pack(">4H", 0, 999, 1000, 512))
+    put("fuzz_pgm", "p2_8bit", b"P2\n# a comment\n3 2\n15\n0 5 10\n15 1 2\n")
+    put("fuzz_pgm", "p2_16bit", b"P2 2 1 65535 65535 0\n")
+    put("fuzz_pgm", "comment_after_magic", b"P5#c\n2 1 255\n\x05\x06")
+    put("fuzz_pgm", "crlf", b"P5\r\n2 1\r\n255\r\n\x05\x06")
+    put("fuzz_pgm", "vt_ff_zeros", b"P5\x0b002\x0c01 0255\n\x05\x06")
+    put("fuzz_pgm", "two_images", b"P5 1 1 255\n\x07P5 1 1 255\n\x08")
+    put("fuzz_pgm", "truncated", b"P5\n4 4 255\nabc")
+    put("fuzz_pgm", "maxval_small", b"P5 2 2 3\n\x00\x01\x02\x03")
+    put("fuzz_pgm", "ppm", b"P6\n1 1 255\nabc")
+
+
+def png(w, h, depth, ctype, rows, plte=b"", trns=b"", interlace=0):
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+
+    raw = b"".join(b"\x00" + r for r in rows)
+    out = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, depth, ctype, 0, 0, interlace))
+    if plte:
+        out += chunk(b"PLTE", plte)
+    if trns:
+        out += chunk(b"tRNS", trns)
+    return out + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
+
+
+def png_seeds():
+    put("fuzz_png", "gray8", png(4, 3, 8, 0, [bytes([x * 60 + y for x in range(4)]) for y in range(3)]))
+    put("fuzz_png", "gray16", png(2, 2, 16, 0, [struct.pack(">2H", 0, 65535), struct.pack(">2H", 1000, 7)]))
+    put("fuzz_png", "gray1", png(8, 2, 1, 0, [b"\xa5", b"\x5a"]))
+    put("fuzz_png", "gray4", png(4, 1, 4, 0, [b"\x0f\x84"]))
+    put("fuzz_png", "rgb8", png(2, 2, 8, 2, [b"\xff\x00\x00\x00\xff\x00", b"\x00\x00\xff\x10\x20\x30"]))
+    put("fuzz_png", "rgb16", png(1, 1, 16, 2, [struct.pack(">3H", 65535, 1, 300)]))
+    put("fuzz_png", "ga8", png(2, 1, 8, 4, [b"\x10\x00\x20\xff"]))
+    put("fuzz_png", "rgba8", png(1, 2, 8, 6, [b"\x01\x02\x03\x04", b"\xff\xff\xff\x00"]))
+    put("fuzz_png", "palette", png(3, 1, 8, 3, [b"\x00\x01\x02"], plte=b"\x00\x00\x00\x40\x40\x40\xff\x00\x00", trns=b"\x00\xff"))
+    put("fuzz_png", "palette2", png(4, 1, 2, 3, [b"\x1b"], plte=b"\x00\x00\x00\x55\x55\x55\xaa\xaa\xaa\xff\xff\xff"))
+    # Adam7 with a 1x1 image: only pass 1 holds a pixel, so the raster is one filtered row.
+    put("fuzz_png", "interlaced", png(1, 1, 8, 0, [b"\x80"], interlace=1))
+    rows = [b"\x05\x01\x01", b"\x01\x01\x01"]
+    raw = b"\x01" + rows[0] + b"\x02" + rows[1]  # Sub and Up filters
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    put("fuzz_png", "filters", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 3, 2, 8, 0, 0, 0, 0))
+        + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+if __name__ == "__main__":
+    pgm_seeds()
+    png_seeds()
