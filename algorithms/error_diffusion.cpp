@@ -93,33 +93,55 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
         return c;
     };
 
-    // The count is a noisy function of rho: it follows sum / (2 rho) closely, but below relative
-    // changes of about 1/K it jumps chaotically by several points either way (lena, K = 2621,
-    // mirror: 2607 .. 2638 for rho in [2.80, 2.83], neighbouring values 1e-4 apart differing by
-    // up to 8). Bisection therefore closes onto one jump that straddles K and stalls. Instead:
-    // step with the model until the count is near K, then sample rho around the model's estimate
-    // A / K (A = mean of count * rho over the near passes) on a golden-ratio sequence of relative
-    // offsets within +-3/K, where the trend stays within a few points of K and the jitter hits K
-    // often (a few passes on the thesis images).
+    // The count is a noisy function of rho: it falls roughly like sum / (2 rho) (much faster on
+    // small images, where error leaves through the border), but below relative changes of about
+    // 1/K it jumps chaotically by several points either way (bull, K = 7864: 7828 .. 7889 for rho
+    // in [0.826, 0.832], neighbours 1e-4 apart differing by up to 11). Plain bisection closes onto
+    // one jump across K and stalls. So: keep the bracket lo (largest rho seen with too many
+    // points) / hi (smallest with too few) and interpolate in 1/rho while it is wider than the
+    // jitter; inside the jitter, fit count = a + b / rho by least squares to the passes near K and
+    // sample rho on a golden-ratio sequence within +-2/K (relative) of where the fit gives K.
     const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-    const double band = std::max(4.0, 0.002 * k);  // "near": within the jitter of the count
-    const double spread = std::min(0.25, 3.0 / k);
+    const double near_band = std::max(8.0, 0.01 * k);
+    const double spread = std::min(0.25, 2.0 / k);
     double rho = sum / (2.0 * k);
-    double a_sum = 0;
-    int near = 0;
-    while (result->passes < params.max_passes) {
+    double lo = 0, hi = 0;
+    std::size_t c_lo = 0, c_hi = 0;
+    bool have_lo = false, have_hi = false;
+    double s1 = 0, su = 0, sc = 0, suu = 0, suc = 0;  // sums over near passes, u = 1 / rho
+    for (int j = 1; result->passes < params.max_passes; ++j) {
         const std::size_t c = evaluate(rho);
         if (c == count) break;
-        if (c == 0) { rho *= 0.5; continue; }
-        const double a = double(c) * rho;
-        if (std::fabs(double(c) - k) > band) {
-            rho = a / k;  // far: trust the model outright
-            continue;
+        if (c > count && (!have_lo || rho > lo)) { lo = rho; c_lo = c; have_lo = true; }
+        if (c < count && (!have_hi || rho < hi)) { hi = rho; c_hi = c; have_hi = true; }
+        if (std::fabs(double(c) - k) <= near_band) {
+            const double uu = 1.0 / rho;
+            s1 += 1; su += uu; sc += double(c); suu += uu * uu; suc += uu * double(c);
         }
-        a_sum += a;
-        ++near;
-        const double u = double(near) * golden;
-        rho = a_sum / double(near) / k * (1.0 + spread * (2.0 * (u - std::floor(u)) - 1.0));
+        const double g = double(j) * golden - std::floor(double(j) * golden);
+        const bool wide = have_lo && have_hi && lo < hi && (hi - lo) > lo * 4.0 * spread;
+        double next = 0;
+        if (wide) {
+            const double ulo = 1.0 / lo, uhi = 1.0 / hi;
+            next = 1.0 / (ulo + (double(c_lo) - k) * (uhi - ulo) / (double(c_lo) - double(c_hi)));
+            const double margin = (hi - lo) * 1e-3;
+            if (!(next > lo + margin && next < hi - margin)) next = lo + (0.25 + 0.5 * g) * (hi - lo);
+        } else if (s1 >= 1) {
+            // Fit through the near passes (the slope alone through their centroid when they are
+            // too few or too clustered to fix it).
+            const double det = s1 * suu - su * su;
+            double b = det > 1e-12 * s1 * suu ? (s1 * suc - su * sc) / det : 0;
+            if (!(b > 0)) b = sc / su;  // count proportional to 1 / rho
+            const double a = (sc - b * su) / s1;
+            const double u_at_k = (k - a) / b;
+            const double center = u_at_k > 0 ? 1.0 / u_at_k : rho;
+            next = center * (1.0 + spread * (2.0 * g - 1.0));
+        } else if (c > 0) {
+            next = rho * double(c) / k;
+        } else {
+            next = have_lo ? std::sqrt(lo * rho) : rho * 0.5;
+        }
+        rho = next > 0 ? next : rho * 0.5;
     }
     result->exact = best_count == count;
     return Status::success();
