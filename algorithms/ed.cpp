@@ -1,5 +1,6 @@
 #include "algorithms/ed.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -15,6 +16,41 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The count of a diffusion pass is not monotonic in rho, so sometimes no threshold gives exactly
+// `want` points (typically the count jumps by 2 over it). Then lower rho in small steps until a
+// pass gives at least `want` and drop the surplus points of lowest density (ties: the later one
+// in scan order). Only a few points move; the rest is the pass as error diffusion made it.
+// Leaves *chosen alone when no pass reaches `want` (e.g. too little nonzero density).
+void make_exact(const Grid<double>& sigma, std::size_t want, const DiffusionParams& params, DiffusionResult* chosen) {
+    std::vector<LatticePoint> pts;
+    double rho = chosen->rho;
+    bool found = chosen->points.size() > want;
+    if (found) pts = chosen->points;
+    for (int i = 0; !found && i < 16 && rho > 0.0; ++i) {
+        double r = rho * (1.0 - 0.0005 * double(1 << i));
+        if (!(r > 0.0)) break;
+        ++chosen->passes;
+        if (diffuse(sigma, r, params, &pts) >= want) {
+            found = true;
+            chosen->rho = r;
+        }
+    }
+    if (!found) return;
+    std::vector<std::size_t> order(pts.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto density = [&](std::size_t i) { return sigma(pts[i].x / 2, pts[i].y / 2); };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        if (density(a) != density(b)) return density(a) < density(b);
+        return a > b;
+    });
+    std::vector<std::uint8_t> drop(pts.size(), 0);
+    for (std::size_t k = 0; k < pts.size() - want; ++k) drop[order[k]] = 1;
+    chosen->points.clear();
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        if (!drop[i]) chosen->points.push_back(pts[i]);
+    chosen->exact = true;
 }
 
 }  // namespace
@@ -45,8 +81,11 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     params.startup = Startup::none;
     params.forbidden = &corners;
     DiffusionResult chosen;
-    st = select_points(sigma, std::size_t(n - 4), params, &chosen);
+    const std::size_t want = std::size_t(n - 4);
+    st = select_points(sigma, want, params, &chosen);
     if (!st) return st;
+    const std::size_t searched = chosen.points.size();
+    if (chosen.points.size() != want) make_exact(sigma, want, params, &chosen);
     result->stages.push_back({"error diffusion", seconds_since(t0)});
 
     // Step 4: the Delaunay triangulation of the corners and the chosen points.
@@ -67,6 +106,11 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     char buf[96];
     std::snprintf(buf, sizeof buf, "threshold rho %.6g after %d diffusion passes", chosen.rho, chosen.passes);
     result->notes.push_back(buf);
+    if (searched != want && chosen.points.size() == want) {
+        std::snprintf(buf, sizeof buf, "no threshold gave %zu points exactly (nearest %zu): trimmed a larger pass",
+                      want, searched);
+        result->notes.push_back(buf);
+    }
     return Status::success();
 }
 
