@@ -71,11 +71,10 @@ public:
         if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
         std::uint64_t x = 0;
         const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
-        if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size()) {
-            if (r.ec == std::errc::result_out_of_range)
-                return Status::bad_input(where() + what + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
+        if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size())
             return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
-        }
+        if (r.ec == std::errc::result_out_of_range)
+            return Status::bad_input(where() + what + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
         if (x < lo || x > hi)
             return Status::bad_input(where() + what + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
                                      ".." + std::to_string(hi) + ")");
@@ -89,11 +88,10 @@ public:
         if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
         std::int64_t x = 0;
         const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
-        if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size()) {
-            if (r.ec == std::errc::result_out_of_range)
-                return Status::bad_input(where() + what + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
+        if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size())
             return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
-        }
+        if (r.ec == std::errc::result_out_of_range)
+            return Status::bad_input(where() + what + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
         if (x < lo || x > hi)
             return Status::bad_input(where() + what + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
                                      ".." + std::to_string(hi) + ")");
@@ -147,8 +145,8 @@ private:
 Status count(Tokens& tk, const std::string& what, std::uint64_t lo, std::uint64_t min_bytes, std::uint64_t* n) {
     if (Status s = tk.uint(what, lo, std::uint64_t(1) << 40, n); !s) return s;
     if (*n > 0 && *n * min_bytes > tk.remaining() + 1)
-        return Status::bad_input(tk.where() + what + " " + std::to_string(*n) + " is more than the rest of the file holds" +
-                                 (tk.remaining() == 0 ? " (file ends early)" : ""));
+        return Status::bad_input(tk.where() + what + " " + std::to_string(*n) +
+                                 " is more than the rest of the file holds (the file ends early or the count is wrong)");
     return Status::success();
 }
 
@@ -199,7 +197,10 @@ Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<
 }
 
 // Distinct vertices; the domain [0, max] with its four corners as vertices; size limits.
-Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<int>& lines, bool need_even, int* w, int* h) {
+// `unit` converts doubled coordinates back to those of the file for messages (2 for .model).
+Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<int>& lines, bool need_even, int unit, int* w,
+                      int* h) {
+    const auto at = [unit](LatticePoint p) { return "(" + std::to_string(p.x / unit) + ", " + std::to_string(p.y / unit) + ")"; };
     std::vector<std::uint32_t> order(pts.size());
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
@@ -208,8 +209,7 @@ Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<in
     for (std::size_t i = 1; i < order.size(); ++i)
         if (pts[order[i]] == pts[order[i - 1]])
             return Status::bad_input("line " + std::to_string(lines[order[i]]) + ": vertices " + std::to_string(order[i - 1]) +
-                                     " and " + std::to_string(order[i]) + " coincide at (" + std::to_string(pts[order[i]].x) +
-                                     ", " + std::to_string(pts[order[i]].y) + ")");
+                                     " and " + std::to_string(order[i]) + " coincide at " + at(pts[order[i]]));
     std::int32_t mx = 0, my = 0;
     for (const LatticePoint& p : pts) {
         mx = std::max(mx, p.x);
@@ -224,8 +224,7 @@ Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<in
             return pts[a].y != p.y ? pts[a].y < p.y : pts[a].x < p.x;
         });
         if (it == order.end() || pts[*it] != c)
-            return Status::bad_input("corner (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
-                                     ") of the image domain is not a vertex");
+            return Status::bad_input("corner " + at(c) + " of the image domain is not a vertex");
     }
     *w = mx / 2 + 1;
     *h = my / 2 + 1;
@@ -449,7 +448,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out) {
     } else {
         m.kind = ModelKind::erd;
     }
-    if (Status s = check_vertices(m.vertices, vlines, m.kind == ModelKind::erd, &m.width, &m.height); !s) return s;
+    const bool erd = m.kind == ModelKind::erd;
+    if (Status s = check_vertices(m.vertices, vlines, erd, erd ? 1 : 2, &m.width, &m.height); !s) return s;
     if (m.kind == ModelKind::erd)
         if (Status s = apply_wedges(tk, &m); !s) return s;
     *out = std::move(m);
@@ -493,29 +493,16 @@ Status write_model(const Model& m, std::string* out) {
     if (erd) {
         ModelTopology t;
         if (Status s = build_topology(*mm, &t); !s) return Status::failure("cannot write the wedges: " + s.message);
-        std::vector<std::array<std::uint32_t, 2>> cons = mm->constraints;
-        for (auto& c : cons)
-            if (c[0] > c[1]) std::swap(c[0], c[1]);
-        std::sort(cons.begin(), cons.end());
-        const auto constrained = [&](std::uint32_t a, std::uint32_t b) {
-            std::array<std::uint32_t, 2> k{std::min(a, b), std::max(a, b)};
-            return std::binary_search(cons.begin(), cons.end(), k);
-        };
         std::string lines;
         std::size_t nw = 0;
         for (std::uint32_t v = 0; v < mm->vertices.size(); ++v) {
             const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1];
-            // Several wedges by the constraints, by the values, or a corner value that the
-            // vertex line alone would not give back: list every face.
-            int k = 0;
-            bool border = false, odd = false;
-            for (std::uint32_t i = b; i < e; ++i) {
-                const std::uint32_t c = t.corners[i];
-                if (t.twin[c] != kNoHalfEdge && constrained(v, mm->faces[c / 3][(c % 3 + 1) % 3])) ++k;
-                border = border || t.twin[c] == kNoHalfEdge || t.twin[ModelTopology::prev(c)] == kNoHalfEdge;
-                odd = odd || corner_value(*mm, c) != mm->values[v];
-            }
-            if (!(odd || k >= 2 || (k >= 1 && border) || vertex_wedges(*mm, t, v).count > 1)) continue;
+            // Lines for every vertex whose faces do not all take the value of its vertex line:
+            // every vertex with wedges of different values. Wedges that share one value need
+            // none (the vertex line gives it back), which keeps write(read(write(m))) stable.
+            bool odd = false;
+            for (std::uint32_t i = b; i < e; ++i) odd = odd || corner_value(*mm, t.corners[i]) != mm->values[v];
+            if (!odd) continue;
             for (std::uint32_t i = b; i < e; ++i) {
                 const std::uint32_t c = t.corners[i];
                 lines += std::to_string(v) + ' ' + std::to_string(c / 3) + ' ' + format_value(corner_value(*mm, c)) + '\n';
@@ -578,7 +565,7 @@ Status read_triangulation(const std::string& text, Model* out) {
     std::vector<int> flines;
     if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
     int cw = 0, ch = 0;
-    if (Status s = check_vertices(m.vertices, vlines, true, &cw, &ch); !s) return s;
+    if (Status s = check_vertices(m.vertices, vlines, true, 1, &cw, &ch); !s) return s;
     if (cw != m.width || ch != m.height)
         return Status::bad_input("the vertices span " + std::to_string(cw) + " x " + std::to_string(ch) + " pixels, not the " +
                                  std::to_string(w) + " x " + std::to_string(h) + " of the header");
