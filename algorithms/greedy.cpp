@@ -29,6 +29,56 @@ struct FaceState {
 
 std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
 
+// The inner loops of the face scan, one span at a time: the plane value v steps by dv per pixel.
+// Each adds the squared errors to *sum and moves the candidate (*best, *bx) to the first pixel
+// of larger absolute error that is not banned; returns true when it moved.
+//
+// Rounded: the approximation as imgsyn makes it (algorithms/reconstruct.cpp to_sample: clamp to
+// [0, maxval], round half up), so errors are integers and sums exact; truncation equals floor
+// because the clamped value is >= 0, and is much cheaper than std::floor without SSE4.1.
+inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
+                         std::int32_t x1, double v, double dv, double maxval, std::int64_t* sum,
+                         std::int32_t* best, std::int32_t* bx) {
+    std::int64_t acc = 0;
+    std::int32_t b = *best;
+    bool moved = false;
+    for (std::int32_t x = x0; x <= x1; ++x, v += dv) {
+        double c = v > 0.0 ? v : 0.0;
+        c = c < maxval ? c : maxval;
+        const std::int32_t e = std::int32_t(samples[x]) - std::int32_t(c + 0.5);
+        acc += std::int64_t(e) * e;
+        const std::int32_t ae = e < 0 ? -e : e;
+        if (ae > b && !banned[x]) {
+            b = ae;
+            *bx = x;
+            moved = true;
+        }
+    }
+    *sum += acc;
+    *best = b;
+    return moved;
+}
+
+// Real-valued: errors against the plane itself.
+inline bool scan_real(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
+                      double v, double dv, double* sum, double* best, std::int32_t* bx) {
+    double acc = 0.0, b = *best;
+    bool moved = false;
+    for (std::int32_t x = x0; x <= x1; ++x, v += dv) {
+        const double e = double(samples[x]) - v;
+        acc += e * e;
+        const double ae = std::fabs(e);
+        if (ae > b && !banned[x]) {
+            b = ae;
+            *bx = x;
+            moved = true;
+        }
+    }
+    *sum += acc;
+    *best = b;
+    return moved;
+}
+
 class Refiner {
 public:
     Refiner(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options)
@@ -124,29 +174,26 @@ private:
         scan_triangle(lat, domain_, cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
                       cdt_.point(cdt_.face_vertex(f, 2)), &spans_);
         const double dv = plane.step_x(lat);
-        const double maxval = double(image_.maxval);
-        const bool round = options_.round_values;
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
-        for (const Span& s : spans_) {
-            const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
-            const std::uint16_t* samples = image_.samples.data() + row;
-            const std::uint8_t* banned = banned_.data() + row;
-            double v = plane.at(lat, s.x_begin, s.y);
-            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) {
-                double approx = v;
-                if (round) {
-                    approx = std::floor(v + 0.5);
-                    approx = approx < 0.0 ? 0.0 : (approx > maxval ? maxval : approx);
-                }
-                const double e = double(samples[x]) - approx;
-                sum += e * e;
-                const double ae = std::fabs(e);
-                if (ae > best && !banned[x]) {
-                    best = ae;
-                    bx = x;
+        if (options_.round_values) {
+            const double maxval = double(image_.maxval);
+            std::int64_t isum = 0;
+            std::int32_t ibest = -1;
+            for (const Span& s : spans_) {
+                const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
+                if (scan_rounded(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
+                                 plane.at(lat, s.x_begin, s.y), dv, maxval, &isum, &ibest, &bx))
                     by = s.y;
-                }
+            }
+            sum = double(isum);
+            best = double(ibest);
+        } else {
+            for (const Span& s : spans_) {
+                const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
+                if (scan_real(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
+                              plane.at(lat, s.x_begin, s.y), dv, &sum, &best, &bx))
+                    by = s.y;
             }
         }
         fs.sum = sum;
