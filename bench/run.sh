@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# `make bench`: whole-process benchmarks (load, compute, write), medians of RUNS runs, peak RSS.
+# Usage: bench/run.sh ERD_BINARY IMAGES_DIR        RUNS (default 7), CALLGRIND=1 adds instruction
+# counts (valgrind --tool=callgrind, one run each; repeatable where wall times on a shared machine
+# are not).
+#
+# Each helper adds its own clearly separated block below, calling bench_case.
+set -u
+ERD=${1:-build/erd}
+IMAGES=${2:-../shared/images}
+RUNS=${RUNS:-7}
+CALLGRIND=${CALLGRIND:-0}
+[[ $ERD == */* && $ERD != /* ]] && ERD=$PWD/$ERD
+[[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
+cd "$(dirname "$0")/.."
+OUT=out/bench
+mkdir -p "$OUT"
+if [[ ! -x $ERD ]]; then echo "bench: $ERD is not built (try: make)"; exit 1; fi
+TIME=/usr/bin/time
+[[ -x $TIME ]] || TIME=""
+
+median() { sort -g | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+# bench_case NAME TARGET_MS -- COMMAND...   (COMMAND is run RUNS times; its output is discarded)
+# Prints: name, median wall ms, median CPU ms (user+sys, 10 ms resolution), peak RSS, target.
+bench_case() {
+    local name=$1 target=$2
+    shift 3
+    local walls=() cpus=() rss=0 i t0 t1 line
+    for ((i = 0; i < RUNS; i++)); do
+        t0=$(date +%s%N)
+        if [[ -n $TIME ]]; then
+            line=$("$TIME" -f "%U %S %M" "$@" 2>&1 >/dev/null | tail -1)
+        else
+            "$@" >/dev/null 2>&1; line="0 0 0"
+        fi
+        t1=$(date +%s%N)
+        walls+=("$(( (t1 - t0) / 1000 ))")
+        read -r u s m <<<"$line"
+        cpus+=("$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.0f", (u + s) * 1000 }')")
+        (( m > rss )) && rss=$m
+    done
+    local wall cpu verdict ir=""
+    wall=$(printf '%s\n' "${walls[@]}" | median | awk '{ printf "%.1f", $1 / 1000 }')
+    cpu=$(printf '%s\n' "${cpus[@]}" | median)
+    verdict=$(awk -v w="$wall" -v t="$target" 'BEGIN { print (w <= t) ? "ok" : "over" }')
+    if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
+        ir=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 >/dev/null |
+             sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | awk '{ printf "  %.0fM instr", $1 / 1e6 }')
+    fi
+    printf '%-34s wall %8s ms  cpu %5s ms  rss %7s KB  target %5s ms %-4s%s\n' "$name" "$wall" "$cpu" "$rss" "$target" "$verdict" "$ir"
+}
+
+echo "bench: $RUNS runs per case, medians; $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+
+# ---------------------------------------------------------------------------------------------
+# basic (issue 5): ED and GPI, whole process: read the PGM, mesh, write the .model.
+# Targets: gpi lena 1% <= 25 ms, gpi bull 1% <= 50 ms, ed bull 1% <= 40 ms.
+if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm ]]; then
+    bench_case "generate gpi lena 1%" 25 -- "$ERD" generate --method gpi -q -x 2 -d 1 -i "$IMAGES/lena.pgm" -o "$OUT/lena.gpi.model"
+    bench_case "generate gpi bull 1%" 50 -- "$ERD" generate --method gpi -q -x 2 -d 1 -i "$IMAGES/bull.pgm" -o "$OUT/bull.gpi.model"
+    bench_case "generate ed bull 1%" 40 -- "$ERD" generate --method ed -q -x 2 -d 1 -i "$IMAGES/bull.pgm" -o "$OUT/bull.ed.model"
+else
+    echo "basic: lena.pgm or bull.pgm missing in $IMAGES; skipped"
+fi
+# ---------------------------------------------------------------------------------------------
