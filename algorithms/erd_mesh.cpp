@@ -15,7 +15,7 @@ namespace {
 // coincide), and so is a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    explicit StepOneCounter(const Grid<double>& phi) : phi_(phi) {}
+    StepOneCounter(const Grid<double>& phi, LengthRule rule) : phi_(phi), rule_(rule) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -36,7 +36,7 @@ public:
         l_ = l;
         eps_ = eps;
         have_count_ = true;
-        kept_ = simplify_polylines(traced_, eps, l);
+        kept_ = simplify_polylines(traced_, eps, l, rule_);
         count_ = distinct_points(kept_);
         return count_;
     }
@@ -47,6 +47,7 @@ public:
 
 private:
     const Grid<double>& phi_;
+    LengthRule rule_;
     Status status_;
     bool have_edges_ = false, have_count_ = false;
     double beta_ = 0, r_ = 0, eps_ = 0;
@@ -93,7 +94,7 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 
 Status build_initial_mesh(const Image& image, const Grid<double>& phi, const InitialMeshOptions& options,
                           Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(phi);
+    StepOneCounter counter(phi, options.length_rule);
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     if (!counter.status().ok()) return counter.status();

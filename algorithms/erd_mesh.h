@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithms/douglas_peucker.h"
 #include "algorithms/erd_params.h"
 #include "algorithms/image.h"
 #include "algorithms/polylines.h"
@@ -23,6 +24,8 @@ struct InitialMeshOptions {
     ErdMethod method = ErdMethod::erdgpi;
     std::size_t target = 0;  // N, the final mesh size (it steers the parameter selection)
     ErdParamRequest request; // flags the user gave
+    // When l is counted (docs/DECISIONS.md "ERD model and methods" has the numbers).
+    LengthRule length_rule = LengthRule::before_simplification;
 };
 
 struct InitialMesh {

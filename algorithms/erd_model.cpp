@@ -34,16 +34,19 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     const double max_x = phi_.width - 1, max_y = phi_.height - 1;
     auto clamp = [](double t, double hi) { return t < 0 ? 0.0 : (t > hi ? hi : t); };
     ++stats_.multi_wedges;
-    if (options_.rule == 0) return bilinear(phi_, clamp(x + dx, max_x), clamp(y + dy, max_y));
+    if (options_.rule == 0) {
+        const double t = options_.fixed_distance;
+        return bilinear(phi_, clamp(x + t * dx, max_x), clamp(y + t * dy, max_y));
+    }
     if (!have_mmsodd_) {
         mmsodd_ = mmsodd(phi_, options_.smoothing_order);
         have_mmsodd_ = true;
     }
-    const int steps = int(std::lround(0.5 / kWedgeAlphaStep));
+    const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / kWedgeAlphaStep));
     double best = -1, bx = x, by = y;
     int best_i = 0;
     for (int i = 0; i <= steps; ++i) {
-        const double alpha = 1.0 + kWedgeAlphaStep * i;
+        const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
         const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
         const double f = bilinear(mmsodd_, qx, qy);
         if (f > best) {

@@ -33,6 +33,9 @@ constexpr double kWedgeAlphaStep = 0.05;
 struct WedgeValueOptions {
     int rule = 1;             // 1: MMSODD line search; 0: fixed distance (thesis -w)
     int smoothing_order = 5;  // binomial order of the MMSODD used by the line search (thesis -s)
+    double alpha_min = 0.75;   // line-search range along the bisector, in pixels
+    double alpha_max = 1.0;
+    double fixed_distance = 1.0;  // rule 0: distance along the bisector, in pixels
 };
 
 // Wedge values of every vertex of one triangulation. The triangulation itself stays outside

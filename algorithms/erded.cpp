@@ -177,9 +177,9 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     t0 = std::chrono::steady_clock::now();
     model.to_model(cdt, image.width, image.height, image.maxval, &result->model);
     result->achieved = result->model.size();
+    add_param_notes(mesh, model, result);
     result->polylines = std::move(mesh.polylines);
     result->stages.push_back({"model", seconds_since(t0)});
-    add_param_notes(mesh, model, result);
     result->notes.push_back("error-diffusion passes: " + std::to_string(passes));
     result->notes.push_back("points added/removed to reach N exactly: " + std::to_string(adjusted));
     return Status::success();
