@@ -37,6 +37,7 @@ help:
 	@echo "make test       unit tests, the same under ASan+UBSan, fuzz smoke runs; ends 'N passed, M failed'"
 	@echo "make bench      speed and memory benchmarks (medians)"
 	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
+	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
 
@@ -86,6 +87,9 @@ bench: $(BUILD)/erd
 
 eval: $(BUILD)/erd
 	@bash tools/eval.sh $(BUILD)/erd $(IMAGES)
+
+docs-images: $(BUILD)/erd
+	@bash tools/docs_images.sh $(BUILD)/erd $(IMAGES) docs/img
 
 fuzz: deps
 	@bash fuzz/run.sh $(FUZZ_SECONDS)

@@ -37,7 +37,9 @@ struct GenerateStats {
 
 // Fills the counts from the result's model (constrained edges: the model's list, or where an ERD
 // model's corner values differ across an edge; constrained vertices: endpoints of those) and the
-// rest from the result. Parameters, stop reason and drops are filled by the caller.
+// rest from the result: parameters (beta, r, l, eps, simple: all five or none), the stop rule and
+// dropped constraints from the result's "key: value" notes. The caller adds its own stages,
+// total time, memory and PSNR.
 GenerateStats collect_stats(const std::string& method, const Image& image, const GenerateResult& result);
 
 // The JSON text, one object on one line, newline-terminated.

@@ -332,16 +332,14 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
     r.achieved = 4;
     r.stages = {{"edges", 0.25}, {"greedy \"insertion\"", 1.5}};
     Image im(50, 50, 255);
+    r.notes = {"beta: 0.055", "r: 0.4", "l: 5", "eps: 1", "simple: no", "dropped crossing constraints: 3",
+               "stop: target", "insertions: 1"};
     cli::GenerateStats s = cli::collect_stats("erdgpi", im, r);
     CHECK(s.constrained_edges == 1);
     CHECK(s.constrained_vertices == 2);
-    s.has_params = true;
-    s.beta = 0.055;
-    s.r = 0.4;
-    s.l = 5;
-    s.epsilon = 1;
-    s.dropped_constraints = 3;
-    s.stop = "target";
+    CHECK(s.has_params);
+    CHECK(s.l == 5);
+    CHECK_FALSE(s.simple);
     s.total_seconds = 2;
     s.peak_memory_bytes = cli::peak_memory_bytes();
     CHECK(s.peak_memory_bytes > 0);
@@ -375,6 +373,7 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
 
     // A basic model without --psnr-report: null parameters, no psnr key.
     r.model = diagonal_basic();
+    r.notes.clear();
     s = cli::collect_stats("gpi", im, r);
     j = parse_json(cli::stats_json(s));
     CHECK(j["model"].s == "basic");

@@ -1,0 +1,81 @@
+// erd export MODEL -o OUT.obj|OUT.ply [--zscale Z]: a mesh model as a height field for 3-D tools.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "algorithms/export.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/fileio.h"
+#include "cli/model_file.h"
+#include "cli/report.h"
+
+namespace erd::cli {
+
+static bool ends_with(const std::string& s, const char* suffix) {
+    std::string t(suffix);
+    if (s.size() < t.size()) return false;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        char c = s[s.size() - t.size() + i];
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+        if (c != t[i]) return false;
+    }
+    return true;
+}
+
+int cmd_export(int argc, char** argv) {
+    Reporter rep("export");
+    static const std::vector<OptionSpec> specs = {
+        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront) or FILE.ply (ASCII PLY); \"-\" = stdout with --format"},
+        {0, "format", "obj|ply", "output format when the file name does not say (default: from the name)"},
+        {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
+        {'q', "quiet", nullptr, "no warnings"},
+        {'h', "help", nullptr, "show this help"},
+    };
+    const char* usage = "erd export MODEL -o OUT.obj|OUT.ply [--zscale Z]";
+    Args args;
+    Status st = args.parse(argc, argv, 1, specs);
+    if (!st) return rep.usage(st.message, usage);
+    if (args.has("help")) {
+        std::printf("usage: %s\n\n"
+                    "Writes a .model or .erd mesh as a surface: x, y in pixels with y up (y = H-1 - row), z = value * Z,\n"
+                    "faces counter-clockwise seen from above. For an ERD model every wedge becomes its own vertex copy,\n"
+                    "so the surface is cut open along the constrained edges (the model's discontinuities).\n\n%s",
+                    usage, describe(specs).c_str());
+        return 0;
+    }
+    rep.set_quiet(args.has("quiet"));
+    if (args.positional().size() != 1) return rep.usage("expected one MODEL", usage);
+    if (!args.has("output")) return rep.usage("-o OUT.obj or OUT.ply is required", usage);
+    const std::string in = args.positional()[0], out = args.str("output");
+
+    ExportOptions opt;
+    std::string format = args.str("format");
+    if (format.empty()) {
+        if (ends_with(out, ".obj")) format = "obj";
+        else if (ends_with(out, ".ply")) format = "ply";
+        else return rep.usage("cannot tell the format from '" + out + "': name it .obj or .ply, or give --format", usage);
+    }
+    if (format == "obj") opt.format = MeshFormat::obj;
+    else if (format == "ply") opt.format = MeshFormat::ply;
+    else return rep.usage("--format must be obj or ply, not '" + format + "'", usage);
+    opt.zscale = args.real("zscale", 0, 0, 1e12, &st);
+    if (!st) return rep.usage(st.message, usage);
+    if (args.has("zscale") && !(opt.zscale > 0)) return rep.usage("--zscale must be greater than 0", usage);
+
+    st = refuse_overwrite(out, {in});
+    if (!st) return rep.fail(st);
+    Model m;
+    std::string warning;
+    st = load_model_file(in, &m, &warning);
+    if (!st) return rep.fail(st);
+    rep.warn(warning);
+    std::string text;
+    st = export_mesh(m, opt, &text);
+    if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
+    st = write_file_atomic(out, text);
+    if (!st) return rep.fail(st);
+    return 0;
+}
+
+}  // namespace erd::cli

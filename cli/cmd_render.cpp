@@ -1,0 +1,199 @@
+// erd render MODEL -o OUT.svg|OUT.png: a picture of the mesh, drawn to scale, optionally over the
+// original image, the model's own reconstruction, or an error map.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "algorithms/reconstruct.h"
+#include "algorithms/render.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/fileio.h"
+#include "cli/image_io.h"
+#include "cli/model_file.h"
+#include "cli/report.h"
+#include "third_party/stb_glue.h"
+
+namespace erd::cli {
+
+static bool has_suffix(const std::string& s, const char* suffix) {
+    std::string t(suffix);
+    if (s.size() < t.size()) return false;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        char c = s[s.size() - t.size() + i];
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+        if (c != t[i]) return false;
+    }
+    return true;
+}
+
+static std::string base64(const std::vector<unsigned char>& in) {
+    static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((in.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < in.size(); i += 3) {
+        unsigned v = unsigned(in[i]) << 16;
+        if (i + 1 < in.size()) v |= unsigned(in[i + 1]) << 8;
+        if (i + 2 < in.size()) v |= in[i + 2];
+        out += abc[(v >> 18) & 63];
+        out += abc[(v >> 12) & 63];
+        out += i + 1 < in.size() ? abc[(v >> 6) & 63] : '=';
+        out += i + 2 < in.size() ? abc[v & 63] : '=';
+    }
+    return out;
+}
+
+// PNG bytes of an RGB picture, stored as gray when all three channels agree (a third the size).
+static Status encode_rgb_png(const RgbImage& im, std::vector<unsigned char>* png) {
+    bool gray = true;
+    for (std::size_t i = 0; gray && i < im.pixels.size(); i += 3)
+        gray = im.pixels[i] == im.pixels[i + 1] && im.pixels[i] == im.pixels[i + 2];
+    bool ok;
+    if (gray) {
+        std::vector<unsigned char> g(im.pixels.size() / 3);
+        for (std::size_t i = 0; i < g.size(); ++i) g[i] = im.pixels[3 * i];
+        ok = stb::png_encode(g.data(), im.width, im.height, 1, png);
+    } else {
+        ok = stb::png_encode(im.pixels.data(), im.width, im.height, 3, png);
+    }
+    return ok ? Status::success() : Status::failure("PNG encoding failed");
+}
+
+// "X,Y,W,H" in pixels.
+static bool parse_crop(const std::string& s, RenderOptions* o) {
+    int v[4];
+    int used = 0;
+    if (std::sscanf(s.c_str(), "%d,%d,%d,%d%n", &v[0], &v[1], &v[2], &v[3], &used) != 4 || std::size_t(used) != s.size())
+        return false;
+    if (v[0] < 0 || v[1] < 0 || v[2] <= 0 || v[3] <= 0) return false;
+    o->crop_x = v[0];
+    o->crop_y = v[1];
+    o->crop_w = v[2];
+    o->crop_h = v[3];
+    return true;
+}
+
+int cmd_render(int argc, char** argv) {
+    Reporter rep("render");
+    static const std::vector<OptionSpec> specs = {
+        {'o', "output", "FILE", "output picture: FILE.svg or FILE.png (\"-\" = stdout with --format)"},
+        {0, "format", "svg|png", "output format when the file name does not say"},
+        {'s', "scale", "S", "output pixels per image pixel (default: 1, or the smallest integer making the larger side >= 512)"},
+        {0, "crop", "X,Y,W,H", "draw only this window of the image (pixels)"},
+        {0, "vertices", nullptr, "draw the vertices as dots"},
+        {0, "no-edges", nullptr, "draw no triangulation (just the background)"},
+        {0, "over", "IMAGE", "draw over this image (the original)"},
+        {0, "over-reconstruction", nullptr, "draw over the model's own reconstruction (4x4 supersampled for .erd)"},
+        {0, "error", "ORIGINAL", "draw over the error map |ORIGINAL - reconstruction| (black 0 .. white >= --error-max)"},
+        {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
+        {'q', "quiet", nullptr, "no warnings"},
+        {'h', "help", nullptr, "show this help"},
+    };
+    const char* usage = "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--vertices] [--over IMAGE | --over-reconstruction | --error ORIGINAL]";
+    Args args;
+    Status st = args.parse(argc, argv, 1, specs);
+    if (!st) return rep.usage(st.message, usage);
+    if (args.has("help")) {
+        std::printf("usage: %s\n\n"
+                    "Draws the triangulation of a .model or .erd file: ordinary edges thin and blue, constrained edges\n"
+                    "(the model's discontinuities: where the two faces beside an edge of an .erd model give an endpoint\n"
+                    "different values) thick and red. SVG is written as text; PNG is drawn with anti-aliased lines.\n\n%s",
+                    usage, describe(specs).c_str());
+        return 0;
+    }
+    rep.set_quiet(args.has("quiet"));
+    if (args.positional().size() != 1) return rep.usage("expected one MODEL", usage);
+    if (!args.has("output")) return rep.usage("-o OUT.svg or OUT.png is required", usage);
+    const std::string in = args.positional()[0], out = args.str("output");
+    std::string format = args.str("format");
+    if (format.empty()) {
+        if (has_suffix(out, ".svg")) format = "svg";
+        else if (has_suffix(out, ".png")) format = "png";
+        else return rep.usage("cannot tell the format from '" + out + "': name it .svg or .png, or give --format", usage);
+    }
+    if (format != "svg" && format != "png") return rep.usage("--format must be svg or png, not '" + format + "'", usage);
+    int backgrounds = int(args.has("over")) + int(args.has("over-reconstruction")) + int(args.has("error"));
+    if (backgrounds > 1) return rep.usage("give at most one of --over, --over-reconstruction, --error", usage);
+
+    RenderOptions opt;
+    opt.scale = args.real("scale", 0, 1e-3, 1e4, &st);
+    if (!st) return rep.usage(st.message, usage);
+    if (args.has("crop") && !parse_crop(args.str("crop"), &opt))
+        return rep.usage("--crop wants X,Y,W,H (integers, W and H > 0), not '" + args.str("crop") + "'", usage);
+    double error_max = args.real("error-max", 0, 1e-9, 1e9, &st);
+    if (!st) return rep.usage(st.message, usage);
+    opt.vertices = args.has("vertices");
+    opt.edges = !args.has("no-edges");
+
+    std::vector<std::string> inputs = {in};
+    if (args.has("over")) inputs.push_back(args.str("over"));
+    if (args.has("error")) inputs.push_back(args.str("error"));
+    st = refuse_overwrite(out, inputs);
+    if (!st) return rep.fail(st);
+
+    Model m;
+    std::string warning;
+    st = load_model_file(in, &m, &warning);
+    if (!st) return rep.fail(st);
+    rep.warn(warning);
+    RenderOptions resolved;
+    st = resolve_render(m, opt, &resolved);
+    if (!st) return rep.fail(st);
+
+    // The background, in image pixels.
+    bool have_bg = false;
+    RgbImage bg;
+    if (args.has("over") || args.has("error")) {
+        const std::string path = args.has("over") ? args.str("over") : args.str("error");
+        Image im;
+        st = read_image(path, &im, &warning);
+        if (!st) return rep.fail(st);
+        rep.warn(warning);
+        if (im.width != m.width || im.height != m.height)
+            return rep.fail(Status::bad_input(path + ": image is " + std::to_string(im.width) + "x" + std::to_string(im.height) +
+                                              " but the model is " + std::to_string(m.width) + "x" + std::to_string(m.height)));
+        if (args.has("over")) {
+            bg = gray_to_rgb(im);
+        } else {
+            Image approx;
+            st = reconstruct(m, m.kind == ModelKind::erd, &approx);
+            if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
+            approx.maxval = im.maxval;
+            st = error_map(im, approx, error_max, &bg);
+            if (!st) return rep.fail(st);
+        }
+        have_bg = true;
+    } else if (args.has("over-reconstruction")) {
+        Image approx;
+        st = reconstruct(m, m.kind == ModelKind::erd, &approx);
+        if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
+        bg = gray_to_rgb(approx);
+        have_bg = true;
+    }
+
+    std::string bytes;
+    if (format == "svg") {
+        std::string href;
+        if (have_bg) {
+            std::vector<unsigned char> png;
+            st = encode_rgb_png(bg, &png);
+            if (!st) return rep.fail(st);
+            href = "data:image/png;base64," + base64(png);
+        }
+        st = render_svg(m, href, opt, &bytes);
+        if (!st) return rep.fail(st);
+    } else {
+        RgbImage pic;
+        st = render_raster(m, have_bg ? &bg : nullptr, opt, &pic);
+        if (!st) return rep.fail(st);
+        std::vector<unsigned char> png;
+        st = encode_rgb_png(pic, &png);
+        if (!st) return rep.fail(st);
+        bytes.assign(png.begin(), png.end());
+    }
+    st = write_file_atomic(out, bytes);
+    if (!st) return rep.fail(st);
+    return 0;
+}
+
+}  // namespace erd::cli

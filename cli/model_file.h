@@ -1,0 +1,15 @@
+// Reading a model file (.model, .erd) from a path for the commands that draw or export one.
+#pragma once
+#include <string>
+
+#include "algorithms/model.h"
+#include "kernel/status.h"
+
+namespace erd::cli {
+
+// Reads `path` ("-" = stdin) and parses it with algorithms/model_io.h; the kind comes from the
+// name (.model / .erd), else from the content. Messages start with the path. *warning (may be
+// null) is cleared: reserved for non-fatal remarks.
+Status load_model_file(const std::string& path, Model* out, std::string* warning);
+
+}  // namespace erd::cli
