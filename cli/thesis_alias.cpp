@@ -30,12 +30,6 @@
 
 namespace erd::cli {
 
-// Until cli/cmd_generate.cpp and cli/cmd_reconstruct.cpp land, the test binary (which links
-// every cli/ object but main.o and its placeholders) must still link: weak references, checked
-// before use. (Temporary; removed when both subcommands exist.)
-int cmd_generate(int argc, char** argv) __attribute__((weak));
-int cmd_reconstruct(int argc, char** argv) __attribute__((weak));
-
 namespace {
 
 enum class Kind { generate, synth_point, synth_aa, psnr };
@@ -81,10 +75,6 @@ bool parse_int(const std::string& s, long* out) {
 
 // Runs an erd subcommand on an argv built from strings.
 int run(CommandFn fn, std::vector<std::string> args) {
-    if (!fn) {
-        std::fprintf(stderr, "erd %s: not available in this build\n", args[0].c_str());
-        return 1;
-    }
     std::vector<char*> argv;
     argv.reserve(args.size() + 1);
     for (auto& a : args) argv.push_back(&a[0]);
