@@ -316,6 +316,47 @@ Status detect_edges(const Grid<double>& im, const CannyParams& params, Grid<std:
                     ++added;
                 }
         }
+
+        // Where an edge runs into a stronger one (the stem of a T), the last points before the
+        // junction lie on the flank of the stronger edge and are maxima in no direction, so no
+        // secondary path exists. From each end of a main curve, climb the magnitude (strictly
+        // increasing, >= tau_low, at most max_link points) and keep the climb if it arrives next
+        // to a different main component.
+        std::vector<std::ptrdiff_t> path;
+        for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+            const std::ptrdiff_t end = queue[qi];
+            if (dist[std::size_t(end)] != 0 || !(flag[std::size_t(end)] & kMain)) continue;
+            int n = 0;
+            for (std::ptrdiff_t o : off) n += (flag[std::size_t(end + o)] & kMain) != 0;
+            if (n != 1) continue;
+            const std::uint32_t own = label[std::size_t(end)];
+            path.clear();
+            std::ptrdiff_t cur = end;
+            bool joined = false;
+            for (int step = 0; step <= params.max_link && !joined; ++step) {
+                for (std::ptrdiff_t o : off) {
+                    const std::size_t j = std::size_t(cur + o);
+                    if ((flag[j] & kMain) && label[j] != own && label[j] != 0) joined = true;
+                }
+                if (joined || step == params.max_link) break;
+                std::ptrdiff_t best = -1;
+                float bg = g.v[std::size_t(cur)];
+                for (std::ptrdiff_t o : off) {
+                    const std::size_t j = std::size_t(cur + o);
+                    if (flag[j] & kMain) continue;
+                    if (g.v[j] > bg && g.v[j] >= tl) { bg = g.v[j]; best = cur + o; }
+                }
+                if (best < 0) break;
+                path.push_back(best);
+                cur = best;
+            }
+            if (!joined || path.empty()) continue;
+            for (std::ptrdiff_t i : path) {
+                flag[std::size_t(i)] |= kMain;
+                label[std::size_t(i)] = own;
+                ++added;
+            }
+        }
     }
 
     // 6. Output and thinning.

@@ -20,7 +20,11 @@
 //      both neighbours of at least one of the four opposite pairs of the 3x3 ring (not necessarily
 //      along the gradient). Short paths of secondary points that join two different main-edge
 //      components (at most max_link secondary points long) are added; branches that touch fewer than
-//      two main components are dropped (thesis 2.4.4).
+//      two main components are dropped (thesis 2.4.4). Where an edge runs into a stronger one (a T),
+//      the points just before the junction sit on the stronger edge's flank and are maxima in no
+//      direction, so no secondary path exists; for that case (our addition) each end of a main curve
+//      also climbs the magnitude (strictly increasing, >= tau_low, at most max_link points) and the
+//      climb is kept when it arrives next to a different main component.
 //   6. thinning (algorithms/thinning.h): Zhang-Suen, then removal of staircase corners, so every
 //      edge is a one-point-wide 8-connected curve.
 #pragma once

@@ -23,12 +23,25 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
     };
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) b[index(x, y)] = edges(x, y) != 0;
+    // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
+    // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
+    // cluster of mutual "junctions" out of one junction.
+    std::vector<std::uint8_t> links(b.size(), 0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const std::size_t i = index(x, y);
             if (!b[i]) continue;
+            unsigned mask = 0;
+            for (int d = 0; d < 8; ++d) {
+                if (!b[std::size_t(std::ptrdiff_t(i) + off[d])]) continue;
+                if ((d & 1) && (b[std::size_t(std::ptrdiff_t(i) + off[(d + 7) & 7])] ||
+                                b[std::size_t(std::ptrdiff_t(i) + off[(d + 1) & 7])]))
+                    continue;
+                mask |= 1u << d;
+            }
+            links[i] = std::uint8_t(mask);
             int n = 0;
-            for (int d = 0; d < 8; ++d) n += b[std::size_t(std::ptrdiff_t(i) + off[d])];
+            for (; mask; mask &= mask - 1) ++n;
             degree[i] = std::uint8_t(n);
         }
     auto use = [&](std::size_t i, int d) {
@@ -37,7 +50,7 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
     };
     auto free_link = [&](std::size_t i) {
         for (int d = 0; d < 8; ++d)
-            if (b[std::size_t(std::ptrdiff_t(i) + off[d])] && !(used[i] & (1u << d))) return d;
+            if ((links[i] & ~used[i]) & (1u << d)) return d;
         return -1;
     };
     // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with

@@ -15,14 +15,15 @@ namespace erd {
 
 using Polyline = std::vector<LatticePoint>;
 
-// Traces the set points of a thinned edge map (nonzero = edge) into polylines joining 8-connected
-// neighbours. Points with 1 or >= 3 neighbours are nodes: every polyline runs from a node to a
-// node through points with exactly 2 neighbours, so polylines meet only at their ends (split at
-// junctions and self-intersections). A closed curve without nodes becomes one polyline whose last
-// point repeats its first. A run ending where it started (a loop on a junction) also repeats it.
-// Isolated points give one-point polylines. Deterministic: nodes in row-major order, neighbours in
-// a fixed order (E, SE, S, SW, W, NW, N, NE). Each pair of adjacent points is used by at most one
-// polyline.
+// Traces the set points of a thinned edge map (nonzero = edge) into polylines. Links join
+// 8-neighbours, except a diagonal pair that also shares a set 4-neighbour (the corner of a
+// staircase or of a T), so one junction is one point, not a cluster of mutual junctions. Points
+// with 1 or >= 3 links are nodes: every polyline runs from a node to a node through points with
+// exactly 2 links, so polylines meet only at their ends (split at junctions and
+// self-intersections). A closed curve without nodes becomes one polyline whose last point repeats
+// its first; so does a run that returns to its start node (a loop on a junction). Isolated points
+// give one-point polylines. Deterministic: nodes in row-major order, links in a fixed order
+// (E, SE, S, SW, W, NW, N, NE), loops after all node runs. Each link is used by one polyline.
 std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges);
 
 // Steps 1.1 to 1.3 in one call: detect edges, trace, simplify with Douglas-Peucker (epsilon in

@@ -1,0 +1,431 @@
+// Image analysis (algorithms/filters, mmsodd, bilinear, canny, thinning, polylines,
+// douglas_peucker, error_diffusion): hand-worked values.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/bilinear.h"
+#include "algorithms/canny.h"
+#include "algorithms/douglas_peucker.h"
+#include "algorithms/error_diffusion.h"
+#include "algorithms/filters.h"
+#include "algorithms/mmsodd.h"
+#include "algorithms/polylines.h"
+#include "algorithms/thinning.h"
+
+using namespace erd;
+
+namespace {
+
+template <class F>
+Grid<double> make_grid(int w, int h, F f) {
+    Grid<double> g(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) g(x, y) = f(double(x), double(y));
+    return g;
+}
+
+Grid<std::uint8_t> make_map(const std::vector<const char*>& rows) {
+    Grid<std::uint8_t> m(int(std::string(rows[0]).size()), int(rows.size()), 0);
+    for (int y = 0; y < m.height; ++y)
+        for (int x = 0; x < m.width; ++x) m(x, y) = rows[std::size_t(y)][x] == '#' ? 1 : 0;
+    return m;
+}
+
+bool has_full_2x2(const Grid<std::uint8_t>& m) {
+    for (int y = 0; y + 1 < m.height; ++y)
+        for (int x = 0; x + 1 < m.width; ++x)
+            if (m(x, y) && m(x + 1, y) && m(x, y + 1) && m(x + 1, y + 1)) return true;
+    return false;
+}
+
+// Component label of every set point (8-connectivity), 0 for unset.
+std::vector<int> components(const Grid<std::uint8_t>& m) {
+    std::vector<int> lab(m.size(), 0);
+    int next = 0;
+    std::vector<int> stack;
+    for (int i = 0; i < int(m.size()); ++i) {
+        if (!m.data[std::size_t(i)] || lab[std::size_t(i)]) continue;
+        lab[std::size_t(i)] = ++next;
+        stack.push_back(i);
+        while (!stack.empty()) {
+            int p = stack.back();
+            stack.pop_back();
+            int x = p % m.width, y = p / m.width;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    int qx = x + dx, qy = y + dy;
+                    if (!m.inside(qx, qy)) continue;
+                    int q = qy * m.width + qx;
+                    if (m.data[std::size_t(q)] && !lab[std::size_t(q)]) { lab[std::size_t(q)] = next; stack.push_back(q); }
+                }
+        }
+    }
+    return lab;
+}
+
+// A deterministic pseudo-random sequence (LCG), for synthetic test images.
+struct Lcg {
+    std::uint32_t s;
+    double next() { s = s * 1664525u + 1013904223u; return double(s >> 8) / double(1u << 24); }
+};
+
+}  // namespace
+
+TEST_CASE("binomial taps are rows of Pascal's triangle and sum to one", "[imaging]") {
+    CHECK(binomial_taps(1) == std::vector<double>{1.0});
+    CHECK(binomial_taps(3) == std::vector<double>{0.25, 0.5, 0.25});
+    CHECK(binomial_taps(5) == std::vector<double>{1 / 16.0, 4 / 16.0, 6 / 16.0, 4 / 16.0, 1 / 16.0});
+    CHECK(binomial_taps(7) == std::vector<double>{1 / 64.0, 6 / 64.0, 15 / 64.0, 20 / 64.0, 15 / 64.0, 6 / 64.0, 1 / 64.0});
+    for (int n = 1; n <= 31; n += 2) {
+        std::vector<double> t = binomial_taps(n);
+        REQUIRE(int(t.size()) == n);
+        double sum = 0;
+        for (double v : t) sum += v;
+        CHECK(sum == 1.0);
+    }
+    CHECK(binomial_taps(4).empty());
+    CHECK(binomial_taps(0).empty());
+    CHECK(binomial_taps(-3).empty());
+    CHECK(compose_taps(derivative1_taps(), binomial_taps(3)) == std::vector<double>{0.125, 0.25, 0.0, -0.25, -0.125});
+}
+
+TEST_CASE("derivatives of polynomials: exact inside, zero extension at the border", "[imaging]") {
+    // f(x) = x^2 on x = 0..9, one row.
+    const Grid<double> sq = make_grid(10, 1, [](double x, double) { return x * x; });
+    const Grid<double> d1 = convolve_rows(sq, derivative1_taps());
+    for (int x = 1; x < 9; ++x) CHECK(d1(x, 0) == 2.0 * x);
+    CHECK(d1(0, 0) == 0.5);    // (f(1) - 0) / 2
+    CHECK(d1(9, 0) == -32.0);  // (0 - f(8)) / 2
+    const Grid<double> d2 = convolve_rows(sq, derivative2_taps());
+    for (int x = 1; x < 9; ++x) CHECK(d2(x, 0) == 2.0);
+    CHECK(d2(0, 0) == 1.0);    // f(1) - 2 f(0) + 0
+    CHECK(d2(9, 0) == -98.0);  // 0 - 2*81 + 64
+    // Replicated border instead: f(10) := f(9).
+    CHECK(convolve_rows(sq, derivative1_taps(), Border::replicate)(9, 0) == 8.5);
+    // Cubic: the central difference gives 3x^2 + 1 exactly.
+    const Grid<double> cube = make_grid(10, 1, [](double x, double) { return x * x * x; });
+    const Grid<double> c1 = convolve_rows(cube, derivative1_taps());
+    for (int x = 1; x < 9; ++x) CHECK(c1(x, 0) == 3.0 * x * x + 1.0);
+    // Columns behave like rows on the transposed signal; y grows downward.
+    const Grid<double> col = make_grid(1, 10, [](double, double y) { return y * y; });
+    const Grid<double> dc = convolve_cols(col, derivative1_taps());
+    for (int y = 1; y < 9; ++y) CHECK(dc(0, y) == 2.0 * y);
+    CHECK(dc(0, 9) == -32.0);
+    // Binomial smoothing keeps linear functions inside and adds the variance to a quadratic:
+    // [1 2 1]/4 has variance 1/2.
+    const Grid<double> s3 = convolve_rows(sq, binomial_taps(3));
+    for (int x = 1; x < 9; ++x) CHECK(s3(x, 0) == x * x + 0.5);
+    // The composed filter equals filtering twice where no border is involved.
+    const std::vector<double> comp = compose_taps(derivative1_taps(), binomial_taps(5));
+    const Grid<double> once = convolve_rows(cube, comp);
+    const Grid<double> twice = convolve_rows(convolve_rows(cube, binomial_taps(5)), derivative1_taps());
+    for (int x = 3; x < 7; ++x) CHECK(once(x, 0) == Approx(twice(x, 0)).epsilon(1e-12));
+}
+
+TEST_CASE("MMSODD of x^2 + y^2, x*y, and a constant at the border", "[imaging]") {
+    CHECK(mmsodd_value(2, 2, 0) == 2.0);
+    CHECK(mmsodd_value(0, 0, 1) == 1.0);
+    CHECK(mmsodd_value(3, -1, 0) == 3.0);  // eigenvalues 3 and -1
+    CHECK(mmsodd_value(0, 0, -2) == 2.0);
+    const Grid<double> bowl = make_grid(16, 14, [](double x, double y) { return x * x + y * y; });
+    const Grid<double> saddle = make_grid(16, 14, [](double x, double y) { return x * y; });
+    for (int order : {1, 3, 5}) {
+        const int margin = order / 2 + 1;
+        const Grid<double> db = mmsodd(bowl, order), ds = mmsodd(saddle, order);
+        for (int y = margin; y < 14 - margin; ++y)
+            for (int x = margin; x < 16 - margin; ++x) {
+                CHECK(db(x, y) == Approx(2.0).epsilon(1e-12));
+                CHECK(ds(x, y) == Approx(1.0).epsilon(1e-12));
+            }
+    }
+    // Constant 10, no smoothing, zero extension: at the corner fxx = fyy = 10(0 - 2 + 1) = -10,
+    // fxy = (5 - 0)/2 = 2.5, so l1 = -10, l2 = 2.5 and d = 12.5. Inside: 0.
+    const Grid<double> flat(6, 5, 10.0);
+    const Grid<double> df = mmsodd(flat, 1);
+    CHECK(df(0, 0) == 12.5);
+    CHECK(df(2, 2) == 0.0);
+}
+
+TEST_CASE("phi_bar interpolates the samples and resamples onto the half-pixel grid", "[imaging]") {
+    Lcg rng{7};
+    const Grid<double> im = make_grid(7, 5, [&](double, double) { return std::floor(rng.next() * 256) + rng.next(); });
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) {
+            CHECK(bilinear(im, x, y) == im(x, y));
+            CHECK(bilinear_doubled(im, 2 * x, 2 * y) == im(x, y));
+        }
+    CHECK(bilinear(im, 2.5, 1) == Approx(0.5 * (im(2, 1) + im(3, 1))));
+    CHECK(bilinear(im, 2.5, 1.5) == Approx(0.25 * (im(2, 1) + im(3, 1) + im(2, 2) + im(3, 2))));
+    CHECK(bilinear(im, 2.25, 3.0) == Approx(0.75 * im(2, 3) + 0.25 * im(3, 3)));
+    CHECK(bilinear(im, -3, -1) == im(0, 0));  // clamped onto Gamma
+    CHECK(bilinear(im, 99, 4.0) == im(6, 4));
+    const Grid<double> hp = half_pixel(im);
+    REQUIRE(hp.width == 13);
+    REQUIRE(hp.height == 9);
+    for (int Y = 0; Y < 9; ++Y)
+        for (int X = 0; X < 13; ++X) CHECK(hp(X, Y) == Approx(bilinear(im, X / 2.0, Y / 2.0)).epsilon(1e-12));
+}
+
+TEST_CASE("beta quantile: exactly round(beta * n) values at or above it", "[imaging]") {
+    std::vector<float> v;
+    for (int i = 1; i <= 100; ++i) v.push_back(float(i));
+    CHECK(beta_quantile(v.data(), v.size(), 0.10) == 91.0);  // the 10th largest
+    CHECK(beta_quantile(v.data(), v.size(), 0.004) == 100.0);  // k rounds to 0, at least 1
+    CHECK(beta_quantile(v.data(), v.size(), 1.0) == 1.0);
+    Lcg rng{12345};
+    std::vector<float> r(50000);
+    for (float& x : r) x = float(rng.next() * 1000.0);
+    for (double beta : {0.0095, 0.028, 0.055, 0.5}) {
+        const double t = beta_quantile(r.data(), r.size(), beta);
+        const std::size_t k = std::size_t(std::nearbyint(beta * double(r.size())));
+        std::size_t at_or_above = 0;
+        for (float x : r) at_or_above += x >= float(t);
+        std::size_t distinct_ties = 0;
+        for (float x : r) distinct_ties += x == float(t);
+        if (distinct_ties == 1) CHECK(at_or_above == k);
+        CHECK(at_or_above >= k);
+    }
+    std::vector<float> same(40, 5.0f);  // ties all count
+    CHECK(beta_quantile(same.data(), same.size(), 0.1) == 5.0);
+    CHECK(beta_quantile(nullptr, 0, 0.1) == 0.0);
+}
+
+TEST_CASE("thinning leaves one-point-wide curves", "[imaging]") {
+    Grid<std::uint8_t> bar = make_map({
+        "..............",
+        ".############.",
+        ".############.",
+        ".############.",
+        "..............",
+    });
+    thin_edges(&bar);
+    CHECK_FALSE(has_full_2x2(bar));
+    int set = 0;
+    for (auto v : bar.data) set += v;
+    CHECK(set >= 8);
+    for (int x = 3; x <= 10; ++x) {  // inside, one point per column
+        int n = 0;
+        for (int y = 0; y < bar.height; ++y) n += bar(x, y);
+        CHECK(n == 1);
+    }
+    // A staircase keeps no corner points: every point has at most two neighbours.
+    Grid<std::uint8_t> stairs = make_map({
+        "##.....",
+        ".##....",
+        "..##...",
+        "...##..",
+        "....##.",
+    });
+    thin_edges(&stairs);
+    for (int y = 0; y < stairs.height; ++y)
+        for (int x = 0; x < stairs.width; ++x) {
+            if (!stairs(x, y)) continue;
+            int n = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if ((dx || dy) && stairs.inside(x + dx, y + dy)) n += stairs(x + dx, y + dy);
+            CHECK(n <= 2);
+        }
+    CHECK(components(stairs) == components(stairs));  // still one piece:
+    int comps = 0;
+    for (int l : components(stairs)) comps = std::max(comps, l);
+    CHECK(comps == 1);
+}
+
+TEST_CASE("a step edge at x = 9.8 is found within half a pixel and thinned", "[imaging]") {
+    // Box-filtered step: pixel x covers [x - 1/2, x + 1/2]; the part right of 9.8 is bright.
+    const double e = 9.8;
+    const Grid<double> im = make_grid(24, 16, [&](double x, double) { return 100.0 * std::clamp(x + 0.5 - e, 0.0, 1.0); });
+    CannyParams p;
+    p.beta = 0.05;
+    Grid<std::uint8_t> edges;
+    CannyStats st;
+    REQUIRE(detect_edges(im, p, &edges, &st).ok());
+    REQUIRE(edges.width == 47);
+    REQUIRE(edges.height == 31);
+    CHECK_FALSE(has_full_2x2(edges));
+    for (int Y = 0; Y < edges.height; ++Y) {
+        int n = 0;
+        for (int X = 0; X < edges.width; ++X)
+            if (edges(X, Y)) {
+                ++n;
+                CHECK(std::fabs(X - 2 * e) <= 1.0);  // half-pixel grid units
+            }
+        CHECK(n == 1);
+    }
+    // A slanted edge x = 6 + 0.4 y: one point per row, within one grid unit.
+    const Grid<double> slant = make_grid(24, 20, [](double x, double y) { return 200.0 * std::clamp(x + 0.5 - (6 + 0.4 * y), 0.0, 1.0); });
+    REQUIRE(detect_edges(slant, p, &edges, &st).ok());
+    CHECK_FALSE(has_full_2x2(edges));
+    for (int Y = 4; Y < edges.height - 4; ++Y) {
+        int n = 0;
+        for (int X = 0; X < edges.width; ++X)
+            if (edges(X, Y)) {
+                ++n;
+                CHECK(std::fabs(X - 2 * (6 + 0.4 * (Y / 2.0))) <= 1.0);
+            }
+        CHECK(n == 1);
+    }
+    // A flat image has no edges whatever beta is.
+    REQUIRE(detect_edges(Grid<double>(9, 9, 42.0), p, &edges, &st).ok());
+    CHECK(std::count(edges.data.begin(), edges.data.end(), 1) == 0);
+    // Bad parameters are input errors.
+    p.beta = 0;
+    CHECK(detect_edges(im, p, &edges).code == Code::input);
+    p.beta = 0.05;
+    p.r = 1.5;
+    CHECK(detect_edges(im, p, &edges).code == Code::input);
+    CHECK(detect_edges(Grid<double>(), CannyParams(), &edges).code == Code::input);
+}
+
+TEST_CASE("a T-junction keeps its junction with the modified Canny and loses it with plain Canny", "[imaging]") {
+    // Top: 0. Bottom left: 100, bottom right: 130; the strong bar y = 11.5 meets the weaker stem
+    // x = 15.5. Plain Canny stops the stem two points short of the bar: those points lie on the
+    // bar's flank, where the magnitude peaks in no direction along the stem's gradient.
+    const Grid<double> im = make_grid(32, 24, [](double x, double y) { return y < 12 ? 0.0 : (x < 16 ? 100.0 : 130.0); });
+    CannyParams p;
+    p.beta = 0.12;
+    Grid<std::uint8_t> modified, plain;
+    CannyStats sm, sp;
+    REQUIRE(detect_edges(im, p, &modified, &sm).ok());
+    p.modified = false;
+    REQUIRE(detect_edges(im, p, &plain, &sp).ok());
+    // Points well inside the bar (left part) and the stem.
+    const int bar_x = 10, stem_y = 40;
+    auto find_in_column = [](const Grid<std::uint8_t>& m, int X) { for (int Y = 0; Y < m.height; ++Y) if (m(X, Y)) return Y * m.width + X; return -1; };
+    auto find_in_row = [](const Grid<std::uint8_t>& m, int Y) { for (int X = 0; X < m.width; ++X) if (m(X, Y)) return Y * m.width + X; return -1; };
+    const int bm = find_in_column(modified, bar_x), tm = find_in_row(modified, stem_y);
+    const int bp = find_in_column(plain, bar_x), tp = find_in_row(plain, stem_y);
+    REQUIRE(bm >= 0);
+    REQUIRE(tm >= 0);
+    REQUIRE(bp >= 0);
+    REQUIRE(tp >= 0);
+    const std::vector<int> lm = components(modified), lp = components(plain);
+    CHECK(lm[std::size_t(bm)] == lm[std::size_t(tm)]);
+    CHECK(lp[std::size_t(bp)] != lp[std::size_t(tp)]);
+    CHECK(sm.added_points > 0);
+    CHECK(sp.added_points == 0);
+}
+
+TEST_CASE("tracing splits at junctions and keeps closed loops", "[imaging]") {
+    // A T of three arms, a ring without nodes, an isolated point.
+    const Grid<std::uint8_t> m = make_map({
+        "#####.......",
+        "..#.....###.",
+        "..#....#...#",
+        "..#.....###.",
+        "............",
+        "..........#.",
+    });
+    std::vector<Polyline> lines = trace_polylines(m);
+    REQUIRE(lines.size() == 5);
+    // Node order is row-major: (0,0) first, then the junction (2,0).
+    CHECK(lines[0] == Polyline{{0, 0}, {1, 0}, {2, 0}});
+    CHECK(lines[1] == Polyline{{2, 0}, {3, 0}, {4, 0}});
+    CHECK(lines[2] == Polyline{{2, 0}, {2, 1}, {2, 2}, {2, 3}});
+    CHECK(lines[3] == Polyline{{10, 5}});
+    const Polyline& ring = lines[4];
+    CHECK(ring.size() == 9);  // 8 points, first repeated
+    CHECK(ring.front() == ring.back());
+    CHECK(ring.front() == LatticePoint{8, 1});
+}
+
+TEST_CASE("Douglas-Peucker keeps exactly the expected points", "[imaging]") {
+    const Polyline line{{0, 0}, {4, 1}, {8, 0}, {12, 6}, {16, 0}, {20, 0}};
+    // eps 2: (12,6) is 6 off the chord; then (8,0) is 3.58 off (0,0)-(12,6) and (4,1) 1 off
+    // (0,0)-(8,0); (16,0) is 2.4 off (12,6)-(20,0).
+    CHECK(douglas_peucker(line, 2.0) == Polyline{{0, 0}, {8, 0}, {12, 6}, {16, 0}, {20, 0}});
+    CHECK(douglas_peucker(line, 3.0) == Polyline{{0, 0}, {8, 0}, {12, 6}, {20, 0}});
+    CHECK(douglas_peucker(line, 0.5) == line);
+    CHECK(douglas_peucker(line, 7.0) == Polyline{{0, 0}, {20, 0}});
+    // A closed square loop keeps its corners and its repeated start.
+    const Polyline loop{{0, 0}, {4, 0}, {8, 0}, {8, 4}, {8, 8}, {4, 8}, {0, 8}, {0, 4}, {0, 0}};
+    CHECK(douglas_peucker(loop, 1.0) == Polyline{{0, 0}, {8, 0}, {8, 8}, {0, 8}, {0, 0}});
+    // The length filter counts traced points by default, simplified points on request.
+    const std::vector<Polyline> lines{line, Polyline{{0, 0}, {2, 0}, {4, 0}, {6, 0}}};
+    CHECK(simplify_polylines(lines, 2.0, 5).size() == 1);
+    CHECK(simplify_polylines(lines, 2.0, 4).size() == 2);
+    CHECK(simplify_polylines(lines, 2.0, 4, LengthRule::after_simplification).size() == 1);
+    // Long lines need no recursion.
+    Polyline zig;
+    for (int i = 0; i < 200000; ++i) zig.push_back({i, (i % 2) * 3});
+    CHECK(douglas_peucker(zig, 1.0).size() == zig.size());
+}
+
+TEST_CASE("error diffusion returns the exact count from 4 to W*H/2", "[imaging]") {
+    const int w = 40, h = 30;
+    Lcg rng{99};
+    const std::vector<Grid<double>> densities = {
+        make_grid(w, h, [](double x, double y) { return (x + 1) * (y + 2) / (w * double(h + 1)); }),
+        make_grid(w, h, [](double x, double y) { return std::exp(-((x - 20) * (x - 20) + (y - 12) * (y - 12)) / 60.0); }),
+        make_grid(w, h, [&](double, double) { return rng.next(); }),
+        make_grid(w, h, [](double x, double y) { return (int(x) / 5 + int(y) / 5) % 2 ? 1.0 : 0.1; }),
+    };
+    std::vector<std::size_t> counts = {4, 5, 7, 12, 30, 57, 100, 150, 222, 300, 451, 599, 600};
+    for (std::size_t img = 0; img < densities.size(); ++img)
+        for (Startup mode : {Startup::none, Startup::mirror, Startup::force})
+            for (std::size_t k : counts) {
+                DiffusionParams dp;
+                dp.startup = mode;
+                DiffusionResult r;
+                REQUIRE(select_points(densities[img], k, dp, &r).ok());
+                INFO("image " << img << " mode " << int(mode) << " count " << k << " got " << r.points.size());
+                CHECK(r.exact);
+                CHECK(r.points.size() == k);
+                CHECK(std::is_sorted(r.points.begin(), r.points.end(), [](LatticePoint a, LatticePoint b) {
+                    return a.y != b.y ? a.y < b.y : a.x < b.x;
+                }));
+            }
+}
+
+TEST_CASE("error diffusion: density, mask, pass counts, bad input", "[imaging]") {
+    const Grid<double> d = make_grid(4, 1, [](double x, double) { return x; });
+    const Grid<double> s = ed_density(d, 1.0);
+    CHECK(s(1, 0) == Approx(1.0 / 3));
+    CHECK(ed_density(d, 0.5)(1, 0) == Approx(std::sqrt(1.0 / 3)));
+    CHECK(ed_density(Grid<double>(3, 3, 0.0), 1.0)(1, 1) == 0.0);
+    // One row of density 1/2 with rho 1/2: v = 1/2 fires, error -1/2 carried 7/16 ahead, so the
+    // next pixel has 1/2 - 7/32 < 1/2 and stays off; the third fires again.
+    const Grid<double> half(3, 1, 0.5);
+    std::vector<LatticePoint> pts;
+    CHECK(diffuse(half, 0.5, DiffusionParams(), &pts) == 2);
+    CHECK(pts == std::vector<LatticePoint>{{0, 0}, {4, 0}});
+    // Forbidden points are never chosen.
+    Lcg rng{5};
+    const Grid<double> dens = make_grid(30, 20, [&](double, double) { return rng.next(); });
+    Grid<std::uint8_t> forbid(30, 20, 0);
+    for (int y = 0; y < 20; ++y) forbid(10, y) = forbid(11, y) = 1;
+    DiffusionParams dp;
+    dp.forbidden = &forbid;
+    DiffusionResult r;
+    REQUIRE(select_points(dens, 120, dp, &r).ok());
+    CHECK(r.exact);
+    for (LatticePoint q : r.points) CHECK(!forbid(q.x / 2, q.y / 2));
+    // Bad input.
+    Grid<std::uint8_t> wrong(3, 3, 0);
+    dp.forbidden = &wrong;
+    CHECK(select_points(dens, 10, dp, &r).code == Code::input);
+    Grid<double> neg(3, 3, 1.0);
+    neg(1, 1) = -1;
+    CHECK(select_points(neg, 2, DiffusionParams(), &r).code == Code::input);
+    CHECK(select_points(Grid<double>(), 2, DiffusionParams(), &r).code == Code::input);
+    // Zero count is trivially exact; an all-zero density cannot give points.
+    REQUIRE(select_points(dens, 0, DiffusionParams(), &r).ok());
+    CHECK(r.exact);
+    CHECK(r.points.empty());
+    REQUIRE(select_points(Grid<double>(5, 5, 0.0), 3, DiffusionParams(), &r).ok());
+    CHECK_FALSE(r.exact);
+    // Edge pixels of a half-pixel map.
+    Grid<std::uint8_t> hp(5, 3, 0);
+    hp(2, 2) = 1;
+    hp(3, 0) = 1;  // between pixels: not a pixel
+    const Grid<std::uint8_t> px = edge_pixels(hp);
+    REQUIRE(px.width == 3);
+    REQUIRE(px.height == 2);
+    CHECK(px(1, 1) == 1);
+    CHECK(std::count(px.data.begin(), px.data.end(), 1) == 1);
+}
