@@ -64,4 +64,6 @@ psnr=$("$ERD" psnr "$img" "$approx") || { say "run: psnr failed"; exit 1; }
 say "psnr:    $ERD psnr $img $approx"
 say ""
 say "$name, method $used, density $DENSITY%: PSNR $psnr dB"
-say "files:   $(ls "$OUT" | sed "s|^|$OUT/|" | tr '\n' ' ')"
+files="$mesh $approx"
+[[ $name == synth ]] && files="$img $files"
+say "files:   $files (logs: $OUT/generate.$used.log, $OUT/reconstruct.log)"
