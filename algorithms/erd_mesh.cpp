@@ -15,7 +15,8 @@ namespace {
 // coincide), and so is a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    StepOneCounter(const Grid<double>& phi, LengthRule rule) : phi_(phi), rule_(rule) {}
+    StepOneCounter(const Grid<double>& phi, LengthRule rule, double eps_unit)
+        : phi_(phi), rule_(rule), eps_unit_(eps_unit) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -36,7 +37,7 @@ public:
         l_ = l;
         eps_ = eps;
         have_count_ = true;
-        kept_ = simplify_polylines(traced_, eps, l, rule_);
+        kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
         count_ = distinct_points(kept_);
         return count_;
     }
@@ -48,6 +49,7 @@ public:
 private:
     const Grid<double>& phi_;
     LengthRule rule_;
+    double eps_unit_;
     Status status_;
     bool have_edges_ = false, have_count_ = false;
     double beta_ = 0, r_ = 0, eps_ = 0;
@@ -94,7 +96,7 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 
 Status build_initial_mesh(const Image& image, const Grid<double>& phi, const InitialMeshOptions& options,
                           Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(phi, options.length_rule);
+    StepOneCounter counter(phi, options.length_rule, options.eps_unit);
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     if (!counter.status().ok()) return counter.status();

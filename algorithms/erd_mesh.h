@@ -26,6 +26,9 @@ struct InitialMeshOptions {
     ErdParamRequest request; // flags the user gave
     // When l is counted (docs/DECISIONS.md "ERD model and methods" has the numbers).
     LengthRule length_rule = LengthRule::before_simplification;
+    // Doubled-coordinate units per unit of epsilon: 2 = epsilon in pixels, 1 = in half pixels
+    // (docs/DECISIONS.md "ERD model and methods").
+    double eps_unit = 2.0;
 };
 
 struct InitialMesh {

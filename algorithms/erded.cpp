@@ -101,6 +101,18 @@ std::size_t adjust_count(const Grid<double>& density, const Grid<std::uint8_t>& 
 
 }  // namespace
 
+Grid<std::uint8_t> edge_cells(const Grid<std::uint8_t>& edges, int width, int height) {
+    Grid<std::uint8_t> out(width, height, 0);
+    for (int Y = 0; Y < edges.height; ++Y)
+        for (int X = 0; X < edges.width; ++X) {
+            if (!edges(X, Y)) continue;
+            // The half-pixel point lies in the cell of every pixel within half a pixel of it.
+            for (int y = (Y - 1 + 1) / 2; y <= (Y + 1) / 2 && y < height; ++y)
+                for (int x = (X - 1 + 1) / 2; x <= (X + 1) / 2 && x < width; ++x) out(x, y) = 1;
+        }
+    return out;
+}
+
 Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height) {
     Grid<std::uint8_t> occ(width, height, 0);
     for (LatticePoint p : cdt.points())
@@ -151,7 +163,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
         Grid<double> density = ed_density(mmsodd(phi, 5), 0.5);
-        const Grid<std::uint8_t> on_edge = edge_pixels(mesh.edges);
+        const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         for (std::size_t i = 0; i < density.size(); ++i)
             if (on_edge.data[i]) density.data[i] = 0.0;
         DiffusionParams dp;

@@ -27,6 +27,10 @@ namespace erd {
 // lying on a constrained edge.
 Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height);
 
+// Pixels whose cell (the square of side one pixel around it) holds a point of the half-pixel
+// edge map: the pixels "on an edge" whose density ERDED sets to zero.
+Grid<std::uint8_t> edge_cells(const Grid<std::uint8_t>& half_pixel_edges, int width, int height);
+
 // Registry entry "erded" (algorithms/methods.h contract).
 Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result);
 
