@@ -14,6 +14,8 @@
 #include "algorithms/mesh_edges.h"
 #include "algorithms/render.h"
 #include "cli/stats_json.h"
+#include "cli/image_io.h"
+#include "tests/erd_run.h"
 
 using namespace erd;
 
@@ -381,4 +383,115 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
     CHECK(j["stop"].kind == Json::null);
     CHECK(j["constrained_edges"].n == 0);
     CHECK_FALSE(j.has("psnr"));
+}
+
+namespace {
+
+// The A.4.2 example as an .erd file on the 50 x 50 domain, in the thesis's one-line-per-wedge form.
+const char* kDiagonalErd =
+    "255\n4\n0 0 127\n0 98 64\n98 0 64\n98 98 90\n2\n0 2 1\n1 2 3\n4\n1 0 73\n1 1 54\n2 0 73\n2 1 54\n";
+
+bool have_erd() {
+    if (!erd_test::binary_available()) {
+        WARN("ERD_BIN not found: " << erd_test::erd_bin());
+        return false;
+    }
+    return true;
+}
+
+// Width and height from a PNG's IHDR (bytes 16..23, big-endian).
+bool png_size(const std::string& png, int* w, int* h) {
+    if (png.size() < 24 || png.compare(1, 3, "PNG") != 0) return false;
+    auto be = [&](std::size_t i) {
+        return (int(std::uint8_t(png[i])) << 24) | (int(std::uint8_t(png[i + 1])) << 16) |
+               (int(std::uint8_t(png[i + 2])) << 8) | int(std::uint8_t(png[i + 3]));
+    };
+    *w = be(16);
+    *h = be(20);
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("erd export: OBJ and PLY files of the A.4.2 example, wedge copies", "[people]") {
+    if (!have_erd()) return;
+    using namespace erd_test;
+    TempDir dir;
+    spit(dir.file("d.erd"), kDiagonalErd);
+    RunResult r = run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.obj")));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    std::string obj = slurp(dir.file("d.obj"));
+    CHECK(lines_starting(obj, "v ").size() == 6);
+    CHECK(lines_starting(obj, "f ").size() == 2);
+    // Default zscale 50 / 2550: vertex 0 (127) at 127 * 50 / 2550 = 2.4901961.
+    CHECK(lines_starting(obj, "v 0 49 2.4901960").size() == 1);
+
+    r = run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.ply")) + " --zscale 1");
+    REQUIRE(r.status == 0);
+    std::string ply = slurp(dir.file("d.ply"));
+    CHECK(count(ply, "element vertex 6\n") == 1);
+    CHECK(count(ply, "element face 2\n") == 1);
+
+    // As a .model (continuous): 4 vertices.
+    spit(dir.file("d.model"), "255\n4\n0 0 127\n0 49 64\n49 0 64\n49 49 90\n2\n0 2 1\n1 2 3\n");
+    r = run_erd("export " + sh_quote(dir.file("d.model")) + " --format ply -o -");
+    REQUIRE(r.status == 0);
+    CHECK(count(r.out, "element vertex 4\n") == 1);
+
+    // Usage and input errors: exit 2, one line naming the problem.
+    CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.stl"))).status == 2);
+    CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.obj")) + " --zscale 0").status == 2);
+    CHECK(run_erd("export " + sh_quote(dir.file("missing.erd")) + " -o " + sh_quote(dir.file("x.obj"))).status == 2);
+    CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.erd")) + " --format obj").status == 2);
+    CHECK(slurp(dir.file("d.erd")) == kDiagonalErd);
+}
+
+TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[people]") {
+    if (!have_erd()) return;
+    using namespace erd_test;
+    TempDir dir;
+    spit(dir.file("d.erd"), kDiagonalErd);
+    RunResult r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.svg")) +
+                          " --scale 2 --vertices");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    std::string svg = slurp(dir.file("d.svg"));
+    CHECK(count(group(svg, "edges"), "<line ") == 4);
+    CHECK(count(group(svg, "constrained"), "<line ") == 1);
+    CHECK(count(group(svg, "vertices"), "<circle ") == 4);
+
+    // PNG over an image of the right size; default scale makes the side 550 (11 x 50).
+    erd::Image im(50, 50, 255);
+    for (int y = 0; y < 50; ++y)
+        for (int x = 0; x < 50; ++x) im.at(x, y) = std::uint16_t(x + y < 49 ? 90 : 60);
+    spit(dir.file("d.pgm"), erd::cli::encode_pgm(im, false));
+    r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.png")) + " --over " +
+                sh_quote(dir.file("d.pgm")));
+    REQUIRE(r.status == 0);
+    int w = 0, h = 0;
+    REQUIRE(png_size(slurp(dir.file("d.png")), &w, &h));
+    CHECK(w == 550);
+    CHECK(h == 550);
+    r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("e.png")) + " --error " +
+                sh_quote(dir.file("d.pgm")) + " --scale 1 --crop 10,5,20,30");
+    REQUIRE(r.status == 0);
+    REQUIRE(png_size(slurp(dir.file("e.png")), &w, &h));
+    CHECK(w == 20);
+    CHECK(h == 30);
+    r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("r.svg")) + " --over-reconstruction");
+    REQUIRE(r.status == 0);
+    CHECK(count(slurp(dir.file("r.svg")), "href=\"data:image/png;base64,iVBORw0KGgo") == 2);
+
+    // Errors: wrong size background, two backgrounds, bad crop, bad extension.
+    erd::Image small(10, 10, 255);
+    spit(dir.file("s.pgm"), erd::cli::encode_pgm(small, false));
+    r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.png")) + " --over " + sh_quote(dir.file("s.pgm")));
+    CHECK(r.status == 2);
+    CHECK(r.err.find("10x10") != std::string::npos);
+    CHECK(run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.png")) +
+                  " --over-reconstruction --over " + sh_quote(dir.file("d.pgm"))).status == 2);
+    CHECK(run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.png")) + " --crop 40,40,20,20").status == 2);
+    CHECK(run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.gif"))).status == 2);
+    CHECK_FALSE(exists(dir.file("x.png")));
 }
