@@ -1,0 +1,148 @@
+// erd edges IMAGE -o EDGES [-p POLYLINES] [--draw-polylines FILE] [-b beta -r r -e eps -l len]
+// [--plain-canny]: the first stage of ERDED and ERDGPI (thesis 3.4.1 steps 1.1-1.3) on its own,
+// so each stage can be looked at: the half-pixel edge map and the simplified polylines.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "algorithms/bilinear.h"
+#include "algorithms/canny.h"
+#include "algorithms/douglas_peucker.h"
+#include "algorithms/polylines.h"
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/fileio.h"
+#include "cli/image_io.h"
+#include "cli/report.h"
+
+namespace erd::cli {
+
+namespace {
+
+// "erd-polylines 1" / NP / one line "n X1 Y1 ... Xn Yn" per polyline (NOTES.md).
+std::string polylines_text(const std::vector<Polyline>& lines) {
+    std::string out = "erd-polylines 1\n" + std::to_string(lines.size()) + "\n";
+    for (const Polyline& l : lines) {
+        out += std::to_string(l.size());
+        for (LatticePoint p : l) out += " " + std::to_string(p.x) + " " + std::to_string(p.y);
+        out += "\n";
+    }
+    return out;
+}
+
+// Edge map as an 8-bit image: 255 = edge, 0 = background.
+Image edge_image(const Grid<std::uint8_t>& edges) {
+    Image im(edges.width, edges.height, 255);
+    for (std::size_t i = 0; i < edges.data.size(); ++i) im.samples[i] = edges.data[i] ? 255 : 0;
+    return im;
+}
+
+// The simplified polylines drawn in black on the half-pixel grid (so the picture has the edge
+// map's size and coordinates), kept vertices as 3x3 dots; on white, or over a lightened copy of
+// phi_bar (larger files).
+Image polyline_image(const Image& src, const std::vector<Polyline>& lines, bool over_image) {
+    const Grid<double> hp = half_pixel(to_grid(src));
+    Image im(hp.width, hp.height, 255);
+    const double scale = src.maxval > 0 ? 255.0 / src.maxval : 1.0;
+    for (std::size_t i = 0; i < hp.data.size(); ++i)
+        im.samples[i] = over_image ? std::uint16_t(140.0 + 0.45 * hp.data[i] * scale + 0.5) : 255;
+    auto plot = [&](int x, int y, std::uint16_t v) {
+        if (x >= 0 && y >= 0 && x < im.width && y < im.height) im.at(x, y) = v;
+    };
+    for (const Polyline& l : lines) {
+        for (std::size_t k = 0; k + 1 < l.size(); ++k) {
+            // Bresenham between consecutive vertices.
+            int x0 = l[k].x, y0 = l[k].y;
+            const int x1 = l[k + 1].x, y1 = l[k + 1].y;
+            const int dx = x1 > x0 ? x1 - x0 : x0 - x1, dy = y1 > y0 ? y0 - y1 : y1 - y0;
+            const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+            int err = dx + dy;
+            for (;;) {
+                plot(x0, y0, 0);
+                if (x0 == x1 && y0 == y1) break;
+                const int e2 = 2 * err;
+                if (e2 >= dy) { err += dy; x0 += sx; }
+                if (e2 <= dx) { err += dx; y0 += sy; }
+            }
+        }
+        for (LatticePoint p : l)
+            for (int oy = -1; oy <= 1; ++oy)
+                for (int ox = -1; ox <= 1; ++ox) plot(p.x + ox, p.y + oy, 0);
+    }
+    return im;
+}
+
+}  // namespace
+
+int cmd_edges(int argc, char** argv) {
+    Reporter rep("edges");
+    static const std::vector<OptionSpec> specs = {
+        {'o', "output", "FILE", "edge map, (2W-1) x (2H-1), 255 = edge (.png -> PNG, else PGM)"},
+        {'p', "polylines", "FILE", "simplified polylines, format erd-polylines 1 (doubled coordinates)"},
+        {0, "draw-polylines", "FILE", "picture of the simplified polylines (half-pixel grid, black on white)"},
+        {0, "over-image", nullptr, "draw the polylines over a lightened copy of the image"},
+        {'b', "beta", "X", "fraction of half-pixel grid points at or above tau_high (default 0.095)"},
+        {'r', "ratio", "X", "tau_low = r * tau_high (default 0.4)"},
+        {'e', "tolerance", "X", "Douglas-Peucker tolerance in half-pixel units; 2 = one pixel (default 1)"},
+        {'l', "min-length", "N", "drop polylines traced with fewer than N points (default 5)"},
+        {0, "length-after", nullptr, "count -l on the simplified polyline instead"},
+        {0, "plain-canny", nullptr, "plain Canny (no junction repair of Ding and Goshtasby)"},
+        {'q', "quiet", nullptr, "no warnings or statistics"},
+        {'h', "help", nullptr, "show this help"},
+    };
+    const char* usage = "erd edges IMAGE -o EDGES [-p POLYLINES] [--draw-polylines FILE] [-b beta -r r -e eps -l len]";
+    Args args;
+    Status st = args.parse(argc, argv, 1, specs);
+    if (!st) return rep.fail(st);
+    if (args.has("help")) {
+        std::printf("usage: %s\n\nLocates edges at half-pixel resolution (modified Canny on the bilinear interpolant,\n"
+                    "thesis 3.4.1 step 1.1), traces them into polylines and simplifies them (steps 1.2, 1.3).\n"
+                    "Statistics go to stderr.\n\n%s",
+                    usage, describe(specs).c_str());
+        return 0;
+    }
+    rep.set_quiet(args.has("quiet"));
+    if (args.positional().size() != 1) return rep.fail(Status::bad_input("expected one IMAGE (see erd edges --help)"));
+    if (!args.has("output")) return rep.fail(Status::bad_input("missing -o EDGES (see erd edges --help)"));
+
+    EdgePolylineParams params;
+    params.canny.beta = args.real("beta", 0.095, 1e-9, 1.0, &st);
+    if (st) params.canny.r = args.real("ratio", 0.4, 0.0, 1.0, &st);
+    if (st) params.epsilon = args.real("tolerance", 1.0, 0.0, 1e6, &st);
+    if (st) params.min_points = int(args.integer("min-length", 5, 0, 1000000000, &st));
+    if (!st) return rep.fail(st);
+    params.canny.modified = !args.has("plain-canny");
+    const LengthRule rule = args.has("length-after") ? LengthRule::after_simplification : LengthRule::before_simplification;
+
+    const std::string in = args.positional()[0];
+    std::vector<std::string> outs = {args.str("output")};
+    if (args.has("polylines")) outs.push_back(args.str("polylines"));
+    if (args.has("draw-polylines")) outs.push_back(args.str("draw-polylines"));
+    for (const std::string& o : outs)
+        if (!(st = refuse_overwrite(o, {in}))) return rep.fail(st);
+
+    Image im;
+    std::string warning;
+    if (!(st = read_image(in, &im, &warning))) return rep.fail(st);
+    rep.warn(warning);
+
+    Grid<std::uint8_t> edges;
+    CannyStats stats;
+    if (!(st = detect_edges(im, params.canny, &edges, &stats))) return rep.fail(st);
+    const std::vector<Polyline> traced = trace_polylines(edges);
+    const std::vector<Polyline> lines = simplify_polylines(traced, params.epsilon, params.min_points, rule);
+    std::size_t points = 0;
+    for (const Polyline& l : lines) points += l.size();
+    rep.note("tau_high " + std::to_string(stats.tau_high) + ", tau_low " + std::to_string(stats.tau_low) + ", " +
+             std::to_string(stats.edge_points) + " edge points (" + std::to_string(stats.added_points) +
+             " added at junctions), " + std::to_string(traced.size()) + " traced polylines, " +
+             std::to_string(lines.size()) + " kept with " + std::to_string(points) + " vertices");
+
+    if (!(st = write_image(args.str("output"), edge_image(edges)))) return rep.fail(st);
+    if (args.has("polylines") && !(st = write_file_atomic(args.str("polylines"), polylines_text(lines)))) return rep.fail(st);
+    if (args.has("draw-polylines") && !(st = write_image(args.str("draw-polylines"), polyline_image(im, lines, args.has("over-image")))))
+        return rep.fail(st);
+    return 0;
+}
+
+}  // namespace erd::cli
