@@ -52,5 +52,13 @@ if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1;
     passed=$((passed + p)); failed=$((failed + f))
 fi
 
+echo "== embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
+if make -s -j2 embedded >"$log/embedded" 2>&1; then
+    grep -E '^(library|example|estimated|erdgpi)' "$log/embedded" || true
+    passed=$((passed + 1))
+else
+    tail -20 "$log/embedded"; echo "embedded build or example failed"; failed=$((failed + 1))
+fi
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
