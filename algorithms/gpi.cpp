@@ -82,6 +82,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     go.max_error = options.max_error;
     go.psnr = options.psnr;
     go.round_values = options.round_values;
+    go.progress = options.progress;
     GreedyStats gs;
     st = greedy_refine(cdt, image, model, go, &gs);
     if (!st) return st;

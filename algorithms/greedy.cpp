@@ -11,7 +11,7 @@ namespace erd {
 const char* to_string(GreedyStop s) {
     switch (s) {
         case GreedyStop::target: return "target";
-        case GreedyStop::max_error: return "max-error";
+        case GreedyStop::max_error: return "max_error";
         case GreedyStop::psnr: return "psnr";
         case GreedyStop::exhausted: return "exhausted";
     }
@@ -102,7 +102,12 @@ public:
 
         GreedyStop stop;
         std::vector<FaceInd> dirty;
+        const std::size_t start = cdt_.vertex_count();
+        const std::size_t todo = options_.target_vertices > start ? options_.target_vertices - start : 0;
+        const std::size_t report_every = std::max<std::size_t>(1, todo / 100);
         for (;;) {
+            if (options_.progress && stats->insertions % report_every == 0)
+                options_.progress("greedy insertion", todo ? double(stats->insertions) / double(todo) : 1.0);
             if (cdt_.vertex_count() >= options_.target_vertices) { stop = GreedyStop::target; break; }
             if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
             if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }

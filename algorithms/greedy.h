@@ -27,6 +27,7 @@
 
 #include "algorithms/image.h"
 #include "algorithms/model.h"
+#include "algorithms/progress.h"
 #include "kernel/cdt.h"
 #include "kernel/raster.h"
 #include "kernel/status.h"
@@ -90,6 +91,8 @@ struct GreedyOptions {
     // exact) instead of the real-valued plane. docs/DECISIONS.md "Methods: ED and GPI" has the
     // numbers that chose the default.
     bool round_values = false;
+    // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
+    ProgressHook progress;
 };
 
 struct GreedyStats {

@@ -9,6 +9,7 @@
 
 #include "algorithms/image.h"
 #include "algorithms/model.h"
+#include "algorithms/progress.h"
 
 namespace erd {
 
@@ -34,6 +35,8 @@ struct GenerateOptions {
     int startup = 0;             // -B ERDED error-diffusion startup: 0 mirror, 1 force, 2 none
     int ed_select = 1;           // -f ERDED point selection: 1 error diffusion, 0 random
     std::uint64_t seed = 1;      // random selection (-f 0): fixed seed, deterministic output
+
+    ProgressHook progress;       // optional: called with (stage, fraction) during long stages
 };
 
 // N for an image of width x height under these options: round(D*W*H/100) when -d was given or

@@ -175,3 +175,20 @@ TEST_CASE("generate: bad flags and impossible requests exit 2 with one line", "[
     }
     CHECK(slurp(dir.file("in.pgm")) == textured_pgm());
 }
+
+TEST_CASE("generate --stats and --psnr-report", "[basic]") {
+    if (!usable()) return;
+    TempDir dir;
+    spit(dir.file("in.pgm"), textured_pgm());
+    RunResult r = run_erd("generate --method gpi -n 30 -i " + sh_quote(dir.file("in.pgm")) + " -o " +
+                          sh_quote(dir.file("m.model")) + " --stats " + sh_quote(dir.file("s.json")) + " --psnr-report");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("erd generate: psnr: ") != std::string::npos);
+    std::string json = slurp(dir.file("s.json"));
+    CHECK(json.find("\"method\":\"gpi\"") != std::string::npos);
+    CHECK(json.find("\"points\":{\"requested\":30,\"achieved\":30}") != std::string::npos);
+    CHECK(json.find("\"stop\":\"target\"") != std::string::npos);
+    CHECK(json.find("\"psnr\":") != std::string::npos);
+    CHECK(json.find("\"psnr\":null") == std::string::npos);
+}
