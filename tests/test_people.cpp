@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -494,4 +495,58 @@ TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[people
     CHECK(run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.png")) + " --crop 40,40,20,20").status == 2);
     CHECK(run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.gif"))).status == 2);
     CHECK_FALSE(exists(dir.file("x.png")));
+}
+
+TEST_CASE("erd generate --stats -: one JSON object with the run's facts", "[people]") {
+    if (!have_erd()) return;
+    using namespace erd_test;
+    TempDir dir;
+    // 40 x 30: smooth waves with a bright disc (an edge for the ERD methods).
+    erd::Image im(40, 30, 255);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x)
+            im.at(x, y) = std::uint16_t((x - 20) * (x - 20) + (y - 15) * (y - 15) < 64 ? 220 : std::lround(90 + 40 * std::sin(x / 3.0) * std::cos(y / 4.0)));
+    spit(dir.file("in.pgm"), erd::cli::encode_pgm(im, false));
+    for (const char* method : {"gpi", "erdgpi"}) {
+        INFO(method);
+        bool erd_kind = std::string(method) == "erdgpi";
+        std::string model = dir.file(std::string("m.") + (erd_kind ? "erd" : "model"));
+        RunResult r = run_erd("generate -m " + std::string(method) + " -i " + sh_quote(dir.file("in.pgm")) +
+                              " -n 60 -o " + sh_quote(model) + " --stats - --psnr-report -q");
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        REQUIRE(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+        Json j = parse_json(r.out.substr(0, r.out.size() - 1));
+        CHECK(j["method"].s == method);
+        CHECK(j["model"].s == (erd_kind ? "erd" : "basic"));
+        CHECK(j["image"]["width"].n == 40);
+        CHECK(j["image"]["height"].n == 30);
+        CHECK(j["image"]["maxval"].n == 255);
+        CHECK(j["points"]["requested"].n == 60);
+        CHECK(j["points"]["achieved"].n == 60);
+        CHECK(j["vertices"].n == 60);
+        // Every vertex inside a triangulation of a rectangle: F = 2V - 2 - hull vertices.
+        CHECK(j["faces"].n > 60);
+        CHECK(j["faces"].n <= 2 * 60 - 6);
+        if (erd_kind) {
+            CHECK(j["parameters"].kind == Json::object);
+            CHECK(j["parameters"]["r"].n == 0.4);
+            CHECK(j["constrained_edges"].n > 0);
+            CHECK(j["constrained_vertices"].n > 2);
+        } else {
+            CHECK(j["parameters"].kind == Json::null);
+            CHECK(j["constrained_edges"].n == 0);
+        }
+        CHECK(j["stop"].s == "target");
+        CHECK(j["stages"].items.size() >= 3);
+        CHECK(j["total_seconds"].n >= 0);
+        CHECK(j["peak_memory_bytes"].n > 1e5);
+        // The PSNR of the proper reconstruction, as `erd reconstruct` + `erd psnr` give it.
+        REQUIRE(j.has("psnr"));
+        RunResult rec = run_erd("reconstruct " + sh_quote(model) + " -o " + sh_quote(dir.file("r.pgm")));
+        REQUIRE(rec.status == 0);
+        RunResult p = run_erd("psnr " + sh_quote(dir.file("in.pgm")) + " " + sh_quote(dir.file("r.pgm")));
+        REQUIRE(p.status == 0);
+        CHECK(j["psnr"].n == Approx(std::stod(p.out)).margin(1e-4));
+    }
 }
