@@ -89,3 +89,24 @@ else
     echo "imaging: bull.pgm or $(dirname "$ERD")/liberd.a missing; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# kernel (issue 3): the constrained Delaunay triangulation on 26,214 random distinct points of the
+# 1023x1023 doubled lattice (a 512x512 image): batch Hilbert-order insertion (target <= 300 ns/point),
+# one-by-one random order (< 2 us/point), 500 constraints of length ~30 (< 5 us each). In-process
+# medians of thread CPU time (bench/kernel_bench.cpp, built here against the library next to $ERD).
+if [[ -f $(dirname "$ERD")/liberd.a ]]; then
+    KB=$(dirname "$ERD")/kernel_bench
+    if ${CXX:-g++} -O2 -std=c++17 -I. bench/kernel_bench.cpp "$(dirname "$ERD")/liberd.a" -o "$KB"; then
+        "$KB" "$RUNS"
+        if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
+            for c in batch random constraints; do
+                valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect="*phase_$c*" "$KB" 1 "$c" 2>&1 >/dev/null |
+                    sed -n "s/.*Collected : \([0-9]*\).*/kernel $c: \1 instructions (one run of the phase)/p"
+            done
+        fi
+    else
+        echo "kernel: bench/kernel_bench.cpp did not build; skipped"
+    fi
+else
+    echo "kernel: $(dirname "$ERD")/liberd.a missing; skipped"
+fi
+# ---------------------------------------------------------------------------------------------
