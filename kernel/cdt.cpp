@@ -7,35 +7,6 @@
 
 namespace erd {
 
-Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
-    if (max_x < 1 || max_y < 1 || max_x >= kMaxCoord || max_y >= kMaxCoord)
-        return Status::bad_input("triangulation rectangle " + std::to_string(max_x) + "x" + std::to_string(max_y) +
-                                 " (doubled) outside 1.." + std::to_string(kMaxCoord - 1));
-    max_x_ = max_x;
-    max_y_ = max_y;
-    points_.clear();
-    out_.clear();
-    vert_.clear();
-    twin_.clear();
-    flags_.clear();
-    segments_.clear();
-    stamp_.clear();
-    change_id_ = 0;
-    last_face_ = 0;
-    begin_change();
-    add_vertex({0, 0});
-    add_vertex({max_x, 0});
-    add_vertex({max_x, max_y});
-    add_vertex({0, max_y});
-    const FaceInd f0 = new_face(), f1 = new_face();
-    set_face(f0, 0, 1, 2);
-    set_face(f1, 0, 2, 3);
-    link(3 * f0 + 2, 3 * f1 + 0);
-    // The four corners are cocircular: the tie rule picks the diagonal.
-    if (is_illegal(3 * f0 + 2)) flip(3 * f0 + 2);
-    return Status::success();
-}
-
 void Cdt::reserve(std::size_t points) {
     const std::size_t faces = 2 * points + 8;
     points_.reserve(points + 4);
@@ -54,14 +25,6 @@ void Cdt::begin_change() {
     changes_.destroyed.clear();
     changes_.created.clear();
     changes_.old_face_count = face_count();
-}
-
-void Cdt::touch(FaceInd f) {
-    if (stamp_[f] == change_id_) return;
-    stamp_[f] = change_id_;
-    if (batch_) return;  // insert_points collects the lists from the stamps at the end
-    changes_.created.push_back(f);
-    if (f < changes_.old_face_count) changes_.destroyed.push_back(f);
 }
 
 FaceInd Cdt::new_face() {
@@ -89,6 +52,35 @@ void Cdt::set_face(FaceInd f, VertInd a, VertInd b, VertInd c) {
 void Cdt::link(EdgeInd e, EdgeInd t) {
     twin_[e] = t;
     if (t != noEdge) twin_[t] = e;
+}
+
+Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
+    if (max_x < 1 || max_y < 1 || max_x >= kMaxCoord || max_y >= kMaxCoord)
+        return Status::bad_input("triangulation rectangle " + std::to_string(max_x) + "x" + std::to_string(max_y) +
+                                 " (doubled) outside 1.." + std::to_string(kMaxCoord - 1));
+    max_x_ = max_x;
+    max_y_ = max_y;
+    points_.clear();
+    out_.clear();
+    vert_.clear();
+    twin_.clear();
+    flags_.clear();
+    segments_.clear();
+    stamp_.clear();
+    change_id_ = 0;
+    last_face_ = 0;
+    begin_change();
+    add_vertex({0, 0});
+    add_vertex({max_x, 0});
+    add_vertex({max_x, max_y});
+    add_vertex({0, max_y});
+    const FaceInd f0 = new_face(), f1 = new_face();
+    set_face(f0, 0, 1, 2);
+    set_face(f1, 0, 2, 3);
+    link(3 * f0 + 2, 3 * f1 + 0);
+    // The four corners are cocircular: the tie rule picks the diagonal.
+    if (is_illegal(3 * f0 + 2)) flip(3 * f0 + 2);
+    return Status::success();
 }
 
 VertInd Cdt::add_vertex(LatticePoint p) {
@@ -417,10 +409,23 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
                                      ") outside the rectangle");
     int order = 1;
     while ((std::int64_t(1) << order) <= std::max(max_x_, max_y_)) ++order;
+    // BRIO (Amenta, Choi, Rote): points go into rounds of doubling size by a deterministic shuffle,
+    // each round in Hilbert order. Pure Hilbert order inserts each point next to the long thin
+    // triangles at the front of the filled region; the rounds keep the mesh "random-like" at every
+    // scale, so each insertion needs fewer flips, while the walks stay short.
     sort_buf_.resize(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i)
-        sort_buf_[i] = {hilbert_index(std::uint32_t(pts[i].x), std::uint32_t(pts[i].y), order),
-                        static_cast<std::uint32_t>(i)};
+    for (std::size_t i = 0; i < pts.size(); ++i) sort_buf_[i].second = static_cast<std::uint32_t>(i);
+    std::uint32_t state = 0x2545F491u;
+    for (std::size_t i = pts.size(); i > 1; --i) {
+        state = state * 1664525u + 1013904223u;
+        std::swap(sort_buf_[i - 1].second, sort_buf_[std::size_t((std::uint64_t(state) * i) >> 32)].second);
+    }
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+        int round = 0;
+        while ((std::size_t(64) << round) <= j) ++round;
+        const LatticePoint q = pts[sort_buf_[j].second];
+        sort_buf_[j].first = (std::uint64_t(round) << 52) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
+    }
     std::sort(sort_buf_.begin(), sort_buf_.end());
     if (v) v->assign(pts.size(), noVertex);
     reserve(points_.size() + pts.size());

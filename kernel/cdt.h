@@ -199,7 +199,14 @@ private:
     struct Pair { VertInd a, b; };
 
     void begin_change();
-    void touch(FaceInd f);  // marks f destroyed (if it existed before the call) and created
+    // Marks f destroyed (if it existed before the call) and created, once per call.
+    void touch(FaceInd f) {
+        if (stamp_[f] == change_id_) return;
+        stamp_[f] = change_id_;
+        if (batch_) return;  // insert_points collects the lists from the stamps at the end
+        changes_.created.push_back(f);
+        if (f < changes_.old_face_count) changes_.destroyed.push_back(f);
+    }
     void set_face(FaceInd f, VertInd a, VertInd b, VertInd c);
     void link(EdgeInd e, EdgeInd t);  // twins (t may be noEdge)
     FaceInd new_face();
