@@ -78,6 +78,15 @@ static inline void* stb_safe_memcpy(void* dst, const void* src, std::size_t n) {
 
 namespace erd::stb {
 
+// stb's last failure reason. stb builds "XXXX PNG chunk not known" from the raw chunk type, so a
+// type with a NUL byte (as read past the end of a truncated file) gives an empty string.
+static std::string reason(const char* fallback) {
+    const char* r = stbi_failure_reason();
+    if (!r) return fallback;
+    if (!*r) return "unknown chunk type (truncated file?)";
+    return r;
+}
+
 // stbi_info may allocate nothing but is given a small budget anyway, in case a future stb does.
 constexpr std::size_t kInfoBudget = std::size_t(1) << 20;
 
@@ -87,7 +96,7 @@ bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* 
     g_budget = kInfoBudget;
     g_used = 0;
     if (!stbi_info_from_memory(data, len, w, h, channels)) {
-        *why = stbi_failure_reason() ? stbi_failure_reason() : "not a PNG";
+        *why = reason("not a PNG");
         return false;
     }
     *is16 = stbi_is_16_bit_from_memory(data, len) != 0;
@@ -127,12 +136,12 @@ bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_
     // 16-bit files go through stbi_load_16 only (INPUTS.md); 8-bit and lower through stbi_load.
     if (is16) {
         stbi_us* px = stbi_load_16_from_memory(data, len, &w, &h, &got, 0);
-        if (!px) { *why = stbi_failure_reason() ? stbi_failure_reason() : "decode failed"; return false; }
+        if (!px) { *why = reason("decode failed"); return false; }
         ok = to_gray(px, w, h, got, out, why);
         stbi_image_free(px);
     } else {
         stbi_uc* px = stbi_load_from_memory(data, len, &w, &h, &got, 0);
-        if (!px) { *why = stbi_failure_reason() ? stbi_failure_reason() : "decode failed"; return false; }
+        if (!px) { *why = reason("decode failed"); return false; }
         ok = to_gray(px, w, h, got, out, why);
         stbi_image_free(px);
     }
