@@ -19,6 +19,7 @@
 #include "algorithms/render.h"
 #include "cli/stats_json.h"
 #include "cli/image_io.h"
+#include "cli/progress.h"
 #include "tests/erd_run.h"
 
 using namespace erd;
@@ -611,4 +612,23 @@ TEST_CASE("wedge copies of a generated ERD model agree with model_topology and t
     CHECK(c1.vertices == n);
     CHECK(c2.vertices == c1.vertices);
     CHECK(c2.faces == m.faces.size());
+}
+
+TEST_CASE("progress is shown only when forced or on a terminal, never when quiet", "[people]") {
+    CHECK_FALSE(cli::Progress::should_show(true, true));
+    CHECK_FALSE(cli::Progress::should_show(false, true));
+    CHECK(cli::Progress::should_show(true, false));
+    // A hook with no function is a no-op; one with a function reaches it with stage and fraction.
+    ProgressHook none;
+    CHECK_FALSE(bool(none));
+    none("x", 0.5);
+    struct Seen { std::string stage; double fraction = -1; } seen;
+    ProgressHook hook{[](void* ctx, const char* stage, double f) {
+                          static_cast<Seen*>(ctx)->stage = stage;
+                          static_cast<Seen*>(ctx)->fraction = f;
+                      },
+                      &seen};
+    hook("greedy insertion", 0.25);
+    CHECK(seen.stage == "greedy insertion");
+    CHECK(seen.fraction == 0.25);
 }
