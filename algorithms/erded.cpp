@@ -18,6 +18,8 @@ namespace erd {
 
 namespace {
 
+constexpr int kEdgeZeroRadius = 1;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -164,8 +166,13 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     } else if (k > 0) {
         Grid<double> density = ed_density(mmsodd(phi, 5), 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
-        for (std::size_t i = 0; i < density.size(); ++i)
-            if (on_edge.data[i]) density.data[i] = 0.0;
+        const int rad = kEdgeZeroRadius;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                if (!on_edge(x, y)) continue;
+                for (int v = std::max(0, y - rad); v <= std::min(image.height - 1, y + rad); ++v)
+                    for (int u = std::max(0, x - rad); u <= std::min(image.width - 1, x + rad); ++u) density(u, v) = 0.0;
+            }
         DiffusionParams dp;
         dp.startup = options.startup == 1 ? Startup::force : options.startup == 2 ? Startup::none : Startup::mirror;
         dp.forbidden = &occupied;

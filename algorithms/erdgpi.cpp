@@ -60,7 +60,7 @@ void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateRes
     result->notes.push_back("initial mesh vertices: " + std::to_string(mesh.n0));
     result->notes.push_back("dropped crossing constraints: " + std::to_string(mesh.dropped_crossing));
     result->notes.push_back("multi-wedge values: " + std::to_string(model.stats().multi_wedges) + " (line-search maximum at alpha 1: " +
-                            std::to_string(model.stats().alpha_first) + ", at 1.5: " + std::to_string(model.stats().alpha_last) + ")");
+                            std::to_string(model.stats().alpha_first) + ", at the far end: " + std::to_string(model.stats().alpha_last) + ")");
 }
 
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
@@ -95,6 +95,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     go.target_vertices = std::size_t(n);
     go.max_error = options.max_error;
     go.psnr = options.psnr;
+    go.progress = options.progress;
     // Real-valued errors: the ERD model is judged by its supersampled reconstruction, which
     // rounding the point evaluation does not model (DECISIONS.md: +0.85 dB on bull at 0.125%).
     go.round_values = false;
