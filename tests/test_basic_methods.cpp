@@ -258,3 +258,101 @@ TEST_CASE("methods refuse impossible targets and tiny images", "[basic]") {
     Image line(1, 10, 255);
     CHECK(generate_gpi(line, with_points(4), &r).code == Code::input);
 }
+
+namespace {
+
+// A model for the loop's contract: refuses candidates left of a column (admissible), and shifts
+// every plane by a bias that changes at each insertion, marking every face dirty.
+class ContractModel : public GreedyModel {
+public:
+    ContractModel(const Image& im, std::int32_t min_x) : im_(im), min_x_(min_x) {}
+    SpanPlane face_plane(const Cdt& cdt, FaceInd f) const override {
+        LatticePoint p[3];
+        double z[3];
+        for (int i = 0; i < 3; ++i) {
+            p[i] = cdt.point(cdt.face_vertex(f, i));
+            z[i] = double(im_.at(p[i].x / 2, p[i].y / 2)) + bias_;
+        }
+        SpanPlane pl;
+        pl.set(p[0], z[0], p[1], z[1], p[2], z[2]);
+        return pl;
+    }
+    Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>* dirty) override {
+        ++inserted;
+        if (cdt.point(v).x < min_x_) bad_insert = true;
+        bias_ = double(inserted % 3);  // every plane moves
+        for (FaceInd f = 0; f < FaceInd(cdt.face_count()); ++f) dirty->push_back(f);
+        return Status::success();
+    }
+    bool admissible(const Cdt&, LatticePoint p) const override { return p.x >= min_x_; }
+
+    int inserted = 0;
+    bool bad_insert = false;
+
+private:
+    const Image& im_;
+    std::int32_t min_x_;
+    double bias_ = 0.0;
+};
+
+// Squared error of the rounded approximation over the whole image, from scratch.
+double fresh_total(const Cdt& cdt, const Image& im, const GreedyModel& model) {
+    double total = 0.0;
+    std::vector<Span> spans;
+    const Lattice lat = Lattice::pixels();
+    for (FaceInd f = 0; f < FaceInd(cdt.face_count()); ++f) {
+        SpanPlane pl = model.face_plane(cdt, f);
+        scan_triangle(lat, RasterDomain{cdt.max_x(), cdt.max_y()}, cdt.point(cdt.face_vertex(f, 0)),
+                      cdt.point(cdt.face_vertex(f, 1)), cdt.point(cdt.face_vertex(f, 2)), &spans);
+        for (const Span& s : spans) {
+            double v = pl.at(lat, s.x_begin, s.y);
+            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += pl.step_x(lat)) {
+                double r = std::floor(std::clamp(v, 0.0, double(im.maxval)) + 0.5);
+                double e = double(im.at(x, s.y)) - r;
+                total += e * e;
+            }
+        }
+    }
+    return total;
+}
+
+}  // namespace
+
+TEST_CASE("greedy loop: refused candidates are banned, dirty faces are re-scanned", "[basic]") {
+    Image im = synthetic(30, 24, 21);
+    ContractModel model(im, 30);  // doubled x >= 30: pixel columns 15..29 only
+    Cdt cdt;
+    REQUIRE(cdt.reset(58, 46).ok());
+    GreedyOptions go;
+    go.target_vertices = 80;
+    go.round_values = true;
+    GreedyStats gs;
+    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    CHECK(gs.stop == GreedyStop::target);
+    CHECK(cdt.vertex_count() == 80);
+    CHECK(model.inserted == 76);
+    CHECK(gs.insertions == 76);
+    CHECK_FALSE(model.bad_insert);
+    CHECK(gs.banned > 0);
+    for (LatticePoint p : cdt.points())
+        if (p.x != 0) CHECK(p.x >= 30);
+    // The incremental total, with every plane moved at every step, equals a fresh scan.
+    CHECK(gs.total_squared_error == fresh_total(cdt, im, model));
+    std::string why;
+    CHECK(cdt.verify(&why));
+}
+
+TEST_CASE("greedy loop: the total squared error of GPI equals a fresh scan", "[basic]") {
+    Image im = synthetic(45, 31, 2);
+    BasicGreedyModel model(im);
+    Cdt cdt;
+    REQUIRE(cdt.reset(88, 60).ok());
+    GreedyOptions go;
+    go.target_vertices = 150;
+    go.round_values = true;
+    GreedyStats gs;
+    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    CHECK(gs.total_squared_error == fresh_total(cdt, im, model));
+    double mse_v = gs.total_squared_error / double(im.pixels());
+    CHECK(gs.psnr == Approx(10.0 * std::log10(255.0 * 255.0 / mse_v)));
+}
