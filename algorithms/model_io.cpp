@@ -39,6 +39,14 @@ std::string show(std::string_view tok) {
     return s;
 }
 
+// What a token should be, for messages: text, or a callable building it (only on error, so the
+// hot path builds no strings).
+std::string str(const char* s) { return s; }
+template <class F>
+std::string str(const F& f) {
+    return f();
+}
+
 // Whitespace-separated tokens with '#' comments; tracks line numbers for messages.
 class Tokens {
 public:
@@ -66,53 +74,56 @@ public:
     std::string where() const { return "line " + std::to_string(line_) + ": "; }
 
     // Unsigned integer in [lo, hi].
-    Status uint(const std::string& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
+    template <class What>
+    Status uint(const What& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
         std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
         std::uint64_t x = 0;
         const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
         if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size())
-            return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
         if (r.ec == std::errc::result_out_of_range)
-            return Status::bad_input(where() + what + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
+            return Status::bad_input(where() + str(what) + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
         if (x < lo || x > hi)
-            return Status::bad_input(where() + what + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
+            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
                                      ".." + std::to_string(hi) + ")");
         *v = x;
         return Status::success();
     }
 
     // Signed integer (coordinates: a '-' gets "outside the image" rather than "junk").
-    Status sint(const std::string& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
+    template <class What>
+    Status sint(const What& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
         std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
         std::int64_t x = 0;
         const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
         if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size())
-            return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
         if (r.ec == std::errc::result_out_of_range)
-            return Status::bad_input(where() + what + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
+            return Status::bad_input(where() + str(what) + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
         if (x < lo || x > hi)
-            return Status::bad_input(where() + what + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
+            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
                                      ".." + std::to_string(hi) + ")");
         *v = x;
         return Status::success();
     }
 
     // A finite real of moderate size.
-    Status real(const std::string& what, double* v) {
+    template <class What>
+    Status real(const What& what, double* v) {
         std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + what);
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
         double x = 0.0;
         const char* b = t.data();
         if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
         const auto r = std::from_chars(b, t.data() + t.size(), x);
         if (t.empty() || r.ptr != t.data() + t.size() || r.ec == std::errc::invalid_argument)
-            return Status::bad_input(where() + "expected " + what + ", found '" + show(t) + "'");
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
         if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
-            return Status::bad_input(where() + what + " '" + show(t) + "' is not a finite number");
+            return Status::bad_input(where() + str(what) + " '" + show(t) + "' is not a finite number");
         if (std::fabs(x) > kMaxAbsValue)
-            return Status::bad_input(where() + what + " " + show(t) + " out of range (|value| <= 1e9)");
+            return Status::bad_input(where() + str(what) + " " + show(t) + " out of range (|value| <= 1e9)");
         *v = x;
         return Status::success();
     }
@@ -142,10 +153,11 @@ private:
 
 // A count of records of at least min_bytes bytes each (separator included) must fit in the rest
 // of the text: refuses absurd counts before anything is allocated.
-Status count(Tokens& tk, const std::string& what, std::uint64_t lo, std::uint64_t min_bytes, std::uint64_t* n) {
+template <class What>
+Status count(Tokens& tk, const What& what, std::uint64_t lo, std::uint64_t min_bytes, std::uint64_t* n) {
     if (Status s = tk.uint(what, lo, std::uint64_t(1) << 40, n); !s) return s;
     if (*n > 0 && *n * min_bytes > tk.remaining() + 1)
-        return Status::bad_input(tk.where() + what + " " + std::to_string(*n) +
+        return Status::bad_input(tk.where() + str(what) + " " + std::to_string(*n) +
                                  " is more than the rest of the file holds (the file ends early or the count is wrong)");
     return Status::success();
 }
@@ -166,7 +178,7 @@ Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<
         std::array<std::uint32_t, 3>& fc = (*faces)[f];
         for (int k = 0; k < 3; ++k) {
             std::uint64_t v = 0;
-            const std::string what = "vertex index " + std::to_string(k + 1) + " of " + fname(f);
+            const auto what = [&] { return "vertex index " + std::to_string(k + 1) + " of " + fname(f); };
             if (Status s = tk.uint(what, 0, std::uint64_t(1) << 40, &v); !s) return s;
             if (v >= nv)
                 return Status::bad_input(tk.where() + fname(f) + ": vertex index " + std::to_string(v) + " out of range (" +
@@ -180,19 +192,6 @@ Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<
         if (o == 0) return Status::bad_input(tk.where() + fname(f) + " is degenerate (its vertices are collinear)");
         if (o < 0) std::swap(fc[1], fc[2]);
     }
-    // The same triangle twice.
-    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> sorted(nf);
-    for (std::size_t f = 0; f < nf; ++f) {
-        auto key = (*faces)[f];
-        std::sort(key.begin(), key.end());
-        sorted[f] = {key, std::uint32_t(f)};
-    }
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t i = 1; i < sorted.size(); ++i)
-        if (sorted[i].first == sorted[i - 1].first)
-            return Status::bad_input("line " + std::to_string((*lines)[sorted[i].second]) + ": faces " +
-                                     std::to_string(sorted[i - 1].second) + " and " + std::to_string(sorted[i].second) +
-                                     " are the same triangle");
     return Status::success();
 }
 
@@ -235,7 +234,7 @@ Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<in
 }
 
 // Assigns the corner values of an ERD model from its wedge lines (see model_io.h).
-Status apply_wedges(Tokens& tk, Model* m) {
+Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
     const std::size_t nv = m->vertices.size(), nf = m->faces.size();
     std::uint64_t nw = 0;
     if (Status s = count(tk, "wedge count", 0, 6, &nw); !s) return s;
@@ -243,18 +242,17 @@ Status apply_wedges(Tokens& tk, Model* m) {
     std::vector<std::uint8_t> set(3 * nf, 0);
     std::vector<std::uint8_t> listed(nv, 0);
     for (std::uint64_t i = 0; i < nw; ++i) {
-        const std::string what = " of wedge line " + std::to_string(i);
         std::uint64_t v = 0, f = 0;
         double z = 0.0;
-        if (Status s = tk.uint("vertex index" + what, 0, std::uint64_t(1) << 40, &v); !s) return s;
+        if (Status s = tk.uint([&] { return "vertex index of wedge line " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &v); !s) return s;
         if (v >= nv)
             return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": vertex index " + std::to_string(v) +
                                      " out of range (" + std::to_string(nv) + " vertices)");
-        if (Status s = tk.uint("face index" + what, 0, std::uint64_t(1) << 40, &f); !s) return s;
+        if (Status s = tk.uint([&] { return "face index of wedge line " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &f); !s) return s;
         if (f >= nf)
             return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face index " + std::to_string(f) +
                                      " out of range (" + std::to_string(nf) + " faces)");
-        if (Status s = tk.real("wedge value" + what, &z); !s) return s;
+        if (Status s = tk.real([&] { return "wedge value of wedge line " + std::to_string(i); }, &z); !s) return s;
         int k = -1;
         for (int c = 0; c < 3; ++c)
             if (m->faces[f][std::size_t(c)] == v) k = c;
@@ -274,9 +272,6 @@ Status apply_wedges(Tokens& tk, Model* m) {
         tk.next(&t);
         return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last wedge line (check the counts)");
     }
-    ModelTopology topo;
-    if (Status s = build_topology(*m, &topo); !s)
-        return Status::bad_input("not a triangulation of the image domain: " + s.message);
     std::vector<std::uint32_t> fan;
     std::vector<int> known;
     for (std::uint32_t v = 0; v < nv; ++v) {
@@ -420,9 +415,9 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out) {
     std::vector<int> vlines(nv);
     for (std::uint64_t i = 0; i < nv; ++i) {
         std::int64_t x = 0, y = 0;
-        if (Status s = tk.sint("x coordinate of " + vname(i), 0, kMaxDoubled, &x); !s) return s;
-        if (Status s = tk.sint("y coordinate of " + vname(i), 0, kMaxDoubled, &y); !s) return s;
-        if (Status s = tk.real("value of " + vname(i), &m.values[i]); !s) return s;
+        if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, kMaxDoubled, &x); !s) return s;
+        if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, kMaxDoubled, &y); !s) return s;
+        if (Status s = tk.real([&] { return "value of " + vname(i); }, &m.values[i]); !s) return s;
         m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
         vlines[i] = tk.line();
     }
@@ -450,8 +445,22 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out) {
     }
     const bool erd = m.kind == ModelKind::erd;
     if (Status s = check_vertices(m.vertices, vlines, erd, erd ? 1 : 2, &m.width, &m.height); !s) return s;
+    // Faces sharing a directed edge: the same triangle twice, or overlapping faces.
+    ModelTopology topo;
+    if (Status s = build_topology(m, &topo); !s) {
+        for (std::size_t f = 0; f < m.faces.size(); ++f)
+            for (std::size_t g = f + 1; g < m.faces.size() && s.message.find("faces " + std::to_string(f) + " and ") == 0; ++g) {
+                auto x = m.faces[f], y = m.faces[g];
+                std::sort(x.begin(), x.end());
+                std::sort(y.begin(), y.end());
+                if (x == y)
+                    return Status::bad_input("line " + std::to_string(flines[g]) + ": faces " + std::to_string(f) + " and " +
+                                             std::to_string(g) + " are the same triangle");
+            }
+        return Status::bad_input("not a triangulation of the image domain: " + s.message);
+    }
     if (m.kind == ModelKind::erd)
-        if (Status s = apply_wedges(tk, &m); !s) return s;
+        if (Status s = apply_wedges(tk, topo, &m); !s) return s;
     *out = std::move(m);
     return Status::success();
 }
@@ -557,8 +566,8 @@ Status read_triangulation(const std::string& text, Model* out) {
     std::vector<int> vlines(nv);
     for (std::uint64_t i = 0; i < nv; ++i) {
         std::int64_t x = 0, y = 0;
-        if (Status s = tk.sint("x coordinate of " + vname(i), 0, std::int64_t(2 * w - 2), &x); !s) return s;
-        if (Status s = tk.sint("y coordinate of " + vname(i), 0, std::int64_t(2 * h - 2), &y); !s) return s;
+        if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, std::int64_t(2 * w - 2), &x); !s) return s;
+        if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, std::int64_t(2 * h - 2), &y); !s) return s;
         m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
         vlines[i] = tk.line();
     }
@@ -581,9 +590,8 @@ Status read_triangulation(const std::string& text, Model* out) {
     m.constraints.resize(nc);
     for (std::uint64_t i = 0; i < nc; ++i) {
         std::uint64_t a = 0, b = 0;
-        const std::string what = " of constraint " + std::to_string(i);
-        if (Status s = tk.uint("first vertex index" + what, 0, std::uint64_t(1) << 40, &a); !s) return s;
-        if (Status s = tk.uint("second vertex index" + what, 0, std::uint64_t(1) << 40, &b); !s) return s;
+        if (Status s = tk.uint([&] { return "first vertex index of constraint " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &a); !s) return s;
+        if (Status s = tk.uint([&] { return "second vertex index of constraint " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &b); !s) return s;
         if (a >= nv || b >= nv)
             return Status::bad_input(tk.where() + "constraint " + std::to_string(i) + ": vertex index out of range (" +
                                      std::to_string(nv) + " vertices)");

@@ -8,8 +8,6 @@
 namespace erd {
 namespace {
 
-std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) { return (std::uint64_t(u) << 32) | v; }
-
 std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
     while (parent[i] != i) {
         parent[i] = parent[parent[i]];
@@ -28,24 +26,6 @@ Status build_topology(const Model& m, ModelTopology* t) {
             if (v >= nv)
                 return Status::bad_input("face " + std::to_string(f) + ": vertex index " + std::to_string(v) +
                                          " out of range");
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(3 * nf);
-    for (std::size_t f = 0; f < nf; ++f)
-        for (std::size_t k = 0; k < 3; ++k)
-            keys[3 * f + k] = {edge_key(m.faces[f][k], m.faces[f][(k + 1) % 3]), std::uint32_t(3 * f + k)};
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 1; i < keys.size(); ++i)
-        if (keys[i].first == keys[i - 1].first) {
-            const std::uint32_t f = keys[i - 1].second / 3, g = keys[i].second / 3;
-            return Status::bad_input("faces " + std::to_string(f) + " and " + std::to_string(g) +
-                                     " overlap (both contain the edge " + std::to_string(keys[i].first >> 32) +
-                                     "->" + std::to_string(keys[i].first & 0xffffffffu) + ")");
-        }
-    t->twin.assign(3 * nf, kNoHalfEdge);
-    for (std::size_t h = 0; h < 3 * nf; ++h) {
-        const std::uint32_t u = m.faces[h / 3][h % 3], v = m.faces[h / 3][(h + 1) % 3];
-        const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(edge_key(v, u), std::uint32_t(0)));
-        if (it != keys.end() && it->first == edge_key(v, u)) t->twin[h] = it->second;
-    }
     t->corner_begin.assign(nv + 1, 0);
     for (const auto& f : m.faces)
         for (std::uint32_t v : f) ++t->corner_begin[v + 1];
@@ -53,6 +33,27 @@ Status build_topology(const Model& m, ModelTopology* t) {
     t->corners.assign(3 * nf, 0);
     std::vector<std::uint32_t> fill(t->corner_begin.begin(), t->corner_begin.end() - 1);
     for (std::size_t h = 0; h < 3 * nf; ++h) t->corners[fill[m.faces[h / 3][h % 3]]++] = std::uint32_t(h);
+    // Outgoing half-edges of each vertex as (destination, half-edge), sorted per vertex: a
+    // repeated destination is a directed edge in two faces; the twin of u->w is found among w's.
+    const auto dest = [&](std::uint32_t h) { return m.faces[h / 3][(h + 1) % 3]; };
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out(3 * nf);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {dest(t->corners[i]), t->corners[i]};
+    for (std::size_t v = 0; v < nv; ++v) {
+        const auto b = out.begin() + t->corner_begin[v], e = out.begin() + t->corner_begin[v + 1];
+        std::sort(b, e);
+        for (auto it = b; it + 1 < e; ++it)
+            if (it->first == (it + 1)->first)
+                return Status::bad_input("faces " + std::to_string(it->second / 3) + " and " + std::to_string((it + 1)->second / 3) +
+                                         " overlap (both contain the edge " + std::to_string(v) + "->" +
+                                         std::to_string(it->first) + ")");
+    }
+    t->twin.assign(3 * nf, kNoHalfEdge);
+    for (std::size_t h = 0; h < 3 * nf; ++h) {
+        const std::uint32_t u = m.faces[h / 3][h % 3], w = dest(std::uint32_t(h));
+        const auto b = out.begin() + t->corner_begin[w], e = out.begin() + t->corner_begin[w + 1];
+        const auto it = std::lower_bound(b, e, std::make_pair(u, std::uint32_t(0)));
+        if (it != e && it->first == u) t->twin[h] = it->second;
+    }
     return Status::success();
 }
 

@@ -39,7 +39,7 @@ struct Prepared {
     std::vector<SpanPlane> planes;     // per face, through its corner values
 };
 
-Status prepare(const Model& m, Prepared* p) {
+Status prepare(const Model& m, bool count_pixels, Prepared* p) {
     if (m.width < 2 || m.height < 2 || m.width > kMaxImageSide || m.height > kMaxImageSide)
         return Status::bad_input("image size " + std::to_string(m.width) + " x " + std::to_string(m.height) +
                                  " out of range (2.." + std::to_string(kMaxImageSide) + " a side)");
@@ -90,21 +90,25 @@ Status prepare(const Model& m, Prepared* p) {
             return not_triangulation("edge " + std::to_string(u) + "-" + std::to_string(w) + " of face " + std::to_string(h / 3) +
                                      " has no neighbouring face but is not on the border");
     }
-    // Every pixel owned exactly once (implied by the above; checked directly all the same).
-    std::vector<std::uint8_t> owned(std::size_t(m.width) * std::size_t(m.height), 0);
-    std::vector<Span> spans;
-    for (const auto& fc : m.faces) {
-        scan_triangle(Lattice::pixels(), dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
-        for (const Span& s : spans) {
-            std::uint8_t* row = owned.data() + std::size_t(s.y) * std::size_t(m.width);
-            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x) row[x] = std::uint8_t(std::min(row[x] + 1, 2));
+    // Positive faces inside the rectangle, areas adding up to it, edges paired up and unpaired
+    // edges on the border: a triangulation, so every lattice point has exactly one owner
+    // (kernel/raster.h). check_triangulation() counts the pixels all the same.
+    if (count_pixels) {
+        std::vector<std::uint8_t> owned(std::size_t(m.width) * std::size_t(m.height), 0);
+        std::vector<Span> spans;
+        for (const auto& fc : m.faces) {
+            scan_triangle(Lattice::pixels(), dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
+            for (const Span& s : spans) {
+                std::uint8_t* row = owned.data() + std::size_t(s.y) * std::size_t(m.width);
+                for (std::int32_t x = s.x_begin; x <= s.x_end; ++x) row[x] = std::uint8_t(std::min(row[x] + 1, 2));
+            }
         }
+        for (std::size_t i = 0; i < owned.size(); ++i)
+            if (owned[i] != 1)
+                return not_triangulation("pixel (" + std::to_string(i % std::size_t(m.width)) + ", " +
+                                         std::to_string(i / std::size_t(m.width)) + ") is owned by " +
+                                         (owned[i] == 0 ? "no face" : "several faces"));
     }
-    for (std::size_t i = 0; i < owned.size(); ++i)
-        if (owned[i] != 1)
-            return not_triangulation("pixel (" + std::to_string(i % std::size_t(m.width)) + ", " +
-                                     std::to_string(i / std::size_t(m.width)) + ") is owned by " +
-                                     (owned[i] == 0 ? "no face" : "several faces"));
     p->vertex_value.resize(nv);
     for (std::uint32_t v = 0; v < nv; ++v) p->vertex_value[v] = erd ? vertex_wedges(m, p->topo, v).mean : m.values[v];
     p->planes.resize(nf);
@@ -148,10 +152,11 @@ void for_each_on_segment(const Lattice& l, LatticePoint p, LatticePoint q, Fn fn
     }
 }
 
+// Round to nearest (halves up) and clamp; truncation is floor for the positive values left.
 std::uint16_t to_sample(double v, double maxval) {
     if (!(v > 0.0)) return 0;  // also NaN
-    const double r = std::floor(v + 0.5);
-    return std::uint16_t(r > maxval ? maxval : r);
+    if (v >= maxval) return std::uint16_t(maxval);
+    return std::uint16_t(v + 0.5);
 }
 
 // Moves the points of lattice l on discontinuity edges to the mean of the two sides:
@@ -225,14 +230,17 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
             double* row = acc.data() + std::size_t(s.y >> 2) * W;
             double v = pl.at(l, s.x_begin, s.y);
             std::int32_t i = s.x_begin;
-            while (i <= s.x_end) {
-                const std::int32_t px = i >> 2;
-                const std::int32_t e = std::min(s.x_end, (px << 2) + 3);
+            // A partial pixel at each end, whole pixels (4 sub-samples: 4v + 6dv) between.
+            const auto partial = [&](std::int32_t e) {
                 const double n = double(e - i + 1);
-                row[px] += n * v + dv * (n * (n - 1.0) * 0.5);
+                row[i >> 2] += n * v + dv * (n * (n - 1.0) * 0.5);
                 v += dv * n;
                 i = e + 1;
-            }
+            };
+            if ((i & 3) != 0) partial(std::min(s.x_end, i | 3));
+            const double six = 6.0 * dv, four = 4.0 * dv;
+            for (; i + 3 <= s.x_end; i += 4, v += four) row[i >> 2] += 4.0 * v + six;
+            if (i <= s.x_end) partial(s.x_end);
         }
     }
     // Clamped sub-samples on the border lines.
@@ -272,12 +280,12 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
 
 Status check_triangulation(const Model& m) {
     Prepared p;
-    return prepare(m, &p);
+    return prepare(m, true, &p);
 }
 
 Status reconstruct(const Model& m, bool supersample, Image* out) {
     Prepared p;
-    if (Status s = prepare(m, &p); !s) return s;
+    if (Status s = prepare(m, false, &p); !s) return s;
     Image im(m.width, m.height, m.maxval);
     if (supersample) supersampling(m, p, &im);
     else point_evaluation(m, p, &im);

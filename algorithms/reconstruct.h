@@ -27,7 +27,8 @@ namespace erd {
 Status check_triangulation(const Model& m);
 
 // Renders m into *out (W x H, m.maxval): supersample ? 4x4 supersampling : point evaluation.
-// Runs check_triangulation first, so it never fails in any other way on any model.
+// Runs the checks of check_triangulation first (all but the pixel count, which they imply), so
+// it never fails in any other way on any model.
 Status reconstruct(const Model& m, bool supersample, Image* out);
 
 }  // namespace erd

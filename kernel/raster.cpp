@@ -95,23 +95,53 @@ std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, Lat
     // The right-border column, when it is a lattice column this triangle reaches.
     const bool border_col = s.xmax == s.mx && (s.mx - l.phase_x) % sx_step == 0;
     const std::int64_t i_border = border_col ? (s.mx - l.phase_x) / sx_step : 0;
+    // Each sloped edge bounds the row by ceil(N(j) / D) with N linear in j: keep the quotient
+    // and remainder and step them per row instead of dividing.
+    struct Stepper {
+        std::int64_t q = 0, r = 0, D = 1, dq = 0, dr = 0;  // N = q*D + r, 0 <= r < D
+        void init(std::int64_t n0, std::int64_t den, std::int64_t dn) {
+            D = den;
+            q = floor_div(n0, D);
+            r = n0 - q * D;
+            dq = floor_div(dn, D);
+            dr = dn - dq * D;
+        }
+        std::int64_t ceil() const { return q + (r != 0); }
+        void step() {
+            q += dq;
+            r += dr;
+            if (r >= D) {
+                r -= D;
+                ++q;
+            }
+        }
+    };
+    Stepper st[3];
+    const std::int64_t y0 = l.fine_y(j0);
+    for (int t = 0; t < 3; ++t) {
+        const EdgeFn& e = s.e[t];
+        // E(x) = K + A*x with x = phase_x + step_x*i and K = B*(y - ay) - A*ax.
+        const std::int64_t K0 = e.B * (y0 - e.ay) - e.A * e.ax, dK = e.B * sy_step;
+        if (e.A > 0) st[t].init(-K0 - e.A * l.phase_x, e.A * sx_step, -dK);      // i >= ceil(..): E >= 0
+        else if (e.A < 0) st[t].init(K0 + e.A * l.phase_x, -e.A * sx_step, dK);  // i <= ceil(..) - 1: E > 0
+    }
     std::int64_t count = 0;
     for (std::int64_t j = j0; j <= j1; ++j) {
         const std::int64_t y = l.fine_y(j);
         const int sy = y == s.my ? -1 : 1;
         std::int64_t lo = i_lo, hi = i_hi;
         bool empty = false;
-        for (const EdgeFn& e : s.e) {
-            // E(x) = K + A*x with x = phase_x + step_x*i.
-            const std::int64_t K = e.B * (y - e.ay) - e.A * e.ax;
-            if (e.A > 0) {  // E >= 0 (ties owned: sx*A > 0)
-                lo = std::max(lo, ceil_div(-K - e.A * l.phase_x, e.A * sx_step));
-            } else if (e.A < 0) {  // E > 0 strictly
-                hi = std::min(hi, ceil_div(K + e.A * l.phase_x, -e.A * sx_step) - 1);
-            } else if (!(K > 0 || (K == 0 && sy * e.B > 0))) {
-                empty = true;
-                break;
+        for (int t = 0; t < 3; ++t) {
+            const EdgeFn& e = s.e[t];
+            if (e.A > 0) {  // ties owned (sx*A > 0)
+                lo = std::max(lo, st[t].ceil());
+            } else if (e.A < 0) {  // ties not owned
+                hi = std::min(hi, st[t].ceil() - 1);
+            } else {  // horizontal: the whole row is in or out; ties by sy
+                const std::int64_t K = e.B * (y - e.ay);
+                empty = empty || !(K > 0 || (K == 0 && sy * e.B > 0));
             }
+            st[t].step();
         }
         if (empty) lo = hi + 1;
         // The row rule (sx = +1) never owns x == max_x; test it with sx = -1. If it is owned,

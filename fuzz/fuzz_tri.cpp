@@ -1,0 +1,44 @@
+// libFuzzer target for the -t triangulation reader (algorithms/model_io.h read_triangulation).
+// A refusal is one non-empty line with Code::input; an accepted file has indices in range,
+// positive faces, coordinates inside W x H, constraints that are face edges, and survives
+// write -> read unchanged. Replay without libFuzzer: fuzz/replay.cpp.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "algorithms/model_io.h"
+#include "kernel/predicates.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size > 1 << 16) return 0;
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    erd::Model m;
+    erd::Status s = erd::read_triangulation(text, &m);
+    if (!s.ok()) {
+        if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
+        return 0;
+    }
+    for (const auto& p : m.vertices)
+        if (p.x < 0 || p.y < 0 || p.x > 2 * m.width - 2 || p.y > 2 * m.height - 2) std::abort();
+    for (const auto& f : m.faces) {
+        for (std::uint32_t v : f)
+            if (v >= m.vertices.size()) std::abort();
+        if (erd::orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) <= 0) std::abort();
+    }
+    for (const auto& c : m.constraints) {
+        bool edge = false;
+        for (const auto& f : m.faces)
+            edge = edge || (std::count(f.begin(), f.end(), c[0]) == 1 && std::count(f.begin(), f.end(), c[1]) == 1);
+        if (!edge || c[0] >= c[1]) std::abort();
+    }
+    std::string out;
+    if (!erd::write_triangulation(m, &out).ok()) std::abort();
+    erd::Model r;
+    if (!erd::read_triangulation(out, &r).ok()) std::abort();
+    if (r.vertices != m.vertices || r.faces != m.faces || r.constraints != m.constraints || r.width != m.width ||
+        r.height != m.height)
+        std::abort();
+    return 0;
+}
