@@ -1,6 +1,8 @@
 // erd render MODEL -o OUT.svg|OUT.png: a picture of the mesh, drawn to scale, optionally over the
 // original image, the model's own reconstruction, or an error map.
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -59,17 +61,24 @@ static Status encode_rgb_png(const RgbImage& im, std::vector<unsigned char>* png
     return ok ? Status::success() : Status::failure("PNG encoding failed");
 }
 
-// "X,Y,W,H" in pixels.
+// "X,Y,W,H" in pixels: four decimal integers, X, Y >= 0, W, H > 0, each below 2^31.
 static bool parse_crop(const std::string& s, RenderOptions* o) {
-    int v[4];
-    int used = 0;
-    if (std::sscanf(s.c_str(), "%d,%d,%d,%d%n", &v[0], &v[1], &v[2], &v[3], &used) != 4 || std::size_t(used) != s.size())
-        return false;
-    if (v[0] < 0 || v[1] < 0 || v[2] <= 0 || v[3] <= 0) return false;
-    o->crop_x = v[0];
-    o->crop_y = v[1];
-    o->crop_w = v[2];
-    o->crop_h = v[3];
+    long v[4];
+    const char* p = s.c_str();
+    for (int i = 0; i < 4; ++i) {
+        if (*p < '0' || *p > '9') return false;
+        char* end = nullptr;
+        errno = 0;
+        v[i] = std::strtol(p, &end, 10);
+        if (errno != 0 || v[i] > 0x7fffffffL) return false;
+        p = end;
+        if (i < 3 && *p++ != ',') return false;
+    }
+    if (*p != '\0' || v[2] <= 0 || v[3] <= 0) return false;
+    o->crop_x = int(v[0]);
+    o->crop_y = int(v[1]);
+    o->crop_w = int(v[2]);
+    o->crop_h = int(v[3]);
     return true;
 }
 
@@ -89,7 +98,9 @@ int cmd_render(int argc, char** argv) {
         {'q', "quiet", nullptr, "no warnings"},
         {'h', "help", nullptr, "show this help"},
     };
-    const char* usage = "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--vertices] [--over IMAGE | --over-reconstruction | --error ORIGINAL]";
+    const char* usage =
+        "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--crop X,Y,W,H] [--vertices] [--no-edges]\n"
+        "                  [--over IMAGE | --over-reconstruction | --error ORIGINAL [--error-max E]]";
     Args args;
     Status st = args.parse(argc, argv, 1, specs);
     if (!st) return rep.usage(st.message, usage);
