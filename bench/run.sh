@@ -110,3 +110,16 @@ else
     echo "kernel: $(dirname "$ERD")/liberd.a missing; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# ---------------------------------------------------------------------------------------------
+# erdmodel (issue 6): ERDGPI and ERDED, whole process: read the PGM, mesh, write the .erd.
+# Targets: erdgpi lena 1% <= 75 ms, erdgpi bull 1% <= 150 ms, erded lena 1% <= 60 ms;
+# peak RSS <= 64 bytes per pixel (lena 16384 KB, bull 49152 KB).
+if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm ]]; then
+    bench_case "generate erdgpi lena 1%" 75 -- "$ERD" generate --method erdgpi -q -x 2 -d 1 -i "$IMAGES/lena.pgm" -o "$OUT/lena.erdgpi.erd"
+    bench_case "generate erdgpi bull 1%" 150 -- "$ERD" generate --method erdgpi -q -x 2 -d 1 -i "$IMAGES/bull.pgm" -o "$OUT/bull.erdgpi.erd"
+    bench_case "generate erded lena 1%" 60 -- "$ERD" generate --method erded -q -x 2 -d 1 -i "$IMAGES/lena.pgm" -o "$OUT/lena.erded.erd"
+    echo "erdmodel: RSS limits (64 B/pixel): lena 16384 KB, bull 49152 KB"
+else
+    echo "erdmodel: lena.pgm or bull.pgm missing in $IMAGES; skipped"
+fi
+# ---------------------------------------------------------------------------------------------
