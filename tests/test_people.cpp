@@ -632,3 +632,43 @@ TEST_CASE("progress is shown only when forced or on a terminal, never when quiet
     CHECK(seen.stage == "greedy insertion");
     CHECK(seen.fraction == 0.25);
 }
+
+TEST_CASE("the manual names every long option of every subcommand", "[people]") {
+    if (!have_erd()) return;
+    using namespace erd_test;
+    const char* env = std::getenv("ERD_MANUAL");
+    std::string manual = slurp(env && *env ? env : "docs/manual.md");
+    if (manual.empty()) {
+        WARN("docs/manual.md not found (run from the repository root or set ERD_MANUAL)");
+        return;
+    }
+    RunResult help = run_erd("help");
+    REQUIRE(help.status == 0);
+    // Subcommand names: the lines "  name  summary" after "Subcommands:".
+    std::vector<std::string> subs;
+    std::istringstream in(help.out.substr(help.out.find("Subcommands:")));
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line) && line.size() > 2 && line[0] == ' ') {
+        std::istringstream words(line);
+        std::string name;
+        words >> name;
+        if (name != "help") subs.push_back(name);
+    }
+    REQUIRE(subs.size() >= 8);
+    for (const std::string& sub : subs) {
+        INFO("erd " << sub);
+        CHECK(manual.find("### erd " + sub + "\n") != std::string::npos);
+        RunResult r = run_erd(sub + " --help");
+        REQUIRE(r.status == 0);
+        for (std::size_t p = r.out.find("--"); p != std::string::npos; p = r.out.find("--", p + 2)) {
+            std::size_t e = p + 2;
+            while (e < r.out.size() && (std::isalnum(static_cast<unsigned char>(r.out[e])) || r.out[e] == '-')) ++e;
+            std::string flag = r.out.substr(p, e - p);
+            if (flag.size() < 4 || flag == "--help") continue;
+            INFO(flag);
+            CHECK(manual.find(flag) != std::string::npos);
+            p = e;
+        }
+    }
+}
