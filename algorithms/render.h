@@ -28,7 +28,7 @@ struct RgbImage {
     RgbImage(int w, int h, std::uint8_t fill) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h) * 3, fill) {}
 };
 
-// Largest side of a rendered picture, checked before allocating (64 MiB of RGB at most).
+// Largest rendered picture, checked before allocating: 8192 px a side, 2^24 px (48 MiB of RGB).
 constexpr int kMaxRenderSide = 4096 * 2;
 constexpr std::int64_t kMaxRenderPixels = std::int64_t(1) << 24;
 
