@@ -18,6 +18,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "algorithms/image.h"
@@ -47,6 +48,13 @@ public:
     // phi: the image samples (pixel grid, W x H), kept by reference for the model's lifetime.
     // The MMSODD grid of the line search is computed once, on the first multi-wedge vertex.
     ErdModel(const Grid<double>& phi, const WedgeValueOptions& options);
+
+    // Supplies the MMSODD grid of the line search (it must be mmsodd(phi, smoothing_order) with
+    // zero borders), so a caller that computed it already (ERDED's density) does not pay twice.
+    void set_mmsodd(Grid<double> grid) {
+        mmsodd_ = std::move(grid);
+        have_mmsodd_ = true;
+    }
 
     // Computes and stores the wedge values of v from the current triangulation.
     void assign_vertex(const Cdt& cdt, VertInd v);

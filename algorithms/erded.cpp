@@ -161,10 +161,13 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     std::vector<LatticePoint> pts;
     std::size_t adjusted = 0;
     int passes = 0;
+    const WedgeValueOptions wo = wedge_options(options);
+    Grid<double> d5;  // the order-5 MMSODD, shared with the wedge-value line search when -s 5
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
-        Grid<double> density = ed_density(mmsodd(phi, 5), 0.5);
+        d5 = mmsodd(phi, 5);
+        Grid<double> density = ed_density(d5, 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = kEdgeZeroRadius;
         for (int y = 0; y < image.height; ++y)
@@ -189,7 +192,8 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     std::vector<VertInd> ids;
     st = cdt.insert_points(pts, &ids);
     if (!st) return st;
-    ErdModel model(phi, wedge_options(options));
+    ErdModel model(phi, wo);
+    if (wo.rule == 1 && wo.smoothing_order == 5 && d5.width > 0) model.set_mmsodd(std::move(d5));
     model.assign_all(cdt);
     result->stages.push_back({"triangulation and wedge values", seconds_since(t0)});
 
