@@ -144,6 +144,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     result->requested = std::size_t(n);
     const Grid<double> phi = to_grid(image);
 
+    options.progress("initial mesh", 0.0);
     auto t0 = std::chrono::steady_clock::now();
     Cdt cdt;
     InitialMeshOptions mo;
@@ -156,6 +157,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     result->stages.push_back({"initial mesh", seconds_since(t0)});
 
     t0 = std::chrono::steady_clock::now();
+    options.progress("sample selection", 0.0);
     const std::size_t k = cdt.vertex_count() < std::size_t(n) ? std::size_t(n) - cdt.vertex_count() : 0;
     const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
     std::vector<LatticePoint> pts;

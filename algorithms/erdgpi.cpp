@@ -73,6 +73,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     result->requested = std::size_t(n);
     const Grid<double> phi = to_grid(image);
 
+    options.progress("initial mesh", 0.0);
     auto t0 = std::chrono::steady_clock::now();
     Cdt cdt;
     InitialMeshOptions mo;
@@ -85,6 +86,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     result->stages.push_back({"initial mesh", seconds_since(t0)});
 
     t0 = std::chrono::steady_clock::now();
+    options.progress("wedge values", 0.0);
     ErdModel model(phi, wedge_options(options));
     model.assign_all(cdt);
     result->stages.push_back({"wedge values", seconds_since(t0)});
