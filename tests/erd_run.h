@@ -13,9 +13,16 @@
 
 namespace erd_test {
 
+// Absolute, so tests may run it from another folder.
 inline std::string erd_bin() {
     const char* b = std::getenv("ERD_BIN");
-    return b && *b ? b : "build/erd";
+    std::string bin = b && *b ? b : "build/erd";
+    if (!bin.empty() && bin[0] != '/') {
+        char* cwd = ::getcwd(nullptr, 0);
+        if (cwd) bin = std::string(cwd) + "/" + bin;
+        std::free(cwd);
+    }
+    return bin;
 }
 
 // Single-quotes s for /bin/sh.
