@@ -505,3 +505,30 @@ TEST_CASE("the CDT of random points and constraints does not depend on the inser
     }
     CHECK(compared >= 5);
 }
+
+TEST_CASE("insert_points maps every input (duplicates too) and reports the whole batch", "[kernel]") {
+    Cdt cdt;
+    must_reset(cdt, 30, 20);
+    must_insert(cdt, {3, 3});
+    const std::size_t nf = cdt.face_count();
+    std::vector<LatticePoint> pts = {{10, 10}, {3, 3}, {29, 1}, {10, 10}, {0, 7}, {15, 20}, {21, 13}, {30, 20}};
+    std::vector<VertInd> v;
+    REQUIRE(cdt.insert_points(pts, &v).ok());
+    REQUIRE(v.size() == pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) CHECK(cdt.point(v[i]) == pts[i]);
+    CHECK(v[0] == v[3]);
+    CHECK(v[1] == 4);
+    CHECK(v[7] == 2);
+    CHECK(cdt.vertex_count() == 10);
+    const auto& ch = cdt.changes();
+    CHECK(ch.old_face_count == nf);
+    std::set<FaceInd> created(ch.created.begin(), ch.created.end());
+    CHECK(created.size() == ch.created.size());
+    for (FaceInd f = FaceInd(nf); f < cdt.face_count(); ++f) CHECK(created.count(f) == 1);
+    for (FaceInd f : ch.destroyed) CHECK(created.count(f) == 1);
+    CHECK(ch.created.size() == ch.destroyed.size() + (cdt.face_count() - nf));
+    must_verify(cdt);
+    std::vector<LatticePoint> bad = {{1, 1}, {31, 0}};
+    CHECK_FALSE(cdt.insert_points(bad, &v).ok());
+    CHECK(cdt.vertex_count() == 10);  // checked before anything is inserted
+}
