@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -106,26 +107,26 @@ Status write_file_atomic(const std::string& path, const std::string& bytes) {
     std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
     std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
     if (base.empty()) return Status::failure(path + ": not a file name");
-    std::string tmp = (dir == "/" ? "" : dir) + "/." + base + ".tmp-XXXXXX";
-    std::vector<char> name(tmp.begin(), tmp.end());
-    name.push_back('\0');
-    int fd = ::mkstemp(name.data());
-    if (fd < 0) {
-        int e = errno;
-        // ENOTDIR: a parent is a file; ENOENT: the folder does not exist; EACCES/EROFS: not writable.
-        return Status::failure(os_error(path, e));
+    // The temporary name is ours (not mkstemp's) so open() can create it with mode 0666 and let
+    // the kernel apply the umask, as for any new file, without touching the process umask.
+    static std::atomic<unsigned> counter{0};
+    std::string tmp;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        tmp = (dir == "/" ? "" : dir) + "/." + base + ".tmp-" + std::to_string(::getpid()) + "-" +
+              std::to_string(counter.fetch_add(1));
+        fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno != EEXIST) break;
     }
-    tmp.assign(name.data());
+    if (fd < 0) {
+        // ENOTDIR: a parent is a file; ENOENT: the folder does not exist; EACCES/EROFS: not writable.
+        return Status::failure(os_error(path, errno));
+    }
     int err = 0;
     bool ok = write_all(fd, bytes, &err);
     if (ok && ::fsync(fd) != 0) { err = errno; ok = false; }
-    if (ok) {
-        // mkstemp makes 0600; give the file the mode a plain creat() would have.
-        mode_t mask = ::umask(0);
-        ::umask(mask);
-        mode_t mode = exists ? (st.st_mode & 07777) : (0666 & ~mask);
-        if (::fchmod(fd, mode) != 0) { err = errno; ok = false; }
-    }
+    // An existing file keeps its permissions.
+    if (ok && exists && ::fchmod(fd, st.st_mode & 07777) != 0) { err = errno; ok = false; }
     if (::close(fd) != 0 && ok) { err = errno; ok = false; }
     if (ok && ::rename(tmp.c_str(), target.c_str()) != 0) { err = errno; ok = false; }
     if (!ok) {

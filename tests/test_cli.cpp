@@ -123,6 +123,14 @@ TEST_CASE("write_file_atomic: replaces whole files, keeps the mode, leaves no te
     REQUIRE(::stat(f.c_str(), &st) == 0);
     CHECK((st.st_mode & 0777) == 0640);
     CHECK(dir.listing() == "out.pgm ");
+    // A new file gets 0666 less the umask, like any file a program creates.
+    mode_t old_mask = ::umask(027);
+    erd::Status fresh = erd::cli::write_file_atomic(dir.file("fresh"), "x");
+    ::umask(old_mask);
+    REQUIRE(fresh.ok());
+    REQUIRE(::stat(dir.file("fresh").c_str(), &st) == 0);
+    CHECK((st.st_mode & 0777) == 0640);
+    REQUIRE(::unlink(dir.file("fresh").c_str()) == 0);
     // Through a symbolic link: the link stays, its target changes.
     REQUIRE(::symlink("out.pgm", dir.file("link.pgm").c_str()) == 0);
     REQUIRE(erd::cli::write_file_atomic(dir.file("link.pgm"), "third").ok());
