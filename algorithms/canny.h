@@ -42,7 +42,7 @@ struct CannyParams {
     double r = 0.4;           // tau_low = r * tau_high, in [0, 1]
     bool modified = true;     // Ding-Goshtasby junction repair; false = plain Canny
     int smoothing_order = 5;  // odd binomial order of the gradient filter
-    int max_link = 6;         // longest secondary path (grid points) the modification may add
+    int max_link = 6;         // longest path (grid points) the modification may add, 0 .. 250
     bool thin = true;         // thinning to one pixel wide
     // Border extension for the gradient filter. Zero extension (the thesis's rule for ED filtering)
     // makes the whole image frame a strong edge that eats a third of the beta quantile on bull, so

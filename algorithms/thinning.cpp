@@ -1,6 +1,7 @@
 #include "algorithms/thinning.h"
 
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 namespace erd {
@@ -42,20 +43,38 @@ inline int connectivity8(unsigned r) {
 
 }  // namespace
 
-void thin_edges(Grid<std::uint8_t>* map) {
+// Calls fn(index) for every nonzero byte of data[0..n) in increasing order, skipping zero bytes
+// eight at a time (edge maps are mostly empty).
+template <class Fn>
+void for_each_set(const std::uint8_t* data, std::size_t n, Fn fn) {
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        std::uint64_t word;
+        std::memcpy(&word, data + i, 8);
+        if (!word) continue;
+        for (std::size_t j = i; j < i + 8; ++j)
+            if (data[j]) fn(j);
+    }
+    for (; i < n; ++i)
+        if (data[i]) fn(i);
+}
+
+std::size_t thin_edges(Grid<std::uint8_t>* map) {
     const int w = map->width, h = map->height;
-    if (w <= 0 || h <= 0) return;
+    if (w <= 0 || h <= 0) return 0;
     // Work on a copy with a zero frame so the ring never leaves the buffer.
     const int s = w + 2;
     std::vector<std::uint8_t> b(std::size_t(s) * std::size_t(h + 2), 0);
     std::vector<std::ptrdiff_t> live;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            if ((*map)(x, y)) {
-                const std::ptrdiff_t i = std::ptrdiff_t(y + 1) * s + x + 1;
-                b[std::size_t(i)] = 1;
-                live.push_back(i);
-            }
+    for_each_set(map->data.data(), map->data.size(), [&](std::size_t k) {
+        const std::ptrdiff_t i = std::ptrdiff_t(k / std::size_t(w) + 1) * s + std::ptrdiff_t(k % std::size_t(w)) + 1;
+        b[std::size_t(i)] = 1;
+        map->data[k] = 1;
+        live.push_back(i);
+    });
+    auto clear_in_map = [&](std::ptrdiff_t i) {
+        map->data[std::size_t(i / s - 1) * std::size_t(w) + std::size_t(i % s - 1)] = 0;
+    };
 
     std::vector<std::ptrdiff_t> doomed;
     for (bool changed = true; changed;) {
@@ -70,7 +89,10 @@ void thin_edges(Grid<std::uint8_t>* map) {
                 const bool ok = step == 0 ? (N & E & S) == 0 && (E & S & Wb) == 0 : (N & E & Wb) == 0 && (N & S & Wb) == 0;
                 if (ok) doomed.push_back(i);
             }
-            for (std::ptrdiff_t i : doomed) b[std::size_t(i)] = 0;
+            for (std::ptrdiff_t i : doomed) {
+                b[std::size_t(i)] = 0;
+                clear_in_map(i);
+            }
             if (!doomed.empty()) {
                 changed = true;
                 std::size_t k = 0;
@@ -84,15 +106,19 @@ void thin_edges(Grid<std::uint8_t>* map) {
     // Staircase corners: a point whose set 4-neighbours are exactly two at a right angle (N+E, E+S,
     // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time, so the
     // decision for a point sees earlier deletions and a corner pair never loses both points.
+    std::size_t left = 0;
     for (std::ptrdiff_t i : live) {
         const unsigned r = ring(&b[std::size_t(i)], s);
         const unsigned four = r & 0x55u;
         const bool corner = four == 0x05u || four == 0x14u || four == 0x50u || four == 0x41u;
-        if (corner && connectivity8(r) == 1) b[std::size_t(i)] = 0;
+        if (corner && connectivity8(r) == 1) {
+            b[std::size_t(i)] = 0;
+            clear_in_map(i);
+        } else {
+            ++left;
+        }
     }
-
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) (*map)(x, y) = b[std::size_t(y + 1) * std::size_t(s) + std::size_t(x) + 1];
+    return left;
 }
 
 }  // namespace erd

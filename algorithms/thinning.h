@@ -1,5 +1,6 @@
 // Thinning of binary edge maps to one-pixel-wide 8-connected curves.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "algorithms/image.h"
@@ -10,7 +11,8 @@ namespace erd {
 // deletes staircase corners: a point with two 4-neighbours at a right angle whose removal keeps
 // the 8-connectivity of its neighbourhood (Yokoi 8-connectivity number 1). After it, no 2x2 block
 // is fully set and a point inside a curve has exactly two 8-neighbours. Nonzero = set; the result
-// holds 0/1. Works only on the set points (a list), so cost follows the edge count, not the area.
-void thin_edges(Grid<std::uint8_t>* map);
+// holds 0/1. Returns the number of set points left. Works on a list of the set points (found by
+// skipping zero bytes eight at a time), so the cost follows the edge count more than the area.
+std::size_t thin_edges(Grid<std::uint8_t>* map);
 
 }  // namespace erd
