@@ -106,7 +106,8 @@ clean:
 # names as symlinks to it, lib/liberd.a, the library headers under include/erd/ (kernel/ and
 # algorithms/ keep their names, so the headers' own "kernel/x.h" includes resolve with
 # -I$(includedir)/erd, which erd.pc supplies), include/erd/erd.h (forwards to algorithms/erd.h),
-# lib/pkgconfig/erd.pc and share/man/man1/erd.1. It installs what $(BUILD) already holds.
+# lib/pkgconfig/erd.pc and share/man/man1/erd.1 (with a ".so" page per thesis name). It installs
+# what $(BUILD) already holds.
 PREFIX     ?= /usr/local
 DESTDIR    ?=
 BINDIR     ?= $(PREFIX)/bin
@@ -132,10 +133,12 @@ install: $(BUILD)/erd $(BUILD)/liberd.a
 	  'Version: $(ERD_PC_VERSION)' 'Cflags: -I$${includedir}/erd -I$${includedir}' 'Libs: -L$${libdir} -lerd' \
 	  > $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc
 	install -m 644 docs/erd.1 $(DESTDIR)$(MANDIR)/man1/erd.1
+	for a in $(ERD_ALIASES); do echo '.so man1/erd.1' > $(DESTDIR)$(MANDIR)/man1/$$a.1; done
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/erd $(addprefix $(DESTDIR)$(BINDIR)/,$(ERD_ALIASES)) \
-	  $(DESTDIR)$(LIBDIR)/liberd.a $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc $(DESTDIR)$(MANDIR)/man1/erd.1
+	  $(DESTDIR)$(LIBDIR)/liberd.a $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc $(DESTDIR)$(MANDIR)/man1/erd.1 \
+	  $(patsubst %,$(DESTDIR)$(MANDIR)/man1/%.1,$(ERD_ALIASES))
 	rm -rf $(DESTDIR)$(INCLUDEDIR)/erd
 
 # `make embedded`: kernel/ + algorithms/ at -Os with -fno-exceptions -fno-rtti in their own build

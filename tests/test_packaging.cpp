@@ -491,7 +491,7 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
     const std::string top = dest.path + prefix;
     for (const char* f : {"bin/erd", "lib/liberd.a", "lib/pkgconfig/erd.pc", "share/man/man1/erd.1", "include/erd/erd.h",
                           "include/erd/algorithms/erd.h", "include/erd/algorithms/model.h", "include/erd/kernel/cdt.h",
-                          "include/erd/kernel/status.h"}) {
+                          "include/erd/kernel/status.h", "share/man/man1/ywb.1", "share/man/man1/Cal_PSNR.1"}) {
         INFO(f);
         CHECK(exists(top + "/" + f));
     }
