@@ -97,27 +97,48 @@ bool Cdt::is_illegal(EdgeInd e) const {
     return incircle_perturbed(a, b, c, d) > 0;
 }
 
+// Raw pointers on purpose: flags_ is a byte array, and a store through a byte pointer may alias
+// anything, which would make the compiler reload every vector's data pointer after each flag store.
 EdgeInd Cdt::flip(EdgeInd e) {
-    const EdgeInd t = twin_[e];
-    const FaceInd f1 = face_of(e), f2 = face_of(t);
-    const VertInd a = vert_[e], b = vert_[t], c = vert_[prev_edge(e)], d = vert_[prev_edge(t)];
+    VertInd* const V = vert_.data();
+    EdgeInd* const T = twin_.data();
+    std::uint8_t* const F = flags_.data();
+    EdgeInd* const O = out_.data();
+    const EdgeInd t = T[e];
+    const EdgeInd g1 = 3 * face_of(e), g2 = 3 * face_of(t);
     const EdgeInd ebc = next_edge(e), eca = prev_edge(e), ead = next_edge(t), edb = prev_edge(t);
-    const EdgeInd tbc = twin_[ebc], tca = twin_[eca], tad = twin_[ead], tdb = twin_[edb];
-    const std::uint8_t fbc = flags_[ebc], fca = flags_[eca], fad = flags_[ead], fdb = flags_[edb];
-    set_face(f1, c, a, d);
-    set_face(f2, d, b, c);
-    link(3 * f1 + 0, tca);
-    flags_[3 * f1 + 0] = fca;
-    link(3 * f1 + 1, tad);
-    flags_[3 * f1 + 1] = fad;
-    link(3 * f2 + 0, tdb);
-    flags_[3 * f2 + 0] = fdb;
-    link(3 * f2 + 1, tbc);
-    flags_[3 * f2 + 1] = fbc;
-    link(3 * f1 + 2, 3 * f2 + 2);
-    flags_[3 * f1 + 2] = 0;
-    flags_[3 * f2 + 2] = 0;
-    return 3 * f1 + 2;
+    const VertInd a = V[e], b = V[t], c = V[eca], d = V[edb];
+    const EdgeInd tbc = T[ebc], tca = T[eca], tad = T[ead], tdb = T[edb];
+    const std::uint8_t fbc = F[ebc], fca = F[eca], fad = F[ead], fdb = F[edb];
+    V[g1] = c;
+    V[g1 + 1] = a;
+    V[g1 + 2] = d;
+    V[g2] = d;
+    V[g2 + 1] = b;
+    V[g2 + 2] = c;
+    O[a] = g1 + 1;
+    O[b] = g2 + 1;
+    O[c] = g1;
+    O[d] = g2;
+    T[g1] = tca;
+    if (tca != noEdge) T[tca] = g1;
+    T[g1 + 1] = tad;
+    if (tad != noEdge) T[tad] = g1 + 1;
+    T[g2] = tdb;
+    if (tdb != noEdge) T[tdb] = g2;
+    T[g2 + 1] = tbc;
+    if (tbc != noEdge) T[tbc] = g2 + 1;
+    T[g1 + 2] = g2 + 2;
+    T[g2 + 2] = g1 + 2;
+    F[g1] = fca;
+    F[g1 + 1] = fad;
+    F[g1 + 2] = 0;
+    F[g2] = fdb;
+    F[g2 + 1] = fbc;
+    F[g2 + 2] = 0;
+    touch(g1 / 3);
+    touch(g2 / 3);
+    return g1 + 2;
 }
 
 // Lawson flips after a split: stack_ holds the edges opposite the new vertex p (p = org(prev(e))).
@@ -149,16 +170,17 @@ void Cdt::split_face(FaceInd f, VertInd p) {
     set_face(n1, b, c, p);
     set_face(n2, c, a, p);
     link(3 * f, tab);
-    flags_[3 * f] = fab;
     link(3 * n1, tbc);
-    flags_[3 * n1] = fbc;
     link(3 * n2, tca);
-    flags_[3 * n2] = fca;
     link(3 * f + 1, 3 * n1 + 2);
     link(3 * n1 + 1, 3 * n2 + 2);
     link(3 * n2 + 1, 3 * f + 2);
-    flags_[3 * f + 1] = 0;
-    flags_[3 * f + 2] = 0;
+    std::uint8_t* const F = flags_.data();  // byte stores last (see flip)
+    F[3 * f] = fab;
+    F[3 * n1] = fbc;
+    F[3 * n2] = fca;
+    F[3 * f + 1] = 0;
+    F[3 * f + 2] = 0;
     stack_.clear();
     stack_.push_back(3 * f);
     stack_.push_back(3 * n1);
@@ -240,11 +262,11 @@ Location Cdt::walk(LatticePoint p, FaceInd start) const {
     for (std::size_t steps = 0; steps < limit; ++steps) {
         const EdgeInd base = 3 * f;
         rng_ = rng_ * 1664525u + 1013904223u;
-        const unsigned r = (rng_ >> 16) % 3;
+        const unsigned r = ((rng_ >> 16) * 3u) >> 16;  // 0, 1 or 2
         int o[3] = {1, 1, 1};
         bool moved = false;
         for (unsigned k = 0; k < 3; ++k) {
-            const unsigned i = (r + k) % 3;
+            const unsigned i = r + k < 3 ? r + k : r + k - 3;
             const EdgeInd e = base + i;
             if (e == from) continue;
             const std::int64_t s = orient2d(points_[vert_[e]], points_[vert_[next_edge(e)]], p);
@@ -421,7 +443,7 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
         std::swap(sort_buf_[i - 1].second, sort_buf_[std::size_t((std::uint64_t(state) * i) >> 32)].second);
     }
     for (std::size_t j = 0; j < pts.size(); ++j) {
-        int round = 0;
+        int round = 0;  // 64 points in round 0, then 64, 128, 256, ...
         while ((std::size_t(64) << round) <= j) ++round;
         const LatticePoint q = pts[sort_buf_[j].second];
         sort_buf_[j].first = (std::uint64_t(round) << 52) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
