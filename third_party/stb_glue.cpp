@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 namespace {
 // Byte budget for the current decode. Thread-local so concurrent decodes do not share it.
@@ -90,7 +91,12 @@ static std::string reason(const char* fallback) {
 // stbi_info may allocate nothing but is given a small budget anyway, in case a future stb does.
 constexpr std::size_t kInfoBudget = std::size_t(1) << 20;
 
-bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
+// stb keeps its failure reason in a global and writes unknown chunk names into a static buffer,
+// so decodes are serialised: erd is not limited by PNG decoding speed, and this keeps concurrent
+// library users (two threads reading images) free of data races.
+static std::mutex g_stb_mutex;
+
+static bool info_locked(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
     if (size > std::size_t(0x7fffffff)) { *why = "file too large"; return false; }
     int len = int(size);
     g_budget = kInfoBudget;
@@ -101,6 +107,11 @@ bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* 
     }
     *is16 = stbi_is_16_bit_from_memory(data, len) != 0;
     return true;
+}
+
+bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
+    std::lock_guard<std::mutex> lock(g_stb_mutex);
+    return info_locked(data, size, w, h, channels, is16, why);
 }
 
 // Copies stb's interleaved pixels into gray, after checking they are the size png_info promised.
@@ -124,7 +135,8 @@ static bool to_gray(const T* px, int w, int h, int got, PngImage* out, std::stri
 bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_bytes, PngImage* out, std::string* why) {
     int w = 0, h = 0, ch = 0;
     bool is16 = false;
-    if (!png_info(data, size, &w, &h, &ch, &is16, why)) return false;
+    std::lock_guard<std::mutex> lock(g_stb_mutex);
+    if (!info_locked(data, size, &w, &h, &ch, &is16, why)) return false;
     g_budget = budget_bytes;
     g_used = 0;
     int len = int(size), got = 0;

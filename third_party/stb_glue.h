@@ -18,6 +18,7 @@ struct PngImage {
 bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why);
 
 // Decodes to gray; allocations above budget_bytes fail the decode instead of the process.
+// Thread-safe: calls are serialised (stb keeps its failure reason in a global).
 bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_bytes, PngImage* out, std::string* why);
 
 // Encodes 8-bit gray (channels = 1) or RGB (channels = 3) into PNG bytes.
