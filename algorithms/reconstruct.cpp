@@ -224,11 +224,13 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
         const auto& fc = m.faces[f];
         scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
+        // The plane in fine units (scale 4 is a power of two: no rounding is added).
         const SpanPlane& pl = p.planes[f];
-        const double dv = pl.step_x(l);
+        const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
+        const double dv = gx * l.step_x, six = 6.0 * dv, four = 4.0 * dv;
         for (const Span& s : spans) {
             double* row = acc.data() + std::size_t(s.y >> 2) * W;
-            double v = pl.at(l, s.x_begin, s.y);
+            double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
             std::int32_t i = s.x_begin;
             // A partial pixel at each end, whole pixels (4 sub-samples: 4v + 6dv) between.
             const auto partial = [&](std::int32_t e) {
@@ -238,8 +240,10 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
                 i = e + 1;
             };
             if ((i & 3) != 0) partial(std::min(s.x_end, i | 3));
-            const double six = 6.0 * dv, four = 4.0 * dv;
-            for (; i + 3 <= s.x_end; i += 4, v += four) row[i >> 2] += 4.0 * v + six;
+            const std::int32_t whole = (s.x_end + 1 - i) >> 2;
+            double* px = row + (i >> 2);
+            for (std::int32_t k = 0; k < whole; ++k, v += four) px[k] += 4.0 * v + six;
+            i += whole << 2;
             if (i <= s.x_end) partial(s.x_end);
         }
     }
