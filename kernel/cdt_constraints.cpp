@@ -4,7 +4,7 @@
 // lying exactly on the segment (or at b), which splits the segment into pieces handled one at a
 // time. The edges a piece crosses are removed by flips (Sloan 1993: flip a crossing edge whose
 // quadrilateral is strictly convex; if the new diagonal still crosses, queue it again), after which
-// the piece is an edge of the triangulation. Lawson flips over every edge of the touched faces then
+// the piece is an edge of the triangulation. Lawson flips over every edge of the flipped quadrilaterals then
 // restore the constrained Delaunay condition; the tie rule of predicates.h makes the result
 // independent of the order of all operations.
 //
@@ -150,7 +150,11 @@ Status Cdt::insert_constraint(VertInd a, VertInd b, ConstraintReport* rep) {
 // Removes the edges in pairs_ (all crossing the open segment a-b, none constrained) by flips,
 // constrains a-b and restores the CDT condition.
 Status Cdt::insert_piece(VertInd a, VertInd b, ConstraintReport* rep) {
-    const std::size_t touched_from = changes_.created.size();
+    // Every edge of every quadrilateral flipped below may violate the CDT condition afterwards;
+    // they are collected as vertex pairs (flips move slots) for the Lawson pass at the end. (Not
+    // from changes_: a face already reported by an earlier piece of the same call is not listed
+    // again there.)
+    pairs2_.clear();
     const LatticePoint pa = points_[a], pb = points_[b];
     std::size_t head = 0;
     const std::size_t k = pairs_.size();
@@ -169,6 +173,11 @@ Status Cdt::insert_piece(VertInd a, VertInd b, ConstraintReport* rep) {
             continue;
         }
         flip(e);
+        pairs2_.push_back({c, pr.a});
+        pairs2_.push_back({pr.a, d});
+        pairs2_.push_back({d, pr.b});
+        pairs2_.push_back({pr.b, c});
+        pairs2_.push_back({c, d});
         bool crosses = false;
         if (c != a && c != b && d != a && d != b) {
             const std::int64_t oc = orient2d(pa, pb, pc), od = orient2d(pa, pb, pd);
@@ -183,12 +192,6 @@ Status Cdt::insert_piece(VertInd a, VertInd b, ConstraintReport* rep) {
     set_constrained(e);
     segments_.push_back({a, b});
     ++rep->inserted;
-    // Lawson flips over every edge of the faces touched by this piece.
-    pairs2_.clear();
-    for (std::size_t i = touched_from; i < changes_.created.size(); ++i) {
-        const EdgeInd base = 3 * changes_.created[i];
-        for (EdgeInd j = 0; j < 3; ++j) pairs2_.push_back({vert_[base + j], vert_[next_edge(base + j)]});
-    }
     legalize_pairs();
     return Status::success();
 }
