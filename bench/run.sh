@@ -123,3 +123,16 @@ else
     echo "erdmodel: lena.pgm or bull.pgm missing in $IMAGES; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# ---------------------------------------------------------------------------------------------
+# raster (issue 6): reconstruct, whole process: read the model, rasterise, write the PGM.
+# Target: 4x4 supersampled reconstruct of bull at 1% (ERDGPI model) <= 40 ms. Also point
+# evaluation of the GPI model of bull at 1% (no target). The models are made once, untimed.
+if [[ -f $IMAGES/bull.pgm ]] &&
+   "$ERD" generate --method erdgpi -q -x 2 -d 1 -i "$IMAGES/bull.pgm" -o "$OUT/raster.bull.erd" >/dev/null 2>&1 &&
+   "$ERD" generate --method gpi -q -x 2 -d 1 -i "$IMAGES/bull.pgm" -o "$OUT/raster.bull.model" >/dev/null 2>&1; then
+    bench_case "reconstruct aa bull 1% (erdgpi)" 40 -- "$ERD" reconstruct "$OUT/raster.bull.erd" -o "$OUT/raster.bull.aa.pgm"
+    bench_case "reconstruct bull 1% (gpi)" 40 -- "$ERD" reconstruct "$OUT/raster.bull.model" -o "$OUT/raster.bull.pgm"
+else
+    echo "raster: bull.pgm missing or erd generate failed; skipped"
+fi
+# ---------------------------------------------------------------------------------------------

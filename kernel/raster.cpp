@@ -116,33 +116,38 @@ std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, Lat
             }
         }
     };
-    Stepper st[3];
+    // Sloped edges bound the row from the left (A > 0, ties owned: sx*A > 0) or from the right
+    // (A < 0, ties not owned). A horizontal edge (at most one) lies on the first or last row and
+    // only matters there: K = 0 on it, ties by sy.
+    Stepper left[2], right[2];
+    int nl = 0, nr = 0;
+    bool has_h = false;
+    std::int64_t h_y = 0, h_b = 0;
     const std::int64_t y0 = l.fine_y(j0);
-    for (int t = 0; t < 3; ++t) {
-        const EdgeFn& e = s.e[t];
+    for (const EdgeFn& e : s.e) {
         // E(x) = K + A*x with x = phase_x + step_x*i and K = B*(y - ay) - A*ax.
         const std::int64_t K0 = e.B * (y0 - e.ay) - e.A * e.ax, dK = e.B * sy_step;
-        if (e.A > 0) st[t].init(-K0 - e.A * l.phase_x, e.A * sx_step, -dK);      // i >= ceil(..): E >= 0
-        else if (e.A < 0) st[t].init(K0 + e.A * l.phase_x, -e.A * sx_step, dK);  // i <= ceil(..) - 1: E > 0
+        if (e.A > 0) left[nl++].init(-K0 - e.A * l.phase_x, e.A * sx_step, -dK);        // i >= ceil(..)
+        else if (e.A < 0) right[nr++].init(K0 + e.A * l.phase_x, -e.A * sx_step, dK);  // i <= ceil(..) - 1
+        else {
+            has_h = true;
+            h_y = e.ay;
+            h_b = e.B;
+        }
     }
     std::int64_t count = 0;
     for (std::int64_t j = j0; j <= j1; ++j) {
         const std::int64_t y = l.fine_y(j);
-        const int sy = y == s.my ? -1 : 1;
         std::int64_t lo = i_lo, hi = i_hi;
-        bool empty = false;
-        for (int t = 0; t < 3; ++t) {
-            const EdgeFn& e = s.e[t];
-            if (e.A > 0) {  // ties owned (sx*A > 0)
-                lo = std::max(lo, st[t].ceil());
-            } else if (e.A < 0) {  // ties not owned
-                hi = std::min(hi, st[t].ceil() - 1);
-            } else {  // horizontal: the whole row is in or out; ties by sy
-                const std::int64_t K = e.B * (y - e.ay);
-                empty = empty || !(K > 0 || (K == 0 && sy * e.B > 0));
-            }
-            st[t].step();
+        for (int t = 0; t < nl; ++t) {
+            lo = std::max(lo, left[t].ceil());
+            left[t].step();
         }
+        for (int t = 0; t < nr; ++t) {
+            hi = std::min(hi, right[t].ceil() - 1);
+            right[t].step();
+        }
+        const bool empty = has_h && y == h_y && !((y == s.my ? -h_b : h_b) > 0);
         if (empty) lo = hi + 1;
         // The row rule (sx = +1) never owns x == max_x; test it with sx = -1. If it is owned,
         // convexity puts every point between the row's span and it in the triangle too.
