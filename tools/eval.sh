@@ -85,6 +85,7 @@ printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"
     echo "Tables 3.5 (ED, ERDED) and 3.6 (GPI, ERDGPI). diff = ours - thesis. \"met\" = ours >= thesis - tol"
     echo "(tol: ED 1.5, GPI 0.5, ERDED 0.5, ERDGPI 0.3 dB, the targets of issues 5 and 6). time = wall"
     echo "seconds of \`erd generate\` (load, mesh, write), $JOBS cases at once on a shared machine."
+    echo "Misses of the targets, their likely causes and what was tried: docs/DECISIONS.md, per method."
     echo
     for m in "${methods[@]}"; do
         M=$(tr a-z A-Z <<<"$m")
