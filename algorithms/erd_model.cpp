@@ -102,6 +102,15 @@ double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
     return wedge_value(v, cdt.wedge_id(e));
 }
 
+std::uint32_t ErdModel::corner_entry(const Cdt& cdt, EdgeInd e) const {
+    const VertInd v = cdt.org(e);
+    if (count_[v] == 1) return first_[v];
+    const WedgeId id = cdt.wedge_id(e);
+    for (std::uint32_t i = 0; i < count_[v]; ++i)
+        if (entries_[first_[v] + i].id == id) return first_[v] + i;
+    return first_[v];
+}
+
 double ErdModel::vertex_value(VertInd v) const {
     if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
     double s = 0;

@@ -77,6 +77,13 @@ public:
     // constrained edge; the mean of the wedge values at a vertex.
     double evaluate(const Cdt& cdt, LatticePoint p) const;
 
+    // The flat index of the stored wedge value that corner e uses (for fitting all values at once),
+    // and the values themselves in that indexing.
+    std::uint32_t corner_entry(const Cdt& cdt, EdgeInd e) const;
+    std::size_t entry_count() const { return entries_.size(); }
+    double entry_value(std::size_t i) const { return entries_[i].value; }
+    void set_entry_value(std::size_t i, double z) { entries_[i].value = z; }
+
     // Wedge-value search statistics: how many multi-wedge values were computed, and how many of
     // those had their maximum at the first / last alpha.
     struct Stats {

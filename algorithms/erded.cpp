@@ -13,6 +13,7 @@
 #include "algorithms/gpi.h"
 #include "algorithms/methods.h"
 #include "algorithms/mmsodd.h"
+#include "algorithms/wedge_fit.h"
 
 namespace erd {
 
@@ -200,6 +201,12 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     result->stages.push_back({"triangulation and wedge values", seconds_since(t0)});
 
     t0 = std::chrono::steady_clock::now();
+    if (options.wedge_fit > 0) {
+        WedgeFitStats fs;
+        fit_wedge_values(cdt, image, options.wedge_fit, &model, &fs);
+        result->stages.push_back({"wedge refit", seconds_since(t0)});
+        t0 = std::chrono::steady_clock::now();
+    }
     model.to_model(cdt, image.width, image.height, image.maxval, &result->model);
     result->achieved = result->model.size();
     add_param_notes(mesh, model, result);

@@ -7,10 +7,12 @@
 #include "algorithms/erd_mesh.h"
 #include "algorithms/gpi.h"
 #include "algorithms/methods.h"
+#include "algorithms/wedge_fit.h"
 
 namespace erd {
 
 namespace {
+
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -109,6 +111,14 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     result->stages.push_back({"greedy insertion", seconds_since(t0)});
 
     t0 = std::chrono::steady_clock::now();
+    if (options.wedge_fit > 0) {
+        WedgeFitStats fs;
+        fit_wedge_values(cdt, image, options.wedge_fit, &model, &fs);
+        result->notes.push_back("wedge refit: " + std::to_string(fs.iterations) + " iterations, sse " +
+                                real("%.6g", fs.sse_before) + " -> " + real("%.6g", fs.sse_after));
+        result->stages.push_back({"wedge refit", seconds_since(t0)});
+        t0 = std::chrono::steady_clock::now();
+    }
     model.to_model(cdt, image.width, image.height, image.maxval, &result->model);
     result->achieved = result->model.size();
     add_param_notes(mesh, model, result);
