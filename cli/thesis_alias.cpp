@@ -32,7 +32,7 @@ namespace erd::cli {
 
 namespace {
 
-enum class Kind { generate, synth_point, synth_aa, psnr };
+enum class Kind { generate, reconstruct_point, reconstruct_aa, psnr };
 
 struct Program {
     const char* name;
@@ -52,8 +52,8 @@ const Program kPrograms[] = {
      " [-l minLength] [-b beta] [-r ratio] [-e tolerance] [-f controlFlag] [-w dFlag] [-s ksize] [-B startUp] [-S isSimple]"},
     {"erd_gpi", Kind::generate, "erdgpi", "idnotpxlbrewsS",
      " [-l minLength] [-b beta] [-r ratio] [-e tolerance] [-w dFlag] [-s ksize] [-S isSimple]"},
-    {"imgsyn", Kind::synth_point, nullptr, "", " < model > image.pnm"},
-    {"imgsyn_aa", Kind::synth_aa, nullptr, "", " < model.erd > image.pnm"},
+    {"imgsyn", Kind::reconstruct_point, nullptr, "", " < model > image.pnm"},
+    {"imgsyn_aa", Kind::reconstruct_aa, nullptr, "", " < model.erd > image.pnm"},
     {"Cal_PSNR", Kind::psnr, nullptr, "", " original_image reconstructed_image"},
 };
 
@@ -134,11 +134,11 @@ int run_program(const Program& p, int argc, char** argv) {
     switch (p.kind) {
     case Kind::generate:
         return run_generate(p, argc, argv);
-    case Kind::synth_point:
-    case Kind::synth_aa: {
+    case Kind::reconstruct_point:
+    case Kind::reconstruct_aa: {
         if (argc > 1) return usage(p, std::string("takes no arguments (reads standard input), got '") + argv[1] + "'");
         std::vector<std::string> out = {"reconstruct", "-", "-o", "-", "--plain"};
-        if (p.kind == Kind::synth_point) out.push_back("--no-aa");
+        if (p.kind == Kind::reconstruct_point) out.push_back("--no-aa");
         return run(cmd_reconstruct, out);
     }
     case Kind::psnr: {
