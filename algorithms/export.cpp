@@ -32,6 +32,8 @@ void append_face(std::string* s, const char* fmt, std::uint32_t a, std::uint32_t
 
 Status export_mesh(const Model& m, const ExportOptions& options, std::string* out, ExportCounts* counts) {
     out->clear();
+    if (m.values.empty() && !m.vertices.empty())
+        return Status::bad_input("the mesh has no sample values (a triangulation file?): export the .model or .erd");
     if (m.values.size() != m.vertices.size()) return Status::bad_input("model has " + std::to_string(m.vertices.size()) +
                                                                        " vertices but " + std::to_string(m.values.size()) + " values");
     const bool erd = m.kind == ModelKind::erd;

@@ -10,7 +10,8 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
     std::string text;
     Status st = read_file(path, &text);
     if (!st) return st;
-    st = read_model(text, model_kind_from_name(path), out);
+    ModelFileKind kind = model_kind_from_name(path);
+    st = kind == ModelFileKind::triangulation ? read_triangulation(text, out) : read_model(text, kind, out);
     if (!st) return Status::error(st.code, path + ": " + st.message);
     return st;
 }

@@ -8,8 +8,9 @@
 namespace erd::cli {
 
 // Reads `path` ("-" = stdin) and parses it with algorithms/model_io.h; the kind comes from the
-// name (.model / .erd), else from the content. Messages start with the path. *warning (may be
-// null) is cleared: reserved for non-fatal remarks.
+// name (.model / .erd), else from the content. A ".tri" name reads the -t triangulation instead
+// (vertices, faces and constraints, no values: enough to draw, not to reconstruct or export).
+// Messages start with the path. *warning (may be null) is cleared: reserved for non-fatal remarks.
 Status load_model_file(const std::string& path, Model* out, std::string* warning);
 
 }  // namespace erd::cli
