@@ -1,6 +1,7 @@
 #include "algorithms/polylines.h"
 
 #include <cstddef>
+#include <cstring>
 
 #include "algorithms/douglas_peucker.h"
 
@@ -21,29 +22,45 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
     auto point = [&](std::size_t i) {
         return LatticePoint{std::int32_t(int(i % std::size_t(s)) - 1), std::int32_t(int(i / std::size_t(s)) - 1)};
     };
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) b[index(x, y)] = edges(x, y) != 0;
+    // The set points in row-major order, found by skipping zero bytes eight at a time.
+    std::vector<std::size_t> pts;
+    {
+        const std::uint8_t* data = edges.data.data();
+        const std::size_t n = edges.data.size();
+        auto add = [&](std::size_t k) {
+            const std::size_t i = index(int(k % std::size_t(w)), int(k / std::size_t(w)));
+            b[i] = 1;
+            pts.push_back(i);
+        };
+        std::size_t k = 0;
+        for (; k + 8 <= n; k += 8) {
+            std::uint64_t word;
+            std::memcpy(&word, data + k, 8);
+            if (!word) continue;
+            for (std::size_t j = k; j < k + 8; ++j)
+                if (data[j]) add(j);
+        }
+        for (; k < n; ++k)
+            if (data[k]) add(k);
+    }
     // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
     // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
     // cluster of mutual "junctions" out of one junction.
     std::vector<std::uint8_t> links(b.size(), 0);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = index(x, y);
-            if (!b[i]) continue;
-            unsigned mask = 0;
-            for (int d = 0; d < 8; ++d) {
-                if (!b[std::size_t(std::ptrdiff_t(i) + off[d])]) continue;
-                if ((d & 1) && (b[std::size_t(std::ptrdiff_t(i) + off[(d + 7) & 7])] ||
-                                b[std::size_t(std::ptrdiff_t(i) + off[(d + 1) & 7])]))
-                    continue;
-                mask |= 1u << d;
-            }
-            links[i] = std::uint8_t(mask);
-            int n = 0;
-            for (; mask; mask &= mask - 1) ++n;
-            degree[i] = std::uint8_t(n);
+    for (const std::size_t i : pts) {
+        unsigned mask = 0;
+        for (int d = 0; d < 8; ++d) {
+            if (!b[std::size_t(std::ptrdiff_t(i) + off[d])]) continue;
+            if ((d & 1) && (b[std::size_t(std::ptrdiff_t(i) + off[(d + 7) & 7])] ||
+                            b[std::size_t(std::ptrdiff_t(i) + off[(d + 1) & 7])]))
+                continue;
+            mask |= 1u << d;
         }
+        links[i] = std::uint8_t(mask);
+        int n = 0;
+        for (; mask; mask &= mask - 1) ++n;
+        degree[i] = std::uint8_t(n);
+    }
     auto use = [&](std::size_t i, int d) {
         used[i] |= std::uint8_t(1u << d);
         used[std::size_t(std::ptrdiff_t(i) + off[d])] |= std::uint8_t(1u << ((d + 4) & 7));
@@ -69,20 +86,14 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
         out.push_back(std::move(line));
     };
 
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = index(x, y);
-            if (!b[i] || degree[i] == 2) continue;
-            if (degree[i] == 0) { out.push_back(Polyline{point(i)}); continue; }
-            for (int d; (d = free_link(i)) >= 0;) run(i, d);
-        }
+    for (const std::size_t i : pts) {
+        if (degree[i] == 2) continue;
+        if (degree[i] == 0) { out.push_back(Polyline{point(i)}); continue; }
+        for (int d; (d = free_link(i)) >= 0;) run(i, d);
+    }
     // What is left are closed curves made of degree-2 points only.
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = index(x, y);
-            if (!b[i]) continue;
-            for (int d; (d = free_link(i)) >= 0;) run(i, d);
-        }
+    for (const std::size_t i : pts)
+        for (int d; (d = free_link(i)) >= 0;) run(i, d);
     return out;
 }
 

@@ -76,19 +76,29 @@ std::size_t thin_edges(Grid<std::uint8_t>* map) {
         map->data[std::size_t(i / s - 1) * std::size_t(w) + std::size_t(i % s - 1)] = 0;
     };
 
+    // Decisions depend on the 8-neighbour ring alone: tabulate them once (bit 0: Zhang-Suen
+    // deletes in sub-iteration 1, bit 1: in sub-iteration 2, bit 2: a removable staircase corner).
+    std::uint8_t table[256];
+    for (unsigned r = 0; r < 256; ++r) {
+        const int n = popcount8(r);
+        const unsigned N = r & 1u, E = (r >> 2) & 1u, S = (r >> 4) & 1u, Wb = (r >> 6) & 1u;
+        std::uint8_t v = 0;
+        if (n >= 2 && n <= 6 && transitions(r) == 1) {
+            if ((N & E & S) == 0 && (E & S & Wb) == 0) v |= 1;
+            if ((N & E & Wb) == 0 && (N & S & Wb) == 0) v |= 2;
+        }
+        const unsigned four = r & 0x55u;
+        if ((four == 0x05u || four == 0x14u || four == 0x50u || four == 0x41u) && connectivity8(r) == 1) v |= 4;
+        table[r] = v;
+    }
     std::vector<std::ptrdiff_t> doomed;
     for (bool changed = true; changed;) {
         changed = false;
         for (int step = 0; step < 2; ++step) {
             doomed.clear();
-            for (std::ptrdiff_t i : live) {
-                const unsigned r = ring(&b[std::size_t(i)], s);
-                const int n = popcount8(r);
-                if (n < 2 || n > 6 || transitions(r) != 1) continue;
-                const unsigned N = r & 1u, E = (r >> 2) & 1u, S = (r >> 4) & 1u, Wb = (r >> 6) & 1u;
-                const bool ok = step == 0 ? (N & E & S) == 0 && (E & S & Wb) == 0 : (N & E & Wb) == 0 && (N & S & Wb) == 0;
-                if (ok) doomed.push_back(i);
-            }
+            const std::uint8_t bit = std::uint8_t(1u << step);
+            for (std::ptrdiff_t i : live)
+                if (table[ring(&b[std::size_t(i)], s)] & bit) doomed.push_back(i);
             for (std::ptrdiff_t i : doomed) {
                 b[std::size_t(i)] = 0;
                 clear_in_map(i);
@@ -108,10 +118,7 @@ std::size_t thin_edges(Grid<std::uint8_t>* map) {
     // decision for a point sees earlier deletions and a corner pair never loses both points.
     std::size_t left = 0;
     for (std::ptrdiff_t i : live) {
-        const unsigned r = ring(&b[std::size_t(i)], s);
-        const unsigned four = r & 0x55u;
-        const bool corner = four == 0x05u || four == 0x14u || four == 0x50u || four == 0x41u;
-        if (corner && connectivity8(r) == 1) {
+        if (table[ring(&b[std::size_t(i)], s)] & 4) {
             b[std::size_t(i)] = 0;
             clear_in_map(i);
         } else {
