@@ -1,5 +1,7 @@
 #include "algorithms/wedge_fit.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -47,8 +49,19 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
         faces.push_back(fr);
     }
 
+    // Jacobi-preconditioned CGLS: solve for y with x = S y, S = diag(1 / |column of A|), so the
+    // values of big and small faces converge at the same rate (10 steps then do what 30 did).
     const std::size_t n = model->entry_count();
-    std::vector<double> x(n), s(n), p(n), q(rows.size()), r(rows.size());
+    std::vector<double> scale(n, 0.0);
+    for (const FaceRows& fr : faces)
+        for (std::size_t k = fr.begin; k < fr.end; ++k) {
+            const double w0 = rows[k].w0, w1 = rows[k].w1, w2 = 1.0 - w0 - w1;
+            scale[fr.entry[0]] += w0 * w0;
+            scale[fr.entry[1]] += w1 * w1;
+            scale[fr.entry[2]] += w2 * w2;
+        }
+    for (double& c : scale) c = c > 1e-12 ? 1.0 / std::sqrt(c) : 0.0;
+    std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(rows.size()), r(rows.size());
     for (std::size_t i = 0; i < n; ++i) x[i] = model->entry_value(i);
     auto apply = [&](const std::vector<double>& v, std::vector<double>* out) {  // out = A v
         for (const FaceRows& fr : faces) {
@@ -57,7 +70,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
                 (*out)[k] = c + double(rows[k].w0) * (a - c) + double(rows[k].w1) * (b - c);
         }
     };
-    auto apply_t = [&](const std::vector<double>& w, std::vector<double>* out) {  // out = A^T w
+    auto apply_t = [&](const std::vector<double>& w, std::vector<double>* out) {  // out = S A^T w
         std::fill(out->begin(), out->end(), 0.0);
         for (const FaceRows& fr : faces) {
             double sa = 0, sb = 0, sc = 0;
@@ -71,6 +84,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
             (*out)[fr.entry[1]] += sb;
             (*out)[fr.entry[2]] += sc;
         }
+        for (std::size_t i = 0; i < out->size(); ++i) (*out)[i] *= scale[i];
     };
     auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
         double t = 0;
@@ -78,6 +92,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
         return t;
     };
 
+    // Residual of the starting values; the unknown is the correction x - x0 = S y.
     apply(x, &r);
     for (std::size_t k = 0; k < rows.size(); ++k) r[k] = double(rows[k].b) - r[k];
     if (stats) stats->sse_before = dot(r, r);
@@ -86,11 +101,13 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
     double gamma = dot(s, s);
     int it = 0;
     for (; it < iterations && gamma > 1e-12; ++it) {
-        apply(p, &q);
+        for (std::size_t i = 0; i < n; ++i) ps[i] = scale[i] * p[i];
+        // A (S p) without the constant part: apply() of a correction is linear.
+        apply(ps, &q);
         const double qq = dot(q, q);
         if (qq <= 0) break;
         const double alpha = gamma / qq;
-        for (std::size_t i = 0; i < n; ++i) x[i] += alpha * p[i];
+        for (std::size_t i = 0; i < n; ++i) y[i] += alpha * p[i];
         for (std::size_t k = 0; k < rows.size(); ++k) r[k] -= alpha * q[k];
         apply_t(r, &s);
         const double g2 = dot(s, s);
@@ -98,6 +115,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
         gamma = g2;
         for (std::size_t i = 0; i < n; ++i) p[i] = s[i] + beta * p[i];
     }
+    for (std::size_t i = 0; i < n; ++i) x[i] += scale[i] * y[i];
     const double hi = double(image.maxval);
     for (std::size_t i = 0; i < n; ++i) model->set_entry_value(i, x[i] < 0 ? 0.0 : (x[i] > hi ? hi : x[i]));
     if (stats) {
