@@ -474,7 +474,10 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
         WARN("source tree not found (run from the repository or set ERD_SRC): skipped");
         return;
     }
-    const std::string build = absolute(dirname_of(erd_bin()));
+    // BUILD as the Makefile's own rules spell it (relative to the tree when ERD_BIN is), so the
+    // dependency files written there keep matching their targets.
+    const std::string bin_dir = dirname_of(erd_bin());
+    const std::string build = erd_bin()[0] != '/' && absolute(".") == root ? bin_dir : absolute(bin_dir);
     if (!exists(build + "/liberd.a")) {
         WARN(build + "/liberd.a missing: skipped");
         return;
