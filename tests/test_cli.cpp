@@ -379,3 +379,27 @@ TEST_CASE("synth bytes are pinned: the same at every optimisation level and on e
     CHECK(fnv(a) == 0x8ac530988289e9bull);
     CHECK(fnv(b) == 0xecdfa0d6dbab2467ull);
 }
+
+TEST_CASE("writing over an input is refused through the real commands, and the input survives", "[cli][io]") {
+    REQUIRE(binary_available());
+    TempDir dir;
+    std::string img = dir.file("a.pgm");
+    REQUIRE(run_erd("synth -q -W 16 -H 12 -o " + sh_quote(img)).status == 0);
+    const std::string before = slurp(img);
+    // The same file under another name: ./, .., a hard link.
+    REQUIRE(::link(img.c_str(), dir.file("b.pgm").c_str()) == 0);
+    const std::string aliases[] = {img, dir.path + "/./a.pgm", dir.path + "/x/../a.pgm", dir.file("b.pgm")};
+    for (const auto& out : aliases) {
+        INFO(out);
+        RunResult g = run_erd("generate --method gpi -n 8 -i " + sh_quote(img) + " -o " + sh_quote(out));
+        CHECK(g.status == 2);
+        CHECK_THAT(g.err, Catch::Contains("output would overwrite the input"));
+        CHECK(slurp(img) == before);
+    }
+    REQUIRE(run_erd("generate -q --method gpi -n 8 -i " + sh_quote(img) + " -o " + sh_quote(dir.file("m.model"))).status == 0);
+    const std::string model = slurp(dir.file("m.model"));
+    RunResult r = run_erd("reconstruct " + sh_quote(dir.file("m.model")) + " -o " + sh_quote(dir.file("m.model")));
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("output would overwrite the input"));
+    CHECK(slurp(dir.file("m.model")) == model);
+}
