@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <string>
 
@@ -14,6 +15,8 @@
 #include "algorithms/methods.h"
 #include "algorithms/metrics.h"
 #include "algorithms/reconstruct.h"
+#include "cli/fileio.h"
+#include "cli/image_io.h"
 #include "kernel/cdt.h"
 
 using namespace erd;
@@ -355,4 +358,28 @@ TEST_CASE("greedy loop: the total squared error of GPI equals a fresh scan", "[b
     CHECK(gs.total_squared_error == fresh_total(cdt, im, model));
     double mse_v = gs.total_squared_error / double(im.pixels());
     CHECK(gs.psnr == Approx(10.0 * std::log10(255.0 * 255.0 / mse_v)));
+}
+
+TEST_CASE("ED on the thesis photos: exactly N points", "[basic]") {
+    const char* dir = std::getenv("ERD_IMAGES");
+    const std::string images = dir && *dir ? dir : "../shared/images";
+    for (const char* name : {"peppers", "lena"}) {
+        std::string bytes;
+        Image im;
+        if (!cli::read_file(images + "/" + name + ".pgm", &bytes).ok() ||
+            !cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &im, nullptr).ok()) {
+            WARN("skipped: " << images << "/" << name << ".pgm not readable");
+            return;
+        }
+        for (double d : {0.5, 2.0}) {
+            GenerateOptions o;
+            o.density = d;
+            o.density_given = true;
+            GenerateResult r;
+            REQUIRE(generate_ed(im, o, &r).ok());
+            INFO(name << " " << d << "%");
+            CHECK(r.requested == std::size_t(std::llround(d * double(im.pixels()) / 100.0)));
+            CHECK(r.achieved == r.requested);
+        }
+    }
 }
