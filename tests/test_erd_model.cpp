@@ -14,6 +14,8 @@
 #include "algorithms/erd_model.h"
 #include "algorithms/erded.h"
 #include "algorithms/erdgpi.h"
+#include "algorithms/model_io.h"
+#include "algorithms/reconstruct.h"
 #include "algorithms/wedge_fit.h"
 #include "kernel/cdt.h"
 
@@ -341,4 +343,37 @@ TEST_CASE("wedge_fit 0 keeps the thesis's values; the refit lowers the pixel err
         }
     }
     CHECK(found);
+}
+
+TEST_CASE(".erd and -t round trip of ERD models", "[erd]") {
+    const Image im = scene(64, 48);
+    for (const char* method : {"erdgpi", "erded"}) {
+        INFO(method);
+        GenerateOptions o;
+        o.points = 200;
+        GenerateResult r;
+        REQUIRE((std::string(method) == "erdgpi" ? generate_erdgpi(im, o, &r) : generate_erded(im, o, &r)).ok());
+        std::string text;
+        REQUIRE(write_model(r.model, &text).ok());
+        Model back;
+        REQUIRE(read_model(text, ModelFileKind::erd, &back).ok());
+        CHECK(back.vertices == r.model.vertices);
+        REQUIRE(back.faces.size() == r.model.faces.size());
+        REQUIRE(check_triangulation(back).ok());
+        Image a, b;
+        REQUIRE(reconstruct(r.model, true, &a).ok());
+        REQUIRE(reconstruct(back, true, &b).ok());
+        CHECK(a.samples == b.samples);
+        // The triangulation file keeps every constrained edge.
+        std::string tri;
+        REQUIRE(write_triangulation(r.model, &tri).ok());
+        Model t;
+        REQUIRE(read_triangulation(tri, &t).ok());
+        auto sorted = [](std::vector<std::array<std::uint32_t, 2>> v) {
+            std::sort(v.begin(), v.end());
+            return v;
+        };
+        CHECK(sorted(t.constraints) == sorted(r.model.constraints));
+        CHECK(t.vertices == r.model.vertices);
+    }
 }
