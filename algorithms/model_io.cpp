@@ -73,12 +73,28 @@ public:
     int line() const { return line_; }
     std::string where() const { return "line " + std::to_string(line_) + ": "; }
 
+    // Plain decimal digits, at most max_len of them (the common case, parsed without from_chars).
+    static bool digits(std::string_view t, std::size_t max_len, std::uint64_t* x) {
+        if (t.empty() || t.size() > max_len) return false;
+        std::uint64_t v = 0;
+        for (char c : t) {
+            if (c < '0' || c > '9') return false;
+            v = v * 10 + std::uint64_t(c - '0');
+        }
+        *x = v;
+        return true;
+    }
+
     // Unsigned integer in [lo, hi].
     template <class What>
     Status uint(const What& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
         std::string_view t;
         if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
         std::uint64_t x = 0;
+        if (digits(t, 18, &x) && x >= lo && x <= hi) {
+            *v = x;
+            return Status::success();
+        }
         const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
         if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size())
             return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
@@ -96,6 +112,11 @@ public:
     Status sint(const What& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
         std::string_view t;
         if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
+        std::uint64_t u = 0;
+        if (digits(t, 18, &u) && std::int64_t(u) >= lo && std::int64_t(u) <= hi) {
+            *v = std::int64_t(u);
+            return Status::success();
+        }
         std::int64_t x = 0;
         const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
         if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size())
@@ -114,6 +135,11 @@ public:
     Status real(const What& what, double* v) {
         std::string_view t;
         if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
+        std::uint64_t u = 0;
+        if (digits(t, 9, &u)) {  // below 1e9: exact, in range
+            *v = double(u);
+            return Status::success();
+        }
         double x = 0.0;
         const char* b = t.data();
         if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
