@@ -8,6 +8,36 @@
 
 namespace erd {
 
+namespace {
+
+// One row of the diffusion. in[x]: error carried into this row; out[x] receives the error for the
+// next row, each entry written exactly once: the three shares a pixel sends below are kept in
+// two running sums (p0 for the entry behind, p1 for the entry below-ahead) instead of being
+// added into memory, so the loop carries no read-modify-write through memory. Shares pushed
+// past either end of the row are dropped. Returns the chosen x in order of the scan via fire().
+template <int Dir, bool Masked, class Fire>
+void diffuse_row(const double* sig, const std::uint8_t* forb, const double* in, double* out, int w, double rho,
+                 Fire fire) {
+    const double level = 2.0 * rho;
+    double carry = 0.0, p0 = 0.0, p1 = 0.0;
+    int x = Dir > 0 ? 0 : w - 1;
+    for (int k = 0; k < w; ++k, x += Dir) {
+        const double v = sig[x] + in[x] + carry;
+        double e = v;
+        if (v >= rho && !(Masked && forb[x])) {
+            e = v - level;
+            fire(x);
+        }
+        carry = e * (7.0 / 16.0);
+        if (k > 0) out[x - Dir] = p0 + e * (3.0 / 16.0);
+        p0 = p1 + e * (5.0 / 16.0);
+        p1 = e * (1.0 / 16.0);
+    }
+    out[x - Dir] = p0;  // the last pixel's share straight below
+}
+
+}  // namespace
+
 std::size_t diffuse(const Grid<double>& density, double rho, const DiffusionParams& params,
                     std::vector<LatticePoint>* points) {
     const int w = density.width, h = density.height;
@@ -16,47 +46,36 @@ std::size_t diffuse(const Grid<double>& density, double rho, const DiffusionPara
     const bool mirror = params.startup == Startup::mirror;
     const int rows = mirror ? 2 * h : h;
     const std::uint8_t* forbidden = params.forbidden ? params.forbidden->data.data() : nullptr;
-    // Carried error of the current and the next row, with one spare slot at each end that
-    // swallows the error pushed out of the image.
-    std::vector<double> cur(std::size_t(w) + 2, 0.0), next(std::size_t(w) + 2, 0.0);
+    std::vector<double> cur(std::size_t(w), 0.0), next(std::size_t(w), 0.0);
     if (params.startup == Startup::force) {
         const double g = 0.5 * (std::sqrt(5.0) - 1.0);
         for (int x = 0; x < w; ++x) {
             const double u = (x + 0.5) * g;
-            cur[std::size_t(x) + 1] = rho * (2.0 * (u - std::floor(u)) - 1.0);
+            cur[std::size_t(x)] = rho * (2.0 * (u - std::floor(u)) - 1.0);
         }
     }
-    const double out_level = 2.0 * rho;
     std::size_t count = 0;
     for (int r = 0; r < rows; ++r) {
         const int y = mirror ? (r < h ? h - 1 - r : r - h) : r;
         const bool counted = !mirror || r >= h;
         const double* sig = density.data.data() + std::size_t(y) * std::size_t(w);
         const std::uint8_t* forb = forbidden ? forbidden + std::size_t(y) * std::size_t(w) : nullptr;
-        double* c = cur.data() + 1;
-        double* n = next.data() + 1;
         const std::size_t row_start = points ? points->size() : 0;
+        auto fire = [&](int x) {
+            if (!counted) return;
+            ++count;
+            if (points) points->push_back(LatticePoint{std::int32_t(2 * x), std::int32_t(2 * y)});
+        };
         const bool forward = (r & 1) == 0;
-        const int dir = forward ? 1 : -1;
-        for (int k = 0; k < w; ++k) {
-            const int x = forward ? k : w - 1 - k;
-            const double v = sig[x] + c[x];
-            double e = v;
-            if (v >= rho && !(forb && forb[x])) {
-                e = v - out_level;
-                if (counted) {
-                    ++count;
-                    if (points) points->push_back(LatticePoint{std::int32_t(2 * x), std::int32_t(2 * y)});
-                }
-            }
-            c[x + dir] += e * (7.0 / 16.0);
-            n[x - dir] += e * (3.0 / 16.0);
-            n[x] += e * (5.0 / 16.0);
-            n[x + dir] += e * (1.0 / 16.0);
+        if (forward) {
+            if (forb) diffuse_row<1, true>(sig, forb, cur.data(), next.data(), w, rho, fire);
+            else diffuse_row<1, false>(sig, forb, cur.data(), next.data(), w, rho, fire);
+        } else {
+            if (forb) diffuse_row<-1, true>(sig, forb, cur.data(), next.data(), w, rho, fire);
+            else diffuse_row<-1, false>(sig, forb, cur.data(), next.data(), w, rho, fire);
+            if (points) std::reverse(points->begin() + std::ptrdiff_t(row_start), points->end());
         }
-        if (points && !forward) std::reverse(points->begin() + std::ptrdiff_t(row_start), points->end());
         std::swap(cur, next);
-        std::fill(next.begin(), next.end(), 0.0);
     }
     return count;
 }
