@@ -150,6 +150,10 @@ TEST_CASE("write_file_atomic: replaces whole files, keeps the mode, leaves no te
 TEST_CASE("write failures report the OS error and leave nothing behind", "[io]") {
     TempDir dir;
     SECTION("/dev/full") {
+        if (!exists("/dev/full")) {
+            WARN("no /dev/full here; skipped");
+            return;
+        }
         erd::Status s = erd::cli::write_file_atomic("/dev/full", "data");
         CHECK(s.code == erd::Code::runtime);
         CHECK(s.message == "/dev/full: No space left on device");
@@ -190,9 +194,11 @@ TEST_CASE("write failures report the OS error and leave nothing behind", "[io]")
 TEST_CASE("erd synth: a failed write leaves no partial file and keeps the old one", "[io][cli]") {
     REQUIRE(binary_available());
     TempDir dir;
-    RunResult full = run_erd("synth -o /dev/full");
-    CHECK(full.status == 1);
-    CHECK(full.err == "erd synth: /dev/full: No space left on device\n");
+    if (exists("/dev/full")) {
+        RunResult full = run_erd("synth -o /dev/full");
+        CHECK(full.status == 1);
+        CHECK(full.err == "erd synth: /dev/full: No space left on device\n");
+    }
 
     // A file size limit makes the write fail midway in an ordinary folder (SIGXFSZ ignored so
     // write() returns EFBIG): the temporary file must go and the old contents stay.
