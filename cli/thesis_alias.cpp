@@ -111,14 +111,14 @@ int run_generate(const Program& p, int argc, char** argv) {
     // -q: the thesis's programs print the -x lines and errors only, no stage timings. Without -i
     // or -o they read standard input or write standard output (erd generate needs both named).
     std::vector<std::string> out = {"generate", "--method", p.method, "-q"};
-    if (!given['i']) out.insert(out.end(), {"-i", "-"});
-    if (!given['o']) out.insert(out.end(), {"-o", "-"});
+    if (!given[int('i')]) out.insert(out.end(), {"-i", "-"});
+    if (!given[int('o')]) out.insert(out.end(), {"-o", "-"});
     for (const char* f = p.flags; *f; ++f) {
         const unsigned char c = static_cast<unsigned char>(*f);
         const std::string letter(1, *f);
         if (!given[c]) continue;
         std::string value = values[c];
-        if (*f == 'n' && given['d']) continue;
+        if (*f == 'n' && given[int('d')]) continue;
         if (*f == 'f' || *f == 'w' || *f == 'S') {
             long v = 0;
             if (!parse_int(value, &v)) return usage(p, "-" + letter + " needs an integer, not '" + value + "'");
