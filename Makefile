@@ -6,6 +6,8 @@
 
 CXX       ?= g++
 BUILD     ?= build
+# One spelling per build dir: dependency files name their targets the way BUILD was spelled.
+override BUILD := $(patsubst $(CURDIR)/%,%,$(abspath $(BUILD)))
 OPT       ?= -O2
 WARN      := -Wall -Wextra -Wshadow -Wconversion
 ifeq ($(CI),true)
