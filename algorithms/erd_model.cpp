@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "algorithms/bilinear.h"
+#include "algorithms/filters.h"
 #include "algorithms/mmsodd.h"
 
 namespace erd {
@@ -38,17 +39,13 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
         const double t = options_.fixed_distance;
         return bilinear(phi_, clamp(x + t * dx, max_x), clamp(y + t * dy, max_y));
     }
-    if (!have_mmsodd_) {
-        mmsodd_ = mmsodd(phi_, options_.smoothing_order);
-        have_mmsodd_ = true;
-    }
     const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / kWedgeAlphaStep));
     double best = -1, bx = x, by = y;
     int best_i = 0;
     for (int i = 0; i <= steps; ++i) {
         const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
         const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
-        const double f = bilinear(mmsodd_, qx, qy);
+        const double f = mmsodd_at(qx, qy);
         if (f > best) {
             best = f;
             bx = qx;
@@ -59,6 +56,51 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     if (best_i == 0) ++stats_.alpha_first;
     if (best_i == steps) ++stats_.alpha_last;
     return bilinear(phi_, bx, by);
+}
+
+double ErdModel::mmsodd_pixel(int x, int y) {
+    double& cached = local_(x, y);
+    if (!std::isnan(cached)) return cached;
+    // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
+    // vector h of radius c is applied as sum_n h[n + c] * f(i - n).
+    auto at = [&](int u, int v) { return phi_.inside(u, v) ? phi_(u, v) : 0.0; };
+    const int cb = int(taps_b_.size() / 2), cd = int(taps_d2_.size() / 2), rad = cb > cd ? cb : cd;
+    double fxx = 0, fyy = 0, fxy = 0;
+    for (int m = -rad; m <= rad; ++m) {
+        const int v = y - m;
+        double rb = 0, rd1 = 0, rd2 = 0;
+        for (int n = -cb; n <= cb; ++n) rb += taps_b_[std::size_t(n + cb)] * at(x - n, v);
+        for (int n = -cd; n <= cd; ++n) {
+            const double f = at(x - n, v);
+            rd1 += taps_d1_[std::size_t(n + cd)] * f;
+            rd2 += taps_d2_[std::size_t(n + cd)] * f;
+        }
+        if (m >= -cb && m <= cb) fxx += taps_b_[std::size_t(m + cb)] * rd2;
+        if (m >= -cd && m <= cd) {
+            fyy += taps_d2_[std::size_t(m + cd)] * rb;
+            fxy += taps_d1_[std::size_t(m + cd)] * rd1;
+        }
+    }
+    cached = mmsodd_value(fxx, fyy, fxy);
+    return cached;
+}
+
+double ErdModel::mmsodd_at(double x, double y) {
+    if (have_mmsodd_) return bilinear(mmsodd_, x, y);
+    if (local_.width == 0) {
+        local_ = Grid<double>(phi_.width, phi_.height, std::numeric_limits<double>::quiet_NaN());
+        taps_b_ = binomial_taps(options_.smoothing_order);
+        if (taps_b_.empty()) taps_b_ = {1.0};
+        taps_d1_ = compose_taps(derivative1_taps(), taps_b_);
+        taps_d2_ = compose_taps(derivative2_taps(), taps_b_);
+    }
+    // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
+    const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
+    const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));
+    const double fx = x - x0, fy = y - y0;
+    const double top = (1.0 - fx) * mmsodd_pixel(x0, y0) + fx * mmsodd_pixel(x0 + 1, y0);
+    const double bottom = (1.0 - fx) * mmsodd_pixel(x0, y0 + 1) + fx * mmsodd_pixel(x0 + 1, y0 + 1);
+    return (1.0 - fy) * top + fy * bottom;
 }
 
 void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {

@@ -103,11 +103,17 @@ private:
         double value;
     };
     double multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w);
+    double mmsodd_at(double x, double y);  // bilinear MMSODD, from the grid or computed locally
+    double mmsodd_pixel(int x, int y);     // MMSODD at one pixel, computed on first use
 
     const Grid<double>& phi_;
     WedgeValueOptions options_;
     Grid<double> mmsodd_;
     bool have_mmsodd_ = false;
+    // Without a full grid the line search computes the MMSODD only at the pixels it touches
+    // (ERDGPI reads a few percent of them): the same filters, cached per pixel (NaN = not yet).
+    Grid<double> local_;
+    std::vector<double> taps_b_, taps_d1_, taps_d2_;
     std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
     std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
     std::vector<Entry> entries_;

@@ -14,6 +14,7 @@
 #include "algorithms/erd_model.h"
 #include "algorithms/erded.h"
 #include "algorithms/erdgpi.h"
+#include "algorithms/mmsodd.h"
 #include "algorithms/model_io.h"
 #include "algorithms/reconstruct.h"
 #include "algorithms/wedge_fit.h"
@@ -376,4 +377,26 @@ TEST_CASE(".erd and -t round trip of ERD models", "[erd]") {
         CHECK(sorted(t.constraints) == sorted(r.model.constraints));
         CHECK(t.vertices == r.model.vertices);
     }
+}
+
+TEST_CASE("the line search's local MMSODD matches the full-grid MMSODD", "[erd]") {
+    const Image im = scene(40, 32);
+    const Grid<double> phi = to_grid(im);
+    Cdt cdt;
+    REQUIRE(cdt.reset(78, 62).ok());
+    std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}}};
+    std::size_t dropped = 0;
+    REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
+    ErdModel local(phi, WedgeValueOptions{}), full(phi, WedgeValueOptions{});
+    full.set_mmsodd(mmsodd(phi, 5));
+    local.assign_all(cdt);
+    full.assign_all(cdt);
+    REQUIRE(local.stats().multi_wedges > 6);
+    std::vector<Wedge> ws;
+    for (VertInd v = 0; v < cdt.vertex_count(); ++v) {
+        cdt.wedges(v, &ws);
+        for (const Wedge& w : ws) CHECK(local.wedge_value(v, w.id) == Approx(full.wedge_value(v, w.id)).epsilon(1e-9));
+    }
+    CHECK(local.stats().alpha_first == full.stats().alpha_first);
+    CHECK(local.stats().alpha_last == full.stats().alpha_last);
 }
