@@ -59,11 +59,11 @@ void require_delaunay(const Model& m) {
         // positive orientation as the model promises
         std::int64_t o = orient2d(q[0], q[1], q[2]);
         REQUIRE(o > 0);
-        int first = 0;
-        for (int i = 1; i < 3; ++i)
+        std::size_t first = 0;
+        for (std::size_t i = 1; i < 3; ++i)
             if (q[i].y < q[first].y || (q[i].y == q[first].y && q[i].x < q[first].x)) first = i;
         std::array<std::int32_t, 6> c;
-        for (int i = 0; i < 3; ++i) {
+        for (std::size_t i = 0; i < 3; ++i) {
             c[2 * i] = q[(first + i) % 3].x;
             c[2 * i + 1] = q[(first + i) % 3].y;
         }
