@@ -35,7 +35,7 @@ struct GenerateOptions {
     int startup = 0;             // -B ERDED error-diffusion startup: 0 mirror, 1 force, 2 none
     int ed_select = 1;           // -f ERDED point selection: 1 error diffusion, 0 random
     std::uint64_t seed = 1;      // random selection (-f 0): fixed seed, deterministic output
-    int wedge_fit = 8;           // ERD (ours, beyond the thesis): CGLS iterations of the least-squares
+    int wedge_fit = 6;           // ERD (ours, beyond the thesis): CGLS iterations of the least-squares
                                  // refit of all wedge values after refinement; 0 = the thesis's values
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages

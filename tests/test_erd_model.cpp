@@ -327,7 +327,7 @@ TEST_CASE("wedge_fit 0 keeps the thesis's values; the refit lowers the pixel err
     GenerateResult with, without;
     o.wedge_fit = 0;
     REQUIRE(generate_erdgpi(im, o, &without).ok());
-    o.wedge_fit = 8;
+    o.wedge_fit = 6;
     REQUIRE(generate_erdgpi(im, o, &with).ok());
     CHECK(with.model.vertices == without.model.vertices);  // same mesh, other values
     CHECK(with.model.faces == without.model.faces);
