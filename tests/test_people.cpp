@@ -672,3 +672,31 @@ TEST_CASE("the manual names every long option of every subcommand", "[people]") 
         }
     }
 }
+
+TEST_CASE("erd render draws a -t triangulation file with the method's constrained edges", "[people]") {
+    if (!have_erd()) return;
+    using namespace erd_test;
+    TempDir dir;
+    erd::Image im(40, 30, 255);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x)
+            im.at(x, y) = std::uint16_t((x - 20) * (x - 20) + (y - 15) * (y - 15) < 64 ? 220 : std::lround(90 + 40 * std::sin(x / 3.0) * std::cos(y / 4.0)));
+    spit(dir.file("in.pgm"), erd::cli::encode_pgm(im, false));
+    RunResult r = run_erd("generate -m erdgpi -i " + sh_quote(dir.file("in.pgm")) + " -n 60 -o " + sh_quote(dir.file("m.erd")) +
+                          " -t " + sh_quote(dir.file("m.tri")) + " -q");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    Model tri;
+    REQUIRE(read_triangulation(slurp(dir.file("m.tri")), &tri).ok());
+    REQUIRE(run_erd("render " + sh_quote(dir.file("m.tri")) + " -o " + sh_quote(dir.file("t.svg"))).status == 0);
+    REQUIRE(run_erd("render " + sh_quote(dir.file("m.erd")) + " -o " + sh_quote(dir.file("e.svg"))).status == 0);
+    std::string t = slurp(dir.file("t.svg")), e = slurp(dir.file("e.svg"));
+    // The file's own list, drawn as given; the .erd shows those whose values differ (a subset).
+    CHECK(count(group(t, "constrained"), "<line ") == tri.constraints.size());
+    CHECK(tri.constraints.size() > 0);
+    CHECK(count(group(e, "constrained"), "<line ") <= tri.constraints.size());
+    CHECK(count(t, "<line ") == count(e, "<line "));
+    // Nothing to reconstruct or export in a triangulation file.
+    CHECK(run_erd("render " + sh_quote(dir.file("m.tri")) + " -o " + sh_quote(dir.file("x.png")) + " --over-reconstruction").status == 2);
+    CHECK(run_erd("export " + sh_quote(dir.file("m.tri")) + " -o " + sh_quote(dir.file("x.obj"))).status == 2);
+}
