@@ -39,7 +39,8 @@ trap 'rm -f "$section"' EXIT
     echo
     echo "PSNR (dB) of the 4x4 supersampled reconstruction. \"none\" is -B 2 (no mirroring), \"mirror\""
     echo "-B 0 (the default), \"force\" -B 1 (ours; the thesis does not define it). The thesis's ct is"
-    echo "our ct_head_12b; glasses2 and mri are not in the image set."
+    echo "our ct_head_12b; glasses2 and mri are not in the image set. Default options, so the wedge"
+    echo "values are refitted by least squares (ours), which hides much of the start-up effect."
     echo
     echo "| image | density (%) | thesis none | thesis mirror | none | mirror | force | mirror - none (ours / thesis) |"
     echo "|---|---|---|---|---|---|---|---|"
