@@ -43,4 +43,4 @@ if [ -z "$first" ]; then echo "docs_images: no method could mesh $img" >&2; exit
 "$erd" render "$first" -q --over "$img" --no-edges --scale 0.5 -o "$out/bull_original.png"
 "$erd" render "$first" -q --over "$img" --no-edges --crop "$crop" --scale 2 -o "$out/bull_original_detail.png"
 echo "docs_images: made ${made[*]} in $out" >&2
-ls -l "$out"/bull_*.png >&2
+for m in "${made[@]}" original; do ls -l "$out"/bull_"$m"*.png >&2; done
