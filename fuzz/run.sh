@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Builds every fuzz/fuzz_*.cpp with libFuzzer + ASan + UBSan and runs each for SECONDS.
-# Prints "PASS name execs corpus" or "FAIL name" per target.  Usage: fuzz/run.sh SECONDS
+# Prints "PASS name execs corpus" or "FAIL name" per target.
+# Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). FUZZ_BUILD=dir (default build-fuzz).
 set -u
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
-B=build-fuzz
+shift || true
+B=${FUZZ_BUILD:-build-fuzz}
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all"
 FLAGS="-O1 -g -std=c++17 -I. -fno-omit-frame-pointer $SAN"
 if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ not found, skipped"; exit 0; fi
@@ -14,7 +16,8 @@ make -s -j2 BUILD=$B CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer
     $B/liberd.a $(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o || { echo "FAIL build"; exit 1; }
 objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o $B/liberd.a"
 status=0
-for src in fuzz/fuzz_*.cpp; do
+if [[ $# -gt 0 ]]; then targets=$(printf 'fuzz/%s.cpp ' "$@"); else targets=$(ls fuzz/fuzz_*.cpp); fi
+for src in $targets; do
     name=$(basename "$src" .cpp)
     if ! clang++ $FLAGS -fsanitize=fuzzer "$src" $objs -o $B/$name 2>$B/$name.build.log; then
         echo "FAIL $name (build)"; cat $B/$name.build.log | head -20; status=1; continue
@@ -26,7 +29,7 @@ for src in fuzz/fuzz_*.cpp; do
     if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$SECONDS_EACH" \
         -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
         execs=$(grep -E 'stat::number_of_executed_units' $B/$name.log | awk '{print $2}')
-        echo "PASS $name execs=$execs corpus=$(ls "$corpus" | wc -l)"
+        echo "PASS $name execs=$execs corpus=$(ls "$corpus" | wc -l) seconds=$SECONDS_EACH"
     else
         echo "FAIL $name"; grep -E 'ERROR|SUMMARY|Test unit written' $B/$name.log | head -5; status=1
     fi
