@@ -372,6 +372,10 @@ Status detect_edges(const Grid<double>& im, const CannyParams& params, Grid<std:
                 float bg = g.v[std::size_t(cur)];
                 for (std::ptrdiff_t o : off) {
                     const std::size_t j = std::size_t(cur + o);
+                    // Stay inside the image: the frame of g replicates the border values and
+                    // may be larger than the point it is next to.
+                    const std::size_t jx = j % std::size_t(stride), jy = j / std::size_t(stride);
+                    if (jx < 1 || jx > std::size_t(W) || jy < 1 || jy > std::size_t(H)) continue;
                     if (flag[j] & kMain) continue;
                     if (g.v[j] > bg && g.v[j] >= tl) { bg = g.v[j]; best = cur + o; }
                 }
