@@ -474,11 +474,12 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
         WARN("source tree not found (run from the repository or set ERD_SRC): skipped");
         return;
     }
-    // BUILD as the Makefile's own rules spell it (relative to the tree when ERD_BIN is), so the
-    // dependency files written there keep matching their targets.
-    const std::string bin_dir = dirname_of(erd_bin());
-    const std::string build = erd_bin()[0] != '/' && absolute(".") == root ? bin_dir : absolute(bin_dir);
-    if (!exists(build + "/liberd.a")) {
+    // BUILD spelled as the Makefile spells it after normalising (relative to the tree when inside
+    // it), so the -o names below match its targets and nothing is rebuilt with other flags.
+    std::string build = absolute(dirname_of(erd_bin()));
+    if (build.compare(0, root.size() + 1, root + "/") == 0) build = build.substr(root.size() + 1);
+    // (a build dir that is the tree itself stays absolute, as the Makefile leaves it)
+    if (!exists((build[0] == '/' ? build : root + "/" + build) + "/liberd.a")) {
         WARN(build + "/liberd.a missing: skipped");
         return;
     }
@@ -488,9 +489,16 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
     const std::string make = "make -s -C " + sh_quote(root) + " BUILD=" + sh_quote(build) + " PREFIX=" + prefix +
                              " DESTDIR=" + sh_quote(dest.path) + " -o " + sh_quote(build + "/erd") + " -o " +
                              sh_quote(build + "/liberd.a");
+    const std::string lib_path = (build[0] == '/' ? build : root + "/" + build) + "/liberd.a";
+    struct stat before {};
+    ::stat(lib_path.c_str(), &before);
     RunResult inst = run_in(dest.path, make + " install");
     INFO(inst.err);
     REQUIRE(inst.status == 0);
+    struct stat after {};
+    ::stat(lib_path.c_str(), &after);
+    CHECK(after.st_mtime == before.st_mtime);  // installed as built, nothing rebuilt
+    CHECK(exists(erd_bin()));
     const std::string top = dest.path + prefix;
     for (const char* f : {"bin/erd", "lib/liberd.a", "lib/pkgconfig/erd.pc", "share/man/man1/erd.1", "include/erd/erd.h",
                           "include/erd/algorithms/erd.h", "include/erd/algorithms/model.h", "include/erd/kernel/cdt.h",
