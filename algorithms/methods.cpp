@@ -39,6 +39,10 @@ std::int64_t target_points(const GenerateOptions& o, int width, int height) {
 
 Status check_target(std::int64_t n, int width, int height) {
     std::int64_t pixels = std::int64_t(width) * std::int64_t(height);
+    // Size first, so a 1x1 or 1xN image always gets the same "too small" line whatever N is.
+    if (width < 2 || height < 2)
+        return Status::bad_input("image is " + std::to_string(width) + "x" + std::to_string(height) +
+                                 "; meshing needs at least 2x2 pixels");
     if (n < 4)
         return Status::bad_input("target of " + std::to_string(n) +
                                  " points is below 4 (the four corners are always vertices)");

@@ -29,7 +29,8 @@ const Method* methods(std::size_t* count);
 // The method of this name, or nullptr.
 const Method* find_method(const std::string& name);
 
-// Checks N against the image: 4 <= N <= W*H (the four corners are always vertices).
+// Checks the image and N: W, H >= 2 (else "too small", whatever N), then 4 <= N <= W*H (the four
+// corners are always vertices).
 Status check_target(std::int64_t n, int width, int height);
 
 }  // namespace erd
