@@ -19,8 +19,6 @@ namespace erd {
 
 namespace {
 
-constexpr int kEdgeZeroRadius = 1;
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -172,7 +170,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
         d5 = mmsodd(phi, 5);
         Grid<double> density = ed_density(d5, 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
-        const int rad = kEdgeZeroRadius;
+        const int rad = std::max(0, options.edge_zero_radius);
         for (int y = 0; y < image.height; ++y)
             for (int x = 0; x < image.width; ++x) {
                 if (!on_edge(x, y)) continue;

@@ -37,6 +37,8 @@ WedgeValueOptions wedge_options(const GenerateOptions& options) {
     WedgeValueOptions w;
     w.rule = options.wedge_rule == 0 ? 0 : 1;
     w.smoothing_order = options.wedge_order;
+    w.alpha_min = options.alpha_min;
+    w.alpha_max = options.alpha_max;
     return w;
 }
 

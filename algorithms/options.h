@@ -37,6 +37,10 @@ struct GenerateOptions {
     std::uint64_t seed = 1;      // random selection (-f 0): fixed seed, deterministic output
     int wedge_fit = 6;           // ERD (ours, beyond the thesis): CGLS iterations of the least-squares
                                  // refit of all wedge values after refinement; 0 = the thesis's values
+    double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
+    double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
+    int edge_zero_radius = 1;    // ERDED: density zeroed within this many pixels (Chebyshev) of an
+                                 // edge pixel (ours; the thesis's "edge pixels" is 0)
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages
 };

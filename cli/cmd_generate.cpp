@@ -30,7 +30,7 @@ namespace {
 
 const char* const kUsage =
     "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--stats FILE] [--psnr-report] [-q]";
+    "[--max-error E] [--psnr P] [--thesis] [--stats FILE] [--psnr-report] [-q]";
 
 const std::vector<OptionSpec>& specs() {
     static const std::vector<OptionSpec> s = {
@@ -54,6 +54,11 @@ const std::vector<OptionSpec>& specs() {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 (later flags override)"},
+        {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
+        {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
+        {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
+        {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
@@ -89,6 +94,12 @@ std::string polylines_text(const std::vector<std::vector<LatticePoint>>& lines) 
     return s;
 }
 
+std::string real_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 // Fills *o from the parsed flags; the first bad value sets *st.
 void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st) {
     const double big = 1e300;
@@ -117,6 +128,21 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     o->startup = int(a.integer("startup", 0, 0, 2, st));
     if (a.has("simple")) o->simple = int(a.integer("simple", -1, 0, 1 << 30, st));
     if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));
+    // --thesis first, so an explicit flag beside it still wins.
+    if (a.has("thesis")) {
+        o->wedge_fit = 0;
+        o->alpha_min = 1.0;
+        o->alpha_max = 1.5;
+        o->edge_zero_radius = 0;
+    }
+    if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
+    if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
+    if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
+    if (st->ok() && o->alpha_max < o->alpha_min)
+        *st = Status::bad_input("--alpha-max " + real_text(o->alpha_max) + " is below --alpha-min " +
+                                real_text(o->alpha_min));
+    if (a.has("edge-zero-radius"))
+        o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -204,22 +230,35 @@ int cmd_generate(int argc, char** argv) {
         if (exit_mode == 0) return int(Code::density);
     }
 
+    // A later output failing removes the files this run already wrote, so a failed run leaves
+    // nothing behind (robustness, issue 7); stdout cannot be taken back.
+    std::vector<std::string> written;
+    auto fail_after_write = [&](const Status& bad) {
+        for (const std::string& w : written) std::remove(w.c_str());
+        return rep.fail(bad);
+    };
+    auto wrote = [&](const std::string& path) {
+        if (path != "-") written.push_back(path);
+    };
     t0 = std::chrono::steady_clock::now();
     std::string bytes;
     st = write_model(res.model, &bytes);
     if (!st) return rep.fail(st);
     st = write_file_atomic(out, bytes);
     if (!st) return rep.fail(st);
+    wrote(out);
     if (!tri.empty()) {
         std::string tri_bytes;
         st = write_triangulation(res.model, &tri_bytes);
-        if (!st) return rep.fail(st);
+        if (!st) return fail_after_write(st);
         st = write_file_atomic(tri, tri_bytes);
-        if (!st) return rep.fail(st);
+        if (!st) return fail_after_write(st);
+        wrote(tri);
     }
     if (!poly.empty()) {
         st = write_file_atomic(poly, polylines_text(res.polylines));
-        if (!st) return rep.fail(st);
+        if (!st) return fail_after_write(st);
+        wrote(poly);
     }
     const double write_seconds = seconds_since(t0);
 
@@ -231,9 +270,9 @@ int cmd_generate(int argc, char** argv) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
         st = reconstruct(res.model, res.model.kind == ModelKind::erd, &rec);
-        if (!st) return rep.fail(Status::failure("reconstruct: " + st.message));
+        if (!st) return fail_after_write(Status::failure("reconstruct: " + st.message));
         st = psnr(image, rec, &db);
-        if (!st) return rep.fail(st);
+        if (!st) return fail_after_write(st);
         have_psnr = true;
         psnr_seconds = seconds_since(t0);
         // Asked for explicitly, so printed under -q too (stderr: stdout may carry the model).
@@ -252,7 +291,7 @@ int cmd_generate(int argc, char** argv) {
         gs.total_seconds = seconds_since(t_start);
         gs.peak_memory_bytes = peak_memory_bytes();
         st = write_file_atomic(stats_out, stats_json(gs));
-        if (!st) return rep.fail(st);
+        if (!st) return fail_after_write(st);
     }
     return 0;
 }
