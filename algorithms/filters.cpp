@@ -1,5 +1,6 @@
 #include "algorithms/filters.h"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace erd {
@@ -32,11 +33,12 @@ std::vector<double> compose_taps(const std::vector<double>& a, const std::vector
 
 // Convolves n samples spaced `stride` apart starting at in[0] into out (same layout). For a
 // convolution y[i] = sum_n h[n] x[i-n] with taps stored h[-c..c], tap k multiplies x[i + c - k].
+// Only the outputs in [i0, i1) are written (the border zones; the interior has fast loops below).
 static void convolve_line(const double* in, double* out, int n, std::ptrdiff_t stride, const std::vector<double>& taps,
-                          Border border) {
+                          Border border, int i0, int i1) {
     const int c = int(taps.size() / 2);
     const int m = int(taps.size());
-    for (int i = 0; i < n; ++i) {
+    for (int i = i0; i < i1; ++i) {
         double acc = 0.0;
         for (int k = 0; k < m; ++k) {
             int j = i + c - k;
@@ -50,19 +52,98 @@ static void convolve_line(const double* in, double* out, int n, std::ptrdiff_t s
     }
 }
 
+namespace {
+
+// The interior (every tap inside the line) sums the same products in the same order as
+// convolve_line, so results are bit-identical; M fixed lets the compiler keep the taps in
+// registers. rows: out[i] = sum_k t[k] * in[i + c - k]; cols: the same down a column, computed a
+// whole row at a time so memory is read in order.
+template <int M>
+void rows_interior(const double* in, double* out, int i0, int i1, int c, const double* t) {
+    double tt[M];
+    for (int k = 0; k < M; ++k) tt[k] = t[k];
+    for (int i = i0; i < i1; ++i) {
+        const double* p = in + (i + c);
+        double acc = 0.0;
+        for (int k = 0; k < M; ++k) acc += tt[k] * p[-k];
+        out[i] = acc;
+    }
+}
+
+void rows_interior_any(const double* in, double* out, int i0, int i1, int c, const double* t, int m) {
+    for (int i = i0; i < i1; ++i) {
+        const double* p = in + (i + c);
+        double acc = 0.0;
+        for (int k = 0; k < m; ++k) acc += t[k] * p[-k];
+        out[i] = acc;
+    }
+}
+
+// Column pass for output row i whose taps all fall inside the image: src[k] = input row i + c - k.
+template <int M>
+void cols_row(const double* const* src, double* out, int w, const double* t) {
+    double tt[M];
+    for (int k = 0; k < M; ++k) tt[k] = t[k];
+    for (int x = 0; x < w; ++x) {
+        double acc = 0.0;
+        for (int k = 0; k < M; ++k) acc += tt[k] * src[k][x];
+        out[x] = acc;
+    }
+}
+
+void cols_row_any(const double* const* src, double* out, int w, const double* t, int m) {
+    for (int x = 0; x < w; ++x) {
+        double acc = 0.0;
+        for (int k = 0; k < m; ++k) acc += t[k] * src[k][x];
+        out[x] = acc;
+    }
+}
+
+}  // namespace
+
 Grid<double> convolve_rows(const Grid<double>& in, const std::vector<double>& taps, Border border) {
     Grid<double> out(in.width, in.height);
     if (taps.empty()) return out;
-    for (int y = 0; y < in.height; ++y)
-        convolve_line(&in(0, y), &out(0, y), in.width, 1, taps, border);
+    const int n = in.width, m = int(taps.size()), c = m / 2;
+    // Output i reads inputs i + c - (m - 1) .. i + c.
+    const int lo = std::min(n, std::max(0, m - 1 - c)), hi = std::max(lo, n - c);
+    const double* t = taps.data();
+    for (int y = 0; y < in.height; ++y) {
+        const double* src = &in(0, y);
+        double* dst = &out(0, y);
+        convolve_line(src, dst, n, 1, taps, border, 0, lo);
+        switch (m) {
+            case 3: rows_interior<3>(src, dst, lo, hi, c, t); break;
+            case 5: rows_interior<5>(src, dst, lo, hi, c, t); break;
+            case 7: rows_interior<7>(src, dst, lo, hi, c, t); break;
+            default: rows_interior_any(src, dst, lo, hi, c, t, m); break;
+        }
+        convolve_line(src, dst, n, 1, taps, border, hi, n);
+    }
     return out;
 }
 
 Grid<double> convolve_cols(const Grid<double>& in, const std::vector<double>& taps, Border border) {
     Grid<double> out(in.width, in.height);
     if (taps.empty()) return out;
-    for (int x = 0; x < in.width; ++x)
-        convolve_line(&in(x, 0), &out(x, 0), in.height, in.width, taps, border);
+    const int n = in.height, w = in.width, m = int(taps.size()), c = m / 2;
+    const int lo = std::min(n, std::max(0, m - 1 - c)), hi = std::max(lo, n - c);
+    for (int x = 0; x < w; ++x) {
+        convolve_line(&in(x, 0), &out(x, 0), n, w, taps, border, 0, lo);
+        convolve_line(&in(x, 0), &out(x, 0), n, w, taps, border, hi, n);
+    }
+    const double* t = taps.data();
+    std::vector<const double*> src(std::size_t(m), nullptr);
+    for (int i = lo; i < hi; ++i) {
+        for (int k = 0; k < m; ++k) src[std::size_t(k)] = &in(0, i + c - k);
+        double* dst = &out(0, i);
+        switch (m) {
+            case 3: cols_row<3>(src.data(), dst, w, t); break;
+            case 5: cols_row<5>(src.data(), dst, w, t); break;
+            case 7: cols_row<7>(src.data(), dst, w, t); break;
+            default: cols_row_any(src.data(), dst, w, t, m); break;
+        }
+    }
     return out;
 }
 
