@@ -24,6 +24,11 @@ public:
         r_ = r;
         have_edges_ = true;
         have_count_ = false;
+        // The previous detection's map and polylines are dead now: free them before the detector
+        // allocates its grids, so they do not add to the peak (about 1 byte per half-pixel point).
+        edges_ = Grid<std::uint8_t>();
+        std::vector<Polyline>().swap(traced_);
+        std::vector<Polyline>().swap(kept_);
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
