@@ -38,33 +38,44 @@ std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y))
 // std::floor (a libm call without SSE4.1): they agree for v + 0.5 >= 0, and below that both end
 // at 0 after clamping. Plane values are interpolated samples, so they are finite and small.
 template <bool Clamp>
+inline std::int32_t rounded(double v, double maxval) {
+    // Clamp above in double (also keeps the conversion in range), round by truncation, clamp
+    // below in integers: any v < 0.5 gives 0 as to_sample does. Cheaper than a double clamp,
+    // which GCC compiles into a 5-instruction blend.
+    if (!Clamp) return std::int32_t(v + 0.5);
+    const double c = v < maxval ? v : maxval;
+    const std::int32_t r = std::int32_t(c + 0.5);
+    return r < 0 ? 0 : r;
+}
+
+// Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
+template <bool Clamp>
 inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
                               std::int32_t x1, double v, double dv, double maxval, std::int64_t* sum,
                               std::int64_t* best_sq, std::int32_t* bx) {
-    std::int64_t acc = 0, b = *best_sq;  // the candidate is compared by squared error: no abs
+    std::uint64_t acc = 0;
+    std::int64_t b = *best_sq;  // the candidate is compared by squared error: no abs
     bool moved = false;
-    for (std::int32_t x = x0; x <= x1; ++x, v += dv) {
-        // Clamp above in double (also keeps the conversion in range), round by truncation, clamp
-        // below in integers: any v < 0.5 gives 0 as to_sample does. Cheaper than a double clamp,
-        // which GCC compiles into a 5-instruction blend.
-        std::int32_t r;
-        if (Clamp) {
-            const double c = v < maxval ? v : maxval;
-            r = std::int32_t(c + 0.5);
-            r = r < 0 ? 0 : r;
-        } else {
-            r = std::int32_t(v + 0.5);
-        }
-        const std::int64_t e = std::int64_t(samples[x]) - r;
-        const std::int64_t e2 = e * e;
+    auto visit = [&](std::int32_t x, double vx) {
+        const std::uint32_t e = std::uint32_t(std::int32_t(samples[x]) - rounded<Clamp>(vx, maxval));
+        const std::uint32_t e2 = e * e;
         acc += e2;
-        if (e2 > b && !banned[x]) {
+        if (std::int64_t(e2) > b && !banned[x]) {
             b = e2;
             *bx = x;
             moved = true;
         }
+    };
+    // Two pixels per trip (v steps exactly as one at a time: the same additions in order).
+    std::int32_t x = x0;
+    for (; x < x1; x += 2) {
+        const double v1 = v + dv;
+        visit(x, v);
+        visit(x + 1, v1);
+        v = v1 + dv;
     }
-    *sum += acc;
+    if (x == x1) visit(x, v);
+    *sum += std::int64_t(acc);
     *best_sq = b;
     return moved;
 }
