@@ -138,10 +138,20 @@ int cmd_edges(int argc, char** argv) {
              " added at junctions), " + std::to_string(traced.size()) + " traced polylines, " +
              std::to_string(lines.size()) + " kept with " + std::to_string(points) + " vertices");
 
+    // A later output failing removes the earlier ones, so a failed run leaves nothing (issue 7).
+    auto undo = [&](std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i)
+            if (outs[i] != "-") std::remove(outs[i].c_str());
+    };
     if (!(st = write_image(args.str("output"), edge_image(edges)))) return rep.fail(st);
-    if (args.has("polylines") && !(st = write_file_atomic(args.str("polylines"), polylines_text(lines)))) return rep.fail(st);
-    if (args.has("draw-polylines") && !(st = write_image(args.str("draw-polylines"), polyline_image(im, lines, args.has("over-image")))))
+    if (args.has("polylines") && !(st = write_file_atomic(args.str("polylines"), polylines_text(lines)))) {
+        undo(1);
         return rep.fail(st);
+    }
+    if (args.has("draw-polylines") && !(st = write_image(args.str("draw-polylines"), polyline_image(im, lines, args.has("over-image"))))) {
+        undo(outs.size() - 1);
+        return rep.fail(st);
+    }
     return 0;
 }
 

@@ -12,7 +12,8 @@ FLAGS="-O1 -g -std=c++17 -I. -fno-omit-frame-pointer $SAN"
 if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ not found, skipped"; exit 0; fi
 mkdir -p $B
 # Library and CLI objects (all but main) with coverage instrumentation; rebuilt when sources change.
-make -s -j2 BUILD=$B CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+# FUZZ_NOBUILD=1: use the objects already in $B (lets two runs share one build dir safely).
+[[ -n ${FUZZ_NOBUILD:-} ]] || make -s -j2 BUILD=$B CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
     $B/liberd.a $(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o || { echo "FAIL build"; exit 1; }
 objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o $B/liberd.a"
 status=0

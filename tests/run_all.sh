@@ -26,15 +26,27 @@ count_catch() {
     passed=$((passed + p)); failed=$((failed + f))
 }
 
+stage_start=$SECONDS
+stage() { echo "   ($(( SECONDS - stage_start )) s)"; stage_start=$SECONDS; }
 echo "== build"
 if ! make -s -j2 build/erd build/erd_tests; then
     echo "build failed"; echo "0 passed, 1 failed"; exit 1
 fi
 
+# An -O0 build of the binary only (no tests): tests/test_robustness.cpp compares its generate
+# output with build/erd byte for byte (determinism across optimisation levels).
+stage
+echo "== -O0 build (determinism check)"
+if ! make -s -j2 BUILD=build-o0 OPT=-O0 build-o0/erd >"$log/o0-build" 2>&1; then
+    tail -20 "$log/o0-build"; echo "-O0 build failed"; failed=$((failed + 1))
+fi
+
+stage
 echo "== unit tests"
 ERD_BIN=build/erd ERD_IMAGES=$IMAGES build/erd_tests 2>&1 | tee "$log/unit" | tail -3
 count_catch "$log/unit" "${PIPESTATUS[0]}"
 
+stage
 echo "== unit tests under ASan+UBSan"
 if command -v clang++ >/dev/null && make -s -j2 asan >"$log/asan-build" 2>&1; then
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
@@ -44,6 +56,7 @@ else
     tail -20 "$log/asan-build"; echo "sanitizer build failed"; failed=$((failed + 1))
 fi
 
+stage
 echo "== fuzz smoke runs"
 if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
     bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-20}" >"$log/fuzz" 2>&1
@@ -52,6 +65,7 @@ if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1;
     passed=$((passed + p)); failed=$((failed + f))
 fi
 
+stage
 echo "== embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
 if make -s -j2 embedded >"$log/embedded" 2>&1; then
     grep -E '^(library|example|estimated|erdgpi)' "$log/embedded" || true
@@ -60,5 +74,6 @@ else
     tail -20 "$log/embedded"; echo "embedded build or example failed"; failed=$((failed + 1))
 fi
 
+stage
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
