@@ -111,6 +111,9 @@ int run_generate(const Program& p, int argc, char** argv) {
     // -q: the thesis's programs print the -x lines and errors only, no stage timings. Without -i
     // or -o they read standard input or write standard output (erd generate needs both named).
     std::vector<std::string> out = {"generate", "--method", p.method, "-q"};
+    // erd_ed and erd_gpi are the thesis's method, not erd's improved defaults (wedge refit, line
+    // search range, ERDED edge radius): --thesis sets the thesis's values.
+    if (std::strcmp(p.method, "erded") == 0 || std::strcmp(p.method, "erdgpi") == 0) out.push_back("--thesis");
     if (!given[int('i')]) out.insert(out.end(), {"-i", "-"});
     if (!given[int('o')]) out.insert(out.end(), {"-o", "-"});
     for (const char* f = p.flags; *f; ++f) {
