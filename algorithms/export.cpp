@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "algorithms/mesh_edges.h"
+#include "algorithms/model_topology.h"
 
 namespace erd {
 
@@ -39,9 +39,8 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     const bool erd = m.kind == ModelKind::erd;
     if (erd && m.corner_values.size() != m.faces.size())
         return Status::bad_input("ERD model without a value for every face corner");
-    std::vector<MeshEdge> edges;
-    Status st = mesh_edges(m, &edges);
-    if (!st) return st;
+    ModelTopology topo;
+    if (Status st = build_topology(m, &topo); !st) return st;
     const double zs = options.zscale > 0 ? options.zscale : default_zscale(m);
     const double top = double(m.height - 1);
 
@@ -49,24 +48,21 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     std::vector<std::array<double, 3>> pos;
     std::vector<std::array<std::uint32_t, 3>> face_idx(m.faces.size());
     if (erd) {
-        std::vector<std::array<std::uint32_t, 3>> wedge;
-        std::vector<std::uint32_t> first;
-        std::uint32_t count = 0;
-        corner_wedges(m, edges, &wedge, &first, &count);
+        const CornerWedges cw = corner_wedges(m, topo);
         // A vertex without faces still gets written once, so no input vertex vanishes silently.
-        std::vector<std::uint32_t> copy_of_wedge(count);
-        std::vector<bool> placed(count, false);
+        std::vector<std::uint32_t> copy_of_wedge(cw.count);
+        std::vector<bool> placed(cw.count, false);
         for (std::size_t v = 0; v < m.vertices.size(); ++v) {
             double x = m.vertices[v].x / 2.0, y = top - m.vertices[v].y / 2.0;
-            if (first[v] == first[v + 1]) { pos.push_back({x, y, m.values[v] * zs}); continue; }
-            for (std::uint32_t w = first[v]; w < first[v + 1]; ++w) {
+            if (cw.first[v] == cw.first[v + 1]) { pos.push_back({x, y, m.values[v] * zs}); continue; }
+            for (std::uint32_t w = cw.first[v]; w < cw.first[v + 1]; ++w) {
                 copy_of_wedge[w] = std::uint32_t(pos.size());
                 pos.push_back({x, y, 0});
             }
         }
         for (std::size_t f = 0; f < m.faces.size(); ++f)
             for (int i = 0; i < 3; ++i) {
-                std::uint32_t w = wedge[f][std::size_t(i)];
+                std::uint32_t w = cw.label[3 * f + std::size_t(i)];
                 face_idx[f][std::size_t(i)] = copy_of_wedge[w];
                 if (!placed[w]) { pos[copy_of_wedge[w]][2] = m.corner_values[f][std::size_t(i)] * zs; placed[w] = true; }
             }

@@ -33,7 +33,7 @@ struct ExportCounts {
 double default_zscale(const Model& m);
 
 // Writes the model as OBJ or PLY text into *out. Fails (Code::input) on an inconsistent model
-// (index out of range, an edge with three faces).
+// (index out of range, a repeated vertex, overlapping faces: build_topology).
 Status export_mesh(const Model& m, const ExportOptions& options, std::string* out, ExportCounts* counts = nullptr);
 
 }  // namespace erd

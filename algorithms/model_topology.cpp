@@ -2,6 +2,7 @@
 #include "algorithms/model_topology.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <utility>
 
@@ -16,16 +17,40 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
     return i;
 }
 
+// Model::constraints as sorted (smaller, larger) vertex pairs, for lookups by edge.
+using EdgeKeys = std::vector<std::array<std::uint32_t, 2>>;
+EdgeKeys listed_constraints(const Model& m) {
+    EdgeKeys listed = m.constraints;
+    for (auto& c : listed)
+        if (c[0] > c[1]) std::swap(c[0], c[1]);
+    std::sort(listed.begin(), listed.end());
+    return listed;
+}
+
+std::array<std::uint32_t, 2> edge_key(const Model& m, std::uint32_t h) {
+    const std::uint32_t u = m.faces[h / 3][h % 3], w = m.faces[h / 3][(h + 1) % 3];
+    return {std::min(u, w), std::max(u, w)};
+}
+
+// The edge of half-edge h is listed as a constraint or is a discontinuity.
+bool constrained(const Model& m, const ModelTopology& t, const EdgeKeys& listed, std::uint32_t h) {
+    return std::binary_search(listed.begin(), listed.end(), edge_key(m, h)) || is_discontinuity(m, t, h);
+}
+
 }  // namespace
 
 Status build_topology(const Model& m, ModelTopology* t) {
     const std::size_t nv = m.vertices.size(), nf = m.faces.size();
     if (nf > (std::size_t(kNoHalfEdge) - 3) / 3) return Status::bad_input("too many faces");
-    for (std::size_t f = 0; f < nf; ++f)
-        for (std::uint32_t v : m.faces[f])
+    for (std::size_t f = 0; f < nf; ++f) {
+        const auto& c = m.faces[f];
+        for (std::uint32_t v : c)
             if (v >= nv)
                 return Status::bad_input("face " + std::to_string(f) + ": vertex index " + std::to_string(v) +
                                          " out of range");
+        if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
+            return Status::bad_input("face " + std::to_string(f) + " repeats a vertex");
+    }
     t->corner_begin.assign(nv + 1, 0);
     for (const auto& f : m.faces)
         for (std::uint32_t v : f) ++t->corner_begin[v + 1];
@@ -103,6 +128,55 @@ VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t
         }
     w.mean = sum / w.count;
     return w;
+}
+
+std::vector<ModelEdge> model_edges(const Model& m, const ModelTopology& t) {
+    const EdgeKeys listed = listed_constraints(m);
+    std::vector<ModelEdge> edges;
+    edges.reserve(t.twin.size() / 2 + 2);
+    for (std::uint32_t h = 0; h < t.twin.size(); ++h) {
+        if (t.twin[h] != kNoHalfEdge && t.twin[h] < h) continue;  // each edge once
+        const auto key = edge_key(m, h);
+        edges.push_back({key[0], key[1], constrained(m, t, listed, h)});
+    }
+    std::sort(edges.begin(), edges.end(),
+              [](const ModelEdge& x, const ModelEdge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+    return edges;
+}
+
+CornerWedges corner_wedges(const Model& m, const ModelTopology& t) {
+    const std::size_t nh = t.twin.size(), nv = t.corner_begin.size() - 1;
+    const EdgeKeys listed = listed_constraints(m);
+    // Union of the corners on both sides of every unconstrained interior edge, at both ends; the
+    // smaller root wins, so each wedge's root is its first corner whatever the order of unions.
+    std::vector<std::uint32_t> parent(nh);
+    for (std::uint32_t i = 0; i < nh; ++i) parent[i] = i;
+    const auto join = [&](std::uint32_t x, std::uint32_t y) {
+        x = find_root(parent, x);
+        y = find_root(parent, y);
+        if (x != y) parent[std::max(x, y)] = std::min(x, y);
+    };
+    for (std::uint32_t h = 0; h < nh; ++h) {
+        const std::uint32_t o = t.twin[h];
+        if (o == kNoHalfEdge || o < h || constrained(m, t, listed, h)) continue;
+        join(h, ModelTopology::next(o));  // corners at u
+        join(ModelTopology::next(h), o);  // corners at w
+    }
+    CornerWedges cw;
+    cw.label.assign(nh, 0);
+    cw.first.assign(nv + 1, 0);
+    const std::uint32_t none = kNoHalfEdge;
+    std::vector<std::uint32_t> label_of_root(nh, none);
+    for (std::size_t v = 0; v < nv; ++v) {
+        cw.first[v] = cw.count;
+        for (std::uint32_t i = t.corner_begin[v]; i < t.corner_begin[v + 1]; ++i) {
+            const std::uint32_t c = t.corners[i], r = find_root(parent, c);
+            if (label_of_root[r] == none) label_of_root[r] = cw.count++;
+            cw.label[c] = label_of_root[r];
+        }
+    }
+    cw.first[nv] = cw.count;
+    return cw;
 }
 
 Status vertex_fan(const ModelTopology& t, std::uint32_t v, std::vector<std::uint32_t>* fan, bool* closed) {

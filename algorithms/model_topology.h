@@ -31,7 +31,7 @@ struct ModelTopology {
 };
 
 // Builds the adjacency. Fails (input error, message naming the faces) when a face index is out of
-// range or two faces contain the same directed edge (overlapping or inconsistently oriented
+// range, a face repeats a vertex, or two faces contain the same directed edge (overlapping or inconsistently oriented
 // faces); a third face on an undirected edge is caught the same way.
 Status build_topology(const Model& m, ModelTopology* t);
 
@@ -50,6 +50,27 @@ struct VertexWedges {
     double mean = 0.0;
 };
 VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t v);
+
+// One undirected edge of the mesh, a < b. Constrained when Model::constraints lists it or it is
+// a discontinuity: pictures draw these thick, exports cut the surface open along them.
+struct ModelEdge {
+    std::uint32_t a = 0, b = 0;
+    bool constrained = false;
+};
+
+// Every edge once, sorted by (a, b) (a fixed drawing order).
+std::vector<ModelEdge> model_edges(const Model& m, const ModelTopology& t);
+
+// Wedge labels of all corners, for exports that give every wedge its own vertex copy: corners of
+// one vertex share a label exactly when a chain of faces around it joins them without crossing a
+// constrained edge (as model_edges flags them). Labels run 0..count-1, by vertex, then by the
+// first face (in face order) of each wedge; vertex v has labels [first[v], first[v+1]).
+struct CornerWedges {
+    std::vector<std::uint32_t> label;  // per corner (half-edge) h = 3f + k
+    std::vector<std::uint32_t> first;  // per vertex + 1
+    std::uint32_t count = 0;
+};
+CornerWedges corner_wedges(const Model& m, const ModelTopology& t);
 
 // The corners of v in rotational order (crossing the edge v->next of each face in turn), starting
 // at the first face of an open fan. *closed tells whether the fan closes. Fails when the faces

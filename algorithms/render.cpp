@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "algorithms/mesh_edges.h"
+#include "algorithms/model_topology.h"
 
 namespace erd {
 
@@ -71,6 +71,16 @@ void draw_dot(RgbImage* im, double cx, double cy, double r, Colour c) {
             double cov = std::clamp(r + 0.5 - d, 0.0, 1.0);
             if (cov > 0) blend(im, x, y, c, cov);
         }
+}
+
+// The edges to draw (none when options.edges is off); fails on a face list that is not a mesh.
+Status edges_to_draw(const Model& m, const RenderOptions& o, std::vector<ModelEdge>* edges) {
+    edges->clear();
+    if (!o.edges) return Status::success();
+    ModelTopology topo;
+    if (Status st = build_topology(m, &topo); !st) return st;
+    *edges = model_edges(m, topo);
+    return Status::success();
 }
 
 // Ramp stops for the error map, evenly spaced from error 0 to `full`.
@@ -151,11 +161,8 @@ Status render_raster(const Model& m, const RgbImage* background, const RenderOpt
         return Status::bad_input("background is " + std::to_string(background->width) + "x" +
                                  std::to_string(background->height) + " but the model is " + std::to_string(m.width) +
                                  "x" + std::to_string(m.height));
-    std::vector<MeshEdge> edges;
-    if (o.edges) {
-        st = mesh_edges(m, &edges);
-        if (!st) return st;
-    }
+    std::vector<ModelEdge> edges;
+    if (!(st = edges_to_draw(m, o, &edges))) return st;
     const double s = o.scale;
     const int w = int(std::ceil(o.crop_w * s)), h = int(std::ceil(o.crop_h * s));
     *out = RgbImage(w, h, 255);
@@ -183,7 +190,7 @@ Status render_raster(const Model& m, const RgbImage* background, const RenderOpt
     auto py = [&](LatticePoint p) { return place(p.y, o.crop_y, s); };
     // Thin edges first so the thick constrained ones stay on top.
     for (int pass = 0; pass < 2; ++pass)
-        for (const MeshEdge& e : edges) {
+        for (const ModelEdge& e : edges) {
             if (e.constrained != (pass == 1)) continue;
             LatticePoint a = m.vertices[e.a], b = m.vertices[e.b];
             draw_segment(out, px(a), py(a), px(b), py(b), e.constrained ? o.constrained_width : o.edge_width,
@@ -198,11 +205,8 @@ Status render_svg(const Model& m, const std::string& background_href, const Rend
     RenderOptions o;
     Status st = resolve_render(m, options, &o);
     if (!st) return st;
-    std::vector<MeshEdge> edges;
-    if (o.edges) {
-        st = mesh_edges(m, &edges);
-        if (!st) return st;
-    }
+    std::vector<ModelEdge> edges;
+    if (!(st = edges_to_draw(m, o, &edges))) return st;
     const double s = o.scale;
     const double w = o.crop_w * s, h = o.crop_h * s;
     std::string& t = *out;
@@ -232,7 +236,7 @@ Status render_svg(const Model& m, const std::string& background_href, const Rend
         t += cons ? "<g id=\"constrained\" stroke=\"" + std::string(kConstrainedHex) + "\" stroke-width=\"" + num(o.constrained_width)
                   : "<g id=\"edges\" stroke=\"" + std::string(kEdgeHex) + "\" stroke-width=\"" + num(o.edge_width);
         t += "\" stroke-linecap=\"round\" fill=\"none\">\n";
-        for (const MeshEdge& e : edges) {
+        for (const ModelEdge& e : edges) {
             if (e.constrained != cons) continue;
             LatticePoint a = m.vertices[e.a], b = m.vertices[e.b];
             if (outside(a, b)) continue;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "algorithms/mesh_edges.h"
+#include "algorithms/model_topology.h"
 #include "cli/report.h"
 
 namespace erd::cli {
@@ -45,10 +45,10 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
     s.vertices = m.vertices.size();
     s.faces = m.faces.size();
     s.stages = result.stages;
-    std::vector<MeshEdge> edges;
-    if (mesh_edges(m, &edges).ok()) {
+    ModelTopology topo;
+    if (build_topology(m, &topo).ok()) {
         std::vector<bool> touched(m.vertices.size(), false);
-        for (const MeshEdge& e : edges) {
+        for (const ModelEdge& e : model_edges(m, topo)) {
             if (!e.constrained) continue;
             ++s.constrained_edges;
             touched[e.a] = touched[e.b] = true;

@@ -1,5 +1,5 @@
-// Pictures, exports, statistics (library level): mesh edges and wedges, OBJ/PLY export with wedge
-// copies, SVG and raster render, the error map, the --stats JSON emitter, the progress hook.
+// Pictures, exports, statistics (library level): model edges and corner wedges, OBJ/PLY export
+// with wedge copies, SVG and raster render, the error map, the --stats JSON emitter, the progress hook.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "algorithms/export.h"
-#include "algorithms/mesh_edges.h"
 #include "algorithms/methods.h"
 #include "algorithms/model_io.h"
 #include "algorithms/model_topology.h"
@@ -21,23 +20,22 @@ using namespace erd;
 using namespace people_test;
 
 TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constrained", "[people]") {
-    std::vector<MeshEdge> edges;
-    REQUIRE(mesh_edges(diagonal_erd(), &edges).ok());
+    ModelTopology topo;
+    REQUIRE(build_topology(diagonal_erd(), &topo).ok());
+    std::vector<ModelEdge> edges = model_edges(diagonal_erd(), topo);
     REQUIRE(edges.size() == 5);
-    int constrained = 0, hull = 0;
-    for (const auto& e : edges) {
+    int constrained = 0;
+    for (const auto& e : edges)
         if (e.constrained) { ++constrained; CHECK(e.a == 1); CHECK(e.b == 2); }
-        if (e.right == kNoMeshFace) ++hull;
-    }
     CHECK(constrained == 1);
-    CHECK(hull == 4);
+    CHECK(std::count(topo.twin.begin(), topo.twin.end(), kNoHalfEdge) == 4);  // hull
 
     // The basic model is continuous: nothing constrained; an explicit list is honoured.
     Model b = diagonal_basic();
-    REQUIRE(mesh_edges(b, &edges).ok());
-    for (const auto& e : edges) CHECK_FALSE(e.constrained);
+    REQUIRE(build_topology(b, &topo).ok());
+    for (const auto& e : model_edges(b, topo)) CHECK_FALSE(e.constrained);
     b.constraints = {{2, 1}};
-    REQUIRE(mesh_edges(b, &edges).ok());
+    edges = model_edges(b, topo);
     // Sorted: 0-1, 0-2, 1-2, 1-3, 2-3.
     CHECK(edges[2].a == 1);
     CHECK(edges[2].b == 2);
@@ -45,27 +43,26 @@ TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constraine
 
     Model bad = diagonal_basic();
     bad.faces[1][2] = 7;
-    CHECK(mesh_edges(bad, &edges).code == Code::input);
+    CHECK(build_topology(bad, &topo).code == Code::input);
+    bad.faces[1][2] = 1;
+    CHECK(build_topology(bad, &topo).code == Code::input);  // repeats a vertex
 }
 
 TEST_CASE("wedges of the A.4.2 diagonal: corners 1 and 2 have two each", "[people]") {
     Model m = diagonal_erd();
-    std::vector<MeshEdge> edges;
-    REQUIRE(mesh_edges(m, &edges).ok());
-    std::vector<std::array<std::uint32_t, 3>> wedge;
-    std::vector<std::uint32_t> first;
-    std::uint32_t n = 0;
-    corner_wedges(m, edges, &wedge, &first, &n);
-    CHECK(n == 6);
-    CHECK(first == std::vector<std::uint32_t>{0, 1, 3, 5, 6});
+    ModelTopology topo;
+    REQUIRE(build_topology(m, &topo).ok());
+    CornerWedges cw = corner_wedges(m, topo);
+    CHECK(cw.count == 6);
+    CHECK(cw.first == std::vector<std::uint32_t>{0, 1, 3, 5, 6});
     // Face 0 = (0, 2, 1) holds the first wedge of each vertex, face 1 = (1, 2, 3) the second.
-    CHECK(wedge[0] == std::array<std::uint32_t, 3>{0, 3, 1});
-    CHECK(wedge[1] == std::array<std::uint32_t, 3>{2, 4, 5});
+    CHECK(cw.label == std::vector<std::uint32_t>{0, 3, 1, 2, 4, 5});
     // Equal values across the diagonal: one wedge per vertex again.
     m.corner_values = {{127, 60, 60}, {60, 60, 90}};
-    REQUIRE(mesh_edges(m, &edges).ok());
-    corner_wedges(m, edges, &wedge, &first, &n);
-    CHECK(n == 4);
+    CHECK(corner_wedges(m, topo).count == 4);
+    // ... unless the diagonal is listed as a constraint.
+    m.constraints = {{1, 2}};
+    CHECK(corner_wedges(m, topo).count == 6);
 }
 
 TEST_CASE("OBJ of the diagonal: 6 vertex copies for ERD, 4 for basic, faces point up", "[people]") {
@@ -252,7 +249,8 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
     CHECK_FALSE(j.has("psnr"));
 }
 
-TEST_CASE("wedge copies of a generated ERD model agree with model_topology and the file round trip", "[people]") {
+TEST_CASE("wedge copies of a generated ERD model: one value each, as many as vertex_wedges, same after a round trip",
+          "[people]") {
     const erd::Method* method = erd::find_method("erdgpi");
     if (!method) {
         WARN("erdgpi not registered in this build");
@@ -266,26 +264,22 @@ TEST_CASE("wedge copies of a generated ERD model agree with model_topology and t
     const Model& m = res.model;
     REQUIRE(m.kind == ModelKind::erd);
 
-    std::vector<MeshEdge> edges;
-    REQUIRE(mesh_edges(m, &edges).ok());
-    std::vector<std::array<std::uint32_t, 3>> wedge;
-    std::vector<std::uint32_t> first;
-    std::uint32_t n = 0;
-    corner_wedges(m, edges, &wedge, &first, &n);
     ModelTopology topo;
     REQUIRE(build_topology(m, &topo).ok());
+    const CornerWedges cw = corner_wedges(m, topo);
+    const std::uint32_t n = cw.count;
     std::size_t multi = 0;
     for (std::uint32_t v = 0; v < m.vertices.size(); ++v) {
         INFO("vertex " << v);
-        CHECK(int(first[v + 1] - first[v]) == vertex_wedges(m, topo, v).count);
-        multi += first[v + 1] - first[v] > 1 ? 1 : 0;
+        CHECK(int(cw.first[v + 1] - cw.first[v]) == vertex_wedges(m, topo, v).count);
+        multi += cw.first[v + 1] - cw.first[v] > 1 ? 1 : 0;
     }
     CHECK(multi > 0);
     // Every corner of one wedge carries one value.
     std::vector<double> value(n, -1);
     for (std::size_t f = 0; f < m.faces.size(); ++f)
         for (int i = 0; i < 3; ++i) {
-            double& w = value[wedge[f][std::size_t(i)]];
+            double& w = value[cw.label[3 * f + std::size_t(i)]];
             if (w < 0) w = m.corner_values[f][std::size_t(i)];
             CHECK(w == m.corner_values[f][std::size_t(i)]);
         }
