@@ -8,20 +8,10 @@
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/model_file.h"
+#include "cli/output_format.h"
 #include "cli/report.h"
 
 namespace erd::cli {
-
-static bool ends_with(const std::string& s, const char* suffix) {
-    std::string t(suffix);
-    if (s.size() < t.size()) return false;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        char c = s[s.size() - t.size() + i];
-        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
-        if (c != t[i]) return false;
-    }
-    return true;
-}
 
 int cmd_export(int argc, char** argv) {
     Reporter rep("export");
@@ -50,15 +40,9 @@ int cmd_export(int argc, char** argv) {
     const std::string in = args.positional()[0], out = args.str("output");
 
     ExportOptions opt;
-    std::string format = args.str("format");
-    if (format.empty()) {
-        if (ends_with(out, ".obj")) format = "obj";
-        else if (ends_with(out, ".ply")) format = "ply";
-        else return rep.usage("cannot tell the format from '" + out + "': name it .obj or .ply, or give --format", usage);
-    }
-    if (format == "obj") opt.format = MeshFormat::obj;
-    else if (format == "ply") opt.format = MeshFormat::ply;
-    else return rep.usage("--format must be obj or ply, not '" + format + "'", usage);
+    std::string format;
+    if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message, usage);
+    opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
     opt.zscale = args.real("zscale", 0, 0, 1e12, &st);
     if (!st) return rep.usage(st.message, usage);
     if (args.has("zscale") && !(opt.zscale > 0)) return rep.usage("--zscale must be greater than 0", usage);

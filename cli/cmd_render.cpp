@@ -13,21 +13,11 @@
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/model_file.h"
+#include "cli/output_format.h"
 #include "cli/report.h"
 #include "third_party/stb_glue.h"
 
 namespace erd::cli {
-
-static bool has_suffix(const std::string& s, const char* suffix) {
-    std::string t(suffix);
-    if (s.size() < t.size()) return false;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        char c = s[s.size() - t.size() + i];
-        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
-        if (c != t[i]) return false;
-    }
-    return true;
-}
 
 static std::string base64(const std::vector<unsigned char>& in) {
     static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -116,13 +106,8 @@ int cmd_render(int argc, char** argv) {
     if (args.positional().size() != 1) return rep.usage("expected one MODEL", usage);
     if (!args.has("output")) return rep.usage("-o OUT.svg or OUT.png is required", usage);
     const std::string in = args.positional()[0], out = args.str("output");
-    std::string format = args.str("format");
-    if (format.empty()) {
-        if (has_suffix(out, ".svg")) format = "svg";
-        else if (has_suffix(out, ".png")) format = "png";
-        else return rep.usage("cannot tell the format from '" + out + "': name it .svg or .png, or give --format", usage);
-    }
-    if (format != "svg" && format != "png") return rep.usage("--format must be svg or png, not '" + format + "'", usage);
+    std::string format;
+    if (!(st = output_format(args.str("format"), out, "svg", "png", &format))) return rep.usage(st.message, usage);
     int backgrounds = int(args.has("over")) + int(args.has("over-reconstruction")) + int(args.has("error"));
     if (backgrounds > 1) return rep.usage("give at most one of --over, --over-reconstruction, --error", usage);
 
