@@ -85,18 +85,23 @@ struct RunResult {
     std::string out, err;
 };
 
-// Runs `sh -c "PREFIX ERD ARGS"`; args are passed to the shell as written (quote paths with sh_quote).
-inline RunResult run_erd(const std::string& args, const std::string& prefix = "") {
+// Runs `sh -c "CMD >OUT 2>ERR"`, capturing stdout and stderr. The capture comes last, so it
+// wins over redirections at the end of CMD; wrap CMD in { ...; } to let CMD's own win.
+inline RunResult run_shell(const std::string& cmd) {
     TempDir io;
-    std::string cmd = prefix + " " + sh_quote(erd_bin()) + " " + args + " >" + sh_quote(io.file("out")) + " 2>" +
-                      sh_quote(io.file("err"));
-    int rc = std::system(cmd.c_str());
+    std::string full = cmd + " >" + sh_quote(io.file("out")) + " 2>" + sh_quote(io.file("err"));
+    int rc = std::system(full.c_str());
     RunResult r;
     if (WIFEXITED(rc)) r.status = WEXITSTATUS(rc);
     else if (WIFSIGNALED(rc)) r.status = 128 + WTERMSIG(rc);
     r.out = slurp(io.file("out"));
     r.err = slurp(io.file("err"));
     return r;
+}
+
+// Runs `sh -c "PREFIX ERD ARGS"`; args are passed to the shell as written (quote paths with sh_quote).
+inline RunResult run_erd(const std::string& args, const std::string& prefix = "") {
+    return run_shell(prefix + " " + sh_quote(erd_bin()) + " " + args);
 }
 
 inline bool binary_available() {

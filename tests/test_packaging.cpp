@@ -4,7 +4,6 @@
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -38,17 +37,8 @@ std::string absolute(const std::string& p) {
 
 // Runs `sh -c "cd DIR && CMD"`, capturing stdout and stderr.
 RunResult run_in(const std::string& dir, const std::string& cmd) {
-    TempDir io;
     // Braces so the command's own redirections (imgsyn < m > out.pnm) win over the capture.
-    std::string full = "cd " + sh_quote(dir) + " && { " + cmd + " ; } >" + sh_quote(io.file("out")) + " 2>" +
-                       sh_quote(io.file("err"));
-    int rc = std::system(full.c_str());
-    RunResult r;
-    if (WIFEXITED(rc)) r.status = WEXITSTATUS(rc);
-    else if (WIFSIGNALED(rc)) r.status = 128 + WTERMSIG(rc);
-    r.out = slurp(io.file("out"));
-    r.err = slurp(io.file("err"));
-    return r;
+    return run_shell("cd " + sh_quote(dir) + " && { " + cmd + " ; }");
 }
 
 // A folder holding bin/<alias> -> $ERD_BIN for all seven names and bin/erd, plus a small
@@ -93,6 +83,7 @@ bool same_model(const erd::Model& a, const erd::Model& b) {
 }  // namespace
 
 TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[packaging]") {
+    // erd_ed and erd_gpi run the thesis's method: erd generate --thesis (lead, 02:37).
     REQUIRE(binary_available());
     AliasDir d;
     struct Case { const char* alias; const char* thesis_args; const char* erd_args; const char* ext; };
@@ -100,15 +91,15 @@ TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[pac
         // The thesis's own examples (A.5.1), on the small image.
         {"ywb", "-i img.pnm -d 3", "--method ed -i img.pnm -d 3", "model"},
         {"gpi", "-i img.pnm -d 1", "--method gpi -i img.pnm -d 1", "model"},
-        {"erd_ed", "-i img.pnm -d 4 -l 3 -b 0.17 -r 0.4", "--method erded -i img.pnm -d 4 -l 3 -b 0.17 -r 0.4", "erd"},
-        {"erd_gpi", "-i img.pnm -d 3 -l 5 -e 1 -b 0.4", "--method erdgpi -i img.pnm -d 3 -l 5 -e 1 -b 0.4", "erd"},
+        {"erd_ed", "-i img.pnm -d 4 -l 3 -b 0.17 -r 0.4", "--method erded --thesis -i img.pnm -d 4 -l 3 -b 0.17 -r 0.4", "erd"},
+        {"erd_gpi", "-i img.pnm -d 3 -l 5 -e 1 -b 0.4", "--method erdgpi --thesis -i img.pnm -d 3 -l 5 -e 1 -b 0.4", "erd"},
         // -n, and -d winning over -n ("$num is ignored"); binary PGM input; defaults (3%).
         {"gpi", "-i img.pgm -n 60", "--method gpi -i img.pgm -n 60", "model"},
         {"ywb", "-i img.pnm -n 5 -d 2", "--method ed -i img.pnm -d 2", "model"},
-        {"erd_gpi", "-i img.pnm", "--method erdgpi -i img.pnm", "erd"},
-        {"erd_ed", "-iimg.pnm -d2 -f 1 -w 1 -s 5 -B 0 -x 1", "--method erded -i img.pnm -d 2 -f 1 -w 1 -s 5 -B 0 -x 1", "erd"},
+        {"erd_gpi", "-i img.pnm", "--method erdgpi --thesis -i img.pnm", "erd"},
+        {"erd_ed", "-iimg.pnm -d2 -f 1 -w 1 -s 5 -B 0 -x 1", "--method erded --thesis -i img.pnm -d 2 -f 1 -w 1 -s 5 -B 0 -x 1", "erd"},
         // The thesis's "1, otherwise ..." flags: -w 7 is the fixed-distance rule, -S 5 non-simple.
-        {"erd_gpi", "-i img.pnm -d 2 -w 7 -S 5", "--method erdgpi -i img.pnm -d 2 -w 0 -S 1", "erd"},
+        {"erd_gpi", "-i img.pnm -d 2 -w 7 -S 5", "--method erdgpi --thesis -i img.pnm -d 2 -w 0 -S 1", "erd"},
     };
     for (const auto& c : cases) {
         INFO(c.alias << " " << c.thesis_args);
