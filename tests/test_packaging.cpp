@@ -84,7 +84,6 @@ bool same_model(const erd::Model& a, const erd::Model& b) {
 
 TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[packaging]") {
     // erd_ed and erd_gpi run the thesis's method: erd generate --thesis (lead, 02:37).
-    // erd_ed and erd_gpi run the thesis's method: erd generate --thesis (lead, 02:37).
     REQUIRE(binary_available());
     AliasDir d;
     struct Case { const char* alias; const char* thesis_args; const char* erd_args; const char* ext; };
