@@ -1,9 +1,9 @@
 #include "algorithms/polylines.h"
 
 #include <cstddef>
-#include <cstring>
 
 #include "algorithms/douglas_peucker.h"
+#include "algorithms/set_points.h"
 
 namespace erd {
 
@@ -24,25 +24,11 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
     };
     // The set points in row-major order, found by skipping zero bytes eight at a time.
     std::vector<std::size_t> pts;
-    {
-        const std::uint8_t* data = edges.data.data();
-        const std::size_t n = edges.data.size();
-        auto add = [&](std::size_t k) {
-            const std::size_t i = index(int(k % std::size_t(w)), int(k / std::size_t(w)));
-            b[i] = 1;
-            pts.push_back(i);
-        };
-        std::size_t k = 0;
-        for (; k + 8 <= n; k += 8) {
-            std::uint64_t word;
-            std::memcpy(&word, data + k, 8);
-            if (!word) continue;
-            for (std::size_t j = k; j < k + 8; ++j)
-                if (data[j]) add(j);
-        }
-        for (; k < n; ++k)
-            if (data[k]) add(k);
-    }
+    for_each_set(edges.data.data(), edges.data.size(), [&](std::size_t k) {
+        const std::size_t i = index(int(k % std::size_t(w)), int(k / std::size_t(w)));
+        b[i] = 1;
+        pts.push_back(i);
+    });
     // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
     // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
     // cluster of mutual "junctions" out of one junction.
