@@ -1,4 +1,5 @@
 // erd: one program, a static table of subcommands, and the thesis's command names via argv[0].
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -106,6 +107,16 @@ static int unknown(const char* name) {
     return 2;
 }
 
+// Text printed with printf (info, psnr, help) sits in stdio's buffer: a full disk shows only
+// when it is flushed, so a run that otherwise succeeded fails here (exit 1) instead of exiting 0.
+static int flush_stdout(const char* name, int status) {
+    const bool failed = std::fflush(stdout) != 0;
+    const int err = errno;
+    if (status != 0 || !(failed || std::ferror(stdout))) return status;
+    std::fprintf(stderr, "erd %s: stdout: %s\n", name, failed ? std::strerror(err) : "write error");
+    return 1;
+}
+
 }  // namespace erd::cli
 
 int main(int argc, char** argv) {
@@ -115,7 +126,7 @@ int main(int argc, char** argv) {
     base = base ? base + 1 : self;
     bool handled = false;
     int status = thesis_alias(base, argc, argv, &handled);
-    if (handled) return status;
+    if (handled) return flush_stdout(base, status);
 
     if (argc < 2) { list_commands(stderr); return 2; }
     const char* sub = argv[1];
@@ -123,5 +134,5 @@ int main(int argc, char** argv) {
     if (!std::strcmp(sub, "--help") || !std::strcmp(sub, "-h")) { list_commands(stdout); return 0; }
     const Command* c = find_command(sub);
     if (!c) return unknown(sub);
-    return c->run(argc - 1, argv + 1);
+    return flush_stdout(sub, c->run(argc - 1, argv + 1));
 }

@@ -191,6 +191,24 @@ TEST_CASE("write failures report the OS error and leave nothing behind", "[io]")
     }
 }
 
+TEST_CASE("printed output that cannot be written fails the run (info, psnr, help to /dev/full)", "[cli]") {
+    REQUIRE(binary_available());
+    if (!exists("/dev/full")) {
+        WARN("no /dev/full here; skipped");
+        return;
+    }
+    TempDir dir;
+    REQUIRE(run_erd("synth -o " + sh_quote(dir.file("a.pgm")) + " -W 8 -H 8").status == 0);
+    const std::string a = sh_quote(dir.file("a.pgm"));
+    for (const std::string& cmd : {"info " + a, "psnr " + a + " " + a, std::string("help")}) {
+        INFO(cmd);
+        RunResult r = run_shell("{ " + sh_quote(erd_bin()) + " " + cmd + " >/dev/full; }");  // braces: our redirection wins
+        CHECK(r.status == 1);
+        CHECK_THAT(r.err, Catch::Contains("stdout: No space left on device"));
+        CHECK(run_erd(cmd).status == 0);
+    }
+}
+
 TEST_CASE("erd synth: a failed write leaves no partial file and keeps the old one", "[io][cli]") {
     REQUIRE(binary_available());
     TempDir dir;
