@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -104,7 +105,11 @@ double Args::real(const char* long_name, double fallback, double lo, double hi, 
         return fallback;
     }
     if (v < lo || v > hi) {
-        if (st->ok()) *st = Status::bad_input("--" + g->name + ": " + g->value + " is outside the allowed range");
+        if (st->ok()) {
+            char range[96];
+            std::snprintf(range, sizeof range, "[%g, %g]", lo, hi);
+            *st = Status::bad_input("--" + g->name + ": " + g->value + " is outside " + range);
+        }
         return fallback;
     }
     return v;

@@ -1,5 +1,6 @@
 // erd: one program, a static table of subcommands, and the thesis's command names via argv[0].
 #include <cerrno>
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -11,26 +12,6 @@
 #endif
 
 namespace erd::cli {
-
-// Placeholders for subcommands whose files have not landed yet; a real definition elsewhere
-// overrides these weak ones at link time. (Removed once every subcommand exists.)
-#define ERD_PENDING(fn, nm)                                                            \
-    __attribute__((weak)) int fn(int, char**) {                                        \
-        std::fprintf(stderr, "erd %s: not available in this build\n", nm);             \
-        return 1;                                                                      \
-    }
-ERD_PENDING(cmd_info, "info")
-ERD_PENDING(cmd_synth, "synth")
-ERD_PENDING(cmd_psnr, "psnr")
-ERD_PENDING(cmd_edges, "edges")
-ERD_PENDING(cmd_generate, "generate")
-ERD_PENDING(cmd_reconstruct, "reconstruct")
-ERD_PENDING(cmd_render, "render")
-ERD_PENDING(cmd_export, "export")
-__attribute__((weak)) int thesis_alias(const char*, int, char**, bool* handled) {
-    *handled = false;
-    return 0;
-}
 
 static int cmd_help(int argc, char** argv);
 
