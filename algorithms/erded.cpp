@@ -134,28 +134,14 @@ Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height) {
 }
 
 Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    *result = GenerateResult();
-    Status st = check_meshable(image);
-    if (!st) return st;
-    const std::int64_t n = target_points(options, image.width, image.height);
-    st = check_target(n, image.width, image.height);
-    if (!st) return st;
-    result->requested = std::size_t(n);
     const Grid<double> phi = to_grid(image);
-
-    options.progress("initial mesh", 0.0);
-    auto t0 = std::chrono::steady_clock::now();
     Cdt cdt;
-    InitialMeshOptions mo;
-    mo.method = ErdMethod::erded;
-    mo.target = std::size_t(n);
-    mo.request = param_request(options);
     InitialMesh mesh;
-    st = build_initial_mesh(image, phi, mo, &cdt, &mesh);
+    Status st = begin_erd_method(image, options, ErdMethod::erded, phi, &cdt, &mesh, result);
     if (!st) return st;
-    result->stages.push_back({"initial mesh", seconds_since(t0)});
+    const std::int64_t n = std::int64_t(result->requested);
+    auto t0 = std::chrono::steady_clock::now();
 
-    t0 = std::chrono::steady_clock::now();
     options.progress("sample selection", 0.0);
     const std::size_t k = cdt.vertex_count() < std::size_t(n) ? std::size_t(n) - cdt.vertex_count() : 0;
     const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);

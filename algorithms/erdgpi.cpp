@@ -52,6 +52,27 @@ ErdParamRequest param_request(const GenerateOptions& options) {
     return r;
 }
 
+Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, const Grid<double>& phi,
+                        Cdt* cdt, InitialMesh* mesh, GenerateResult* result) {
+    *result = GenerateResult();
+    Status st = check_meshable(image);
+    if (!st) return st;
+    const std::int64_t n = target_points(options, image.width, image.height);
+    st = check_target(n, image.width, image.height);
+    if (!st) return st;
+    result->requested = std::size_t(n);
+    options.progress("initial mesh", 0.0);
+    const auto t0 = std::chrono::steady_clock::now();
+    InitialMeshOptions mo;
+    mo.method = method;
+    mo.target = std::size_t(n);
+    mo.request = param_request(options);
+    st = build_initial_mesh(image, phi, mo, cdt, mesh);
+    if (!st) return st;
+    result->stages.push_back({"initial mesh", seconds_since(t0)});
+    return Status::success();
+}
+
 void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateResult* result) {
     const ErdParams& p = mesh.params;
     result->notes.push_back("beta: " + real("%.6g", p.beta));
@@ -68,28 +89,14 @@ void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateRes
 }
 
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    *result = GenerateResult();
-    Status st = check_meshable(image);
-    if (!st) return st;
-    const std::int64_t n = target_points(options, image.width, image.height);
-    st = check_target(n, image.width, image.height);
-    if (!st) return st;
-    result->requested = std::size_t(n);
     const Grid<double> phi = to_grid(image);
-
-    options.progress("initial mesh", 0.0);
-    auto t0 = std::chrono::steady_clock::now();
     Cdt cdt;
-    InitialMeshOptions mo;
-    mo.method = ErdMethod::erdgpi;
-    mo.target = std::size_t(n);
-    mo.request = param_request(options);
     InitialMesh mesh;
-    st = build_initial_mesh(image, phi, mo, &cdt, &mesh);
+    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, phi, &cdt, &mesh, result);
     if (!st) return st;
-    result->stages.push_back({"initial mesh", seconds_since(t0)});
+    const std::int64_t n = std::int64_t(result->requested);
+    auto t0 = std::chrono::steady_clock::now();
 
-    t0 = std::chrono::steady_clock::now();
     options.progress("wedge values", 0.0);
     ErdModel model(phi, wedge_options(options));
     model.assign_all(cdt);
