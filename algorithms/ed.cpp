@@ -14,10 +14,6 @@ namespace erd {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // The count of a diffusion pass is not monotonic in rho, so sometimes no threshold gives exactly
 // `want` points (typically the count jumps by 2 over it). Then lower rho in small steps until a
 // pass gives at least `want` and drop the surplus points of lowest density (ties: the later one
@@ -56,13 +52,9 @@ void make_exact(const Grid<double>& sigma, std::size_t want, const DiffusionPara
 }  // namespace
 
 Status generate_ed(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    *result = GenerateResult();
-    Status st = check_meshable(image);
+    Status st = begin_generate(image, options, result);
     if (!st) return st;
-    std::int64_t n = target_points(options, image.width, image.height);
-    st = check_target(n, image.width, image.height);
-    if (!st) return st;
-    result->requested = std::size_t(n);
+    const std::int64_t n = std::int64_t(result->requested);
     const int w = image.width, h = image.height;
 
     // Step 1: sigma = (d / d_max)^1 with d the MMSODD after 3rd-order binomial smoothing,

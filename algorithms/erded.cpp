@@ -19,10 +19,6 @@ namespace erd {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::int64_t gcd64(std::int64_t a, std::int64_t b) {
     a = std::llabs(a);
     b = std::llabs(b);

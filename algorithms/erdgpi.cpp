@@ -13,11 +13,6 @@ namespace erd {
 
 namespace {
 
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::string real(const char* fmt, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, fmt, v);
@@ -54,18 +49,14 @@ ErdParamRequest param_request(const GenerateOptions& options) {
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, const Grid<double>& phi,
                         Cdt* cdt, InitialMesh* mesh, GenerateResult* result) {
-    *result = GenerateResult();
-    Status st = check_meshable(image);
+    Status st = begin_generate(image, options, result);
     if (!st) return st;
-    const std::int64_t n = target_points(options, image.width, image.height);
-    st = check_target(n, image.width, image.height);
-    if (!st) return st;
-    result->requested = std::size_t(n);
+    const std::size_t n = result->requested;
     options.progress("initial mesh", 0.0);
     const auto t0 = std::chrono::steady_clock::now();
     InitialMeshOptions mo;
     mo.method = method;
-    mo.target = std::size_t(n);
+    mo.target = n;
     mo.request = param_request(options);
     st = build_initial_mesh(image, phi, mo, cdt, mesh);
     if (!st) return st;

@@ -10,10 +10,6 @@ namespace erd {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::string format_real(const char* fmt, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, fmt, v);
@@ -60,13 +56,9 @@ Status check_meshable(const Image& image) {
 }
 
 Status generate_gpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    *result = GenerateResult();
-    Status st = check_meshable(image);
+    Status st = begin_generate(image, options, result);
     if (!st) return st;
-    std::int64_t n = target_points(options, image.width, image.height);
-    st = check_target(n, image.width, image.height);
-    if (!st) return st;
-    result->requested = std::size_t(n);
+    const std::int64_t n = std::int64_t(result->requested);
 
     auto t0 = std::chrono::steady_clock::now();
     Cdt cdt;

@@ -52,4 +52,13 @@ Status check_target(std::int64_t n, int width, int height) {
     return Status::success();
 }
 
+Status begin_generate(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    *result = GenerateResult();
+    const std::int64_t n = target_points(options, image.width, image.height);
+    Status st = check_target(n, image.width, image.height);
+    if (!st) return st;
+    result->requested = std::size_t(n);
+    return Status::success();
+}
+
 }  // namespace erd

@@ -33,4 +33,8 @@ const Method* find_method(const std::string& name);
 // corners are always vertices).
 Status check_target(std::int64_t n, int width, int height);
 
+// The common start of every method: clears *result, computes N from the options, checks the image
+// and N (check_target) and records N in result->requested.
+Status begin_generate(const Image& image, const GenerateOptions& options, GenerateResult* result);
+
 }  // namespace erd

@@ -2,6 +2,7 @@
 // what it gets back. One struct serves the four methods of the thesis; each method reads the
 // fields it uses. Defaults are the thesis's (Appendix A.5.1); the CLI only parses flags into it.
 #pragma once
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -64,5 +65,10 @@ struct GenerateResult {
     std::vector<std::string> notes;                       // one-line facts for -v style output
                                                           // ("stop: psnr", "beta 0.055", ...)
 };
+
+// Seconds elapsed since t0, for StageTime entries.
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 }  // namespace erd

@@ -145,10 +145,6 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 int cmd_generate(int argc, char** argv) {
