@@ -48,13 +48,6 @@ Model basic_model(const Cdt& cdt, const Image& image) {
     return m;
 }
 
-Status check_meshable(const Image& image) {
-    if (image.width < 2 || image.height < 2)
-        return Status::bad_input("image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                                 "; meshing needs at least 2x2 pixels");
-    return Status::success();
-}
-
 Status generate_gpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
     Status st = begin_generate(image, options, result);
     if (!st) return st;

@@ -28,9 +28,6 @@ private:
 // The basic model of a triangulation whose vertices are pixels: vertex values are the samples.
 Model basic_model(const Cdt& cdt, const Image& image);
 
-// Meshing needs a domain of positive area: at least 2 x 2 pixels (Code::input otherwise).
-Status check_meshable(const Image& image);
-
 // Registry entry "gpi" (algorithms/methods.h contract). Stops at N vertices, or earlier by
 // --max-error / --psnr, or when no point has nonzero error (achieved < requested then).
 Status generate_gpi(const Image& image, const GenerateOptions& options, GenerateResult* result);
