@@ -59,8 +59,9 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
 }
 
 double ErdModel::mmsodd_pixel(int x, int y) {
-    double& cached = local_(x, y);
-    if (!std::isnan(cached)) return cached;
+    const std::size_t key = std::size_t(y) * std::size_t(phi_.width) + std::size_t(x);
+    const auto found = local_.find(key);
+    if (found != local_.end()) return found->second;
     // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
     // vector h of radius c is applied as sum_n h[n + c] * f(i - n).
     auto at = [&](int u, int v) { return phi_.inside(u, v) ? phi_(u, v) : 0.0; };
@@ -81,14 +82,14 @@ double ErdModel::mmsodd_pixel(int x, int y) {
             fxy += taps_d1_[std::size_t(m + cd)] * rd1;
         }
     }
-    cached = mmsodd_value(fxx, fyy, fxy);
-    return cached;
+    const double value = mmsodd_value(fxx, fyy, fxy);
+    local_.emplace(key, value);
+    return value;
 }
 
 double ErdModel::mmsodd_at(double x, double y) {
     if (have_mmsodd_) return bilinear(mmsodd_, x, y);
-    if (local_.width == 0) {
-        local_ = Grid<double>(phi_.width, phi_.height, std::numeric_limits<double>::quiet_NaN());
+    if (taps_b_.empty()) {
         taps_b_ = binomial_taps(options_.smoothing_order);
         if (taps_b_.empty()) taps_b_ = {1.0};
         taps_d1_ = compose_taps(derivative1_taps(), taps_b_);

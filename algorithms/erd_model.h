@@ -18,6 +18,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -111,8 +112,9 @@ private:
     Grid<double> mmsodd_;
     bool have_mmsodd_ = false;
     // Without a full grid the line search computes the MMSODD only at the pixels it touches
-    // (ERDGPI reads a few percent of them): the same filters, cached per pixel (NaN = not yet).
-    Grid<double> local_;
+    // (ERDGPI reads well under 1% of them): the same filters, cached by pixel index in a map
+    // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
+    std::unordered_map<std::size_t, double> local_;
     std::vector<double> taps_b_, taps_d1_, taps_d2_;
     std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
     std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
