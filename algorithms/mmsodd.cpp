@@ -1,5 +1,6 @@
 #include "algorithms/mmsodd.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -12,30 +13,109 @@ double mmsodd_value(double fxx, double fyy, double fxy) {
     return std::fmax(std::fabs(l1 + l2), std::fabs(l1 - l2));
 }
 
+namespace {
+
+// out[x] = sum over k (ascending) of t[k] * src[k][x], from acc = 0: the same products summed in
+// the same order as convolve_rows / convolve_cols (algorithms/filters.cpp), so the results are
+// bit-identical to theirs; a source outside the image is a row of zeros, and adding t * 0 = +-0
+// to a sum that starts at +0 never changes it. M > 0 fixes the tap count so the taps stay in
+// registers; blocks of outputs in a local array (which no source can alias) let the compiler
+// vectorise without runtime alias checks.
+template <int M>
+void weighted_sum(const double* const* src, const double* t, int m, double* out, int w) {
+    constexpr int block = 64;
+    const int n = M > 0 ? M : m;
+    int x = 0;
+    for (; x + block <= w; x += block) {
+        double acc[block] = {};
+        for (int k = 0; k < n; ++k) {
+            const double tk = t[k];
+            const double* s = src[k] + x;
+            for (int j = 0; j < block; ++j) acc[j] += tk * s[j];
+        }
+        std::copy(acc, acc + block, out + x);
+    }
+    for (; x < w; ++x) {
+        double acc = 0.0;
+        for (int k = 0; k < n; ++k) acc += t[k] * src[k][x];
+        out[x] = acc;
+    }
+}
+
+void weighted_sum_any(const double* const* src, const std::vector<double>& t, double* out, int w) {
+    const int m = int(t.size());
+    switch (m) {
+        case 3: weighted_sum<3>(src, t.data(), m, out, w); break;
+        case 5: weighted_sum<5>(src, t.data(), m, out, w); break;
+        case 7: weighted_sum<7>(src, t.data(), m, out, w); break;
+        default: weighted_sum<0>(src, t.data(), m, out, w); break;
+    }
+}
+
+// The three separable filters of MMSODD: taps along x, taps along y.
+struct SeparablePair {
+    const std::vector<double>* hx;
+    const std::vector<double>* hy;
+};
+
+}  // namespace
+
 Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) {
     std::vector<double> b = binomial_taps(smoothing_order);
     if (b.empty()) b = {1.0};
     const std::vector<double> d2 = compose_taps(derivative2_taps(), b);
     const std::vector<double> d1 = compose_taps(derivative1_taps(), b);
+    const SeparablePair filters[3] = {{&d2, &b}, {&b, &d2}, {&d1, &d1}};  // fxx, fyy, fxy
+    const int w = im.width, h = im.height;
+    Grid<double> out(w, h);
+    if (w <= 0 || h <= 0) return out;
 
-    // Each smoothed derivative is one separable filter; each row pass is dropped as soon as its
-    // column pass is done and the result overwrites fxx, so at most five grids (input included)
-    // are alive at once instead of eight (bull: 6.3 MB per grid of doubles).
-    Grid<double> fxx, fyy, fxy;
-    {
-        const Grid<double> rows = convolve_rows(im, d2, border);
-        fxx = convolve_cols(rows, b, border);
+    if (border != Border::zero) {
+        // Replication is not used by the methods; the general filters serve it.
+        Grid<double> f[3];
+        for (int i = 0; i < 3; ++i)
+            f[i] = convolve_cols(convolve_rows(im, *filters[i].hx, border), *filters[i].hy, border);
+        for (std::size_t i = 0; i < out.data.size(); ++i)
+            out.data[i] = mmsodd_value(f[0].data[i], f[1].data[i], f[2].data[i]);
+        return out;
     }
-    {
-        const Grid<double> rows = convolve_rows(im, b, border);
-        fyy = convolve_cols(rows, d2, border);
+
+    // One sweep down the image: each input row is filtered along x by the three x filters into a
+    // ring of the last `span` filtered rows, and as soon as the rows an output row needs along y
+    // are in the ring, its three derivatives and the MMSODD are computed. Nothing image-sized is
+    // allocated but the result (the three full derivative grids cost 19 MB on bull before).
+    const int c = int(d2.size() / 2);  // the widest half-length (d1 and d2 have b's plus one)
+    const int span = 2 * c + 1;
+    const std::size_t uw = std::size_t(w);
+    std::vector<double> padded(uw + 2 * std::size_t(c), 0.0), zeros(uw, 0.0);
+    std::vector<double> ring(3 * std::size_t(span) * uw), deriv(3 * uw);
+    auto ring_row = [&](int i, int y) { return ring.data() + (std::size_t(i) * std::size_t(span) + std::size_t(y % span)) * uw; };
+    std::vector<const double*> src(std::size_t(span), nullptr);
+    for (int j = 0; j < h + c; ++j) {
+        if (j < h) {
+            std::copy(&im(0, j), &im(0, j) + w, padded.begin() + c);
+            for (int i = 0; i < 3; ++i) {
+                const std::vector<double>& t = *filters[i].hx;
+                const int ct = int(t.size() / 2);
+                for (int k = 0; k < int(t.size()); ++k) src[std::size_t(k)] = padded.data() + c + ct - k;
+                weighted_sum_any(src.data(), t, ring_row(i, j), w);
+            }
+        }
+        const int y = j - c;
+        if (y < 0) continue;
+        for (int i = 0; i < 3; ++i) {
+            const std::vector<double>& t = *filters[i].hy;
+            const int ct = int(t.size() / 2);
+            for (int k = 0; k < int(t.size()); ++k) {
+                const int r = y + ct - k;
+                src[std::size_t(k)] = r >= 0 && r < h ? ring_row(i, r) : zeros.data();
+            }
+            weighted_sum_any(src.data(), t, deriv.data() + std::size_t(i) * uw, w);
+        }
+        double* o = &out(0, y);
+        for (int x = 0; x < w; ++x) o[x] = mmsodd_value(deriv[std::size_t(x)], deriv[uw + std::size_t(x)], deriv[2 * uw + std::size_t(x)]);
     }
-    {
-        const Grid<double> rows = convolve_rows(im, d1, border);
-        fxy = convolve_cols(rows, d1, border);
-    }
-    for (std::size_t i = 0; i < fxx.data.size(); ++i) fxx.data[i] = mmsodd_value(fxx.data[i], fyy.data[i], fxy.data[i]);
-    return fxx;
+    return out;
 }
 
 }  // namespace erd
