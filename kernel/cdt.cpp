@@ -8,13 +8,9 @@
 namespace erd {
 
 void Cdt::reserve(std::size_t points) {
-    const std::size_t faces = 2 * points + 8;
     points_.reserve(points + 4);
     out_.reserve(points + 4);
-    vert_.reserve(3 * faces);
-    twin_.reserve(3 * faces);
-    flags_.reserve(3 * faces);
-    stamp_.reserve(faces);
+    grow_faces(2 * points + 8);
 }
 
 void Cdt::begin_change() {
@@ -27,15 +23,23 @@ void Cdt::begin_change() {
     changes_.old_face_count = face_count();
 }
 
-FaceInd Cdt::new_face() {
-    const FaceInd f = static_cast<FaceInd>(face_count());
-    for (int i = 0; i < 3; ++i) {
-        vert_.push_back(noVertex);
-        twin_.push_back(noEdge);
-        flags_.push_back(0);
-    }
-    stamp_.push_back(0);
+// The arrays are kept longer than face_count() and grown geometrically, so taking a slot is a
+// counter increment (a push_back per entry cost ~95 instructions a face). Slots past nfaces_ are
+// all zero (a memset to grow): split_face relies on new faces' flags being 0 and stamps must not
+// match a change id; vertices and twins of a new face are always written by its creator.
+FaceInd Cdt::new_faces(FaceInd n) {
+    const FaceInd f = nfaces_;
+    nfaces_ += n;
+    if (stamp_.size() < nfaces_) grow_faces(std::max<std::size_t>(nfaces_, 2 * stamp_.size()));
     return f;
+}
+
+void Cdt::grow_faces(std::size_t faces) {
+    if (stamp_.size() >= faces) return;
+    vert_.resize(3 * faces);
+    twin_.resize(3 * faces);
+    flags_.resize(3 * faces);
+    stamp_.resize(faces);
 }
 
 void Cdt::set_face(FaceInd f, VertInd a, VertInd b, VertInd c) {
@@ -60,6 +64,7 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
                                  " (doubled) outside 1.." + std::to_string(kMaxCoord - 1));
     max_x_ = max_x;
     max_y_ = max_y;
+    small_ = max_x < kSmallCoord && max_y < kSmallCoord;
     points_.clear();
     out_.clear();
     vert_.clear();
@@ -67,6 +72,7 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     flags_.clear();
     segments_.clear();
     stamp_.clear();
+    nfaces_ = 0;
     change_id_ = 0;
     last_face_ = 0;
     begin_change();
@@ -74,9 +80,10 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     add_vertex({max_x, 0});
     add_vertex({max_x, max_y});
     add_vertex({0, max_y});
-    const FaceInd f0 = new_face(), f1 = new_face();
+    const FaceInd f0 = new_faces(2), f1 = f0 + 1;
     set_face(f0, 0, 1, 2);
     set_face(f1, 0, 2, 3);
+    for (EdgeInd e = 0; e < 6; ++e) twin_[e] = noEdge;
     link(3 * f0 + 2, 3 * f1 + 0);
     // The four corners are cocircular: the tie rule picks the diagonal.
     if (is_illegal(3 * f0 + 2)) flip(3 * f0 + 2);
@@ -94,7 +101,7 @@ bool Cdt::is_illegal(EdgeInd e) const {
     if (t == noEdge || flags_[e]) return false;
     const LatticePoint a = points_[vert_[e]], b = points_[vert_[t]];
     const LatticePoint c = points_[vert_[prev_edge(e)]], d = points_[vert_[prev_edge(t)]];
-    return incircle_perturbed(a, b, c, d) > 0;
+    return incircle_perturbed(a, b, c, d, small_) > 0;
 }
 
 // Raw pointers on purpose: flags_ is a byte array, and a store through a byte pointer may alias
@@ -141,21 +148,31 @@ EdgeInd Cdt::flip(EdgeInd e) {
     return g1 + 2;
 }
 
-// Lawson flips after a split: stack_ holds the edges opposite the new vertex p (p = org(prev(e))).
-// A flip of such an edge creates two faces around p whose opposite edges are pushed in turn; the
-// other stack entries live in other faces of p's star, which a flip never touches.
-void Cdt::legalize_around(VertInd p) {
+// Lawson flips after a split: seeds[0..count) are the edges opposite the new vertex p
+// (p = org(prev(e))), the last one processed first. A flip of such an edge creates two faces
+// around p whose opposite edges are pushed in turn; the other stack entries live in other faces of
+// p's star, which a flip never touches. The stack is a reused array with an index: vector
+// push_back/pop_back here cost a capacity check each and kept the loop from being inlined.
+void Cdt::legalize_around(VertInd p, const EdgeInd* seeds, unsigned count) {
+    if (stack_.size() < 64) stack_.resize(64);
+    EdgeInd* S = stack_.data();
+    std::size_t n = 0;
+    for (unsigned i = 0; i < count; ++i) S[n++] = seeds[i];
     const LatticePoint pp = points_[p];
-    while (!stack_.empty()) {
-        const EdgeInd e = stack_.back();
-        stack_.pop_back();
+    while (n > 0) {
+        const EdgeInd e = S[--n];
         const EdgeInd t = twin_[e];
         if (t == noEdge || flags_[e]) continue;
-        if (incircle_perturbed(points_[vert_[e]], points_[vert_[t]], pp, points_[vert_[prev_edge(t)]]) <= 0) continue;
+        if (incircle_perturbed(points_[vert_[e]], points_[vert_[t]], pp, points_[vert_[prev_edge(t)]], small_) <= 0)
+            continue;
         const EdgeInd diag = flip(e);  // d->c in f1 = (c=p, a, d); f2 = (d, b, p)
         const FaceInd f1 = face_of(diag), f2 = face_of(twin_[diag]);
-        stack_.push_back(3 * f1 + 1);  // a->d
-        stack_.push_back(3 * f2 + 0);  // d->b
+        if (n + 2 > stack_.size()) {
+            stack_.resize(2 * stack_.size());
+            S = stack_.data();
+        }
+        S[n++] = 3 * f1 + 1;  // a->d
+        S[n++] = 3 * f2 + 0;  // d->b
     }
 }
 
@@ -165,7 +182,7 @@ void Cdt::split_face(FaceInd f, VertInd p) {
     const VertInd a = vert_[e], b = vert_[e + 1], c = vert_[e + 2];
     const EdgeInd tab = twin_[e], tbc = twin_[e + 1], tca = twin_[e + 2];
     const std::uint8_t fab = flags_[e], fbc = flags_[e + 1], fca = flags_[e + 2];
-    const FaceInd n1 = new_face(), n2 = new_face();
+    const FaceInd n1 = new_faces(2), n2 = n1 + 1;
     set_face(f, a, b, p);
     set_face(n1, b, c, p);
     set_face(n2, c, a, p);
@@ -181,11 +198,8 @@ void Cdt::split_face(FaceInd f, VertInd p) {
     F[3 * n2] = fca;
     F[3 * f + 1] = 0;
     F[3 * f + 2] = 0;
-    stack_.clear();
-    stack_.push_back(3 * f);
-    stack_.push_back(3 * n1);
-    stack_.push_back(3 * n2);
-    legalize_around(p);
+    const EdgeInd seeds[3] = {3 * f, 3 * n1, 3 * n2};
+    legalize_around(p, seeds, 3);
 }
 
 // Half-edge e = a->b of f = (a,b,c), twin b->a of g = (b,a,d), gets p in its interior:
@@ -212,7 +226,7 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         fad = flags_[ead];
         fdb = flags_[edb];
     }
-    const FaceInd n1 = new_face();
+    const FaceInd n1 = new_faces(t != noEdge ? 2 : 1);
     set_face(f, c, a, p);
     set_face(n1, c, p, b);
     link(3 * f + 0, tca);
@@ -224,11 +238,9 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
     flags_[3 * n1 + 0] = 0;
     flags_[3 * f + 1] = fe;
     flags_[3 * n1 + 1] = fe;
-    stack_.clear();
-    stack_.push_back(3 * f + 0);
-    stack_.push_back(3 * n1 + 2);
+    EdgeInd seeds[4] = {3 * f + 0, 3 * n1 + 2, noEdge, noEdge};
     if (t != noEdge) {
-        const FaceInd n2 = new_face();
+        const FaceInd n2 = n1 + 1;
         set_face(g, d, b, p);
         set_face(n2, d, p, a);
         link(3 * g + 0, tdb);
@@ -242,68 +254,67 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         flags_[3 * n2 + 1] = fe;
         link(3 * f + 1, 3 * n2 + 1);
         link(3 * n1 + 1, 3 * g + 1);
-        stack_.push_back(3 * g + 0);
-        stack_.push_back(3 * n2 + 2);
+        seeds[2] = 3 * g + 0;
+        seeds[3] = 3 * n2 + 2;
     } else {
         twin_[3 * f + 1] = noEdge;
         twin_[3 * n1 + 1] = noEdge;
     }
-    legalize_around(p);
+    legalize_around(p, seeds, t != noEdge ? 4 : 2);
 }
 
 // Visibility walk with a randomised order of the edge tests (the remembering stochastic walk of
 // Devillers et al.), which terminates on any triangulation, constrained or not. The randomness only
 // chooses the path, never the answer. A generous step limit falls back to a scan, so a corrupted
 // mesh cannot hang the caller.
+// Each step computes all three edge orientations without branches and then picks the first
+// negative one in the random cyclic order; the edge the walk came through is positive (exactly
+// the negation of the test that crossed it), so it never needs skipping. This takes the same path
+// as testing lazily and costs about half the instructions.
 Location Cdt::walk(LatticePoint p, FaceInd start) const {
+    // kPick[r][m]: the first edge i in the order r, r+1, r+2 (mod 3) whose bit is set in mask m.
+    static constexpr std::uint8_t kPick[3][8] = {{0, 0, 1, 0, 2, 0, 1, 0}, {0, 0, 1, 1, 2, 2, 1, 1}, {0, 0, 1, 0, 2, 2, 2, 2}};
+    const VertInd* const V = vert_.data();
+    const EdgeInd* const T = twin_.data();
+    const LatticePoint* const P = points_.data();
     FaceInd f = start;
-    EdgeInd from = noEdge;
+    std::uint32_t rng = rng_;
     const std::size_t limit = 4 * face_count() + 64;
     for (std::size_t steps = 0; steps < limit; ++steps) {
         const EdgeInd base = 3 * f;
-        rng_ = rng_ * 1664525u + 1013904223u;
-        const unsigned r = ((rng_ >> 16) * 3u) >> 16;  // 0, 1 or 2
-        int o[3] = {1, 1, 1};
-        bool moved = false;
-        for (unsigned k = 0; k < 3; ++k) {
-            const unsigned i = r + k < 3 ? r + k : r + k - 3;
-            const EdgeInd e = base + i;
-            if (e == from) continue;
-            const std::int64_t s = orient2d(points_[vert_[e]], points_[vert_[next_edge(e)]], p);
-            if (s < 0) {
-                const EdgeInd t = twin_[e];
-                if (t == noEdge) return Location{};  // outside the rectangle
-                from = t;
-                f = face_of(t);
-                moved = true;
-                break;
+        const LatticePoint q0 = P[V[base]], q1 = P[V[base + 1]], q2 = P[V[base + 2]];
+        const std::int64_t s0 = orient2d(q0, q1, p), s1 = orient2d(q1, q2, p), s2 = orient2d(q2, q0, p);
+        rng = rng * 1664525u + 1013904223u;
+        const unsigned negative = unsigned(s0 < 0) | unsigned(s1 < 0) << 1 | unsigned(s2 < 0) << 2;
+        if (negative != 0) {
+            const unsigned r = ((rng >> 16) * 3u) >> 16;  // 0, 1 or 2
+            const EdgeInd t = T[base + kPick[r][negative]];
+            if (t == noEdge) {
+                rng_ = rng;
+                return Location{};  // outside the rectangle
             }
-            o[i] = s > 0 ? 1 : 0;
+            f = face_of(t);
+            continue;
         }
-        if (moved) continue;
+        rng_ = rng;
         last_face_ = f;
         Location loc;
-        const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
-        if (zeros == 0) {
+        loc.face = f;
+        const unsigned zero = unsigned(s0 == 0) | unsigned(s1 == 0) << 1 | unsigned(s2 == 0) << 2;
+        if (zero == 0) {
             loc.kind = Location::Kind::in_face;
-            loc.face = f;
-        } else if (zeros == 1) {
-            const unsigned i = o[0] == 0 ? 0 : (o[1] == 0 ? 1 : 2);
+        } else if (zero == 1 || zero == 2 || zero == 4) {
             loc.kind = Location::Kind::on_edge;
-            loc.edge = base + i;
-            loc.face = f;
+            loc.edge = base + (zero >> 1);  // 1, 2, 4 -> 0, 1, 2
         } else {
-            // Two edges through p: p is their shared vertex, the origin of the later one.
-            unsigned v = 0;
-            if (o[0] == 0 && o[1] == 0) v = 1;
-            else if (o[1] == 0 && o[2] == 0) v = 2;
-            else v = 0;  // o[2] == 0 && o[0] == 0
+            // Two edges through p: p is their shared vertex, the origin of the later one
+            // (edges 0,1 -> vertex 1; 1,2 -> 2; 2,0 -> 0).
             loc.kind = Location::Kind::on_vertex;
-            loc.vertex = vert_[base + v];
-            loc.face = f;
+            loc.vertex = V[base + (zero == 3 ? 1 : zero == 6 ? 2 : 0)];
         }
         return loc;
     }
+    rng_ = rng;
     return locate_brute(p);
 }
 
@@ -384,40 +395,103 @@ Status Cdt::insert_one(LatticePoint p, VertInd* v, FaceInd hint) {
                                  ") outside the rectangle [0," + std::to_string(max_x_) + "]x[0," +
                                  std::to_string(max_y_) + "]");
     if (points_.size() >= std::size_t(noVertex / 8)) return Status::failure("triangulation too large");
-    const Location loc = locate(p, hint);
-    if (loc.kind == Location::Kind::on_vertex) {
-        if (v) *v = loc.vertex;
-        return Status::success();
-    }
-    if (loc.kind == Location::Kind::outside) return Status::failure("point location failed");
+    const VertInd nv = insert_at(p, locate(p, hint));
+    if (nv == noVertex) return Status::failure("point location failed");
+    if (v) *v = nv;
+    return Status::success();
+}
+
+// The checked insertion's core: p (inside the rectangle) at its location loc. Returns the new or
+// existing vertex, noVertex when loc is outside.
+VertInd Cdt::insert_at(LatticePoint p, const Location& loc) {
+    if (loc.kind == Location::Kind::on_vertex) return loc.vertex;
+    if (loc.kind == Location::Kind::outside) return noVertex;
     const VertInd nv = add_vertex(p);
     if (loc.kind == Location::Kind::in_face)
         split_face(loc.face, nv);
     else
         split_edge(loc.edge, nv);
     last_face_ = face_of(out_[nv]);
-    if (v) *v = nv;
-    return Status::success();
+    return nv;
 }
 
 namespace {
 
-// Index of (x, y) along a Hilbert curve filling [0, 2^order)^2.
-std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
-    std::uint64_t d = 0;
-    for (std::uint32_t s = std::uint32_t(1) << (order - 1); s > 0; s >>= 1) {
-        const std::uint32_t rx = (x & s) ? 1u : 0u;
-        const std::uint32_t ry = (y & s) ? 1u : 0u;
-        d += std::uint64_t(s) * s * ((3u * rx) ^ ry);
-        if (ry == 0) {
-            if (rx == 1) {
-                x = s - 1 - (x & (s - 1));
-                y = s - 1 - (y & (s - 1));
+// One level of the Hilbert curve: from state s and the level's bits (x, y) to the next state and
+// the base-4 digit. The state says how the sub-square's coordinates are transformed (bit 0: x and
+// y swapped, bit 1: both complemented; the two commute); in quadrant (rx, ry) of the transformed
+// bits the digit is (3 rx) ^ ry, and ry == 0 swaps, plus rx == 1 complements (the textbook
+// rotate-and-flip loop).
+constexpr unsigned hilbert_level(unsigned state, unsigned x, unsigned y, unsigned* digit) {
+    unsigned rx = x ^ (state >> 1), ry = y ^ (state >> 1);
+    if (state & 1u) {
+        const unsigned tmp = rx;
+        rx = ry;
+        ry = tmp;
+    }
+    *digit = (3u * rx) ^ ry;
+    if (ry == 0) state ^= rx == 1 ? 3u : 1u;
+    return state;
+}
+
+// Three levels at once: index = state << 6 | six interleaved bits (x2 y2 x1 y1 x0 y0, top level
+// first), entry = next state << 6 | three base-4 digits. A level at a time cost ~180 instructions
+// a point for 10 levels.
+struct HilbertTable {
+    std::uint8_t step[256] = {};
+    constexpr HilbertTable() {
+        for (unsigned in = 0; in < 256; ++in) {
+            unsigned state = in >> 6, digits = 0;
+            for (int level = 2; level >= 0; --level) {
+                unsigned digit = 0;
+                state = hilbert_level(state, (in >> (2 * level + 1)) & 1u, (in >> (2 * level)) & 1u, &digit);
+                digits = digits << 2 | digit;
             }
-            std::swap(x, y);
+            step[in] = static_cast<std::uint8_t>(state << 6 | digits);
         }
     }
+};
+constexpr HilbertTable kHilbert;
+
+// The bits of v at the even positions of the result (bit i -> bit 2i), for v < 2^32.
+std::uint64_t spread_bits(std::uint32_t v) {
+    std::uint64_t x = v;
+    x = (x | x << 16) & 0x0000FFFF0000FFFFull;
+    x = (x | x << 8) & 0x00FF00FF00FF00FFull;
+    x = (x | x << 4) & 0x0F0F0F0F0F0F0F0Full;
+    x = (x | x << 2) & 0x3333333333333333ull;
+    x = (x | x << 1) & 0x5555555555555555ull;
+    return x;
+}
+
+// Index of (x, y) along a Hilbert curve filling [0, 2^order)^2 (order <= 31). The levels are
+// padded at the top to a multiple of three; a padding level (bits 0, 0) only toggles the swap
+// bit, so starting in state (padding & 1) gives the same curve as the unpadded order.
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
+    const int levels = (order + 2) / 3 * 3;
+    const std::uint64_t morton = spread_bits(x) << 1 | spread_bits(y);
+    std::uint64_t d = 0;
+    unsigned state = unsigned(levels - order) & 1u;
+    for (int level = levels - 3; level >= 0; level -= 3) {
+        const unsigned step = kHilbert.step[state << 6 | (unsigned(morton >> (2 * level)) & 63u)];
+        d = d << 6 | (step & 63u);
+        state = step >> 6;
+    }
     return d;
+}
+
+// Stable LSD radix sort of (key, index) pairs on the low `bits` bits of the key, 8 bits a pass,
+// ping-ponging with `tmp`: ~30 instructions a point against ~200 for std::sort.
+void radix_sort(std::vector<std::pair<std::uint64_t, std::uint32_t>>* v,
+                std::vector<std::pair<std::uint64_t, std::uint32_t>>* tmp, int bits) {
+    tmp->resize(v->size());
+    for (int shift = 0; shift < bits; shift += 8) {
+        std::size_t count[257] = {};
+        for (const auto& kv : *v) ++count[((kv.first >> shift) & 0xFFu) + 1];
+        for (int i = 0; i < 256; ++i) count[i + 1] += count[i];
+        for (const auto& kv : *v) (*tmp)[count[(kv.first >> shift) & 0xFFu]++] = kv;
+        v->swap(*tmp);
+    }
 }
 
 }  // namespace
@@ -425,6 +499,7 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
 Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<VertInd>* v) {
     begin_change();
     if (face_count() == 0) return Status::failure("triangulation not initialised (call reset first)");
+    if (points_.size() + pts.size() >= std::size_t(noVertex / 8)) return Status::failure("triangulation too large");
     for (const LatticePoint& p : pts)
         if (p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_)
             return Status::bad_input("point (" + std::to_string(p.x) + "," + std::to_string(p.y) +
@@ -442,24 +517,35 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
         state = state * 1664525u + 1013904223u;
         std::swap(sort_buf_[i - 1].second, sort_buf_[std::size_t((std::uint64_t(state) * i) >> 32)].second);
     }
+    int round = 0;  // 64 points in round 0, then 64, 128, 256, ...
+    std::size_t round_end = 64;
     for (std::size_t j = 0; j < pts.size(); ++j) {
-        int round = 0;  // 64 points in round 0, then 64, 128, 256, ...
-        while ((std::size_t(64) << round) <= j) ++round;
+        if (j == round_end) {
+            ++round;
+            round_end *= 2;
+        }
         const LatticePoint q = pts[sort_buf_[j].second];
-        sort_buf_[j].first = (std::uint64_t(round) << 52) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
+        sort_buf_[j].first = std::uint64_t(round) << (2 * order) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
     }
-    std::sort(sort_buf_.begin(), sort_buf_.end());
+    // Equal keys are the same point in the same round, so the stable sort's order among them (by
+    // shuffled position, not by index as a comparison sort on the pairs had it) changes nothing.
+    int key_bits = 2 * order;
+    while ((std::uint64_t(round) >> (key_bits - 2 * order)) != 0) ++key_bits;
+    radix_sort(&sort_buf_, &sort_tmp_, key_bits);
     if (v) v->assign(pts.size(), noVertex);
     reserve(points_.size() + pts.size());
     batch_ = true;
-    FaceInd hint = last_face_;
+    // Every point was checked above, so each is located by a walk from the previous insertion's
+    // face (what insert_point does with that hint) and inserted without insert_point's checks.
     Status st;
     for (const auto& ki : sort_buf_) {
-        VertInd nv = noVertex;
-        st = insert_one(pts[ki.second], &nv, hint);
-        if (!st.ok()) break;
+        const LatticePoint p = pts[ki.second];
+        const VertInd nv = insert_at(p, walk(p, last_face_));
+        if (nv == noVertex) {
+            st = Status::failure("point location failed");
+            break;
+        }
         if (v) (*v)[ki.second] = nv;
-        hint = last_face_;
     }
     batch_ = false;
     for (FaceInd f = 0; f < face_count(); ++f) {

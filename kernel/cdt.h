@@ -143,7 +143,7 @@ public:
     const ChangeReport& changes() const { return changes_; }
 
     std::size_t vertex_count() const { return points_.size(); }
-    std::size_t face_count() const { return vert_.size() / 3; }
+    std::size_t face_count() const { return nfaces_; }
     std::int32_t max_x() const { return max_x_; }
     std::int32_t max_y() const { return max_y_; }
     LatticePoint point(VertInd v) const { return points_[v]; }
@@ -209,15 +209,17 @@ private:
     }
     void set_face(FaceInd f, VertInd a, VertInd b, VertInd c);
     void link(EdgeInd e, EdgeInd t);  // twins (t may be noEdge)
-    FaceInd new_face();
+    FaceInd new_faces(FaceInd n);  // appends n slots, returns the first
+    void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
     Location locate_brute(LatticePoint p) const;
     VertInd add_vertex(LatticePoint p);
     Status insert_one(LatticePoint p, VertInd* v, FaceInd hint);
+    VertInd insert_at(LatticePoint p, const Location& loc);
     void split_face(FaceInd f, VertInd p);
     void split_edge(EdgeInd e, VertInd p);
     EdgeInd flip(EdgeInd e);  // returns the new diagonal d->c (in f1)
-    void legalize_around(VertInd p);
+    void legalize_around(VertInd p, const EdgeInd* seeds, unsigned count);
     void legalize_pairs();
     bool is_illegal(EdgeInd e) const;
     Status insert_piece(VertInd a, VertInd b, ConstraintReport* rep);
@@ -228,18 +230,20 @@ private:
     std::vector<EdgeInd> out_;        // per vertex: a half-edge leaving it
     std::vector<VertInd> vert_;       // per half-edge: origin
     std::vector<EdgeInd> twin_;       // per half-edge: twin or noEdge
+    FaceInd nfaces_ = 0;              // faces in use; the per-face arrays may be longer (new_faces)
     std::vector<std::uint8_t> flags_; // per half-edge: 1 = constrained
     std::vector<Pair> segments_;      // every constraint piece ever made constrained (for verify)
     ChangeReport changes_;
     std::vector<std::uint32_t> stamp_;  // per face: change_id_ when last touched
     std::uint32_t change_id_ = 0;
     bool batch_ = false;  // inside insert_points: touch() only stamps
+    bool small_ = false;  // rectangle inside kSmallCoord: incircle in int64 (predicates.h)
     mutable FaceInd last_face_ = 0;
     mutable std::uint32_t rng_ = 0x9E3779B9u;  // walk randomisation only; never affects results
     // Scratch buffers reused across calls.
     std::vector<EdgeInd> stack_;
     std::vector<Pair> pairs_, pairs2_;
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> sort_buf_;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> sort_buf_, sort_tmp_;
 };
 
 // A canonical form of the triangulation for comparisons: every face as its three points rotated

@@ -106,7 +106,7 @@ void Cdt::export_faces(std::vector<std::array<VertInd, 3>>* out) const {
 
 void Cdt::export_constraints(std::vector<std::array<VertInd, 2>>* out) const {
     out->clear();
-    for (EdgeInd e = 0; e < vert_.size(); ++e) {
+    for (EdgeInd e = 0; e < 3 * face_count(); ++e) {
         if (!flags_[e]) continue;
         const VertInd a = vert_[e], b = vert_[next_edge(e)];
         if (twin_[e] != noEdge && a > b) continue;  // listed from the other half
@@ -141,10 +141,14 @@ std::string es(std::size_t e) { return std::to_string(e); }
 }  // namespace
 
 bool Cdt::verify(std::string* why) const {
-    const std::size_t nf = face_count(), nv = points_.size(), ne = vert_.size();
+    const std::size_t nf = face_count(), nv = points_.size(), ne = 3 * nf;
     if (nv < 4 || nf < 2) return fail(why, "not initialised");
-    if (twin_.size() != ne || flags_.size() != ne || out_.size() != nv || stamp_.size() != nf)
+    if (vert_.size() < ne || twin_.size() != vert_.size() || flags_.size() != vert_.size() || out_.size() != nv ||
+        3 * stamp_.size() != vert_.size())
         return fail(why, "array sizes disagree");
+    for (std::size_t e = ne; e < vert_.size(); ++e)  // new_faces relies on spare slots being zero
+        if (vert_[e] != 0 || twin_[e] != 0 || flags_[e] != 0 || stamp_[e / 3] != 0)
+            return fail(why, "spare half-edge slot " + es(e) + " not zero");
     std::vector<std::uint8_t> used(nv, 0);
     __int128 area = 0;
     std::size_t hull = 0;

@@ -15,6 +15,11 @@
 //   each product < 2^98, the sum of three < 2^100: exact in __int128.
 // Cdt::reset and Cdt::insert_point check the bound; images are at most 32768 pixels a side
 // (algorithms/image.h), so doubled coordinates stay below 65536, far inside it.
+// Small coordinates: when every coordinate is below kSmallCoord = 2^14, differences are below
+// 2^14 in magnitude, lifted terms and cofactors below 2^29 (exact in int32), each product below
+// 2^58 and the sum of three below 2^60: incircle_small is exact in int64 and saves the three
+// 128-bit products. A Cdt whose rectangle is inside that bound (every image up to 8192 pixels a
+// side) picks that path once at reset.
 //
 // Ties. Lattice points are very often cocircular, and then "the" Delaunay triangulation is not
 // unique. incircle_perturbed() resolves incircle == 0 by symbolic perturbation: point p is lifted
@@ -48,6 +53,9 @@ inline int orient_sign(LatticePoint a, LatticePoint b, LatticePoint c) {
     return (o > 0) - (o < 0);
 }
 
+// Exclusive bound of the coordinates for which incircle is exact in int64 (see the top).
+constexpr std::int32_t kSmallCoord = std::int32_t(1) << 14;
+
 // The in-circle determinant, exact in __int128: > 0 when d is strictly inside the circumcircle
 // of the positively oriented triangle abc, 0 when the four points are cocircular.
 inline __int128 incircle(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
@@ -61,6 +69,21 @@ inline __int128 incircle(LatticePoint a, LatticePoint b, LatticePoint c, Lattice
     const std::int64_t cb = adx * cdy - ady * cdx;  // orient2d(a, c, d)
     const std::int64_t cc = adx * bdy - ady * bdx;  // orient2d(a, b, d)
     return __int128(alift) * ca - __int128(blift) * cb + __int128(clift) * cc;
+}
+
+// The same determinant for points whose coordinates are all below kSmallCoord: differences,
+// lifts and cofactors (< 2^29) in int32, the three products and their sum (< 2^60) in int64.
+inline std::int64_t incircle_small(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
+    const std::int32_t adx = a.x - d.x, ady = a.y - d.y;
+    const std::int32_t bdx = b.x - d.x, bdy = b.y - d.y;
+    const std::int32_t cdx = c.x - d.x, cdy = c.y - d.y;
+    const std::int32_t alift = adx * adx + ady * ady;
+    const std::int32_t blift = bdx * bdx + bdy * bdy;
+    const std::int32_t clift = cdx * cdx + cdy * cdy;
+    const std::int32_t ca = bdx * cdy - bdy * cdx;
+    const std::int32_t cb = adx * cdy - ady * cdx;
+    const std::int32_t cc = adx * bdy - ady * bdx;
+    return std::int64_t(alift) * ca - std::int64_t(blift) * cb + std::int64_t(clift) * cc;
 }
 
 // The tie-breaking order: (Y, X) lexicographic. Smaller means "perturbed more".
@@ -89,10 +112,19 @@ __attribute__((noinline)) inline int incircle_tie(LatticePoint a, LatticePoint b
 
 // Sign (+1 inside, -1 outside) of the in-circle test under the symbolic perturbation described
 // at the top; never 0 for four distinct points with orient2d(a,b,c) != 0.
-inline int incircle_perturbed(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
+// Out of line: the kernel's hot loops take the int64 path below and must stay small.
+__attribute__((noinline)) inline int incircle_perturbed(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d) {
     const __int128 det = incircle(a, b, c, d);
-    if (det > 0) return 1;
-    if (det < 0) return -1;
+    if (det != 0) return det > 0 ? 1 : -1;
+    return incircle_tie(a, b, c, d);
+}
+
+// The same sign, through incircle_small when `small` says every coordinate is below kSmallCoord.
+__attribute__((always_inline)) inline int incircle_perturbed(LatticePoint a, LatticePoint b, LatticePoint c, LatticePoint d,
+                                                            bool small) {
+    if (!small) return incircle_perturbed(a, b, c, d);
+    const std::int64_t det = incircle_small(a, b, c, d);
+    if (det != 0) return det > 0 ? 1 : -1;
     return incircle_tie(a, b, c, d);
 }
 
