@@ -111,9 +111,11 @@ EdgeInd Cdt::flip(EdgeInd e) {
     EdgeInd* const T = twin_.data();
     std::uint8_t* const F = flags_.data();
     EdgeInd* const O = out_.data();
+    // Corner offsets from tables: next_edge/prev_edge compiled to data-dependent branches here.
+    static constexpr EdgeInd kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
     const EdgeInd t = T[e];
     const EdgeInd g1 = 3 * face_of(e), g2 = 3 * face_of(t);
-    const EdgeInd ebc = next_edge(e), eca = prev_edge(e), ead = next_edge(t), edb = prev_edge(t);
+    const EdgeInd ebc = g1 + kNext[e - g1], eca = g1 + kPrev[e - g1], ead = g2 + kNext[t - g2], edb = g2 + kPrev[t - g2];
     const VertInd a = V[e], b = V[t], c = V[eca], d = V[edb];
     const EdgeInd tbc = T[ebc], tca = T[eca], tad = T[ead], tdb = T[edb];
     const std::uint8_t fbc = F[ebc], fca = F[eca], fad = F[ead], fdb = F[edb];
@@ -158,15 +160,21 @@ void Cdt::legalize_around(VertInd p, const EdgeInd* seeds, unsigned count) {
     EdgeInd* S = stack_.data();
     std::size_t n = 0;
     for (unsigned i = 0; i < count; ++i) S[n++] = seeds[i];
-    const LatticePoint pp = points_[p];
+    // Local array pointers: flip() never resizes them, but the compiler cannot know that and
+    // would reload every vector after each call.
+    const VertInd* const V = vert_.data();
+    const EdgeInd* const T = twin_.data();
+    const std::uint8_t* const F = flags_.data();
+    const LatticePoint* const P = points_.data();
+    const bool small = small_;
+    const LatticePoint pp = P[p];
     while (n > 0) {
         const EdgeInd e = S[--n];
-        const EdgeInd t = twin_[e];
-        if (t == noEdge || flags_[e]) continue;
-        if (incircle_perturbed(points_[vert_[e]], points_[vert_[t]], pp, points_[vert_[prev_edge(t)]], small_) <= 0)
-            continue;
+        const EdgeInd t = T[e];
+        if (t == noEdge || F[e]) continue;
+        if (incircle_perturbed(P[V[e]], P[V[t]], pp, P[V[prev_edge(t)]], small) <= 0) continue;
         const EdgeInd diag = flip(e);  // d->c in f1 = (c=p, a, d); f2 = (d, b, p)
-        const FaceInd f1 = face_of(diag), f2 = face_of(twin_[diag]);
+        const FaceInd f1 = face_of(diag), f2 = face_of(T[diag]);
         if (n + 2 > stack_.size()) {
             stack_.resize(2 * stack_.size());
             S = stack_.data();
@@ -176,29 +184,48 @@ void Cdt::legalize_around(VertInd p, const EdgeInd* seeds, unsigned count) {
     }
 }
 
-// Face f = (a,b,c) becomes (a,b,p), (b,c,p), (c,a,p).
+// Face f = (a,b,c) becomes (a,b,p), (b,c,p), (c,a,p). Written out on raw arrays (set_face and
+// link per corner reloaded every array pointer after each byte store); the final out_ entries,
+// twins, flags and touch order are those of set_face(f), set_face(n1), set_face(n2) + links.
 void Cdt::split_face(FaceInd f, VertInd p) {
-    const EdgeInd e = 3 * f;
-    const VertInd a = vert_[e], b = vert_[e + 1], c = vert_[e + 2];
-    const EdgeInd tab = twin_[e], tbc = twin_[e + 1], tca = twin_[e + 2];
-    const std::uint8_t fab = flags_[e], fbc = flags_[e + 1], fca = flags_[e + 2];
-    const FaceInd n1 = new_faces(2), n2 = n1 + 1;
-    set_face(f, a, b, p);
-    set_face(n1, b, c, p);
-    set_face(n2, c, a, p);
-    link(3 * f, tab);
-    link(3 * n1, tbc);
-    link(3 * n2, tca);
-    link(3 * f + 1, 3 * n1 + 2);
-    link(3 * n1 + 1, 3 * n2 + 2);
-    link(3 * n2 + 1, 3 * f + 2);
-    std::uint8_t* const F = flags_.data();  // byte stores last (see flip)
-    F[3 * f] = fab;
-    F[3 * n1] = fbc;
-    F[3 * n2] = fca;
-    F[3 * f + 1] = 0;
-    F[3 * f + 2] = 0;
-    const EdgeInd seeds[3] = {3 * f, 3 * n1, 3 * n2};
+    const FaceInd n1 = new_faces(2), n2 = n1 + 1;  // may grow the arrays: take pointers after it
+    VertInd* const V = vert_.data();
+    EdgeInd* const T = twin_.data();
+    std::uint8_t* const F = flags_.data();
+    EdgeInd* const O = out_.data();
+    const EdgeInd e = 3 * f, e1 = 3 * n1, e2 = 3 * n2;
+    const VertInd a = V[e], b = V[e + 1], c = V[e + 2];
+    const EdgeInd tbc = T[e + 1], tca = T[e + 2];
+    const std::uint8_t fbc = F[e + 1], fca = F[e + 2];
+    V[e + 2] = p;  // f = (a, b, p) keeps a->b with its twin and flag
+    V[e1] = b;
+    V[e1 + 1] = c;
+    V[e1 + 2] = p;
+    V[e2] = c;
+    V[e2 + 1] = a;
+    V[e2 + 2] = p;
+    O[a] = e2 + 1;
+    O[b] = e1;
+    O[c] = e2;
+    O[p] = e2 + 2;
+    T[e1] = tbc;
+    if (tbc != noEdge) T[tbc] = e1;
+    T[e2] = tca;
+    if (tca != noEdge) T[tca] = e2;
+    T[e + 1] = e1 + 2;
+    T[e1 + 2] = e + 1;
+    T[e1 + 1] = e2 + 2;
+    T[e2 + 2] = e1 + 1;
+    T[e2 + 1] = e + 2;
+    T[e + 2] = e2 + 1;
+    F[e1] = fbc;  // the other new corners are zero already (new_faces)
+    F[e2] = fca;
+    F[e + 1] = 0;
+    F[e + 2] = 0;
+    touch(f);
+    touch(n1);
+    touch(n2);
+    const EdgeInd seeds[3] = {e, e1, e2};
     legalize_around(p, seeds, 3);
 }
 
@@ -262,6 +289,7 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
     }
     legalize_around(p, seeds, t != noEdge ? 4 : 2);
 }
+
 
 // Visibility walk with a randomised order of the edge tests (the remembering stochastic walk of
 // Devillers et al.), which terminates on any triangulation, constrained or not. The randomness only
