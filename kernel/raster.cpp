@@ -79,87 +79,132 @@ bool owns_point(const Setup& s, std::int64_t x, std::int64_t y) {
     return true;
 }
 
+// One sloped edge's bound on the column index along the rows: ceil(N(j) / D) with N linear in j,
+// kept as quotient and remainder and stepped per row instead of dividing. Branch-free: the
+// carry is as likely as not, so a branch on it would be mispredicted half the time.
+struct Stepper {
+    std::int64_t q = 0, r = 0, D = 1, dq = 0, dr = 0;  // N = q*D + r, 0 <= r < D
+    void init(std::int64_t n0, std::int64_t den, std::int64_t dn) {
+        D = den;
+        q = floor_div(n0, D);
+        r = n0 - q * D;
+        dq = floor_div(dn, D);
+        dr = dn - dq * D;
+    }
+    std::int64_t ceil() const { return q + (r != 0); }
+    void step() {
+        r += dr;
+        const std::int64_t carry = r >= D;
+        q += dq + carry;
+        r -= D & -carry;
+    }
+};
+
+// The bound edge e puts on the rows from lattice row j on. A sloped edge bounds the row from the
+// left (A > 0: i >= ceil(..), ties owned since sx*A > 0) or from the right (A < 0: i <= ceil(..) - 1,
+// ties not owned). With E(x) = K + A*x, x = phase_x + step_x*i, K = B*(y - ay) - A*ax.
+Stepper edge_bound(const Lattice& l, const EdgeFn& e, std::int64_t j) {
+    const std::int64_t K0 = e.B * (l.fine_y(j) - e.ay) - e.A * e.ax, dK = e.B * l.step_y;
+    Stepper st;
+    if (e.A > 0) st.init(-K0 - e.A * l.phase_x, e.A * l.step_x, -dK);
+    else st.init(K0 + e.A * l.phase_x, -e.A * l.step_x, dK);
+    return st;
+}
+
+// The row context shared by the row loops of scan_triangle.
+struct Rows {
+    const Setup& s;
+    const Lattice& l;
+    std::int64_t i_lo, i_hi;  // the bounding box's columns, clipped to the domain
+    bool border_col;          // the right border x == max_x is a lattice column the triangle reaches
+    std::int64_t i_border;
+    std::vector<Span>* out;
+    std::int64_t count = 0;
+
+    // Appends row j's span lo..hi (clipped to the box), with the right-border point added when
+    // owned: the row rule (sx = +1) never owns x == max_x, so it is tested with sx = -1; if it is
+    // owned, convexity puts every point between the row's span and it in the triangle too.
+    void emit(std::int64_t j, std::int64_t lo, std::int64_t hi) {
+        lo = std::max(lo, i_lo);
+        hi = std::min(hi, i_hi);
+        if (border_col && owns_point(s, s.mx, l.fine_y(j))) {
+            if (lo > hi) lo = i_border;
+            hi = i_border;
+        }
+        if (lo > hi) return;
+        out->push_back(Span{std::int32_t(j), std::int32_t(lo), std::int32_t(hi)});
+        count += hi - lo + 1;
+    }
+
+    // Rows ja..jb between two sloped edges, `left` (A > 0) and `right` (A < 0), where the third
+    // edge cannot matter (see scan_triangle).
+    void between(std::int64_t ja, std::int64_t jb, const EdgeFn& left, const EdgeFn& right) {
+        if (ja > jb) return;
+        Stepper a = edge_bound(l, left, ja), b = edge_bound(l, right, ja);
+        for (std::int64_t j = ja; j <= jb; ++j) {
+            emit(j, a.ceil(), b.ceil() - 1);
+            a.step();
+            b.step();
+        }
+    }
+
+    // Row j with all three edges tested (the middle vertex's row): a horizontal edge lies on such
+    // a row and is K = 0 along it, ties by sy.
+    void all_edges(std::int64_t j) {
+        std::int64_t lo = i_lo, hi = i_hi;
+        const std::int64_t y = l.fine_y(j);
+        for (const EdgeFn& e : s.e) {
+            if (e.A > 0) lo = std::max(lo, edge_bound(l, e, j).ceil());
+            else if (e.A < 0) hi = std::min(hi, edge_bound(l, e, j).ceil() - 1);
+            else if (y == e.ay && !((y == s.my ? -e.B : e.B) > 0)) hi = lo - 1;
+        }
+        emit(j, lo, hi);
+    }
+};
+
 }  // namespace
 
+// Rows are split at the middle vertex M (by y) of top vertex T and bottom vertex Bt. A row strictly
+// between T and M meets only edges TM and T-Bt: every point between them lies in the closed
+// triangle and off segment M-Bt, so strictly inside that edge's half-plane, and its test holds.
+// Likewise below M with M-Bt and T-Bt. Of the two edges at T (or at Bt) the one leaving the vertex
+// downwards bounds from the right, the one arriving from the left. M's own row, where ties and a
+// horizontal edge can matter, tests all three edges.
 std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b, LatticePoint c,
                            std::vector<Span>* out) {
     out->clear();
     Setup s;
     if (!setup(l, d, a, b, c, &s)) return 0;
-    const std::int64_t sx_step = l.step_x, sy_step = l.step_y;
     // Rows and columns of the bounding box, clipped to the closed domain.
-    const std::int64_t j0 = ceil_div(std::max<std::int64_t>(s.ymin, 0) - l.phase_y, sy_step);
-    const std::int64_t j1 = floor_div(std::min(s.ymax, s.my) - l.phase_y, sy_step);
-    const std::int64_t i_lo = ceil_div(std::max<std::int64_t>(s.xmin, 0) - l.phase_x, sx_step);
-    const std::int64_t i_hi = floor_div(std::min(s.xmax, s.mx) - l.phase_x, sx_step);
-    // The right-border column, when it is a lattice column this triangle reaches.
-    const bool border_col = s.xmax == s.mx && (s.mx - l.phase_x) % sx_step == 0;
-    const std::int64_t i_border = border_col ? (s.mx - l.phase_x) / sx_step : 0;
-    // Each sloped edge bounds the row by ceil(N(j) / D) with N linear in j: keep the quotient
-    // and remainder and step them per row instead of dividing.
-    struct Stepper {
-        std::int64_t q = 0, r = 0, D = 1, dq = 0, dr = 0;  // N = q*D + r, 0 <= r < D
-        void init(std::int64_t n0, std::int64_t den, std::int64_t dn) {
-            D = den;
-            q = floor_div(n0, D);
-            r = n0 - q * D;
-            dq = floor_div(dn, D);
-            dr = dn - dq * D;
-        }
-        std::int64_t ceil() const { return q + (r != 0); }
-        void step() {
-            q += dq;
-            r += dr;
-            if (r >= D) {
-                r -= D;
-                ++q;
-            }
-        }
-    };
-    // Sloped edges bound the row from the left (A > 0, ties owned: sx*A > 0) or from the right
-    // (A < 0, ties not owned). A horizontal edge (at most one) lies on the first or last row and
-    // only matters there: K = 0 on it, ties by sy.
-    Stepper left[2], right[2];
-    int nl = 0, nr = 0;
-    bool has_h = false;
-    std::int64_t h_y = 0, h_b = 0;
-    const std::int64_t y0 = l.fine_y(j0);
-    for (const EdgeFn& e : s.e) {
-        // E(x) = K + A*x with x = phase_x + step_x*i and K = B*(y - ay) - A*ax.
-        const std::int64_t K0 = e.B * (y0 - e.ay) - e.A * e.ax, dK = e.B * sy_step;
-        if (e.A > 0) left[nl++].init(-K0 - e.A * l.phase_x, e.A * sx_step, -dK);        // i >= ceil(..)
-        else if (e.A < 0) right[nr++].init(K0 + e.A * l.phase_x, -e.A * sx_step, dK);  // i <= ceil(..) - 1
-        else {
-            has_h = true;
-            h_y = e.ay;
-            h_b = e.B;
-        }
+    const std::int64_t j0 = ceil_div(std::max<std::int64_t>(s.ymin, 0) - l.phase_y, l.step_y);
+    const std::int64_t j1 = floor_div(std::min(s.ymax, s.my) - l.phase_y, l.step_y);
+    if (j0 > j1) return 0;
+    const bool border_col = s.xmax == s.mx && (s.mx - l.phase_x) % l.step_x == 0;
+    Rows rows{s,
+              l,
+              ceil_div(std::max<std::int64_t>(s.xmin, 0) - l.phase_x, l.step_x),
+              floor_div(std::min(s.xmax, s.mx) - l.phase_x, l.step_x),
+              border_col,
+              border_col ? (s.mx - l.phase_x) / l.step_x : 0,
+              out};
+    // Edge t runs from vertex t to vertex t+1. T: a vertex of least y; Bt: of largest y (another one).
+    int t = 0, bt = 0;
+    for (int k = 1; k < 3; ++k) {
+        if (s.e[k].ay < s.e[t].ay) t = k;
+        if (s.e[k].ay > s.e[bt].ay) bt = k;
     }
-    std::int64_t count = 0;
-    for (std::int64_t j = j0; j <= j1; ++j) {
-        const std::int64_t y = l.fine_y(j);
-        std::int64_t lo = i_lo, hi = i_hi;
-        for (int t = 0; t < nl; ++t) {
-            lo = std::max(lo, left[t].ceil());
-            left[t].step();
-        }
-        for (int t = 0; t < nr; ++t) {
-            hi = std::min(hi, right[t].ceil() - 1);
-            right[t].step();
-        }
-        const bool empty = has_h && y == h_y && !((y == s.my ? -h_b : h_b) > 0);
-        if (empty) lo = hi + 1;
-        // The row rule (sx = +1) never owns x == max_x; test it with sx = -1. If it is owned,
-        // convexity puts every point between the row's span and it in the triangle too.
-        if (border_col && owns_point(s, s.mx, y)) {
-            if (lo > hi) lo = i_border;
-            hi = i_border;
-        }
-        if (lo > hi) continue;
-        out->push_back(Span{std::int32_t(j), std::int32_t(lo), std::int32_t(hi)});
-        count += hi - lo + 1;
-    }
-    return count;
+    if (bt == t) bt = (t + 1) % 3;  // cannot happen: a triangle is not flat
+    const int m = 3 - t - bt;
+    const std::int64_t ym = s.e[m].ay;
+    // Row index ranges strictly above and strictly below M's fine y, and M's row if on the lattice.
+    const std::int64_t above = std::min(j1, ceil_div(ym - l.phase_y, l.step_y) - 1);
+    const std::int64_t below = std::max(j0, floor_div(ym - l.phase_y, l.step_y) + 1);
+    // Edges at T: t (leaves T: right bound) and (t+2)%3 (arrives at T: left bound); at Bt: bt
+    // (leaves Bt upwards: left bound) and (bt+2)%3 (arrives: right bound).
+    rows.between(j0, above, s.e[(t + 2) % 3], s.e[t]);
+    for (std::int64_t j = std::max(above + 1, j0); j < below && j <= j1; ++j) rows.all_edges(j);
+    rows.between(below, j1, s.e[bt], s.e[(bt + 2) % 3]);
+    return rows.count;
 }
 
 bool triangle_owns(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b, LatticePoint c, std::int32_t i,
