@@ -3,8 +3,10 @@
 // The thesis fixes each wedge value from the image near its vertex (3.4.1 step 2). Once the mesh
 // is final, the approximating function is linear in the wedge values, so the values that minimise
 // the squared error at the pixels can be found directly: conjugate gradients on the normal
-// equations (CGLS), matrix-free, starting from the thesis's values. Each pixel is evaluated with
-// the plane of the face that owns it (kernel/raster.h ownership), as during ERDGPI refinement.
+// equations, starting from the thesis's values. A face's pixels enter those equations only
+// through a 3x3 Gram matrix and a 3-vector, so one pass over the pixels assembles them and the
+// iterations cost O(faces). Each pixel is evaluated with the plane of the face that owns it
+// (kernel/raster.h ownership), as during ERDGPI refinement.
 // A value no pixel depends on keeps its thesis value. Results are clamped to [0, maxval].
 #pragma once
 #include <cstddef>
