@@ -508,23 +508,22 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
     return d;
 }
 
-// Stable LSD radix sort of (key, index) pairs on the low `bits` bits of the key, 8 bits a pass,
-// ping-ponging with `tmp`: ~30 instructions a point against ~200 for std::sort.
-void radix_sort(std::vector<std::pair<std::uint64_t, std::uint32_t>>* v,
-                std::vector<std::pair<std::uint64_t, std::uint32_t>>* tmp, int bits) {
+// Stable LSD radix sort of v on bits [low, low + bits), 8 bits a pass, ping-ponging with tmp:
+// ~30 instructions a point against ~200 for std::sort.
+void radix_sort(std::vector<std::uint64_t>* v, std::vector<std::uint64_t>* tmp, int low, int bits) {
     tmp->resize(v->size());
-    for (int shift = 0; shift < bits; shift += 8) {
+    for (int shift = low; shift < low + bits; shift += 8) {
         std::size_t count[257] = {};
-        for (const auto& kv : *v) ++count[((kv.first >> shift) & 0xFFu) + 1];
+        for (const std::uint64_t x : *v) ++count[((x >> shift) & 0xFFu) + 1];
         for (int i = 0; i < 256; ++i) count[i + 1] += count[i];
-        for (const auto& kv : *v) (*tmp)[count[(kv.first >> shift) & 0xFFu]++] = kv;
+        for (const std::uint64_t x : *v) (*tmp)[count[(x >> shift) & 0xFFu]++] = x;
         v->swap(*tmp);
     }
 }
 
 }  // namespace
 
-Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<VertInd>* v) {
+Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<VertInd>* v, bool report_changes) {
     begin_change();
     if (face_count() == 0) return Status::failure("triangulation not initialised (call reset first)");
     if (points_.size() + pts.size() >= std::size_t(noVertex / 8)) return Status::failure("triangulation too large");
@@ -532,50 +531,75 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
         if (p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_)
             return Status::bad_input("point (" + std::to_string(p.x) + "," + std::to_string(p.y) +
                                      ") outside the rectangle");
+    if (pts.empty()) {
+        if (v) v->clear();
+        return Status::success();
+    }
     int order = 1;
     while ((std::int64_t(1) << order) <= std::max(max_x_, max_y_)) ++order;
     // BRIO (Amenta, Choi, Rote): points go into rounds of doubling size by a deterministic shuffle,
     // each round in Hilbert order. Pure Hilbert order inserts each point next to the long thin
     // triangles at the front of the filled region; the rounds keep the mesh "random-like" at every
     // scale, so each insertion needs fewer flips, while the walks stay short.
-    sort_buf_.resize(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) sort_buf_[i].second = static_cast<std::uint32_t>(i);
+    // The order is that of sorting (round << 2 order | Hilbert index, point index) pairs. Packed
+    // into one uint64 (always, for image-sized inputs) the sort is a radix sort on half the memory.
+    const std::size_t n = pts.size();
+    sort_buf_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) sort_buf_[i] = i;  // then shuffled: point index by position
     std::uint32_t state = 0x2545F491u;
-    for (std::size_t i = pts.size(); i > 1; --i) {
+    for (std::size_t i = n; i > 1; --i) {
         state = state * 1664525u + 1013904223u;
-        std::swap(sort_buf_[i - 1].second, sort_buf_[std::size_t((std::uint64_t(state) * i) >> 32)].second);
+        std::swap(sort_buf_[i - 1], sort_buf_[std::size_t((std::uint64_t(state) * i) >> 32)]);
     }
-    int round = 0;  // 64 points in round 0, then 64, 128, 256, ...
+    int rounds = 1;  // 64 points in round 0, then 64, 128, 256, ...: position j is in round r while j >= 64 << (r-1)
+    while ((std::size_t(64) << (rounds - 1)) < n) ++rounds;
+    int key_bits = 2 * order, index_bits = 1;
+    while ((std::uint64_t(rounds - 1) >> (key_bits - 2 * order)) != 0) ++key_bits;
+    while (((n - 1) >> index_bits) != 0) ++index_bits;
+    const bool packed = key_bits + index_bits <= 64;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;  // only when not packed
+    if (!packed) pairs.resize(n);
+    int round = 0;
     std::size_t round_end = 64;
-    for (std::size_t j = 0; j < pts.size(); ++j) {
+    for (std::size_t j = 0; j < n; ++j) {
         if (j == round_end) {
             ++round;
             round_end *= 2;
         }
-        const LatticePoint q = pts[sort_buf_[j].second];
-        sort_buf_[j].first = std::uint64_t(round) << (2 * order) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
+        const std::uint64_t index = sort_buf_[j];
+        const LatticePoint q = pts[index];
+        const std::uint64_t key = std::uint64_t(round) << (2 * order) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
+        if (packed)
+            sort_buf_[j] = key << index_bits | index;
+        else
+            pairs[j] = {key, static_cast<std::uint32_t>(index)};
     }
-    // Equal keys are the same point in the same round, so the stable sort's order among them (by
-    // shuffled position, not by index as a comparison sort on the pairs had it) changes nothing.
-    int key_bits = 2 * order;
-    while ((std::uint64_t(round) >> (key_bits - 2 * order)) != 0) ++key_bits;
-    radix_sort(&sort_buf_, &sort_tmp_, key_bits);
+    std::uint64_t index_mask = ~std::uint64_t(0);
+    if (packed) {
+        radix_sort(&sort_buf_, &sort_tmp_, index_bits, key_bits);
+        index_mask = (std::uint64_t(1) << index_bits) - 1;
+    } else {
+        std::sort(pairs.begin(), pairs.end());
+        for (std::size_t j = 0; j < n; ++j) sort_buf_[j] = pairs[j].second;
+    }
     if (v) v->assign(pts.size(), noVertex);
     reserve(points_.size() + pts.size());
-    batch_ = true;
+    tracking_ = report_changes ? Tracking::stamps : Tracking::none;
     // Every point was checked above, so each is located by a walk from the previous insertion's
     // face (what insert_point does with that hint) and inserted without insert_point's checks.
     Status st;
-    for (const auto& ki : sort_buf_) {
-        const LatticePoint p = pts[ki.second];
+    for (const std::uint64_t packed_index : sort_buf_) {
+        const std::size_t index = packed_index & index_mask;
+        const LatticePoint p = pts[index];
         const VertInd nv = insert_at(p, walk(p, last_face_));
         if (nv == noVertex) {
             st = Status::failure("point location failed");
             break;
         }
-        if (v) (*v)[ki.second] = nv;
+        if (v) (*v)[index] = nv;
     }
-    batch_ = false;
+    tracking_ = Tracking::lists;
+    if (!report_changes) return st;
     for (FaceInd f = 0; f < face_count(); ++f) {
         if (stamp_[f] != change_id_) continue;
         changes_.created.push_back(f);

@@ -532,3 +532,76 @@ TEST_CASE("insert_points maps every input (duplicates too) and reports the whole
     CHECK_FALSE(cdt.insert_points(bad, &v).ok());
     CHECK(cdt.vertex_count() == 10);  // checked before anything is inserted
 }
+
+TEST_CASE("incircle_small agrees with the 128-bit incircle up to the small-coordinate bound", "[kernel]") {
+    const std::int32_t M = kSmallCoord - 1;
+    // Extremes: a right triangle on three corners of the largest small square, d at the fourth
+    // corner (cocircular), just inside and outside.
+    const LatticePoint a{0, 0}, b{M, 0}, c{M, M};
+    for (const LatticePoint d : {LatticePoint{0, M}, LatticePoint{1, M - 1}, LatticePoint{1, M}, LatticePoint{M / 2, M / 2}})
+        CHECK(__int128(incircle_small(a, b, c, d)) == incircle(a, b, c, d));
+    CHECK(incircle_small(a, b, c, LatticePoint{0, M}) == 0);
+    std::mt19937 g(7);
+    int mismatches = 0, ties = 0;
+    for (int i = 0; i < 200000; ++i) {
+        // Small spans make ties and near-ties common; large ones reach the bound.
+        const std::int32_t span = (i & 1) ? M + 1 : 6;
+        const std::int32_t ox = std::int32_t(g() % std::uint32_t(kSmallCoord - span + 1));
+        const std::int32_t oy = std::int32_t(g() % std::uint32_t(kSmallCoord - span + 1));
+        LatticePoint q[4];
+        for (auto& p : q) p = {ox + std::int32_t(g() % std::uint32_t(span)), oy + std::int32_t(g() % std::uint32_t(span))};
+        const __int128 wide = incircle(q[0], q[1], q[2], q[3]);
+        if (__int128(incircle_small(q[0], q[1], q[2], q[3])) != wide) ++mismatches;
+        if (wide == 0) ++ties;
+        if (orient2d(q[0], q[1], q[2]) > 0 && incircle_perturbed(q[0], q[1], q[2], q[3], true) != incircle_perturbed(q[0], q[1], q[2], q[3]))
+            ++mismatches;
+    }
+    CHECK(mismatches == 0);
+    CHECK(ties > 1000);
+}
+
+TEST_CASE("insert_points without a change report builds the same mesh slot for slot", "[kernel]") {
+    std::mt19937 g(11);
+    std::vector<LatticePoint> pts;
+    for (int i = 0; i < 3000; ++i) pts.push_back({std::int32_t(g() % 201), std::int32_t(g() % 121)});
+    Cdt with, without;
+    must_reset(with, 200, 120);
+    must_reset(without, 200, 120);
+    std::vector<VertInd> v1, v2;
+    REQUIRE(with.insert_points(pts, &v1).ok());
+    REQUIRE(without.insert_points(pts, &v2, false).ok());
+    CHECK(v1 == v2);
+    CHECK_FALSE(with.changes().created.empty());
+    CHECK(without.changes().created.empty());
+    CHECK(without.changes().destroyed.empty());
+    std::vector<std::array<VertInd, 3>> f1, f2;
+    with.export_faces(&f1);
+    without.export_faces(&f2);
+    CHECK(f1 == f2);
+    must_verify(without);
+    // Single insertions afterwards report again.
+    must_insert(without, {1, 119});
+    CHECK_FALSE(without.changes().created.empty());
+    REQUIRE(without.insert_points({}, &v2).ok());
+    CHECK(v2.empty());
+}
+
+TEST_CASE("insert_points on a huge rectangle (keys too wide to pack) agrees with one-by-one insertion", "[kernel]") {
+    // 2^24 - 1 needs 48 Hilbert bits; with 20,000 points and their rounds the packed key would
+    // need more than 64 bits, so the pair-sorting path runs.
+    const std::int32_t M = kMaxCoord - 1;
+    std::mt19937 g(5);
+    std::vector<LatticePoint> pts;
+    for (int i = 0; i < 20000; ++i) pts.push_back({std::int32_t(g() % std::uint32_t(M + 1)), std::int32_t(g() % std::uint32_t(M + 1))});
+    pts.push_back(pts[17]);  // a duplicate
+    Cdt batch, single;
+    must_reset(batch, M, M);
+    must_reset(single, M, M);
+    std::vector<VertInd> v;
+    REQUIRE(batch.insert_points(pts, &v).ok());
+    for (std::size_t i = 0; i < pts.size(); ++i) CHECK(batch.point(v[i]) == pts[i]);
+    CHECK(v[17] == v.back());
+    for (const LatticePoint& p : pts) must_insert(single, p);
+    CHECK(canonical_faces(batch) == canonical_faces(single));
+    must_verify(batch);
+}
