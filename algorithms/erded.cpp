@@ -13,6 +13,7 @@
 #include "algorithms/gpi.h"
 #include "algorithms/methods.h"
 #include "algorithms/mmsodd.h"
+#include "algorithms/set_points.h"
 #include "algorithms/wedge_fit.h"
 
 namespace erd {
@@ -100,13 +101,12 @@ std::size_t adjust_count(const Grid<double>& density, const Grid<std::uint8_t>& 
 
 Grid<std::uint8_t> edge_cells(const Grid<std::uint8_t>& edges, int width, int height) {
     Grid<std::uint8_t> out(width, height, 0);
-    for (int Y = 0; Y < edges.height; ++Y)
-        for (int X = 0; X < edges.width; ++X) {
-            if (!edges(X, Y)) continue;
-            // The half-pixel point lies in the cell of every pixel within half a pixel of it.
-            for (int y = (Y - 1 + 1) / 2; y <= (Y + 1) / 2 && y < height; ++y)
-                for (int x = (X - 1 + 1) / 2; x <= (X + 1) / 2 && x < width; ++x) out(x, y) = 1;
-        }
+    for_each_set(edges.data.data(), edges.data.size(), [&](std::size_t i) {
+        const int X = int(i % std::size_t(edges.width)), Y = int(i / std::size_t(edges.width));
+        // The half-pixel point lies in the cell of every pixel within half a pixel of it.
+        for (int y = Y / 2; y <= (Y + 1) / 2 && y < height; ++y)
+            for (int x = X / 2; x <= (X + 1) / 2 && x < width; ++x) out(x, y) = 1;
+    });
     return out;
 }
 
