@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "algorithms/heap.h"
@@ -37,19 +38,25 @@ std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y))
 // [0, maxval], round half up), so errors are integers and sums exact. Truncation stands in for
 // std::floor (a libm call without SSE4.1): they agree for v + 0.5 >= 0, and below that both end
 // at 0 after clamping. Plane values are interpolated samples, so they are finite and small.
-template <bool Clamp>
+// How the loop turns a plane value into the rounded approximation (see scan_rounded for when each
+// applies): clamp, plain (no clamp can act), or shifted (no clamp can act and the values passed
+// are already plane + 0.5).
+enum class Rounding { clamp, plain, shifted };
+
+template <Rounding R>
 inline std::int32_t rounded(double v, double maxval) {
+    if (R == Rounding::shifted) return std::int32_t(v);
+    if (R == Rounding::plain) return std::int32_t(v + 0.5);
     // Clamp above in double (also keeps the conversion in range), round by truncation, clamp
     // below in integers: any v < 0.5 gives 0 as to_sample does. Cheaper than a double clamp,
     // which GCC compiles into a 5-instruction blend.
-    if (!Clamp) return std::int32_t(v + 0.5);
     const double c = v < maxval ? v : maxval;
     const std::int32_t r = std::int32_t(c + 0.5);
     return r < 0 ? 0 : r;
 }
 
 // Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
-template <bool Clamp>
+template <Rounding R>
 inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
                               std::int32_t x1, double v, double dv, double maxval, std::int64_t* sum,
                               std::int64_t* best_sq, std::int32_t* bx) {
@@ -57,7 +64,7 @@ inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* 
     std::int64_t b = *best_sq;  // the candidate is compared by squared error: no abs
     bool moved = false;
     auto visit = [&](std::int32_t x, double vx) {
-        const std::uint32_t e = std::uint32_t(std::int32_t(samples[x]) - rounded<Clamp>(vx, maxval));
+        const std::uint32_t e = std::uint32_t(std::int32_t(samples[x]) - rounded<R>(vx, maxval));
         const std::uint32_t e2 = e * e;
         acc += e2;
         if (std::int64_t(e2) > b && !banned[x]) {
@@ -91,17 +98,38 @@ inline bool clamp_free(double lo, double hi, double maxval) {
     return lo >= -0.5 + 1e-3 && hi <= maxval - 1e-3;  // false for NaN: the clamping loop then
 }
 
-// face_free: the whole face is known to be clamp-free (see Refiner::rescan), so the span's own
-// test is skipped.
+// The biased exponent of a positive double: equal for two positive doubles in the same binade
+// [2^e, 2^(e+1)).
+inline std::uint64_t binade(double d) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &d, sizeof bits);
+    return bits >> 52;
+}
+
+// How a face's spans may be scanned, from the plane's values at its corners (see Refiner::rescan).
+enum class FaceRange {
+    any,        // a span may need clamping: test each span
+    clamp_free, // no clamp can act anywhere on the face
+    one_binade, // no clamp can act, and every value and value + 0.5 lie in one binade
+};
+
+// Shifted: when the values and the values + 0.5 all lie in one binade (again with the 1e-3
+// margin), the running sum can carry v + 0.5 instead of v at no cost in exactness: adding 0.5 is
+// exact there, and rounding to that binade's grid commutes with a shift by 0.5 (an even multiple
+// of its spacing), so each step gives exactly the old value + 0.5 and truncation the same r. It
+// saves an addition and a register copy per pixel.
 inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
-                         std::int32_t x1, double v, double dv, double maxval, bool face_free,
+                         std::int32_t x1, double v, double dv, double maxval, FaceRange range,
                          std::int64_t* sum, std::int64_t* best_sq, std::int32_t* bx) {
-    if (!face_free) {
+    if (range == FaceRange::one_binade)
+        return scan_rounded_impl<Rounding::shifted>(samples, banned, x0, x1, v + 0.5, dv, maxval, sum, best_sq,
+                                                    bx);
+    if (range == FaceRange::any) {
         const double end = v + double(x1 - x0) * dv;
         if (!clamp_free(std::min(v, end), std::max(v, end), maxval))
-            return scan_rounded_impl<true>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
+            return scan_rounded_impl<Rounding::clamp>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
     }
-    return scan_rounded_impl<false>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
+    return scan_rounded_impl<Rounding::plain>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
 }
 
 // Real-valued: errors against the plane itself.
@@ -238,12 +266,15 @@ private:
                 zlo = std::min(zlo, z);
                 zhi = std::max(zhi, z);
             }
-            const bool face_free = clamp_free(zlo, zhi, maxval);
+            FaceRange range = FaceRange::any;
+            if (clamp_free(zlo, zhi, maxval))
+                range = zlo - 1e-3 > 0.0 && binade(zlo - 1e-3) == binade(zhi + 0.5 + 1e-3) ? FaceRange::one_binade
+                                                                                          : FaceRange::clamp_free;
             std::int64_t isum = 0, ibest_sq = -1;
             for (const Span& s : spans_) {
                 const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
                 if (scan_rounded(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
-                                 plane.at(lat, s.x_begin, s.y), dv, maxval, face_free, &isum, &ibest_sq, &bx))
+                                 plane.at(lat, s.x_begin, s.y), dv, maxval, range, &isum, &ibest_sq, &bx))
                     by = s.y;
             }
             sum = double(isum);
