@@ -427,7 +427,7 @@ ModelFileKind model_kind_from_name(const std::string& name) {
     return ModelFileKind::unknown;
 }
 
-Status read_model(const std::string& text, ModelFileKind kind, Model* out) {
+Status read_model(const std::string& text, ModelFileKind kind, Model* out, ModelTopology* topo_out) {
     if (kind == ModelFileKind::triangulation) return read_triangulation(text, out);
     Tokens tk(text);
     if (tk.at_end()) return Status::bad_input("empty file");
@@ -488,6 +488,7 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out) {
     if (m.kind == ModelKind::erd)
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
     *out = std::move(m);
+    if (topo_out) *topo_out = std::move(topo);
     return Status::success();
 }
 

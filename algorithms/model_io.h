@@ -35,14 +35,17 @@
 
 namespace erd {
 
+struct ModelTopology;
+
 enum class ModelFileKind { unknown, basic, erd, triangulation };
 
 // The kind implied by a file name: ".model", ".erd", ".tri"; unknown otherwise (e.g. "-").
 ModelFileKind model_kind_from_name(const std::string& name);
 
 // Reads a .model or .erd text. With kind == unknown the content decides: a file that goes on
-// after its faces (the wedge count) is an .erd, otherwise a .model.
-Status read_model(const std::string& text, ModelFileKind kind, Model* out);
+// after its faces (the wedge count) is an .erd, otherwise a .model. *topo (may be null) receives
+// build_topology(*out), which the reader builds anyway, so reconstruct() need not build it again.
+Status read_model(const std::string& text, ModelFileKind kind, Model* out, ModelTopology* topo = nullptr);
 
 // Writes m as a .model (kind basic; every coordinate must be even) or an .erd (kind erd).
 Status write_model(const Model& m, std::string* out);

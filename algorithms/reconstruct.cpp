@@ -33,13 +33,16 @@ Status not_triangulation(const std::string& why) {
 std::string pt(LatticePoint p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
 struct Prepared {
-    ModelTopology topo;
+    ModelTopology own;                     // built here unless the caller passes one
+    const ModelTopology* topo = nullptr;   // own or the caller's
     RasterDomain dom;
     std::vector<double> vertex_value;  // the function's value at each vertex (mean of wedges)
     std::vector<SpanPlane> planes;     // per face, through its corner values
 };
 
-Status prepare(const Model& m, bool count_pixels, Prepared* p) {
+// Checks m as check_triangulation() describes and sets up *p. `given` (may be null) is m's
+// adjacency when the caller has it.
+Status prepare(const Model& m, bool count_pixels, const ModelTopology* given, Prepared* p) {
     if (m.width < 2 || m.height < 2 || m.width > kMaxImageSide || m.height > kMaxImageSide)
         return Status::bad_input("image size " + std::to_string(m.width) + " x " + std::to_string(m.height) +
                                  " out of range (2.." + std::to_string(kMaxImageSide) + " a side)");
@@ -67,7 +70,13 @@ Status prepare(const Model& m, bool count_pixels, Prepared* p) {
         if (q.x < 0 || q.y < 0 || q.x > dom.max_x || q.y > dom.max_y)
             return not_triangulation("vertex " + std::to_string(v) + " " + pt(q) + " lies outside the domain");
     }
-    if (Status s = build_topology(m, &p->topo); !s) return not_triangulation(s.message);
+    if (given && given->twin.size() == 3 * nf && given->corner_begin.size() == nv + 1) {
+        p->topo = given;
+    } else {
+        if (Status s = build_topology(m, &p->own); !s) return not_triangulation(s.message);
+        p->topo = &p->own;
+    }
+    const ModelTopology& topo = *p->topo;
     // Areas (twice, doubled coordinates) must add up to the rectangle's.
     const std::int64_t target = 2 * std::int64_t(dom.max_x) * dom.max_y;
     std::int64_t area = 0;
@@ -83,8 +92,8 @@ Status prepare(const Model& m, bool count_pixels, Prepared* p) {
         return (a.x == 0 && b.x == 0) || (a.y == 0 && b.y == 0) || (a.x == dom.max_x && b.x == dom.max_x) ||
                (a.y == dom.max_y && b.y == dom.max_y);
     };
-    for (std::uint32_t h = 0; h < p->topo.twin.size(); ++h) {
-        if (p->topo.twin[h] != kNoHalfEdge) continue;
+    for (std::uint32_t h = 0; h < topo.twin.size(); ++h) {
+        if (topo.twin[h] != kNoHalfEdge) continue;
         const std::uint32_t u = m.faces[h / 3][h % 3], w = m.faces[h / 3][(h + 1) % 3];
         if (!on_border_line(m.vertices[u], m.vertices[w]))
             return not_triangulation("edge " + std::to_string(u) + "-" + std::to_string(w) + " of face " + std::to_string(h / 3) +
@@ -110,7 +119,7 @@ Status prepare(const Model& m, bool count_pixels, Prepared* p) {
                                          (owned[i] == 0 ? "no face" : "several faces"));
     }
     p->vertex_value.resize(nv);
-    for (std::uint32_t v = 0; v < nv; ++v) p->vertex_value[v] = erd ? vertex_wedges(m, p->topo, v).mean : m.values[v];
+    for (std::uint32_t v = 0; v < nv; ++v) p->vertex_value[v] = erd ? vertex_wedges(m, topo, v).mean : m.values[v];
     p->planes.resize(nf);
     for (std::size_t f = 0; f < nf; ++f) {
         const auto& fc = m.faces[f];
@@ -152,11 +161,11 @@ void for_each_on_segment(const Lattice& l, LatticePoint p, LatticePoint q, Fn fn
     }
 }
 
-// Round to nearest (halves up) and clamp; truncation is floor for the positive values left.
+// Round to nearest (halves up) and clamp; truncation is floor for the non-negative values left.
+// Selects instead of branches (NaN also gives 0), so the loops applying it can vectorise.
 std::uint16_t to_sample(double v, double maxval) {
-    if (!(v > 0.0)) return 0;  // also NaN
-    if (v >= maxval) return std::uint16_t(maxval);
-    return std::uint16_t(v + 0.5);
+    const double c = v > 0.0 ? (v < maxval ? v : maxval) : 0.0;
+    return std::uint16_t(std::int32_t(c + 0.5));
 }
 
 // Moves the points of lattice l on discontinuity edges to the mean of the two sides:
@@ -166,9 +175,9 @@ std::uint16_t to_sample(double v, double maxval) {
 template <class Set>
 void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Set set) {
     if (m.kind != ModelKind::erd) return;
-    for (std::uint32_t h = 0; h < p.topo.twin.size(); ++h) {
-        const std::uint32_t o = p.topo.twin[h];
-        if (o == kNoHalfEdge || o < h || !is_discontinuity(m, p.topo, h)) continue;
+    for (std::uint32_t h = 0; h < p.topo->twin.size(); ++h) {
+        const std::uint32_t o = p.topo->twin[h];
+        if (o == kNoHalfEdge || o < h || !is_discontinuity(m, *p.topo, h)) continue;
         const std::uint32_t f = h / 3;
         const auto& fc = m.faces[f];
         const LatticePoint a = m.vertices[fc[0]], b = m.vertices[fc[1]], c = m.vertices[fc[2]];
@@ -189,9 +198,19 @@ void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Se
     }
 }
 
+// TEMPORARY until kernel/raster.h has a row window: the spans of rows j_begin..j_end.
+void scan_rows(const Lattice& l, RasterDomain dom, LatticePoint a, LatticePoint b, LatticePoint c, std::int32_t j_begin,
+               std::int32_t j_end, std::vector<Span>* out) {
+    scan_triangle(l, dom, a, b, c, out);
+    out->erase(std::remove_if(out->begin(), out->end(), [&](const Span& s) { return s.y < j_begin || s.y > j_end; }), out->end());
+}
+
+// Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
+// vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles).
 void point_evaluation(const Model& m, const Prepared& p, Image* out) {
     const std::size_t W = std::size_t(m.width);
-    std::vector<double> val(W * std::size_t(m.height), 0.0);
+    const double maxval = m.maxval;
+    std::uint16_t* px = out->samples.data();
     const Lattice l = Lattice::pixels();
     std::vector<Span> spans;
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
@@ -200,54 +219,58 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out) {
         const SpanPlane& pl = p.planes[f];
         const double dv = pl.step_x(l);
         for (const Span& s : spans) {
-            double* row = val.data() + std::size_t(s.y) * W;
+            std::uint16_t* row = px + std::size_t(s.y) * W;
             double v = pl.at(l, s.x_begin, s.y);
-            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[x] = v;
+            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[x] = to_sample(v, maxval);
         }
     }
     fix_discontinuities(m, p, l, [&](std::int32_t i, std::int32_t j, double mean, double) {
-        val[std::size_t(j) * W + std::size_t(i)] = mean;
+        px[std::size_t(j) * W + std::size_t(i)] = to_sample(mean, maxval);
     });
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
         const LatticePoint q = m.vertices[v];
-        if (q.x % 2 == 0 && q.y % 2 == 0) val[std::size_t(q.y / 2) * W + std::size_t(q.x / 2)] = p.vertex_value[v];
+        if (q.x % 2 == 0 && q.y % 2 == 0) px[std::size_t(q.y / 2) * W + std::size_t(q.x / 2)] = to_sample(p.vertex_value[v], maxval);
     }
-    const double maxval = m.maxval;
-    for (std::size_t i = 0; i < val.size(); ++i) out->samples[i] = to_sample(val[i], maxval);
 }
 
-void supersampling(const Model& m, const Prepared& p, Image* out) {
-    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height);
-    std::vector<double> acc(W * H, 0.0);  // sum of the 16 sub-samples of each pixel
+// Adds the sub-samples of one face's spans on Lattice::supersample() to the pixel sums `acc`,
+// whose row 0 is pixel row `row0`.
+void add_spans(const SpanPlane& pl, const std::vector<Span>& spans, double* acc, std::size_t W, std::size_t row0) {
     const Lattice l = Lattice::supersample();
-    std::vector<Span> spans;
-    for (std::size_t f = 0; f < m.faces.size(); ++f) {
-        const auto& fc = m.faces[f];
-        scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
-        // The plane in fine units (scale 4 is a power of two: no rounding is added).
-        const SpanPlane& pl = p.planes[f];
-        const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
-        const double dv = gx * l.step_x, six = 6.0 * dv, four = 4.0 * dv;
-        for (const Span& s : spans) {
-            double* row = acc.data() + std::size_t(s.y >> 2) * W;
-            double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
-            std::int32_t i = s.x_begin;
-            // A partial pixel at each end, whole pixels (4 sub-samples: 4v + 6dv) between.
-            const auto partial = [&](std::int32_t e) {
-                const double n = double(e - i + 1);
-                row[i >> 2] += n * v + dv * (n * (n - 1.0) * 0.5);
-                v += dv * n;
-                i = e + 1;
-            };
-            if ((i & 3) != 0) partial(std::min(s.x_end, i | 3));
-            const std::int32_t whole = (s.x_end + 1 - i) >> 2;
-            double* px = row + (i >> 2);
-            for (std::int32_t k = 0; k < whole; ++k, v += four) px[k] += 4.0 * v + six;
-            i += whole << 2;
-            if (i <= s.x_end) partial(s.x_end);
-        }
+    // The plane in fine units (scale 4 is a power of two: no rounding is added).
+    const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
+    const double dv = gx * l.step_x, six = 6.0 * dv, four = 4.0 * dv;
+    for (const Span& s : spans) {
+        double* row = acc + (std::size_t(s.y >> 2) - row0) * W;
+        double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
+        std::int32_t i = s.x_begin;
+        // A partial pixel at each end, whole pixels (4 sub-samples: 4v + 6dv) between.
+        const auto partial = [&](std::int32_t e) {
+            const double n = double(e - i + 1);
+            row[i >> 2] += n * v + dv * (n * (n - 1.0) * 0.5);
+            v += dv * n;
+            i = e + 1;
+        };
+        if ((i & 3) != 0) partial(std::min(s.x_end, i | 3));
+        const std::int32_t whole = (s.x_end + 1 - i) >> 2;
+        double* px = row + (i >> 2);
+        for (std::int32_t k = 0; k < whole; ++k, v += four) px[k] += 4.0 * v + six;
+        i += whole << 2;
+        if (i <= s.x_end) partial(s.x_end);
     }
-    // Clamped sub-samples on the border lines.
+}
+
+// One addition to a pixel's sum made after all faces' interior sub-samples.
+struct LateTerm {
+    std::size_t pixel;
+    double add;
+};
+
+// The clamped border sub-samples and the discontinuity corrections, in the order the sums take them.
+std::vector<LateTerm> late_terms(const Model& m, const Prepared& p) {
+    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height);
+    std::vector<LateTerm> late;
+    std::vector<Span> spans;
     const std::int32_t mx = p.dom.max_x, my = p.dom.max_y;
     const Lattice cols{4, 4 * mx, 2, 0, -3}, rows{4, 2, 4 * my, -3, 0};
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
@@ -259,42 +282,105 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
             scan_triangle(cols, p.dom, a, b, c, &spans);
             for (const Span& s : spans)
                 for (std::int32_t i = s.x_begin; i <= s.x_end; ++i)
-                    acc[std::size_t(s.y >> 2) * W + (i == 0 ? 0 : W - 1)] += 2.0 * p.planes[f].at(cols, i, s.y);
+                    late.push_back({std::size_t(s.y >> 2) * W + (i == 0 ? 0 : W - 1), 2.0 * p.planes[f].at(cols, i, s.y)});
         }
         if (touches_y(0) || touches_y(my)) {
             scan_triangle(rows, p.dom, a, b, c, &spans);
             for (const Span& s : spans)
                 for (std::int32_t i = s.x_begin; i <= s.x_end; ++i)
-                    acc[(s.y == 0 ? 0 : H - 1) * W + std::size_t(i >> 2)] += 2.0 * p.planes[f].at(rows, i, s.y);
+                    late.push_back({(s.y == 0 ? 0 : H - 1) * W + std::size_t(i >> 2), 2.0 * p.planes[f].at(rows, i, s.y)});
         }
     }
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
         const LatticePoint q = m.vertices[v];
         if ((q.x == 0 || q.x == mx) && (q.y == 0 || q.y == my))
-            acc[(q.y == 0 ? 0 : H - 1) * W + (q.x == 0 ? 0 : W - 1)] += 4.0 * p.vertex_value[v];
+            late.push_back({(q.y == 0 ? 0 : H - 1) * W + (q.x == 0 ? 0 : W - 1), 4.0 * p.vertex_value[v]});
     }
-    fix_discontinuities(m, p, l, [&](std::int32_t i, std::int32_t j, double mean, double owner) {
-        acc[std::size_t(j >> 2) * W + std::size_t(i >> 2)] += mean - owner;
+    fix_discontinuities(m, p, Lattice::supersample(), [&](std::int32_t i, std::int32_t j, double mean, double owner) {
+        late.push_back({std::size_t(j >> 2) * W + std::size_t(i >> 2), mean - owner});
     });
+    return late;
+}
+
+// Pixel sums are doubles of about this many bytes per band of rows: the band stays in the L2
+// cache while its faces are rasterised in any order.
+constexpr std::size_t kBandBytes = std::size_t(256) << 10;
+
+// Items 0..n-1 grouped by band, keeping their order within each band (a counting sort):
+// bands(i, fn) calls fn(b) for each band b item i belongs to. Returns item lists per band in
+// (*first)[b] .. (*first)[b + 1].
+template <class Bands>
+std::vector<std::uint32_t> group_by_band(std::size_t n, std::size_t nb, Bands bands, std::vector<std::uint32_t>* first) {
+    first->assign(nb + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) bands(i, [&](std::size_t b) { ++(*first)[b + 1]; });
+    for (std::size_t b = 0; b < nb; ++b) (*first)[b + 1] += (*first)[b];
+    std::vector<std::uint32_t> items((*first)[nb]);
+    std::vector<std::uint32_t> fill(first->begin(), first->end() - 1);
+    for (std::size_t i = 0; i < n; ++i) bands(i, [&](std::size_t b) { items[fill[b]++] = std::uint32_t(i); });
+    return items;
+}
+
+// Supersampling band by band. Each pixel's sum takes exactly the additions, in exactly the order,
+// of a whole-image pass (faces in face order, then the late terms), so banding changes no bit.
+void supersampling(const Model& m, const Prepared& p, Image* out) {
+    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height);
+    const std::size_t band = std::max<std::size_t>(1, kBandBytes / (W * sizeof(double)));
+    const std::size_t nb = (H + band - 1) / band;
+    const Lattice l = Lattice::supersample();
+    // Sub-sample rows j (pixel row j / 4) a face can own: fine y = phase + step * j within its extent.
+    const auto face_bands = [&](std::size_t f, auto fn) {
+        const auto& fc = m.faces[f];
+        const std::int64_t ylo = std::min({m.vertices[fc[0]].y, m.vertices[fc[1]].y, m.vertices[fc[2]].y});
+        const std::int64_t yhi = std::max({m.vertices[fc[0]].y, m.vertices[fc[1]].y, m.vertices[fc[2]].y});
+        const std::int64_t j0 = (ylo * l.scale - l.phase_y + l.step_y - 1) / l.step_y;  // numerators >= 0
+        const std::int64_t j1 = (yhi * l.scale - l.phase_y) / l.step_y;
+        const std::size_t r0 = std::size_t(j0 >> 2), r1 = std::min(H - 1, std::size_t(j1 >> 2));
+        for (std::size_t b = r0 / band; b <= r1 / band; ++b) fn(b);
+    };
+    std::vector<std::uint32_t> face_first, late_first;
+    const std::vector<std::uint32_t> band_faces = group_by_band(m.faces.size(), nb, face_bands, &face_first);
+    const std::vector<LateTerm> late = late_terms(m, p);
+    const std::vector<std::uint32_t> band_late =
+        group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn(late[i].pixel / W / band); }, &late_first);
+    std::vector<double> acc(band * W);
+    std::vector<Span> spans;
     const double maxval = m.maxval;
-    for (std::size_t i = 0; i < acc.size(); ++i) out->samples[i] = to_sample(acc[i] * (1.0 / 16.0), maxval);
+    for (std::size_t b = 0; b < nb; ++b) {
+        const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
+        std::fill(acc.begin(), acc.begin() + std::ptrdiff_t(rows * W), 0.0);
+        for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
+            const auto& fc = m.faces[band_faces[k]];
+            scan_rows(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], std::int32_t(4 * row0),
+                      std::int32_t(4 * (row0 + rows) - 1), &spans);
+            add_spans(p.planes[band_faces[k]], spans, acc.data(), W, row0);
+        }
+        for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) acc[late[band_late[k]].pixel - row0 * W] += late[band_late[k]].add;
+        std::uint16_t* dst = out->samples.data() + row0 * W;
+        for (std::size_t i = 0; i < rows * W; ++i) dst[i] = to_sample(acc[i] * (1.0 / 16.0), maxval);
+    }
 }
 
-}  // namespace
-
-Status check_triangulation(const Model& m) {
+Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out) {
     Prepared p;
-    return prepare(m, true, &p);
-}
-
-Status reconstruct(const Model& m, bool supersample, Image* out) {
-    Prepared p;
-    if (Status s = prepare(m, false, &p); !s) return s;
+    if (Status s = prepare(m, false, given, &p); !s) return s;
     Image im(m.width, m.height, m.maxval);
     if (supersample) supersampling(m, p, &im);
     else point_evaluation(m, p, &im);
     *out = std::move(im);
     return Status::success();
 }
+
+}  // namespace
+
+Status check_triangulation(const Model& m) {
+    Prepared p;
+    return prepare(m, true, nullptr, &p);
+}
+
+Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out) {
+    return reconstruct_with(m, &topo, supersample, out);
+}
+
+Status reconstruct(const Model& m, bool supersample, Image* out) { return reconstruct_with(m, nullptr, supersample, out); }
 
 }  // namespace erd

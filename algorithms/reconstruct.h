@@ -15,6 +15,7 @@
 #pragma once
 #include "algorithms/image.h"
 #include "algorithms/model.h"
+#include "algorithms/model_topology.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -30,5 +31,9 @@ Status check_triangulation(const Model& m);
 // Runs the checks of check_triangulation first (all but the pixel count, which they imply), so
 // it never fails in any other way on any model.
 Status reconstruct(const Model& m, bool supersample, Image* out);
+
+// The same with m's adjacency already built (topo = build_topology(m), e.g. from read_model()),
+// which saves building it again; a topo whose sizes do not fit m is rebuilt.
+Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out);
 
 }  // namespace erd

@@ -43,12 +43,13 @@ int cmd_reconstruct(int argc, char** argv) {
     if (!(st = refuse_overwrite(out, {in}))) return rep.fail(st);
 
     Model model;
+    ModelTopology topo;
     std::string warning;
-    if (!(st = load_model_file(in, &model, &warning))) return rep.fail(st);
+    if (!(st = load_model_file(in, &model, &warning, &topo))) return rep.fail(st);
     rep.warn(warning);
     const bool supersample = model.kind == ModelKind::erd && !args.has("no-aa");
     Image im;
-    if (!(st = reconstruct(model, supersample, &im))) return rep.fail(Status::error(st.code, in + ": " + st.message));
+    if (!(st = reconstruct(model, topo, supersample, &im))) return rep.fail(Status::error(st.code, in + ": " + st.message));
     WriteOptions wo;
     wo.plain = args.has("plain");
     if (!(st = write_image(out, im, wo))) return rep.fail(st);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "algorithms/model.h"
+#include "algorithms/model_topology.h"
 #include "kernel/status.h"
 
 namespace erd::cli {
@@ -11,6 +12,7 @@ namespace erd::cli {
 // name (.model / .erd), else from the content. A ".tri" name reads the -t triangulation instead
 // (vertices, faces and constraints, no values: enough to draw, not to reconstruct or export).
 // Messages start with the path. *warning (may be null) is cleared: reserved for non-fatal remarks.
-Status load_model_file(const std::string& path, Model* out, std::string* warning);
+// *topo (may be null) receives the model's adjacency for a .model or .erd (see read_model).
+Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr);
 
 }  // namespace erd::cli

@@ -252,3 +252,51 @@ TEST_CASE("reconstruct: refuses what is not a triangulation of the domain", "[ra
         CHECK(erd::reconstruct(m, false, &im).message.find("finite") != std::string::npos);
     }
 }
+
+TEST_CASE("reconstruct: wide images are supersampled in several bands of rows", "[raster]") {
+    // 256 KiB of pixel sums per band: 6000 pixels a row gives 5 rows a band, so faces of a random
+    // triangulation with few points span several bands and are rasterised in pieces.
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<double> val(0.0, 255.0);
+    const int W = 6000, H = 13;
+    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 12, false);
+    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    m.kind = ModelKind::erd;
+    std::vector<long double> vmean(m.vertices.size(), 0.0L);
+    std::vector<int> deg(m.vertices.size(), 0);
+    for (const auto& f : m.faces) {
+        const std::array<double, 3> c{val(rng), val(rng), val(rng)};
+        m.corner_values.push_back(c);
+        for (int k = 0; k < 3; ++k) {
+            vmean[f[std::size_t(k)]] += c[std::size_t(k)];
+            ++deg[f[std::size_t(k)]];
+        }
+    }
+    for (std::size_t v = 0; v < vmean.size(); ++v) vmean[v] /= deg[v];
+    for (long double z : vmean) m.values.push_back(double(z));
+    compare(m, vmean, true);
+}
+
+TEST_CASE("reconstruct: a given adjacency gives the same image; one that does not fit is rebuilt", "[raster]") {
+    std::mt19937 rng(8);
+    const int W = 23, H = 14;
+    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 25, false);
+    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    m.kind = ModelKind::erd;
+    for (std::size_t f = 0; f < m.faces.size(); ++f) m.corner_values.push_back({double(f % 7) * 30, 100.0, 200.0 - double(f)});
+    m.values.assign(m.vertices.size(), 0.0);
+    std::string text;
+    REQUIRE(erd::write_model(m, &text).ok());
+    Model r;
+    erd::ModelTopology topo;
+    REQUIRE(erd::read_model(text, erd::ModelFileKind::erd, &r, &topo).ok());
+    CHECK(topo.twin.size() == 3 * r.faces.size());
+    for (bool ss : {false, true}) {
+        Image a, b, c;
+        REQUIRE(erd::reconstruct(r, ss, &a).ok());
+        REQUIRE(erd::reconstruct(r, topo, ss, &b).ok());
+        REQUIRE(erd::reconstruct(r, erd::ModelTopology{}, ss, &c).ok());
+        CHECK(a.samples == b.samples);
+        CHECK(a.samples == c.samples);
+    }
+}
