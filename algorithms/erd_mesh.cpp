@@ -15,8 +15,8 @@ namespace {
 // coincide), and so is a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    StepOneCounter(const Grid<double>& phi, LengthRule rule, double eps_unit)
-        : phi_(phi), rule_(rule), eps_unit_(eps_unit) {}
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit)
+        : image_(image), rule_(rule), eps_unit_(eps_unit) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -32,7 +32,7 @@ public:
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
-        Status st = detect_edges(phi_, cp, &edges_);
+        Status st = detect_edges(image_, cp, &edges_);
         if (!st.ok() && status_.ok()) status_ = st;
         traced_ = trace_polylines(edges_);
     }
@@ -52,7 +52,9 @@ public:
     std::vector<Polyline>& kept() { return kept_; }
 
 private:
-    const Grid<double>& phi_;
+    // The image, not a double copy of it: the ERD methods make their double phi only after step 1,
+    // so it is not alive beside the detector's planes (the peak of the whole run).
+    const Image& image_;
     LengthRule rule_;
     double eps_unit_;
     Status status_;
@@ -99,9 +101,8 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
     return Status::success();
 }
 
-Status build_initial_mesh(const Image& image, const Grid<double>& phi, const InitialMeshOptions& options,
-                          Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(phi, options.length_rule, options.eps_unit);
+Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
+    StepOneCounter counter(image, options.length_rule, options.eps_unit);
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     if (!counter.status().ok()) return counter.status();

@@ -41,10 +41,10 @@ struct InitialMesh {
     std::size_t n0 = 0;                // vertices of the initial mesh (corners included)
 };
 
-// Builds the initial mesh of image (phi = its samples as doubles) into cdt (reset first).
+// Builds the initial mesh of image into cdt (reset first).
 // The mesh never has more than max(4, N) vertices: if the polylines hold more points than that
 // (tiny N), whole polylines are left out, longest kept first.
-Status build_initial_mesh(const Image& image, const Grid<double>& phi, const InitialMeshOptions& options,
+Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
                           Cdt* cdt, InitialMesh* out);
 
 // Inserts P and E of the given polylines (plus the corners, which reset() creates) into cdt,

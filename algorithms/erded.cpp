@@ -130,11 +130,11 @@ Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height) {
 }
 
 Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    const Grid<double> phi = to_grid(image);
     Cdt cdt;
     InitialMesh mesh;
-    Status st = begin_erd_method(image, options, ErdMethod::erded, phi, &cdt, &mesh, result);
+    Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result);
     if (!st) return st;
+    const Grid<double> phi = to_grid(image);
     const std::int64_t n = std::int64_t(result->requested);
     auto t0 = std::chrono::steady_clock::now();
 

@@ -47,8 +47,8 @@ ErdParamRequest param_request(const GenerateOptions& options) {
     return r;
 }
 
-Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, const Grid<double>& phi,
-                        Cdt* cdt, InitialMesh* mesh, GenerateResult* result) {
+Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
+                        InitialMesh* mesh, GenerateResult* result) {
     Status st = begin_generate(image, options, result);
     if (!st) return st;
     const std::size_t n = result->requested;
@@ -58,7 +58,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.method = method;
     mo.target = n;
     mo.request = param_request(options);
-    st = build_initial_mesh(image, phi, mo, cdt, mesh);
+    st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     result->stages.push_back({"initial mesh", seconds_since(t0)});
     return Status::success();
@@ -80,11 +80,12 @@ void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateRes
 }
 
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    const Grid<double> phi = to_grid(image);
     Cdt cdt;
     InitialMesh mesh;
-    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, phi, &cdt, &mesh, result);
+    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result);
     if (!st) return st;
+    mesh.edges = Grid<std::uint8_t>();  // only ERDED reads the edge map again
+    const Grid<double> phi = to_grid(image);
     const std::int64_t n = std::int64_t(result->requested);
     auto t0 = std::chrono::steady_clock::now();
 

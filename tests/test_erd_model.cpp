@@ -275,14 +275,13 @@ TEST_CASE("ERD methods are deterministic and honour -w, -B, -f", "[erd]") {
 
 TEST_CASE("step 1: forced parameters and tiny N keep the mesh within N", "[erd]") {
     const Image im = scene(64, 48);
-    const Grid<double> phi = to_grid(im);
     InitialMeshOptions mo;
     mo.target = 8;  // far fewer than the polylines hold
     mo.request.beta = 0.2;
     mo.request.l = 2;
     Cdt cdt;
     InitialMesh mesh;
-    REQUIRE(build_initial_mesh(im, phi, mo, &cdt, &mesh).ok());
+    REQUIRE(build_initial_mesh(im, mo, &cdt, &mesh).ok());
     CHECK(mesh.params.beta == 0.2);
     CHECK(mesh.params.l == 2);
     CHECK(mesh.n0 <= 8);
