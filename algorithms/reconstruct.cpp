@@ -233,30 +233,82 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out) {
     }
 }
 
+// One span of sub-samples on Lattice::supersample() being added to its pixel row's sums: sub-sample
+// i (column index; pixel i / 4) has value v. A span covers a partial pixel at each end and whole
+// pixels between, whose four sub-samples add up to 4v + 6dv.
+struct SubRow {
+    double* row;
+    double v;
+    std::int32_t i, end;  // next and last sub-sample
+
+    std::int32_t first_whole() const { return (i + 3) >> 2; }  // first pixel covered whole (before head())
+    std::int32_t end_whole() const { return (end + 1) >> 2; }  // one past the last one
+    void partial(std::int32_t e, double dv) {
+        const double n = double(e - i + 1);
+        row[i >> 2] += n * v + dv * (n * (n - 1.0) * 0.5);
+        v += dv * n;
+        i = e + 1;
+    }
+    void head(double dv) {
+        if ((i & 3) != 0) partial(std::min(end, i | 3), dv);
+    }
+    // Whole pixels up to `stop` (exclusive); i is then a pixel's first sub-sample.
+    void wholes(std::int32_t stop, double four, double six) {
+        for (std::int32_t x = i >> 2; x < stop; ++x, v += four) row[x] += 4.0 * v + six;
+        i = std::max(i, stop << 2);
+    }
+    void tail(double dv) {
+        if (i <= end) partial(end, dv);
+    }
+};
+
 // Adds the sub-samples of one face's spans on Lattice::supersample() to the pixel sums `acc`,
-// whose row 0 is pixel row `row0`.
+// whose row 0 is pixel row `row0`. Each pixel gets its additions sub-row by sub-row, as a plain
+// span-by-span pass would; where all four sub-rows of a pixel row cover pixels whole, those
+// pixels take their four terms in one pass (one load and store, four independent chains of v).
 void add_spans(const SpanPlane& pl, const std::vector<Span>& spans, double* acc, std::size_t W, std::size_t row0) {
     const Lattice l = Lattice::supersample();
     // The plane in fine units (scale 4 is a power of two: no rounding is added).
     const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
     const double dv = gx * l.step_x, six = 6.0 * dv, four = 4.0 * dv;
-    for (const Span& s : spans) {
+    const auto start = [&](const Span& s) {
         double* row = acc + (std::size_t(s.y >> 2) - row0) * W;
-        double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
-        std::int32_t i = s.x_begin;
-        // A partial pixel at each end, whole pixels (4 sub-samples: 4v + 6dv) between.
-        const auto partial = [&](std::int32_t e) {
-            const double n = double(e - i + 1);
-            row[i >> 2] += n * v + dv * (n * (n - 1.0) * 0.5);
-            v += dv * n;
-            i = e + 1;
-        };
-        if ((i & 3) != 0) partial(std::min(s.x_end, i | 3));
-        const std::int32_t whole = (s.x_end + 1 - i) >> 2;
-        double* px = row + (i >> 2);
-        for (std::int32_t k = 0; k < whole; ++k, v += four) px[k] += 4.0 * v + six;
-        i += whole << 2;
-        if (i <= s.x_end) partial(s.x_end);
+        const double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
+        return SubRow{row, v, s.x_begin, s.x_end};
+    };
+    for (std::size_t k = 0; k < spans.size();) {
+        // Spans k.. of one pixel row (one span per sub-row, in order).
+        std::size_t n = 1;
+        while (k + n < spans.size() && (spans[k + n].y >> 2) == (spans[k].y >> 2)) ++n;
+        if (n == 4) {
+            SubRow r[4] = {start(spans[k]), start(spans[k + 1]), start(spans[k + 2]), start(spans[k + 3])};
+            const std::int32_t p0 = std::max({r[0].first_whole(), r[1].first_whole(), r[2].first_whole(), r[3].first_whole()});
+            const std::int32_t p1 = std::min({r[0].end_whole(), r[1].end_whole(), r[2].end_whole(), r[3].end_whole()});
+            if (p0 < p1) {
+                for (SubRow& s : r) {
+                    s.head(dv);
+                    s.wholes(p0, four, six);
+                }
+                double* row = r[0].row;
+                double v0 = r[0].v, v1 = r[1].v, v2 = r[2].v, v3 = r[3].v;
+                for (std::int32_t x = p0; x < p1; ++x, v0 += four, v1 += four, v2 += four, v3 += four)
+                    row[x] = row[x] + (4.0 * v0 + six) + (4.0 * v1 + six) + (4.0 * v2 + six) + (4.0 * v3 + six);
+                r[0].v = v0, r[1].v = v1, r[2].v = v2, r[3].v = v3;
+                for (SubRow& s : r) {
+                    s.i = p1 << 2;
+                    s.wholes(s.end_whole(), four, six);
+                    s.tail(dv);
+                }
+                k += 4;
+                continue;
+            }
+        }
+        for (std::size_t e = k + n; k < e; ++k) {
+            SubRow s = start(spans[k]);
+            s.head(dv);
+            s.wholes(s.end_whole(), four, six);
+            s.tail(dv);
+        }
     }
 }
 
