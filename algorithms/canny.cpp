@@ -5,90 +5,111 @@
 #include <cstddef>
 #include <cstring>
 #include <functional>
+#include <memory>
+#include <utility>
 #include <vector>
 
-#include "algorithms/bilinear.h"
+#include "algorithms/set_points.h"
 #include "algorithms/thinning.h"
 
 namespace erd {
 
 namespace {
 
-// A float plane with a frame of `pad` points on every side, so stencils need no bounds checks.
-struct Padded {
-    int w = 0, h = 0, pad = 0, stride = 0;
-    std::vector<float> v;
-    void reset(int width, int height, int p) {
-        // Rows a multiple of 8 floats long with 8 spare, so the blocked loops below may run past
-        // the frame without leaving the row.
-        w = width; h = height; pad = p; stride = ((width + 2 * p + 7) / 8) * 8 + 8;
-        v.assign(std::size_t(stride) * std::size_t(height + 2 * p), 0.0f);
-    }
-    float* row(int y) { return v.data() + std::ptrdiff_t(y + pad) * stride + pad; }
-    const float* row(int y) const { return v.data() + std::ptrdiff_t(y + pad) * stride + pad; }
-};
+inline int round8(int n) { return (n + 7) / 8 * 8; }
 
-// Fills the frame of p by the extension rule (zero: already zero after reset).
-void extend_frame(Padded* p, Border border) {
-    if (border == Border::zero) return;
-    for (int y = 0; y < p->h; ++y) {
-        float* r = p->row(y);
-        for (int i = 1; i <= p->pad; ++i) { r[-i] = r[0]; r[p->w - 1 + i] = r[p->w - 1]; }
-    }
-    const float* top = p->row(0) - p->pad;
-    const float* bottom = p->row(p->h - 1) - p->pad;
-    for (int i = 1; i <= p->pad; ++i) {
-        std::copy(top, top + p->stride, p->row(-i) - p->pad);
-        std::copy(bottom, bottom + p->stride, p->row(p->h - 1 + i) - p->pad);
+// out[x] = sum_k t[k] * in[k][x] for x in [0, n), n a multiple of 8, summed in the order
+// k = 0, 1, ..., m-1 (the order fixes the float result). Blocks of 8 so that -O2 vectorises.
+void weighted_sum_any(const float* const* in, const float* t, int m, float* __restrict out, int n) {
+    for (int x = 0; x < n; x += 8) {
+        float acc[8];
+        for (int j = 0; j < 8; ++j) acc[j] = t[0] * in[0][x + j];
+        for (int k = 1; k < m; ++k)
+            for (int j = 0; j < 8; ++j) acc[j] += t[k] * in[k][x + j];
+        for (int j = 0; j < 8; ++j) out[x + j] = acc[j];
     }
 }
 
-// dst[0..n) += t * src[0..n), n a multiple of 8: written in blocks of 8 so that -O2 vectorises it.
-inline void axpy8(float* __restrict dst, const float* __restrict src, float t, int n) {
+// The same with m = sizeof...(K) known, so rows and taps stay in registers (a third faster).
+template <std::size_t... K>
+void weighted_sum_fixed(const float* const* in, const float* t, float* __restrict out, int n, std::index_sequence<K...>) {
+    const float* const p[] = {in[K]...};
+    const float c[] = {t[K]...};
     for (int x = 0; x < n; x += 8)
-        for (int j = 0; j < 8; ++j) dst[x + j] += t * src[x + j];
+        for (int j = x; j < x + 8; ++j) {
+            float acc = c[0] * p[0][j];
+            ((K > 0 ? (acc += c[K] * p[K][j], 0) : 0), ...);  // k = 1, 2, ... in order
+            out[j] = acc;
+        }
 }
 
-// Gradient of an extended plane f (frame >= binomial radius + 1): smooth with the binomial in y
-// then x over the region the derivative needs (one point beyond the image), then central
-// differences. This is exactly the composed filter (derivative * binomial) applied to the
-// extended signal. mag (same geometry as f, frame 1 or more) receives sqrt(gx^2 + gy^2).
-void gradient_padded(const Padded& f, const std::vector<double>& b, Grid<float>* gx, Grid<float>* gy, Padded* mag) {
-    const int w = f.w, h = f.h, c = int(b.size() / 2), m = 2 * c + 1;
-    std::vector<float> bt(b.begin(), b.end());
-    // Streaming, one row at a time: column pass of row y into t (whole extended row), row pass
-    // into s(., y) for x = -1 .. w, kept in a ring of three rows for the central differences.
-    const int rs = f.stride;
-    const int n8 = ((w + 2 + 7) / 8) * 8;
-    const int ss = n8 + 8;
-    std::vector<float> t(std::size_t(rs), 0.0f), ring(std::size_t(ss) * 3, 0.0f);
-    auto smooth_row = [&](int y, float* dst) {
-        const float* __restrict first = f.row(y + c) - f.pad;
-        for (int x = 0; x < rs; ++x) t[std::size_t(x)] = bt[0] * first[x];
-        for (int k = 1; k < m; ++k) axpy8(t.data(), f.row(y + c - k) - f.pad, bt[std::size_t(k)], rs);
-        const float* src = t.data() + f.pad - 1;  // column -1
-        for (int x = 0; x < n8; ++x) dst[x] = bt[0] * src[x + c];
-        for (int k = 1; k < m; ++k) axpy8(dst, src + c - k, bt[std::size_t(k)], n8);
-    };
-    auto ring_row = [&](int y) { return ring.data() + std::ptrdiff_t((y + 3) % 3) * ss; };
-    smooth_row(-1, ring_row(-1));
-    smooth_row(0, ring_row(0));
-    *gx = Grid<float>(w, h);
-    *gy = Grid<float>(w, h);
-    for (int y = 0; y < h; ++y) {
-        smooth_row(y + 1, ring_row(y + 1));
-        const float* mid = ring_row(y) + 1;
-        const float* up = ring_row(y - 1) + 1;
-        const float* down = ring_row(y + 1) + 1;
-        float* __restrict ox = &(*gx)(0, y);
-        float* __restrict oy = &(*gy)(0, y);
-        float* __restrict om = mag->row(y);
-        for (int x = 0; x < w; ++x) {
-            const float ax = 0.5f * (mid[x + 1] - mid[x - 1]), ay = 0.5f * (down[x] - up[x]);
-            ox[x] = ax;
-            oy[x] = ay;
-            om[x] = std::sqrt(ax * ax + ay * ay);
+void weighted_sum(const float* const* in, const float* t, int m, float* out, int n) {
+    switch (m) {
+        case 3: weighted_sum_fixed(in, t, out, n, std::make_index_sequence<3>()); break;
+        case 5: weighted_sum_fixed(in, t, out, n, std::make_index_sequence<5>()); break;
+        case 7: weighted_sum_fixed(in, t, out, n, std::make_index_sequence<7>()); break;
+        default: weighted_sum_any(in, t, m, out, n); break;
+    }
+}
+
+// The gradient of step 1, streamed one row at a time so that no full-size plane but the caller's
+// is ever held: f (w x h, extended by `border`) is smoothed with the binomial along y (a ring of
+// taps.size() rows of f), then along x, and the central differences of three smoothed rows give
+// row y. This is exactly the composed filter (derivative * binomial) applied to the extended
+// signal. fill(Y, row) writes row Y of f (w floats), asked for once each, in increasing Y.
+// mag_row(y) is where the magnitudes of row y go (w floats); then emit(y, gx, gy) with the
+// components of row y, whose buffers stay valid until row y + 2 is emitted.
+template <class Fill, class MagRow, class Emit>
+void gradient_rows(int w, int h, const std::vector<double>& taps, Border border, Fill fill, MagRow mag_row, Emit emit) {
+    const int m = int(taps.size()), c = m / 2;
+    const std::vector<float> bt(taps.begin(), taps.end());
+    const int wf = round8(w);      // f rows and gradient rows, zero past w
+    const int ns = round8(w + 2);  // smoothed rows: columns -1 .. ns - 2
+    const int lf = c + 1;          // frame of t on the left (the extension rule fills it)
+    std::vector<float> ring(std::size_t(m) * std::size_t(wf), 0.0f), zero(std::size_t(wf), 0.0f);
+    std::vector<float> tbuf(std::size_t(lf + ns + c + 8), 0.0f), sbuf(std::size_t(3) * std::size_t(ns + 8), 0.0f);
+    std::vector<float> comp(std::size_t(4) * std::size_t(wf), 0.0f);  // gx, gy for two rows
+    std::vector<const float*> src(static_cast<std::size_t>(m), nullptr);
+    float* const t = tbuf.data() + lf;
+    int made = 0;  // rows of f generated so far
+    auto f_row = [&](int Y) -> const float* {
+        if (Y < 0 || Y >= h) {
+            if (border == Border::zero) return zero.data();
+            Y = Y < 0 ? 0 : h - 1;
         }
+        for (; made <= Y; ++made) fill(made, ring.data() + std::size_t(made % m) * std::size_t(wf));
+        return ring.data() + std::size_t(Y % m) * std::size_t(wf);
+    };
+    auto s_row = [&](int y) { return sbuf.data() + std::size_t((y + 3) % 3) * std::size_t(ns + 8); };
+    // Smoothed row y (y = -1 .. h) into s_row(y): column pass into t, extension of t (a column of
+    // the extended f repeats column 0 or w-1, or is zero, so t's frame does the same), row pass.
+    auto smooth = [&](int y) {
+        for (int k = 0; k < m; ++k) src[std::size_t(k)] = f_row(y + c - k);  // largest row first
+        weighted_sum(src.data(), bt.data(), m, t, wf);
+        for (int i = 1; i <= lf; ++i) {
+            t[-i] = border == Border::zero ? 0.0f : t[0];
+            t[w - 1 + i] = border == Border::zero ? 0.0f : t[w - 1];
+        }
+        for (int k = 0; k < m; ++k) src[std::size_t(k)] = t - 1 + c - k;
+        weighted_sum(src.data(), bt.data(), m, s_row(y), ns);
+    };
+    smooth(-1);
+    smooth(0);
+    for (int y = 0; y < h; ++y) {
+        smooth(y + 1);
+        const float* mid = s_row(y) + 1;
+        const float* up = s_row(y - 1) + 1;
+        const float* down = s_row(y + 1) + 1;
+        float* __restrict gx = comp.data() + std::size_t(2 * (y & 1)) * std::size_t(wf);
+        float* __restrict gy = gx + wf;
+        for (int x = 0; x < wf; x += 8)
+            for (int j = x; j < x + 8; ++j) {
+                gx[j] = 0.5f * (mid[j + 1] - mid[j - 1]);
+                gy[j] = 0.5f * (down[j] - up[j]);
+            }
+        float* __restrict mag = mag_row(y);
+        for (int x = 0; x < w; ++x) mag[x] = std::sqrt(gx[x] * gx[x] + gy[x] * gy[x]);
+        emit(y, static_cast<const float*>(gx), static_cast<const float*>(gy));
     }
 }
 
@@ -101,54 +122,488 @@ inline std::uint32_t float_bin(float v) {
 }
 constexpr std::uint32_t kFloatBins = 4096;
 
-// k-th largest of n values given their histogram: finds the bin, then selects inside it. *at_or_above
-// receives the number of values >= the result.
-template <class Visit>
-float kth_largest(const std::vector<std::size_t>& hist, std::size_t k, Visit visit_all, std::size_t* at_or_above) {
-    std::size_t above = 0;
+// The smallest float in bin b.
+inline float bin_floor(std::uint32_t b) {
+    const std::uint32_t u = b << 20;
+    float v;
+    std::memcpy(&v, &u, sizeof v);
+    return v;
+}
+
+// The bin holding the k-th largest of the values counted in hist; *above receives the number of
+// values in higher bins.
+std::uint32_t kth_bin(const std::vector<std::size_t>& hist, std::size_t k, std::size_t* above) {
+    *above = 0;
     std::uint32_t bin = kFloatBins - 1;
     for (; bin > 0; --bin) {
-        if (above + hist[bin] >= k) break;
-        above += hist[bin];
+        if (*above + hist[bin] >= k) break;
+        *above += hist[bin];
     }
-    std::vector<float> in_bin;
-    in_bin.reserve(hist[bin]);
-    visit_all([&](float v) { if (float_bin(v) == bin) in_bin.push_back(v); });
-    if (in_bin.empty()) { *at_or_above = above; return 0.0f; }
-    const std::size_t r = std::min(k - above, in_bin.size()) - 1;  // rank from the top inside the bin
-    std::nth_element(in_bin.begin(), in_bin.begin() + std::ptrdiff_t(r), in_bin.end(), std::greater<float>());
-    const float q = in_bin[r];
+    return bin;
+}
+
+// The rank (k - above)-th largest of in_bin (the values of the bin kth_bin chose); *at_or_above
+// receives the number of values >= the result.
+float select_in_bin(std::vector<float>* in_bin, std::size_t k, std::size_t above, std::size_t* at_or_above) {
+    if (in_bin->empty()) { *at_or_above = above; return 0.0f; }
+    const std::size_t r = std::min(k - above, in_bin->size()) - 1;  // rank from the top inside the bin
+    std::nth_element(in_bin->begin(), in_bin->begin() + std::ptrdiff_t(r), in_bin->end(), std::greater<float>());
+    const float q = (*in_bin)[r];
     std::size_t n = above;
-    for (float v : in_bin) n += v >= q;
+    for (float v : *in_bin) n += v >= q;
     *at_or_above = n;
     return q;
 }
 
-// 8-neighbour offsets in a plane of the given stride.
-void neighbour_offsets(int stride, std::ptrdiff_t off[8]) {
-    const int dx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-    const int dy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-    for (int i = 0; i < 8; ++i) off[i] = std::ptrdiff_t(dy[i]) * stride + dx[i];
+// Point flags. kStrong: in the plane during the gradient pass, g >= a lower bound of tau_low;
+// after thresholding, g >= tau_low.
+enum : std::uint8_t { kNone = 0, kCandidate = 1, kMain = 2, kSecondary = 4, kStrong = 8 };
+
+// Points of the half-pixel grid in a plane with a one-point frame: index (Y + 1) * stride + X + 1.
+struct Plane {
+    int w = 0, h = 0, stride = 0;
+    Plane(int width, int height) : w(width), h(height), stride(round8(width + 2) + 8) {}
+    std::size_t cells() const { return std::size_t(stride) * std::size_t(h + 2); }
+    std::ptrdiff_t at(int X, int Y) const { return std::ptrdiff_t(Y + 1) * stride + X + 1; }
+};
+
+// Step 3 at one point p of the magnitude plane (frame replicated) with gradient (ux, uy): g is
+// compared with g linearly interpolated where the gradient line crosses the 3x3 ring, ahead and
+// behind. Returns kCandidate and, when `secondary`, kSecondary (a maximum in any of the four
+// directions, step 5).
+inline std::uint8_t suppress(const float* p, float ux, float uy, std::ptrdiff_t stride, bool secondary) {
+    const float m = *p;
+    const float aux = std::fabs(ux), auy = std::fabs(uy);
+    std::ptrdiff_t major, minor;
+    float w;
+    if (aux >= auy) {
+        major = ux > 0 ? 1 : -1;
+        minor = (uy > 0 ? 1 : -1) * stride;
+        w = auy / aux;
+    } else {
+        major = (uy > 0 ? 1 : -1) * stride;
+        minor = ux > 0 ? 1 : -1;
+        w = aux / auy;
+    }
+    const float ahead = (1.0f - w) * p[major] + w * p[major + minor];
+    const float behind = (1.0f - w) * p[-major] + w * p[-major - minor];
+    std::uint8_t fl = (m > ahead && m >= behind) ? kCandidate : kNone;
+    if (secondary && ((m > p[-1] && m > p[1]) || (m > p[-stride] && m > p[stride]) ||
+                      (m > p[-stride - 1] && m > p[stride + 1]) || (m > p[-stride + 1] && m > p[stride - 1])))
+        fl |= kSecondary;
+    return fl;
 }
 
-enum : std::uint8_t { kNone = 0, kCandidate = 1, kMain = 2, kSecondary = 4 };
+constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
+
+// Portable popcount (no builtins in algorithms/).
+inline std::uint32_t popcount64(std::uint64_t x) {
+    x = x - ((x >> 1) & 0x5555555555555555u);
+    x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Fu;
+    return std::uint32_t((x * 0x0101010101010101u) >> 56);
+}
+
+// Index of the lowest set bit of w != 0 (de Bruijn multiplication; portable).
+inline unsigned lowest_bit(std::uint64_t w) {
+    static const unsigned char index[64] = {
+        0,  1,  48, 2,  57, 49, 28, 3,  61, 58, 50, 42, 38, 29, 17, 4,  62, 55, 59, 36, 53, 51,
+        43, 22, 45, 39, 33, 30, 24, 18, 12, 5,  63, 47, 56, 27, 60, 41, 37, 16, 54, 35, 52, 21,
+        44, 32, 23, 11, 46, 26, 40, 15, 34, 20, 31, 10, 25, 14, 19, 9,  13, 8,  7,  6};
+    return index[((w & (~w + 1)) * 0x03f79d71b4cb0a89u) >> 58];
+}
+
+// A set of plane cells as one bit per cell, numbered in index order once complete: the number of
+// a member is the count of members before its 64-bit word plus a popcount. An eighth of a byte
+// per cell, so the lookups of steps 4 and 5 stay in cache where a plane of ids would not.
+class CellSet {
+public:
+    explicit CellSet(std::size_t cells) : bits_((cells + 63) / 64, 0) {}
+    void insert(std::size_t i) { bits_[i >> 6] |= std::uint64_t(1) << (i & 63); }
+    void erase(std::size_t i) { bits_[i >> 6] &= ~(std::uint64_t(1) << (i & 63)); }
+    // Calls fn(i) for each member in increasing order (fn may erase i).
+    template <class Fn>
+    void for_each(Fn fn) const {
+        for (std::size_t k = 0; k < bits_.size(); ++k)
+            for (std::uint64_t w = bits_[k]; w; w &= w - 1) fn((k << 6) + lowest_bit(w));
+    }
+    // Inserts in increasing order, one store per word instead of one per member.
+    class Appender {
+    public:
+        explicit Appender(CellSet* set) : set_(set) {}
+        ~Appender() { flush(); }
+        void insert(std::size_t i) {
+            if ((i >> 6) != word_) {
+                flush();
+                word_ = i >> 6;
+            }
+            acc_ |= std::uint64_t(1) << (i & 63);
+        }
+
+    private:
+        void flush() {
+            if (acc_) set_->bits_[word_] |= acc_;
+            acc_ = 0;
+        }
+        CellSet* set_;
+        std::size_t word_ = 0;
+        std::uint64_t acc_ = 0;
+    };
+    // Numbers the members (after the last insert or erase).
+    void number() {
+        before_.resize(bits_.size());
+        std::uint32_t n = 0;
+        for (std::size_t k = 0; k < bits_.size(); ++k) {
+            before_[k] = n;
+            n += popcount64(bits_[k]);
+        }
+    }
+    // The number of member i, or kNoPoint when i is not a member.
+    std::uint32_t find(std::size_t i) const {
+        const std::uint64_t w = bits_[i >> 6], below = (std::uint64_t(1) << (i & 63)) - 1;
+        return (w >> (i & 63)) & 1u ? before_[i >> 6] + popcount64(w & below) : kNoPoint;
+    }
+
+private:
+    std::vector<std::uint64_t> bits_;
+    std::vector<std::uint32_t> before_;
+};
+
+// The points with g >= tau_low (about a tenth of the grid) in row-major order with what steps 4
+// and 5 need, so those steps touch small arrays instead of grid planes.
+struct StrongPoints {
+    explicit StrongPoints(const Plane& pl, std::size_t cells) : set(cells) {
+        const std::ptrdiff_t s = pl.stride;
+        const std::ptrdiff_t o[8] = {1, s + 1, s, s - 1, -1, -s - 1, -s, -s + 1};  // E, SE, S, ... NE
+        std::copy(o, o + 8, off);
+    }
+    CellSet set;
+    std::ptrdiff_t off[8];
+    std::vector<std::ptrdiff_t> at;     // plane index
+    std::vector<float> mag;             // g
+    std::vector<std::uint8_t> flag;     // kCandidate, kSecondary, kMain
+    std::vector<std::uint32_t> seeds;   // candidates with g >= tau_high, in row-major order
+    std::vector<std::uint32_t> mains;   // every point marked kMain, in the order marked
+    std::size_t size() const { return at.size(); }
+    // The strong neighbour of point i in direction d, or kNoPoint.
+    std::uint32_t neighbour(std::uint32_t i, int d) const { return set.find(std::size_t(at[i] + off[d])); }
+};
+
+// Step 4: grow from the seeds through 8-connected candidates. Returns the number of main points.
+std::size_t hysteresis(StrongPoints* sp) {
+    std::vector<std::uint32_t> stack;
+    for (const std::uint32_t s : sp->seeds) {
+        if (sp->flag[s] & kMain) continue;
+        sp->flag[s] |= kMain;
+        stack.push_back(s);
+        while (!stack.empty()) {
+            const std::uint32_t i = stack.back();
+            stack.pop_back();
+            sp->mains.push_back(i);
+            for (int d = 0; d < 8; ++d) {
+                const std::uint32_t j = sp->neighbour(i, d);
+                if (j != kNoPoint && (sp->flag[j] & (kCandidate | kMain)) == kCandidate) {
+                    sp->flag[j] |= kMain;
+                    stack.push_back(j);
+                }
+            }
+        }
+    }
+    return sp->mains.size();
+}
+
+// Step 5, Ding-Goshtasby: join different main components through short secondary paths. A
+// multi-source breadth-first search from every main point over secondary-only points labels each
+// reached point with its nearest main component; where two labels meet, the two parent chains
+// back to their sources are the shortest secondary link between those components. Returns the
+// number of points added.
+std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
+    const std::size_t n = sp->size();
+    std::vector<std::uint8_t>& flag = sp->flag;
+    std::vector<std::uint32_t> label(n, 0);  // main component + 1, 0 = unreached
+    std::vector<std::uint8_t> dist(n, 0);
+    std::vector<std::uint32_t> from(n, kNoPoint);
+    std::vector<std::uint32_t> queue, stack;
+    std::uint32_t components = 0;
+    for (const std::uint32_t s : sp->mains) {
+        if (label[s]) continue;
+        ++components;
+        label[s] = components;
+        stack.push_back(s);
+        while (!stack.empty()) {
+            const std::uint32_t i = stack.back();
+            stack.pop_back();
+            queue.push_back(i);
+            for (int d = 0; d < 8; ++d) {
+                const std::uint32_t j = sp->neighbour(i, d);
+                if (j != kNoPoint && (flag[j] & kMain) && !label[j]) { label[j] = components; stack.push_back(j); }
+            }
+        }
+    }
+    struct Meeting { std::uint64_t key; std::uint32_t p, q; };
+    std::vector<Meeting> meetings;
+    const std::uint8_t limit = std::uint8_t(max_link);
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const std::uint32_t i = queue[head];
+        const std::uint32_t li = label[i];
+        const std::uint8_t di = dist[i];
+        for (int d = 0; d < 8; ++d) {
+            const std::uint32_t j = sp->neighbour(i, d);
+            if (j == kNoPoint) continue;
+            const std::uint32_t lj = label[j];
+            if (lj == 0) {
+                if (di < limit && (flag[j] & (kSecondary | kMain)) == kSecondary) {
+                    label[j] = li;
+                    dist[j] = std::uint8_t(di + 1);
+                    from[j] = i;
+                    queue.push_back(j);
+                }
+            } else if (lj != li && std::uint32_t(di) + dist[j] <= limit) {
+                if (li < lj) meetings.push_back({(std::uint64_t(li) << 32) | lj, i, j});
+                else meetings.push_back({(std::uint64_t(lj) << 32) | li, j, i});
+            }
+        }
+    }
+    // One link per pair of components: the first found, i.e. (nearly) the shortest.
+    std::size_t added = 0;
+    std::stable_sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& c) { return a.key < c.key; });
+    for (std::size_t k = 0; k < meetings.size(); ++k) {
+        if (k > 0 && meetings[k].key == meetings[k - 1].key) continue;
+        for (std::uint32_t i : {meetings[k].p, meetings[k].q})
+            for (; i != kNoPoint && !(flag[i] & kMain); i = from[i]) {
+                flag[i] |= kMain;
+                sp->mains.push_back(i);
+                ++added;
+            }
+    }
+
+    // Where an edge runs into a stronger one (the stem of a T), the last points before the
+    // junction lie on the flank of the stronger edge and are maxima in no direction, so no
+    // secondary path exists. From each end of a main curve, climb the magnitude (strictly
+    // increasing, >= tau_low, at most max_link points) and keep the climb if it arrives next
+    // to a different main component. Only strong points can be climbed to: the climb starts at
+    // g >= tau_low and only rises.
+    std::vector<std::uint32_t> path;
+    for (const std::uint32_t end : queue) {
+        if (dist[end] != 0 || !(flag[end] & kMain)) continue;
+        int neighbours = 0;
+        for (int d = 0; d < 8; ++d) {
+            const std::uint32_t j = sp->neighbour(end, d);
+            neighbours += j != kNoPoint && (flag[j] & kMain);
+        }
+        if (neighbours != 1) continue;
+        const std::uint32_t own = label[end];
+        path.clear();
+        std::uint32_t cur = end;
+        bool joined = false;
+        for (int step = 0; step <= max_link && !joined; ++step) {
+            std::uint32_t ring[8];
+            for (int d = 0; d < 8; ++d) {
+                const std::uint32_t j = ring[d] = sp->neighbour(cur, d);
+                if (j != kNoPoint && (flag[j] & kMain) && label[j] != own && label[j] != 0) joined = true;
+            }
+            if (joined || step == max_link) break;
+            std::uint32_t best = kNoPoint;
+            float bg = sp->mag[cur];
+            for (const std::uint32_t j : ring) {
+                if (j == kNoPoint || (flag[j] & kMain)) continue;
+                if (sp->mag[j] > bg && sp->mag[j] >= tl) { bg = sp->mag[j]; best = j; }
+            }
+            if (best == kNoPoint) break;
+            path.push_back(best);
+            cur = best;
+        }
+        if (!joined || path.empty()) continue;
+        for (const std::uint32_t i : path) {
+            flag[i] |= kMain;
+            label[i] = own;
+            sp->mains.push_back(i);
+            ++added;
+        }
+    }
+    return added;
+}
+
+// How many of p[0..8) are >= low: a count rather than a flag, so that -O2 vectorises it.
+inline int count_at_least8(const float* p, float low) {
+    int n = 0;
+    for (int j = 0; j < 8; ++j) n += p[j] >= low;
+    return n;
+}
+
+// Row Y of phi_bar on the half-pixel grid (step 1's f): even entries are samples, odd ones means.
+template <class Sample>
+void half_pixel_row(int width, int Y, Sample sample, float* r) {
+    const int y0 = Y >> 1, y1 = (Y & 1) ? y0 + 1 : y0;
+    float prev = 0.0f;
+    for (int x = 0; x < width; ++x) {
+        const float top = float(sample(x, y0)), bottom = float(sample(x, y1));
+        const float v = (Y & 1) ? 0.5f * (top + bottom) : top;
+        r[2 * x] = v;
+        if (x > 0) r[2 * x - 1] = 0.5f * (prev + v);
+        prev = v;
+    }
+}
+
+template <class Sample>
+Status detect(int width, int height, Sample sample, const CannyParams& params, Grid<std::uint8_t>* edges,
+              CannyStats* stats) {
+    if (width <= 0 || height <= 0) return Status::bad_input("edge detection: empty image");
+    if (!(params.beta > 0.0 && params.beta <= 1.0)) return Status::bad_input("edge detection: beta must lie in (0, 1]");
+    if (!(params.r >= 0.0 && params.r <= 1.0)) return Status::bad_input("edge detection: r must lie in [0, 1]");
+    if (params.smoothing_order < 1 || params.smoothing_order % 2 == 0 || params.smoothing_order > 51)
+        return Status::bad_input("edge detection: smoothing order must be odd, 1 to 51");
+    if (params.max_link < 0 || params.max_link > 250) return Status::bad_input("edge detection: max_link must lie in [0, 250]");
+
+    const Plane pl(2 * width - 1, 2 * height - 1);
+    const int W = pl.w, H = pl.h;
+    const std::size_t M = std::size_t(W) * std::size_t(H);
+    const double kd = std::nearbyint(params.beta * double(M));
+    const std::size_t k_high = kd < 1.0 ? 1 : (kd > double(M) ? M : std::size_t(kd));
+
+    // 1. The magnitude plane g (frame replicated for the 3x3 stencils), streamed row by row. The
+    // k-th largest magnitude so far, known to its bin, only grows: so r times that bin's floor is
+    // a lower bound of tau_low, and only points at or above it are kept for step 3 (in `kept`,
+    // their gradient components appended to comp in row-major order); values in bins below the
+    // bound's bin cannot decide the quantile, so only the others are counted. Both skip most of
+    // the grid, eight points at a time. g is uninitialised on purpose: every cell read is written.
+    std::unique_ptr<float[]> gstore(new float[pl.cells()]);
+    float* const g = gstore.get();
+    StrongPoints sp(pl, pl.cells());
+    CellSet& kept = sp.set;  // becomes the strong points in step 3
+    std::vector<std::size_t> hist(kFloatBins, 0);  // exact for the bins >= floor_bin
+    std::uint32_t floor_bin = 0;                    // bin of the k-th largest so far (0 until k values)
+    std::size_t at_or_above_floor = 0;
+    float low = 0.0f;
+    std::unique_ptr<float[]> comp;  // gx, gy of the kept points
+    std::size_t comp_capacity = 0, n_kept = 0;
+    auto row = [&](int Y) { return g + pl.at(0, Y); };
+    auto copy_frame_row = [&](int from, int to) { std::copy(row(from) - 1, row(from) + W + 1, row(to) - 1); };
+    gradient_rows(
+        W, H, binomial_taps(params.smoothing_order), params.border,
+        [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); }, row,
+        [&](int y, const float* ax, const float* ay) {
+            float* r = row(y);
+            r[-1] = r[0];
+            r[W] = r[W - 1];
+            if (y == 0) copy_frame_row(0, -1);
+            if (y == H - 1) copy_frame_row(H - 1, H);
+            if (comp_capacity < 2 * (n_kept + std::size_t(W))) {  // grows without zeroing
+                const std::size_t cap = std::max(2 * comp_capacity, 2 * (n_kept + std::size_t(W)));
+                std::unique_ptr<float[]> bigger(new float[cap]);
+                std::copy(comp.get(), comp.get() + 2 * n_kept, bigger.get());
+                comp = std::move(bigger);
+                comp_capacity = cap;
+            }
+            float* c = comp.get();
+            const std::size_t base = std::size_t(pl.at(0, y));
+            CellSet::Appender keep(&kept);
+            auto visit = [&](int X) {
+                const float v = r[X];
+                const std::uint32_t b = float_bin(v);
+                if (b >= floor_bin) {
+                    ++hist[b];
+                    ++at_or_above_floor;
+                }
+                if (v >= low && v > 0.0f) {
+                    c[2 * n_kept] = ax[X];
+                    c[2 * n_kept + 1] = ay[X];
+                    ++n_kept;
+                    keep.insert(base + std::size_t(X));
+                }
+            };
+            // low <= the floor of floor_bin, so a block with nothing >= low has nothing to count.
+            int X = 0;
+            for (; X + 8 <= W; X += 8)
+                if (count_at_least8(r + X, low))
+                    for (int j = X; j < X + 8; ++j) visit(j);
+            for (; X < W; ++X) visit(X);
+            while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
+            low = float(params.r * double(bin_floor(floor_bin)));
+        });
+
+    // 2. Thresholds: the bin of the k-th largest, then selection inside it. Every value in that
+    // bin was at or above the bound of its time (bin 0 aside), so the kept points hold them all.
+    std::size_t above = 0, above_high = 0;
+    const std::uint32_t bin = kth_bin(hist, k_high, &above);
+    std::vector<float> in_bin;
+    in_bin.reserve(hist[bin]);
+    if (bin > 0) {
+        kept.for_each([&](std::size_t i) {
+            if (float_bin(g[i]) == bin) in_bin.push_back(g[i]);
+        });
+    } else {
+        for (int Y = 0; Y < H; ++Y)
+            for (int X = 0; X < W; ++X)
+                if (float_bin(row(Y)[X]) == bin) in_bin.push_back(row(Y)[X]);
+    }
+    const double tau_high = select_in_bin(&in_bin, k_high, above, &above_high);
+    const double tau_low = params.r * tau_high;
+    std::vector<float>().swap(in_bin);
+    const float th = float(tau_high), tl = float(tau_low);
+
+    // 3. Non-maxima suppression at the kept points with g >= tau_low, the strong points.
+    std::size_t next = 0;
+    kept.for_each([&](std::size_t i) {
+        const float* c = comp.get() + 2 * next++;
+        const float m = g[i];
+        if (m < tl) { kept.erase(i); return; }
+        const std::uint8_t fl = suppress(g + i, c[0], c[1], pl.stride, params.modified);
+        if ((fl & kCandidate) && m >= th) sp.seeds.push_back(std::uint32_t(sp.size()));
+        sp.at.push_back(std::ptrdiff_t(i));
+        sp.mag.push_back(m);
+        sp.flag.push_back(fl);
+    });
+    comp.reset();
+    gstore.reset();
+    sp.set.number();
+
+    // 4, 5.
+    const std::size_t main_points = hysteresis(&sp);
+    const std::size_t added = params.modified && params.max_link > 0 ? join_components(&sp, params.max_link, tl) : 0;
+
+    // 6. The main points, in row-major order, in a zero-framed plane for thinning.
+    std::vector<std::ptrdiff_t> live;
+    live.reserve(sp.mains.size());
+    for (std::size_t k = 0; k < sp.size(); ++k)
+        if (sp.flag[k] & kMain) live.push_back(sp.at[k]);
+    sp = StrongPoints(pl, 0);
+    std::vector<std::uint8_t> plane(pl.cells(), 0);
+    for (const std::ptrdiff_t i : live) plane[std::size_t(i)] = 1;
+    if (params.thin) thin_plane(plane.data(), pl.stride, &live);
+    std::vector<std::uint8_t>().swap(plane);
+    *edges = Grid<std::uint8_t>(W, H, 0);
+    for (const std::ptrdiff_t i : live) (*edges)(int(i % pl.stride) - 1, int(i / pl.stride) - 1) = 1;
+    if (stats) {
+        stats->tau_high = tau_high;
+        stats->tau_low = tau_low;
+        stats->above_high = above_high;
+        stats->main_points = main_points;
+        stats->added_points = added;
+        stats->edge_points = live.size();
+    }
+    return Status::success();
+}
 
 }  // namespace
 
 void canny_gradient(const Grid<double>& f, int smoothing_order, Border border, Grid<float>* gx, Grid<float>* gy) {
     std::vector<double> b = binomial_taps(smoothing_order);
     if (b.empty()) b = {1.0};
-    Padded p;
-    p.reset(f.width, f.height, int(b.size() / 2) + 1);
     if (f.width <= 0 || f.height <= 0) { *gx = Grid<float>(); *gy = Grid<float>(); return; }
-    for (int y = 0; y < f.height; ++y) {
-        float* r = p.row(y);
-        for (int x = 0; x < f.width; ++x) r[x] = float(f(x, y));
-    }
-    extend_frame(&p, border);
-    Padded mag;
-    mag.reset(f.width, f.height, 1);
-    gradient_padded(p, b, gx, gy, &mag);
+    *gx = Grid<float>(f.width, f.height);
+    *gy = Grid<float>(f.width, f.height);
+    std::vector<float> mag(std::size_t(f.width));
+    gradient_rows(
+        f.width, f.height, b, border,
+        [&](int y, float* r) {
+            for (int x = 0; x < f.width; ++x) r[x] = float(f(x, y));
+        },
+        [&](int) { return mag.data(); },
+        [&](int y, const float* ax, const float* ay) {
+            std::copy(ax, ax + f.width, &(*gx)(0, y));
+            std::copy(ay, ay + f.width, &(*gy)(0, y));
+        });
 }
 
 double beta_quantile(const float* values, std::size_t n, double beta) {
@@ -157,255 +612,20 @@ double beta_quantile(const float* values, std::size_t n, double beta) {
     const std::size_t k = kd < 1.0 ? 1 : (kd > double(n) ? n : std::size_t(kd));
     std::vector<std::size_t> hist(kFloatBins, 0);
     for (std::size_t i = 0; i < n; ++i) ++hist[float_bin(values[i])];
-    std::size_t count = 0;
-    return double(kth_largest(hist, k, [&](auto&& f) { for (std::size_t i = 0; i < n; ++i) f(values[i]); }, &count));
+    std::size_t above = 0, count = 0;
+    const std::uint32_t bin = kth_bin(hist, k, &above);
+    std::vector<float> in_bin;
+    for (std::size_t i = 0; i < n; ++i)
+        if (float_bin(values[i]) == bin) in_bin.push_back(values[i]);
+    return double(select_in_bin(&in_bin, k, above, &count));
 }
 
 Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
-    return detect_edges(to_grid(im), params, edges, stats);
+    return detect(im.width, im.height, [&](int x, int y) { return im.at(x, y); }, params, edges, stats);
 }
 
 Status detect_edges(const Grid<double>& im, const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
-    if (im.width <= 0 || im.height <= 0) return Status::bad_input("edge detection: empty image");
-    if (!(params.beta > 0.0 && params.beta <= 1.0)) return Status::bad_input("edge detection: beta must lie in (0, 1]");
-    if (!(params.r >= 0.0 && params.r <= 1.0)) return Status::bad_input("edge detection: r must lie in [0, 1]");
-    if (params.smoothing_order < 1 || params.smoothing_order % 2 == 0 || params.smoothing_order > 51)
-        return Status::bad_input("edge detection: smoothing order must be odd, 1 to 51");
-    if (params.max_link < 0 || params.max_link > 250) return Status::bad_input("edge detection: max_link must lie in [0, 250]");
-
-    const std::vector<double> b = binomial_taps(params.smoothing_order);
-    const int W = 2 * im.width - 1, H = 2 * im.height - 1;
-
-    // 1. phi_bar on the half-pixel grid, extended, and its gradient.
-    Padded f;
-    f.reset(W, H, int(b.size() / 2) + 1);
-    for (int Y = 0; Y < H; ++Y) {
-        float* r = f.row(Y);
-        const int y0 = Y >> 1, y1 = (Y & 1) ? y0 + 1 : y0;
-        for (int x = 0; x < im.width; ++x) {
-            const float top = float(im(x, y0)), bottom = float(im(x, y1));
-            r[2 * x] = (Y & 1) ? 0.5f * (top + bottom) : top;
-        }
-        for (int X = 1; X < W; X += 2) r[X] = 0.5f * (r[X - 1] + r[X + 1]);
-    }
-    extend_frame(&f, params.border);
-    Grid<float> gx, gy;
-    Padded g;  // magnitude, with a one-point replicated frame for the 3x3 stencils below
-    g.reset(W, H, 1);
-    gradient_padded(f, b, &gx, &gy, &g);
-    f = Padded();
-
-    // 2. Thresholds.
-    std::vector<std::size_t> hist(kFloatBins, 0);
-    for (int Y = 0; Y < H; ++Y) {
-        const float* r = g.row(Y);
-        for (int X = 0; X < W; ++X) ++hist[float_bin(r[X])];
-    }
-    const std::size_t M = std::size_t(W) * std::size_t(H);
-    const double kd = std::nearbyint(params.beta * double(M));
-    const std::size_t k_high = kd < 1.0 ? 1 : (kd > double(M) ? M : std::size_t(kd));
-    std::size_t above_high = 0;
-    const double tau_high = kth_largest(
-        hist, k_high,
-        [&](auto&& fn) {
-            for (int Y = 0; Y < H; ++Y) {
-                const float* r = g.row(Y);
-                for (int X = 0; X < W; ++X) fn(r[X]);
-            }
-        },
-        &above_high);
-    const double tau_low = params.r * tau_high;
-    extend_frame(&g, Border::replicate);
-
-    // 3. Non-maxima suppression (and the secondary maxima of step 5), over points >= tau_low only.
-    // A point with g == 0 is never an edge (flat images give no edges whatever beta is).
-    const float th = float(tau_high), tl = float(tau_low);
-    const int stride = g.stride;
-    std::vector<std::uint8_t> flag(g.v.size(), kNone);  // same frame as g, frame stays kNone
-    auto at = [&](int X, int Y) { return std::ptrdiff_t(Y + 1) * stride + X + 1; };
-    std::vector<std::ptrdiff_t> seeds;
-    for (int Y = 0; Y < H; ++Y) {
-        const float* ax = &gx(0, Y);
-        const float* ay = &gy(0, Y);
-        for (int X = 0; X < W; ++X) {
-            const std::ptrdiff_t i = at(X, Y);
-            const float m = g.v[std::size_t(i)];
-            if (m < tl || m <= 0.0f) continue;
-            const float* p = g.v.data() + i;
-            const float ux = ax[X], uy = ay[X];
-            const float aux = std::fabs(ux), auy = std::fabs(uy);
-            std::ptrdiff_t major, minor;
-            float w;
-            if (aux >= auy) {
-                major = ux > 0 ? 1 : -1;
-                minor = (uy > 0 ? 1 : -1) * std::ptrdiff_t(stride);
-                w = auy / aux;
-            } else {
-                major = (uy > 0 ? 1 : -1) * std::ptrdiff_t(stride);
-                minor = ux > 0 ? 1 : -1;
-                w = aux / auy;
-            }
-            const float ahead = (1.0f - w) * p[major] + w * p[major + minor];
-            const float behind = (1.0f - w) * p[-major] + w * p[-major - minor];
-            std::uint8_t fl = kNone;
-            if (m > ahead && m >= behind) {
-                fl = kCandidate;
-                if (m >= th) seeds.push_back(i);
-            }
-            if (params.modified) {
-                if ((m > p[-1] && m > p[1]) || (m > p[-stride] && m > p[stride]) ||
-                    (m > p[-stride - 1] && m > p[stride + 1]) || (m > p[-stride + 1] && m > p[stride - 1]))
-                    fl = std::uint8_t(fl | kSecondary);
-            }
-            flag[std::size_t(i)] = fl;
-        }
-    }
-    gx = Grid<float>();
-    gy = Grid<float>();
-
-    // 4. Hysteresis: grow from the seeds through 8-connected candidates.
-    std::ptrdiff_t off[8];
-    neighbour_offsets(stride, off);
-    std::vector<std::ptrdiff_t> stack;
-    std::vector<std::ptrdiff_t> mains;  // every point marked kMain, in the order marked
-    for (std::ptrdiff_t s : seeds) {
-        if (flag[std::size_t(s)] & kMain) continue;
-        flag[std::size_t(s)] |= kMain;
-        stack.push_back(s);
-        while (!stack.empty()) {
-            const std::ptrdiff_t i = stack.back();
-            stack.pop_back();
-            mains.push_back(i);
-            for (std::ptrdiff_t o : off) {
-                const std::size_t j = std::size_t(i + o);
-                if ((flag[j] & (kCandidate | kMain)) == kCandidate) { flag[j] |= kMain; stack.push_back(i + o); }
-            }
-        }
-    }
-    const std::size_t main_points = mains.size();
-
-    // 5. Ding-Goshtasby: join different main components through short secondary paths. A
-    // multi-source breadth-first search from every main point over secondary-only points labels
-    // each reached point with its nearest main component; where two labels meet, the two parent
-    // chains back to their sources are the shortest secondary link between those components.
-    std::size_t added = 0;
-    if (params.modified && params.max_link > 0) {
-        std::vector<std::uint32_t> label(flag.size(), 0);  // main component + 1, 0 = unreached
-        std::vector<std::uint8_t> dist(flag.size(), 0);
-        std::vector<std::ptrdiff_t> queue;
-        std::vector<std::int32_t> from(flag.size(), -1);
-        std::uint32_t components = 0;
-        for (const std::ptrdiff_t s : mains) {
-            if (label[std::size_t(s)]) continue;
-            ++components;
-            label[std::size_t(s)] = components;
-            stack.push_back(s);
-            while (!stack.empty()) {
-                const std::ptrdiff_t i = stack.back();
-                stack.pop_back();
-                queue.push_back(i);
-                for (std::ptrdiff_t o : off) {
-                    const std::size_t j = std::size_t(i + o);
-                    if ((flag[j] & kMain) && !label[j]) { label[j] = components; stack.push_back(i + o); }
-                }
-            }
-        }
-        struct Meeting { std::uint64_t key; std::ptrdiff_t p, q; };
-        std::vector<Meeting> meetings;
-        const std::uint8_t limit = std::uint8_t(params.max_link);
-        for (std::size_t head = 0; head < queue.size(); ++head) {
-            const std::ptrdiff_t i = queue[head];
-            const std::uint32_t li = label[std::size_t(i)];
-            const std::uint8_t di = dist[std::size_t(i)];
-            for (std::ptrdiff_t o : off) {
-                const std::size_t j = std::size_t(i + o);
-                const std::uint32_t lj = label[j];
-                if (lj == 0) {
-                    if (di < limit && (flag[j] & (kSecondary | kMain)) == kSecondary) {
-                        label[j] = li;
-                        dist[j] = std::uint8_t(di + 1);
-                        from[j] = std::int32_t(i);
-                        queue.push_back(i + o);
-                    }
-                } else if (lj != li && li < lj && std::uint32_t(di) + dist[j] <= limit) {
-                    meetings.push_back({(std::uint64_t(li) << 32) | lj, i, i + o});
-                } else if (lj != li && li > lj && std::uint32_t(di) + dist[j] <= limit) {
-                    meetings.push_back({(std::uint64_t(lj) << 32) | li, i + o, i});
-                }
-            }
-        }
-        // One link per pair of components: the first found, i.e. (nearly) the shortest.
-        std::stable_sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& c) { return a.key < c.key; });
-        for (std::size_t k = 0; k < meetings.size(); ++k) {
-            if (k > 0 && meetings[k].key == meetings[k - 1].key) continue;
-            for (std::ptrdiff_t i : {meetings[k].p, meetings[k].q})
-                for (; i >= 0 && !(flag[std::size_t(i)] & kMain); i = from[std::size_t(i)]) {
-                    flag[std::size_t(i)] |= kMain;
-                    mains.push_back(i);
-                    ++added;
-                }
-        }
-
-        // Where an edge runs into a stronger one (the stem of a T), the last points before the
-        // junction lie on the flank of the stronger edge and are maxima in no direction, so no
-        // secondary path exists. From each end of a main curve, climb the magnitude (strictly
-        // increasing, >= tau_low, at most max_link points) and keep the climb if it arrives next
-        // to a different main component.
-        std::vector<std::ptrdiff_t> path;
-        for (std::size_t qi = 0; qi < queue.size(); ++qi) {
-            const std::ptrdiff_t end = queue[qi];
-            if (dist[std::size_t(end)] != 0 || !(flag[std::size_t(end)] & kMain)) continue;
-            int n = 0;
-            for (std::ptrdiff_t o : off) n += (flag[std::size_t(end + o)] & kMain) != 0;
-            if (n != 1) continue;
-            const std::uint32_t own = label[std::size_t(end)];
-            path.clear();
-            std::ptrdiff_t cur = end;
-            bool joined = false;
-            for (int step = 0; step <= params.max_link && !joined; ++step) {
-                for (std::ptrdiff_t o : off) {
-                    const std::size_t j = std::size_t(cur + o);
-                    if ((flag[j] & kMain) && label[j] != own && label[j] != 0) joined = true;
-                }
-                if (joined || step == params.max_link) break;
-                std::ptrdiff_t best = -1;
-                float bg = g.v[std::size_t(cur)];
-                for (std::ptrdiff_t o : off) {
-                    const std::size_t j = std::size_t(cur + o);
-                    // Stay inside the image: the frame of g replicates the border values and
-                    // may be larger than the point it is next to.
-                    const std::size_t jx = j % std::size_t(stride), jy = j / std::size_t(stride);
-                    if (jx < 1 || jx > std::size_t(W) || jy < 1 || jy > std::size_t(H)) continue;
-                    if (flag[j] & kMain) continue;
-                    if (g.v[j] > bg && g.v[j] >= tl) { bg = g.v[j]; best = cur + o; }
-                }
-                if (best < 0) break;
-                path.push_back(best);
-                cur = best;
-            }
-            if (!joined || path.empty()) continue;
-            for (std::ptrdiff_t i : path) {
-                flag[std::size_t(i)] |= kMain;
-                label[std::size_t(i)] = own;
-                mains.push_back(i);
-                ++added;
-            }
-        }
-    }
-
-    // 6. Output and thinning.
-    *edges = Grid<std::uint8_t>(W, H, 0);
-    for (const std::ptrdiff_t i : mains) (*edges)(int(i % stride) - 1, int(i / stride) - 1) = 1;
-    const std::size_t edge_points = params.thin ? thin_edges(edges) : mains.size();
-    if (stats) {
-        stats->tau_high = tau_high;
-        stats->tau_low = tau_low;
-        stats->above_high = above_high;
-        stats->main_points = main_points;
-        stats->added_points = added;
-        stats->edge_points = edge_points;
-    }
-    return Status::success();
+    return detect(im.width, im.height, [&](int x, int y) { return im(x, y); }, params, edges, stats);
 }
 
 }  // namespace erd

@@ -44,23 +44,8 @@ inline int connectivity8(unsigned r) {
 
 }  // namespace
 
-std::size_t thin_edges(Grid<std::uint8_t>* map) {
-    const int w = map->width, h = map->height;
-    if (w <= 0 || h <= 0) return 0;
-    // Work on a copy with a zero frame so the ring never leaves the buffer.
-    const int s = w + 2;
-    std::vector<std::uint8_t> b(std::size_t(s) * std::size_t(h + 2), 0);
-    std::vector<std::ptrdiff_t> live;
-    for_each_set(map->data.data(), map->data.size(), [&](std::size_t k) {
-        const std::ptrdiff_t i = std::ptrdiff_t(k / std::size_t(w) + 1) * s + std::ptrdiff_t(k % std::size_t(w)) + 1;
-        b[std::size_t(i)] = 1;
-        map->data[k] = 1;
-        live.push_back(i);
-    });
-    auto clear_in_map = [&](std::ptrdiff_t i) {
-        map->data[std::size_t(i / s - 1) * std::size_t(w) + std::size_t(i % s - 1)] = 0;
-    };
-
+void thin_plane(std::uint8_t* b, std::ptrdiff_t s, std::vector<std::ptrdiff_t>* live_points) {
+    std::vector<std::ptrdiff_t>& live = *live_points;
     // Decisions depend on the 8-neighbour ring alone: tabulate them once (bit 0: Zhang-Suen
     // deletes in sub-iteration 1, bit 1: in sub-iteration 2, bit 2: a removable staircase corner).
     std::uint8_t table[256];
@@ -83,16 +68,13 @@ std::size_t thin_edges(Grid<std::uint8_t>* map) {
             doomed.clear();
             const std::uint8_t bit = std::uint8_t(1u << step);
             for (std::ptrdiff_t i : live)
-                if (table[ring(&b[std::size_t(i)], s)] & bit) doomed.push_back(i);
-            for (std::ptrdiff_t i : doomed) {
-                b[std::size_t(i)] = 0;
-                clear_in_map(i);
-            }
+                if (table[ring(b + i, s)] & bit) doomed.push_back(i);
+            for (std::ptrdiff_t i : doomed) b[i] = 0;
             if (!doomed.empty()) {
                 changed = true;
                 std::size_t k = 0;
                 for (std::ptrdiff_t i : live)
-                    if (b[std::size_t(i)]) live[k++] = i;
+                    if (b[i]) live[k++] = i;
                 live.resize(k);
             }
         }
@@ -101,16 +83,32 @@ std::size_t thin_edges(Grid<std::uint8_t>* map) {
     // Staircase corners: a point whose set 4-neighbours are exactly two at a right angle (N+E, E+S,
     // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time, so the
     // decision for a point sees earlier deletions and a corner pair never loses both points.
-    std::size_t left = 0;
+    std::size_t k = 0;
     for (std::ptrdiff_t i : live) {
-        if (table[ring(&b[std::size_t(i)], s)] & 4) {
-            b[std::size_t(i)] = 0;
-            clear_in_map(i);
-        } else {
-            ++left;
-        }
+        if (table[ring(b + i, s)] & 4)
+            b[i] = 0;
+        else
+            live[k++] = i;
     }
-    return left;
+    live.resize(k);
+}
+
+std::size_t thin_edges(Grid<std::uint8_t>* map) {
+    const int w = map->width, h = map->height;
+    if (w <= 0 || h <= 0) return 0;
+    // Work on a copy with a zero frame so the ring never leaves the buffer.
+    const int s = w + 2;
+    std::vector<std::uint8_t> b(std::size_t(s) * std::size_t(h + 2), 0);
+    std::vector<std::ptrdiff_t> live;
+    for_each_set(map->data.data(), map->data.size(), [&](std::size_t k) {
+        const std::ptrdiff_t i = std::ptrdiff_t(k / std::size_t(w) + 1) * s + std::ptrdiff_t(k % std::size_t(w)) + 1;
+        b[std::size_t(i)] = 1;
+        map->data[k] = 0;
+        live.push_back(i);
+    });
+    thin_plane(b.data(), s, &live);
+    for (std::ptrdiff_t i : live) map->data[std::size_t(i / s - 1) * std::size_t(w) + std::size_t(i % s - 1)] = 1;
+    return live.size();
 }
 
 }  // namespace erd

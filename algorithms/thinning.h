@@ -2,6 +2,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "algorithms/image.h"
 
@@ -14,5 +15,12 @@ namespace erd {
 // holds 0/1. Returns the number of set points left. Works on a list of the set points (found by
 // skipping zero bytes eight at a time), so the cost follows the edge count more than the area.
 std::size_t thin_edges(Grid<std::uint8_t>* map);
+
+// The same thinning in place on a byte plane whose set points (nonzero) all have a zero frame of
+// one point around them (rows `stride` bytes apart). live lists every set point in increasing
+// index order (row-major, which the corner sweep depends on) and is left holding the survivors,
+// still in order; deleted points are zeroed in the plane. Lets edge detection thin in a plane it
+// already has instead of a copy.
+void thin_plane(std::uint8_t* plane, std::ptrdiff_t stride, std::vector<std::ptrdiff_t>* live);
 
 }  // namespace erd
