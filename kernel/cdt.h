@@ -214,6 +214,8 @@ private:
     FaceInd new_faces(FaceInd n);  // appends n slots, returns the first
     void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
+    template <bool Branchless>
+    Location walk_as(LatticePoint p, FaceInd start) const;  // walk's two step styles (cdt.cpp)
     Location locate_brute(LatticePoint p) const;
     VertInd add_vertex(LatticePoint p);
     Status insert_one(LatticePoint p, VertInd* v, FaceInd hint);
