@@ -233,9 +233,18 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out) {
     }
 }
 
+// A face's plane along the sub-sample rows: dv per sub-sample; a partial pixel of n = 1..3
+// sub-samples starting at value v adds n*v + tri[n] and moves v on by step[n] (the products
+// dv * n(n-1)/2 and dv * n, taken once per face: the same doubles).
+struct RowPlane {
+    double dv, four, six;  // 4 dv and 6 dv: a whole pixel adds 4v + 6dv and moves v on by 4dv
+    double tri[4], step[4];
+    explicit RowPlane(double d) : dv(d), four(4.0 * d), six(6.0 * d), tri{0.0, d * 0.0, d * 1.0, d * 3.0}, step{0.0, d * 1.0, d * 2.0, d * 3.0} {}
+};
+
 // One span of sub-samples on Lattice::supersample() being added to its pixel row's sums: sub-sample
 // i (column index; pixel i / 4) has value v. A span covers a partial pixel at each end and whole
-// pixels between, whose four sub-samples add up to 4v + 6dv.
+// pixels between.
 struct SubRow {
     double* row;
     double v;
@@ -243,22 +252,22 @@ struct SubRow {
 
     std::int32_t first_whole() const { return (i + 3) >> 2; }  // first pixel covered whole (before head())
     std::int32_t end_whole() const { return (end + 1) >> 2; }  // one past the last one
-    void partial(std::int32_t e, double dv) {
-        const double n = double(e - i + 1);
-        row[i >> 2] += n * v + dv * (n * (n - 1.0) * 0.5);
-        v += dv * n;
+    void partial(std::int32_t e, const RowPlane& rp) {
+        const std::int32_t n = e - i + 1;  // 1..3
+        row[i >> 2] += double(n) * v + rp.tri[n];
+        v += rp.step[n];
         i = e + 1;
     }
-    void head(double dv) {
-        if ((i & 3) != 0) partial(std::min(end, i | 3), dv);
+    void head(const RowPlane& rp) {
+        if ((i & 3) != 0) partial(std::min(end, i | 3), rp);
     }
     // Whole pixels up to `stop` (exclusive); i is then a pixel's first sub-sample.
-    void wholes(std::int32_t stop, double four, double six) {
-        for (std::int32_t x = i >> 2; x < stop; ++x, v += four) row[x] += 4.0 * v + six;
+    void wholes(std::int32_t stop, const RowPlane& rp) {
+        for (std::int32_t x = i >> 2; x < stop; ++x, v += rp.four) row[x] += 4.0 * v + rp.six;
         i = std::max(i, stop << 2);
     }
-    void tail(double dv) {
-        if (i <= end) partial(end, dv);
+    void tail(const RowPlane& rp) {
+        if (i <= end) partial(end, rp);
     }
 };
 
@@ -270,45 +279,43 @@ void add_spans(const SpanPlane& pl, const std::vector<Span>& spans, double* acc,
     const Lattice l = Lattice::supersample();
     // The plane in fine units (scale 4 is a power of two: no rounding is added).
     const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
-    const double dv = gx * l.step_x, six = 6.0 * dv, four = 4.0 * dv;
+    const RowPlane rp(gx * l.step_x);
     const auto start = [&](const Span& s) {
         double* row = acc + (std::size_t(s.y >> 2) - row0) * W;
         const double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
         return SubRow{row, v, s.x_begin, s.x_end};
     };
-    for (std::size_t k = 0; k < spans.size();) {
-        // Spans k.. of one pixel row (one span per sub-row, in order).
-        std::size_t n = 1;
-        while (k + n < spans.size() && (spans[k + n].y >> 2) == (spans[k].y >> 2)) ++n;
-        if (n == 4) {
+    const std::size_t n = spans.size();
+    for (std::size_t k = 0; k < n;) {
+        // One span per row, rows in order: spans k..k+3 are the four sub-rows of one pixel row
+        // when the first is sub-row 0 and the fourth three rows further.
+        if (k + 3 < n && (spans[k].y & 3) == 0 && spans[k + 3].y == spans[k].y + 3) {
             SubRow r[4] = {start(spans[k]), start(spans[k + 1]), start(spans[k + 2]), start(spans[k + 3])};
             const std::int32_t p0 = std::max({r[0].first_whole(), r[1].first_whole(), r[2].first_whole(), r[3].first_whole()});
             const std::int32_t p1 = std::min({r[0].end_whole(), r[1].end_whole(), r[2].end_whole(), r[3].end_whole()});
             if (p0 < p1) {
                 for (SubRow& s : r) {
-                    s.head(dv);
-                    s.wholes(p0, four, six);
+                    s.head(rp);
+                    s.wholes(p0, rp);
                 }
                 double* row = r[0].row;
                 double v0 = r[0].v, v1 = r[1].v, v2 = r[2].v, v3 = r[3].v;
-                for (std::int32_t x = p0; x < p1; ++x, v0 += four, v1 += four, v2 += four, v3 += four)
-                    row[x] = row[x] + (4.0 * v0 + six) + (4.0 * v1 + six) + (4.0 * v2 + six) + (4.0 * v3 + six);
+                for (std::int32_t x = p0; x < p1; ++x, v0 += rp.four, v1 += rp.four, v2 += rp.four, v3 += rp.four)
+                    row[x] = row[x] + (4.0 * v0 + rp.six) + (4.0 * v1 + rp.six) + (4.0 * v2 + rp.six) + (4.0 * v3 + rp.six);
                 r[0].v = v0, r[1].v = v1, r[2].v = v2, r[3].v = v3;
                 for (SubRow& s : r) {
                     s.i = p1 << 2;
-                    s.wholes(s.end_whole(), four, six);
-                    s.tail(dv);
+                    s.wholes(s.end_whole(), rp);
+                    s.tail(rp);
                 }
                 k += 4;
                 continue;
             }
         }
-        for (std::size_t e = k + n; k < e; ++k) {
-            SubRow s = start(spans[k]);
-            s.head(dv);
-            s.wholes(s.end_whole(), four, six);
-            s.tail(dv);
-        }
+        SubRow s = start(spans[k++]);
+        s.head(rp);
+        s.wholes(s.end_whole(), rp);
+        s.tail(rp);
     }
 }
 
