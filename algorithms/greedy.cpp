@@ -73,15 +73,18 @@ inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* 
             moved = true;
         }
     };
-    // Four pixels per trip (v steps exactly as one at a time: the same additions in order).
+    // Four pixels per trip; v is updated in place (no copies of it are live, which saves a
+    // register copy per pixel with two-operand SSE).
     std::int32_t x = x0;
     for (; x + 3 <= x1; x += 4) {
-        const double v1 = v + dv, v2 = v1 + dv, v3 = v2 + dv;
         visit(x, v);
-        visit(x + 1, v1);
-        visit(x + 2, v2);
-        visit(x + 3, v3);
-        v = v3 + dv;
+        v += dv;
+        visit(x + 1, v);
+        v += dv;
+        visit(x + 2, v);
+        v += dv;
+        visit(x + 3, v);
+        v += dv;
     }
     for (; x <= x1; ++x, v += dv) visit(x, v);
     *sum += std::int64_t(acc);
@@ -248,10 +251,12 @@ private:
         FaceState& fs = faces_[f];
         total_ -= fs.sum;
         const SpanPlane plane = model_.face_plane(cdt_, f);
-        const Lattice lat = Lattice::pixels();
-        scan_triangle(lat, domain_, cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
-                      cdt_.point(cdt_.face_vertex(f, 2)), &spans_);
-        const double dv = plane.step_x(lat);
+        scan_triangle(Lattice::pixels(), domain_, cdt_.point(cdt_.face_vertex(f, 0)),
+                      cdt_.point(cdt_.face_vertex(f, 1)), cdt_.point(cdt_.face_vertex(f, 2)), &spans_);
+        // Pixel (i, j) is doubled point (2i, 2j): the same values as plane.at(Lattice::pixels(), i, j)
+        // and step_x (which divide by the lattice's scale 1) without two divisions per span.
+        auto start = [&plane](const Span& s) { return plane.at(double(2 * s.x_begin), double(2 * s.y)); };
+        const double dv = 2.0 * plane.gx;
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
         if (options_.round_values) {
@@ -274,7 +279,7 @@ private:
             for (const Span& s : spans_) {
                 const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
                 if (scan_rounded(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
-                                 plane.at(lat, s.x_begin, s.y), dv, maxval, range, &isum, &ibest_sq, &bx))
+                                 start(s), dv, maxval, range, &isum, &ibest_sq, &bx))
                     by = s.y;
             }
             sum = double(isum);
@@ -283,7 +288,7 @@ private:
             for (const Span& s : spans_) {
                 const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
                 if (scan_real(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
-                              plane.at(lat, s.x_begin, s.y), dv, &sum, &best, &bx))
+                              start(s), dv, &sum, &best, &bx))
                     by = s.y;
             }
         }

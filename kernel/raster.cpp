@@ -79,18 +79,28 @@ bool owns_point(const Setup& s, std::int64_t x, std::int64_t y) {
     return true;
 }
 
-// One sloped edge's bound on the column index along the rows: ceil(N(j) / D) with N linear in j,
-// kept as quotient and remainder and stepped per row instead of dividing. Branch-free: the
-// carry is as likely as not, so a branch on it would be mispredicted half the time.
+// A sloped edge's bound on the column index of lattice row j is ceil(n0 / den), and n0 grows by
+// dn per row. The edge bounds the row from the left (A > 0: i >= ceil(..), ties owned since
+// sx*A > 0) or from the right (A < 0: i <= ceil(..) - 1, ties not owned). With E(x) = K + A*x,
+// x = phase_x + step_x*i, K = B*(y - ay) - A*ax.
+struct EdgeLine {
+    std::int64_t n0, den, dn;
+};
+
+EdgeLine edge_line(const Lattice& l, const EdgeFn& e, std::int64_t j) {
+    const std::int64_t K0 = e.B * (l.fine_y(j) - e.ay) - e.A * e.ax, dK = e.B * l.step_y;
+    if (e.A > 0) return {-K0 - e.A * l.phase_x, e.A * l.step_x, -dK};
+    return {K0 + e.A * l.phase_x, -e.A * l.step_x, dK};
+}
+
+// The bound kept as quotient and remainder and stepped per row instead of dividing.
+// Branch-free: the carry is as likely as not, so a branch on it would be mispredicted half the
+// time.
 struct Stepper {
-    std::int64_t q = 0, r = 0, D = 1, dq = 0, dr = 0;  // N = q*D + r, 0 <= r < D
-    void init(std::int64_t n0, std::int64_t den, std::int64_t dn) {
-        D = den;
-        q = floor_div(n0, D);
-        r = n0 - q * D;
-        dq = floor_div(dn, D);
-        dr = dn - dq * D;
-    }
+    std::int64_t q, r, D, dq, dr;  // n = q*D + r, 0 <= r < D
+    explicit Stepper(const EdgeLine& e)
+        : q(floor_div(e.n0, e.den)), r(e.n0 - q * e.den), D(e.den), dq(floor_div(e.dn, e.den)),
+          dr(e.dn - dq * e.den) {}
     std::int64_t ceil() const { return q + (r != 0); }
     void step() {
         r += dr;
@@ -99,17 +109,6 @@ struct Stepper {
         r -= D & -carry;
     }
 };
-
-// The bound edge e puts on the rows from lattice row j on. A sloped edge bounds the row from the
-// left (A > 0: i >= ceil(..), ties owned since sx*A > 0) or from the right (A < 0: i <= ceil(..) - 1,
-// ties not owned). With E(x) = K + A*x, x = phase_x + step_x*i, K = B*(y - ay) - A*ax.
-Stepper edge_bound(const Lattice& l, const EdgeFn& e, std::int64_t j) {
-    const std::int64_t K0 = e.B * (l.fine_y(j) - e.ay) - e.A * e.ax, dK = e.B * l.step_y;
-    Stepper st;
-    if (e.A > 0) st.init(-K0 - e.A * l.phase_x, e.A * l.step_x, -dK);
-    else st.init(K0 + e.A * l.phase_x, -e.A * l.step_x, dK);
-    return st;
-}
 
 // The row context shared by the row loops of scan_triangle.
 struct Rows {
@@ -140,12 +139,25 @@ struct Rows {
     // edge cannot matter (see scan_triangle).
     void between(std::int64_t ja, std::int64_t jb, const EdgeFn& left, const EdgeFn& right) {
         if (ja > jb) return;
-        Stepper a = edge_bound(l, left, ja), b = edge_bound(l, right, ja);
+        Stepper a(edge_line(l, left, ja)), b(edge_line(l, right, ja));
+        if (border_col) {
+            for (std::int64_t j = ja; j <= jb; ++j, a.step(), b.step()) emit(j, a.ceil(), b.ceil() - 1);
+            return;
+        }
+        // Without the border column (nearly every face) the loop is kept tight: no border test,
+        // the count summed in a local (scan_triangle reserved a span per row, so push_back never
+        // reallocates).
+        std::int64_t n = 0;
+        const std::int64_t clip_lo = i_lo, clip_hi = i_hi;
         for (std::int64_t j = ja; j <= jb; ++j) {
-            emit(j, a.ceil(), b.ceil() - 1);
+            const std::int64_t lo = std::max(a.ceil(), clip_lo), hi = std::min(b.ceil() - 1, clip_hi);
             a.step();
             b.step();
+            if (lo > hi) continue;
+            out->push_back(Span{std::int32_t(j), std::int32_t(lo), std::int32_t(hi)});
+            n += hi - lo + 1;
         }
+        count += n;
     }
 
     // Row j with all three edges tested (the middle vertex's row): a horizontal edge lies on such
@@ -154,9 +166,14 @@ struct Rows {
         std::int64_t lo = i_lo, hi = i_hi;
         const std::int64_t y = l.fine_y(j);
         for (const EdgeFn& e : s.e) {
-            if (e.A > 0) lo = std::max(lo, edge_bound(l, e, j).ceil());
-            else if (e.A < 0) hi = std::min(hi, edge_bound(l, e, j).ceil() - 1);
-            else if (y == e.ay && !((y == s.my ? -e.B : e.B) > 0)) hi = lo - 1;
+            if (e.A == 0) {
+                if (y == e.ay && !((y == s.my ? -e.B : e.B) > 0)) hi = lo - 1;
+                continue;
+            }
+            const EdgeLine line = edge_line(l, e, j);
+            const std::int64_t bound = ceil_div(line.n0, line.den);
+            if (e.A > 0) lo = std::max(lo, bound);
+            else hi = std::min(hi, bound - 1);
         }
         emit(j, lo, hi);
     }
@@ -179,6 +196,7 @@ std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, Lat
     const std::int64_t j0 = ceil_div(std::max<std::int64_t>(s.ymin, 0) - l.phase_y, l.step_y);
     const std::int64_t j1 = floor_div(std::min(s.ymax, s.my) - l.phase_y, l.step_y);
     if (j0 > j1) return 0;
+    out->reserve(std::size_t(j1 - j0 + 1));
     const bool border_col = s.xmax == s.mx && (s.mx - l.phase_x) % l.step_x == 0;
     Rows rows{s,
               l,
