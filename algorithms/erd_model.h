@@ -116,6 +116,7 @@ private:
     // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
     std::unordered_map<std::size_t, double> local_;
     std::vector<double> taps_b_, taps_d1_, taps_d2_;
+    std::vector<double> stencil_;  // one row of the pixel's filter stencil
     std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
     std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
     std::vector<Entry> entries_;
