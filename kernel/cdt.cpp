@@ -598,7 +598,8 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
         }
         const std::uint64_t index = sort_buf_[j];
         const LatticePoint q = pts[index];
-        const std::uint64_t key = std::uint64_t(round) << (2 * order) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
+        const std::uint64_t key =
+            std::uint64_t(round) << (2 * order) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), order);
         if (packed)
             sort_buf_[j] = key << index_bits | index;
         else

@@ -553,7 +553,8 @@ TEST_CASE("incircle_small agrees with the 128-bit incircle up to the small-coord
         const __int128 wide = incircle(q[0], q[1], q[2], q[3]);
         if (__int128(incircle_small(q[0], q[1], q[2], q[3])) != wide) ++mismatches;
         if (wide == 0) ++ties;
-        if (orient2d(q[0], q[1], q[2]) > 0 && incircle_perturbed(q[0], q[1], q[2], q[3], true) != incircle_perturbed(q[0], q[1], q[2], q[3]))
+        if (orient2d(q[0], q[1], q[2]) > 0 &&
+            incircle_perturbed(q[0], q[1], q[2], q[3], true) != incircle_perturbed(q[0], q[1], q[2], q[3]))
             ++mismatches;
     }
     CHECK(mismatches == 0);
@@ -592,7 +593,8 @@ TEST_CASE("insert_points on a huge rectangle (keys too wide to pack) agrees with
     const std::int32_t M = kMaxCoord - 1;
     std::mt19937 g(5);
     std::vector<LatticePoint> pts;
-    for (int i = 0; i < 20000; ++i) pts.push_back({std::int32_t(g() % std::uint32_t(M + 1)), std::int32_t(g() % std::uint32_t(M + 1))});
+    auto coord = [&g, M] { return std::int32_t(g() % std::uint32_t(M + 1)); };
+    for (int i = 0; i < 20000; ++i) pts.push_back({coord(), coord()});
     pts.push_back(pts[17]);  // a duplicate
     Cdt batch, single;
     must_reset(batch, M, M);
