@@ -82,11 +82,12 @@ std::size_t distinct_points(const std::vector<Polyline>& polylines) {
 }
 
 Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped) {
-    // Points first (the kernel orders a batch along a Hilbert curve), then the segments.
+    // Points first (the kernel orders a batch along a Hilbert curve), then the segments. Nobody
+    // reads the batch's change report, so the kernel skips that bookkeeping.
     std::vector<LatticePoint> pts;
     for (const Polyline& pl : polylines) pts.insert(pts.end(), pl.begin(), pl.end());
     std::vector<VertInd> ids;
-    Status st = cdt->insert_points(pts, &ids);
+    Status st = cdt->insert_points(pts, &ids, false);
     if (!st.ok()) return st;
     std::size_t k = 0;
     for (const Polyline& pl : polylines) {

@@ -173,7 +173,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
 
     t0 = std::chrono::steady_clock::now();
     std::vector<VertInd> ids;
-    st = cdt.insert_points(pts, &ids);
+    st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it
     if (!st) return st;
     ErdModel model(phi, wo);
     if (wo.rule == 1 && wo.smoothing_order == 5 && d5.width > 0) model.set_mmsodd(std::move(d5));
