@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/point_rings.h"
 #include "algorithms/set_points.h"
 #include "algorithms/thinning.h"
 
@@ -194,16 +195,6 @@ inline std::uint8_t suppress(const float* p, float ux, float uy, std::ptrdiff_t 
     return fl;
 }
 
-constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
-
-// Portable popcount (no builtins in algorithms/).
-inline std::uint32_t popcount64(std::uint64_t x) {
-    x = x - ((x >> 1) & 0x5555555555555555u);
-    x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
-    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Fu;
-    return std::uint32_t((x * 0x0101010101010101u) >> 56);
-}
-
 // Index of the lowest set bit of w != 0 (de Bruijn multiplication; portable).
 inline unsigned lowest_bit(std::uint64_t w) {
     static const unsigned char index[64] = {
@@ -213,15 +204,13 @@ inline unsigned lowest_bit(std::uint64_t w) {
     return index[((w & (~w + 1)) * 0x03f79d71b4cb0a89u) >> 58];
 }
 
-// A set of plane cells as one bit per cell, numbered in index order once complete: the number of
-// a member is the count of members before its 64-bit word plus a popcount. An eighth of a byte
-// per cell, so the lookups of steps 4 and 5 stay in cache where a plane of ids would not.
+// A set of plane cells as one bit per cell: an eighth of a byte per cell, and iteration in index
+// order skips 64 empty cells at a time.
 class CellSet {
 public:
     explicit CellSet(std::size_t cells) : bits_((cells + 63) / 64, 0) {}
     void insert(std::size_t i) { bits_[i >> 6] |= std::uint64_t(1) << (i & 63); }
-    void erase(std::size_t i) { bits_[i >> 6] &= ~(std::uint64_t(1) << (i & 63)); }
-    // Calls fn(i) for each member in increasing order (fn may erase i).
+    // Calls fn(i) for each member in increasing order.
     template <class Fn>
     void for_each(Fn fn) const {
         for (std::size_t k = 0; k < bits_.size(); ++k)
@@ -249,44 +238,20 @@ public:
         std::size_t word_ = 0;
         std::uint64_t acc_ = 0;
     };
-    // Numbers the members (after the last insert or erase).
-    void number() {
-        before_.resize(bits_.size());
-        std::uint32_t n = 0;
-        for (std::size_t k = 0; k < bits_.size(); ++k) {
-            before_[k] = n;
-            n += popcount64(bits_[k]);
-        }
-    }
-    // The number of member i, or kNoPoint when i is not a member.
-    std::uint32_t find(std::size_t i) const {
-        const std::uint64_t w = bits_[i >> 6], below = (std::uint64_t(1) << (i & 63)) - 1;
-        return (w >> (i & 63)) & 1u ? before_[i >> 6] + popcount64(w & below) : kNoPoint;
-    }
-
 private:
     std::vector<std::uint64_t> bits_;
-    std::vector<std::uint32_t> before_;
 };
 
 // The points with g >= tau_low (about a tenth of the grid) in row-major order with what steps 4
 // and 5 need, so those steps touch small arrays instead of grid planes.
 struct StrongPoints {
-    explicit StrongPoints(const Plane& pl, std::size_t cells) : set(cells) {
-        const std::ptrdiff_t s = pl.stride;
-        const std::ptrdiff_t o[8] = {1, s + 1, s, s - 1, -1, -s - 1, -s, -s + 1};  // E, SE, S, ... NE
-        std::copy(o, o + 8, off);
-    }
-    CellSet set;
-    std::ptrdiff_t off[8];
-    std::vector<std::ptrdiff_t> at;     // plane index
+    SortedPoints points;                // plane indices and rings
     std::vector<float> mag;             // g
     std::vector<std::uint8_t> flag;     // kCandidate, kSecondary, kMain
     std::vector<std::uint32_t> seeds;   // candidates with g >= tau_high, in row-major order
     std::vector<std::uint32_t> mains;   // every point marked kMain, in the order marked
-    std::size_t size() const { return at.size(); }
-    // The strong neighbour of point i in direction d, or kNoPoint.
-    std::uint32_t neighbour(std::uint32_t i, int d) const { return set.find(std::size_t(at[i] + off[d])); }
+    std::size_t size() const { return points.size(); }
+    void ring(std::uint32_t i, std::uint32_t nb[8]) const { points.ring(i, nb); }
 };
 
 // Step 4: grow from the seeds through 8-connected candidates. Returns the number of main points.
@@ -300,8 +265,9 @@ std::size_t hysteresis(StrongPoints* sp) {
             const std::uint32_t i = stack.back();
             stack.pop_back();
             sp->mains.push_back(i);
-            for (int d = 0; d < 8; ++d) {
-                const std::uint32_t j = sp->neighbour(i, d);
+            std::uint32_t nb[8];
+            sp->ring(i, nb);
+            for (const std::uint32_t j : nb) {
                 if (j != kNoPoint && (sp->flag[j] & (kCandidate | kMain)) == kCandidate) {
                     sp->flag[j] |= kMain;
                     stack.push_back(j);
@@ -334,8 +300,9 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
             const std::uint32_t i = stack.back();
             stack.pop_back();
             queue.push_back(i);
-            for (int d = 0; d < 8; ++d) {
-                const std::uint32_t j = sp->neighbour(i, d);
+            std::uint32_t nb[8];
+            sp->ring(i, nb);
+            for (const std::uint32_t j : nb) {
                 if (j != kNoPoint && (flag[j] & kMain) && !label[j]) { label[j] = components; stack.push_back(j); }
             }
         }
@@ -347,8 +314,9 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         const std::uint32_t i = queue[head];
         const std::uint32_t li = label[i];
         const std::uint8_t di = dist[i];
-        for (int d = 0; d < 8; ++d) {
-            const std::uint32_t j = sp->neighbour(i, d);
+        std::uint32_t nb[8];
+        sp->ring(i, nb);
+        for (const std::uint32_t j : nb) {
             if (j == kNoPoint) continue;
             const std::uint32_t lj = label[j];
             if (lj == 0) {
@@ -387,25 +355,22 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     for (const std::uint32_t end : queue) {
         if (dist[end] != 0 || !(flag[end] & kMain)) continue;
         int neighbours = 0;
-        for (int d = 0; d < 8; ++d) {
-            const std::uint32_t j = sp->neighbour(end, d);
-            neighbours += j != kNoPoint && (flag[j] & kMain);
-        }
+        std::uint32_t nb[8];
+        sp->ring(end, nb);
+        for (const std::uint32_t j : nb) neighbours += j != kNoPoint && (flag[j] & kMain);
         if (neighbours != 1) continue;
         const std::uint32_t own = label[end];
         path.clear();
         std::uint32_t cur = end;
         bool joined = false;
         for (int step = 0; step <= max_link && !joined; ++step) {
-            std::uint32_t ring[8];
-            for (int d = 0; d < 8; ++d) {
-                const std::uint32_t j = ring[d] = sp->neighbour(cur, d);
+            sp->ring(cur, nb);
+            for (const std::uint32_t j : nb)
                 if (j != kNoPoint && (flag[j] & kMain) && label[j] != own && label[j] != 0) joined = true;
-            }
             if (joined || step == max_link) break;
             std::uint32_t best = kNoPoint;
             float bg = sp->mag[cur];
-            for (const std::uint32_t j : ring) {
+            for (const std::uint32_t j : nb) {
                 if (j == kNoPoint || (flag[j] & kMain)) continue;
                 if (sp->mag[j] > bg && sp->mag[j] >= tl) { bg = sp->mag[j]; best = j; }
             }
@@ -469,8 +434,7 @@ Status detect(int width, int height, Sample sample, const CannyParams& params, G
     // the grid, eight points at a time. g is uninitialised on purpose: every cell read is written.
     std::unique_ptr<float[]> gstore(new float[pl.cells()]);
     float* const g = gstore.get();
-    StrongPoints sp(pl, pl.cells());
-    CellSet& kept = sp.set;  // becomes the strong points in step 3
+    CellSet kept(pl.cells());
     std::vector<std::size_t> hist(kFloatBins, 0);  // exact for the bins >= floor_bin
     std::uint32_t floor_bin = 0;                    // bin of the k-th largest so far (0 until k values)
     std::size_t at_or_above_floor = 0;
@@ -543,20 +507,23 @@ Status detect(int width, int height, Sample sample, const CannyParams& params, G
     const float th = float(tau_high), tl = float(tau_low);
 
     // 3. Non-maxima suppression at the kept points with g >= tau_low, the strong points.
+    StrongPoints sp;
+    sp.points.stride = pl.stride;
     std::size_t next = 0;
     kept.for_each([&](std::size_t i) {
         const float* c = comp.get() + 2 * next++;
         const float m = g[i];
-        if (m < tl) { kept.erase(i); return; }
+        if (m < tl) return;
         const std::uint8_t fl = suppress(g + i, c[0], c[1], pl.stride, params.modified);
         if ((fl & kCandidate) && m >= th) sp.seeds.push_back(std::uint32_t(sp.size()));
-        sp.at.push_back(std::ptrdiff_t(i));
+        sp.points.at.push_back(std::uint32_t(i));
         sp.mag.push_back(m);
         sp.flag.push_back(fl);
     });
     comp.reset();
     gstore.reset();
-    sp.set.number();
+    kept = CellSet(0);
+    sp.points.link_rows();
 
     // 4, 5.
     const std::size_t main_points = hysteresis(&sp);
@@ -566,8 +533,8 @@ Status detect(int width, int height, Sample sample, const CannyParams& params, G
     std::vector<std::ptrdiff_t> live;
     live.reserve(sp.mains.size());
     for (std::size_t k = 0; k < sp.size(); ++k)
-        if (sp.flag[k] & kMain) live.push_back(sp.at[k]);
-    sp = StrongPoints(pl, 0);
+        if (sp.flag[k] & kMain) live.push_back(std::ptrdiff_t(sp.points.at[k]));
+    sp = StrongPoints();
     std::vector<std::uint8_t> plane(pl.cells(), 0);
     for (const std::ptrdiff_t i : live) plane[std::size_t(i)] = 1;
     if (params.thin) thin_plane(plane.data(), pl.stride, &live);

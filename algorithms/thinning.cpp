@@ -61,24 +61,41 @@ void thin_plane(std::uint8_t* b, std::ptrdiff_t s, std::vector<std::ptrdiff_t>* 
         if ((four == 0x05u || four == 0x14u || four == 0x50u || four == 0x41u) && connectivity8(r) == 1) v |= 4;
         table[r] = v;
     }
-    std::vector<std::ptrdiff_t> doomed;
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (int step = 0; step < 2; ++step) {
-            doomed.clear();
-            const std::uint8_t bit = std::uint8_t(1u << step);
-            for (std::ptrdiff_t i : live)
-                if (table[ring(b + i, s)] & bit) doomed.push_back(i);
-            for (std::ptrdiff_t i : doomed) b[i] = 0;
-            if (!doomed.empty()) {
-                changed = true;
-                std::size_t k = 0;
-                for (std::ptrdiff_t i : live)
-                    if (b[i]) live[k++] = i;
-                live.resize(k);
-            }
+    // Zhang-Suen sub-iterations delete, all at once, the points whose ring meets their rule. A
+    // point's verdict changes only when its ring does, so each sub-iteration re-examines only the
+    // points next to a deletion since its rule last ran (dirty bit 1 << (step + 1) in the plane):
+    // the same deletions as sweeping every point, for a fraction of the work.
+    std::vector<std::ptrdiff_t> dirty[2] = {live, live}, doomed;
+    for (std::ptrdiff_t i : live) b[i] = 1 | 2 | 4;
+    const std::ptrdiff_t around[8] = {-s - 1, -s, -s + 1, -1, 1, s - 1, s, s + 1};
+    for (int step = 0; !dirty[0].empty() || !dirty[1].empty(); step ^= 1) {
+        const std::uint8_t bit = std::uint8_t(1u << step), mark = std::uint8_t(2u << step);
+        doomed.clear();
+        for (std::ptrdiff_t i : dirty[step]) {
+            if (!b[i]) continue;  // deleted since it was marked
+            b[i] = std::uint8_t(b[i] & ~mark);
+            if (table[ring(b + i, s)] & bit) doomed.push_back(i);
         }
+        dirty[step].clear();
+        for (std::ptrdiff_t i : doomed) b[i] = 0;
+        for (std::ptrdiff_t i : doomed)
+            for (std::ptrdiff_t o : around) {
+                const std::ptrdiff_t j = i + o;
+                if (!b[j]) continue;
+                for (int k = 0; k < 2; ++k)
+                    if (!(b[j] & (2u << k))) {
+                        b[j] = std::uint8_t(b[j] | (2u << k));
+                        dirty[k].push_back(j);
+                    }
+            }
     }
+    std::size_t kept = 0;
+    for (std::ptrdiff_t i : live)
+        if (b[i]) {
+            b[i] = 1;
+            live[kept++] = i;
+        }
+    live.resize(kept);
 
     // Staircase corners: a point whose set 4-neighbours are exactly two at a right angle (N+E, E+S,
     // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time, so the
