@@ -4,80 +4,125 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <limits>
 #include <utility>
 
 namespace erd {
 
 namespace {
 
-// One row of the diffusion. in[x]: error carried into this row; out[x] receives the error for the
-// next row, each entry written exactly once: the three shares a pixel sends below are kept in
-// two running sums (p0 for the entry behind, p1 for the entry below-ahead) instead of being
-// added into memory, so the loop carries no read-modify-write through memory. Shares pushed
-// past either end of the row are dropped. Returns the chosen x in order of the scan via fire().
-template <int Dir, bool Masked, class Fire>
-void diffuse_row(const double* sig, const std::uint8_t* forb, const double* in, double* out, int w, double rho,
-                 Fire fire) {
-    const double level = 2.0 * rho;
-    double carry = 0.0, p0 = 0.0, p1 = 0.0;
+// Lanes: one sweep over the image runs up to kLanes passes with different thresholds side by
+// side. A single pass is bound by the latency of its carried error (add, compare, subtract,
+// multiply per pixel, each waiting for the previous pixel); independent lanes fill that wait, so
+// 16 lanes cost about two single passes. The lane loops work on small local arrays only (nothing
+// they touch can alias), which lets the compiler vectorise them. float: the error stays within a
+// few rho of 0 and the density within [0, 1] (ED) or a few units, so 24 bits are ample, and a
+// 4-wide vector holds twice as many lanes as with double.
+constexpr int kLanes = 16;
+
+// State and results of the lanes of one sweep.
+template <int L>
+struct Sweep {
+    float rho[L], level[L];
+    std::size_t count[L] = {};
+    std::vector<LatticePoint>* points[L] = {};  // null: not recorded
+};
+
+// One row of the diffusion for all lanes. in[x * L + l]: error carried into this row for lane l;
+// out receives the error for the next row, each entry written exactly once: the three shares a
+// pixel sends below are kept in two running sums (p0 for the entry behind, p1 for the entry
+// below-ahead) instead of being added into memory. Shares pushed past either end of the row are
+// dropped. Chosen pixels (when `counted`) are counted and recorded in scan order.
+template <int L, int Dir, bool Masked>
+void diffuse_row(const double* sig, const std::uint8_t* forb, const float* in, float* out, int w, int y, bool counted,
+                 Sweep<L>* sw) {
+    // e_prev: the previous pixel's error, whose 7/16 is carried ahead and 1/16 goes below-ahead.
+    // A forbidden pixel compares against an infinite threshold instead of its lanes' rho.
+    float e_prev[L] = {}, p0[L] = {}, rho[L], level[L], never[L];
+    std::copy(sw->rho, sw->rho + L, rho);
+    std::copy(sw->level, sw->level + L, level);
+    std::fill(never, never + L, std::numeric_limits<float>::infinity());
     int x = Dir > 0 ? 0 : w - 1;
     for (int k = 0; k < w; ++k, x += Dir) {
-        const double v = sig[x] + in[x] + carry;
-        double e = v;
-        if (v >= rho && !(Masked && forb[x])) {
-            e = v - level;
-            fire(x);
+        const float s = float(sig[x]);
+        const float* thr = Masked && forb[x] ? never : rho;
+        const float* cin = in + std::size_t(x) * L;
+        float below[L];
+        std::int32_t fired[L], any = 0;
+        for (int l = 0; l < L; ++l) {  // no branch and only local stores: vectorises
+            const float v = s + cin[l] + e_prev[l] * (7.0f / 16.0f);
+            const std::int32_t f = v >= thr[l];
+            const float e = v - float(f) * level[l];
+            fired[l] = f;
+            any |= f;
+            below[l] = p0[l] + e * (3.0f / 16.0f);
+            p0[l] = e_prev[l] * (1.0f / 16.0f) + e * (5.0f / 16.0f);
+            e_prev[l] = e;
         }
-        carry = e * (7.0 / 16.0);
-        if (k > 0) out[x - Dir] = p0 + e * (3.0 / 16.0);
-        p0 = p1 + e * (5.0 / 16.0);
-        p1 = e * (1.0 / 16.0);
+        if (k > 0) std::copy(below, below + L, out + std::size_t(x - Dir) * L);
+        if (any && counted)  // rare (the density makes a few percent of the pixels fire)
+            for (int l = 0; l < L; ++l)
+                if (fired[l]) {
+                    ++sw->count[l];
+                    if (sw->points[l]) sw->points[l]->push_back(LatticePoint{std::int32_t(2 * x), std::int32_t(2 * y)});
+                }
     }
-    out[x - Dir] = p0;  // the last pixel's share straight below
+    std::copy(p0, p0 + L, out + std::size_t(x - Dir) * L);  // the last pixel's share straight below
+}
+
+// Runs the L passes of sw (rho > 0 each) over the density.
+template <int L>
+void run_sweep(const Grid<double>& density, const DiffusionParams& params, Sweep<L>* sw) {
+    const int w = density.width, h = density.height;
+    const bool mirror = params.startup == Startup::mirror;
+    const int rows = mirror ? 2 * h : h;
+    const std::uint8_t* forbidden = params.forbidden ? params.forbidden->data.data() : nullptr;
+    std::vector<float> cur(std::size_t(w) * L, 0.0f), next(std::size_t(w) * L, 0.0f);
+    for (int l = 0; l < L; ++l) {
+        sw->level[l] = 2.0f * sw->rho[l];
+        sw->count[l] = 0;
+        if (sw->points[l]) sw->points[l]->clear();
+    }
+    if (params.startup == Startup::force) {
+        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+        for (int x = 0; x < w; ++x) {
+            const double u = (x + 0.5) * g;
+            for (int l = 0; l < L; ++l)
+                cur[std::size_t(x) * L + std::size_t(l)] = float(sw->rho[l] * (2.0 * (u - std::floor(u)) - 1.0));
+        }
+    }
+    for (int r = 0; r < rows; ++r) {
+        const int y = mirror ? (r < h ? h - 1 - r : r - h) : r;
+        const bool counted = !mirror || r >= h;
+        const double* sig = density.data.data() + std::size_t(y) * std::size_t(w);
+        const std::uint8_t* forb = forbidden ? forbidden + std::size_t(y) * std::size_t(w) : nullptr;
+        std::size_t row_start[L];
+        for (int l = 0; l < L; ++l) row_start[l] = sw->points[l] ? sw->points[l]->size() : 0;
+        if ((r & 1) == 0) {
+            if (forb) diffuse_row<L, 1, true>(sig, forb, cur.data(), next.data(), w, y, counted, sw);
+            else diffuse_row<L, 1, false>(sig, forb, cur.data(), next.data(), w, y, counted, sw);
+        } else {
+            if (forb) diffuse_row<L, -1, true>(sig, forb, cur.data(), next.data(), w, y, counted, sw);
+            else diffuse_row<L, -1, false>(sig, forb, cur.data(), next.data(), w, y, counted, sw);
+            for (int l = 0; l < L; ++l)  // right-to-left rows: restore row-major order
+                if (sw->points[l])
+                    std::reverse(sw->points[l]->begin() + std::ptrdiff_t(row_start[l]), sw->points[l]->end());
+        }
+        std::swap(cur, next);
+    }
 }
 
 }  // namespace
 
 std::size_t diffuse(const Grid<double>& density, double rho, const DiffusionParams& params,
                     std::vector<LatticePoint>* points) {
-    const int w = density.width, h = density.height;
     if (points) points->clear();
-    if (w <= 0 || h <= 0 || !(rho > 0)) return 0;
-    const bool mirror = params.startup == Startup::mirror;
-    const int rows = mirror ? 2 * h : h;
-    const std::uint8_t* forbidden = params.forbidden ? params.forbidden->data.data() : nullptr;
-    std::vector<double> cur(std::size_t(w), 0.0), next(std::size_t(w), 0.0);
-    if (params.startup == Startup::force) {
-        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-        for (int x = 0; x < w; ++x) {
-            const double u = (x + 0.5) * g;
-            cur[std::size_t(x)] = rho * (2.0 * (u - std::floor(u)) - 1.0);
-        }
-    }
-    std::size_t count = 0;
-    for (int r = 0; r < rows; ++r) {
-        const int y = mirror ? (r < h ? h - 1 - r : r - h) : r;
-        const bool counted = !mirror || r >= h;
-        const double* sig = density.data.data() + std::size_t(y) * std::size_t(w);
-        const std::uint8_t* forb = forbidden ? forbidden + std::size_t(y) * std::size_t(w) : nullptr;
-        const std::size_t row_start = points ? points->size() : 0;
-        auto fire = [&](int x) {
-            if (!counted) return;
-            ++count;
-            if (points) points->push_back(LatticePoint{std::int32_t(2 * x), std::int32_t(2 * y)});
-        };
-        const bool forward = (r & 1) == 0;
-        if (forward) {
-            if (forb) diffuse_row<1, true>(sig, forb, cur.data(), next.data(), w, rho, fire);
-            else diffuse_row<1, false>(sig, forb, cur.data(), next.data(), w, rho, fire);
-        } else {
-            if (forb) diffuse_row<-1, true>(sig, forb, cur.data(), next.data(), w, rho, fire);
-            else diffuse_row<-1, false>(sig, forb, cur.data(), next.data(), w, rho, fire);
-            if (points) std::reverse(points->begin() + std::ptrdiff_t(row_start), points->end());
-        }
-        std::swap(cur, next);
-    }
-    return count;
+    if (density.width <= 0 || density.height <= 0 || !(rho > 0)) return 0;
+    Sweep<1> sw;
+    sw.rho[0] = float(rho);
+    sw.points[0] = points;
+    run_sweep(density, params, &sw);
+    return sw.count[0];
 }
 
 Status select_points(const Grid<double>& density, std::size_t count, const DiffusionParams& params,
@@ -96,56 +141,62 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
     if (!(sum > 0)) return Status::success();  // nothing can be chosen: empty, not exact
 
     const double k = double(count);
-    std::vector<LatticePoint> pts;
+    const auto gap = [&](std::size_t a) { return a > count ? a - count : count - a; };
+    std::vector<LatticePoint> lane_points[kLanes];
+    Sweep<kLanes> sw;
+    for (int l = 0; l < kLanes; ++l) sw.points[l] = &lane_points[l];
     std::size_t best_count = 0;
     bool have_best = false;
-    auto evaluate = [&](double rho) {
-        const std::size_t c = diffuse(density, rho, params, &pts);
-        ++result->passes;
-        const auto gap = [&](std::size_t a) { return a > count ? a - count : count - a; };
-        if (!have_best || gap(c) < gap(best_count) || (gap(c) == gap(best_count) && c < best_count)) {
-            have_best = true;
-            best_count = c;
-            result->rho = rho;
-            std::swap(result->points, pts);
-        }
-        return c;
-    };
 
-    // The count is a noisy function of rho: it falls roughly like sum / (2 rho) (much faster on
-    // small images, where error leaves through the border), but below relative changes of about
-    // 1/K it jumps chaotically by several points either way (bull, K = 7864: 7828 .. 7889 for rho
-    // in [0.826, 0.832], neighbours 1e-4 apart differing by up to 11). Plain bisection closes onto
-    // one jump across K and stalls. So: keep the bracket lo (largest rho seen with too many
-    // points) / hi (smallest with too few) and interpolate in 1/rho while it is wider than the
-    // jitter; inside the jitter, fit count = a + b / rho by least squares to the passes near K and
-    // sample rho on a golden-ratio sequence within +-2/K (relative) of where the fit gives K.
+    // The count is a noisy function of rho: it falls roughly like sum / (2 rho) (less near the
+    // border and at low densities: bull 0.125% needs 0.79 times that rho, lena 1% 0.99), but
+    // below relative changes of about 1/K it jumps chaotically by several points either way
+    // (bull, K = 7864: rho 1e-4 apart (relative) differ by up to 11 points, about 6 typically).
+    // So a threshold that gives K exactly is found by sampling near the crossing: each sweep
+    // tries kLanes thresholds. The first spans 0.75 .. 1.02 times the model's rho; while the
+    // bracket lo (largest rho seen with too many points) / hi (smallest with too few) is wider
+    // than the jitter, the next sweep spreads its lanes evenly (in 1 / rho) across it; inside the
+    // jitter, it fits count = a + b / rho by least squares to the passes near K and samples rho
+    // on a deterministic golden-ratio sequence within +-2/K (relative) of where the fit gives K.
     const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
     const double near_band = std::max(8.0, 0.01 * k);
-    const double spread = std::min(0.25, 2.0 / k);
-    double rho = sum / (2.0 * k);
+    const double spread = std::min(0.25, 3.0 / k);
+    const double rho0 = sum / (2.0 * k);
     double lo = 0, hi = 0;
-    std::size_t c_lo = 0, c_hi = 0;
     bool have_lo = false, have_hi = false;
+    std::size_t c_lo = 0, c_hi = 0;
     double s1 = 0, su = 0, sc = 0, suu = 0, suc = 0;  // sums over near passes, u = 1 / rho
-    for (int j = 1; result->passes < params.max_passes; ++j) {
-        const std::size_t c = evaluate(rho);
-        if (c == count) break;
-        if (c > count && (!have_lo || rho > lo)) { lo = rho; c_lo = c; have_lo = true; }
-        if (c < count && (!have_hi || rho < hi)) { hi = rho; c_hi = c; have_hi = true; }
-        if (std::fabs(double(c) - k) <= near_band) {
-            const double uu = 1.0 / rho;
-            s1 += 1; su += uu; sc += double(c); suu += uu * uu; suc += uu * double(c);
+    double trials[kLanes];
+    static const double first[kLanes] = {0.75, 0.80, 0.85, 0.88, 0.91, 0.93, 0.945, 0.955,
+                                         0.965, 0.972, 0.979, 0.986, 0.993, 1.0, 1.01, 1.02};
+    for (int l = 0; l < kLanes; ++l) trials[l] = rho0 * first[l];
+    long j = 0;  // position in the golden-ratio sequence
+    while (result->passes + kLanes <= std::max(params.max_passes, kLanes)) {
+        for (int l = 0; l < kLanes; ++l) sw.rho[l] = float(trials[l]);
+        run_sweep(density, params, &sw);
+        result->passes += kLanes;
+        ++result->sweeps;
+        bool exact = false;
+        for (int l = 0; l < kLanes; ++l) {
+            const std::size_t c = sw.count[l];
+            const double rho = double(sw.rho[l]);
+            if (!have_best || gap(c) < gap(best_count) || (gap(c) == gap(best_count) && c < best_count)) {
+                have_best = true;
+                best_count = c;
+                result->rho = rho;
+                std::swap(result->points, lane_points[l]);
+            }
+            exact = exact || c == count;
+            if (c > count && (!have_lo || rho > lo)) { lo = rho; c_lo = c; have_lo = true; }
+            if (c < count && (!have_hi || rho < hi)) { hi = rho; c_hi = c; have_hi = true; }
+            if (std::fabs(double(c) - k) <= near_band) {
+                const double uu = 1.0 / rho;
+                s1 += 1; su += uu; sc += double(c); suu += uu * uu; suc += uu * double(c);
+            }
         }
-        const double g = double(j) * golden - std::floor(double(j) * golden);
-        const bool wide = have_lo && have_hi && lo < hi && (hi - lo) > lo * 4.0 * spread;
-        double next = 0;
-        if (wide) {
-            const double ulo = 1.0 / lo, uhi = 1.0 / hi;
-            next = 1.0 / (ulo + (double(c_lo) - k) * (uhi - ulo) / (double(c_lo) - double(c_hi)));
-            const double margin = (hi - lo) * 1e-3;
-            if (!(next > lo + margin && next < hi - margin)) next = lo + (0.25 + 0.5 * g) * (hi - lo);
-        } else if (s1 >= 1) {
+        if (exact) break;
+        double center = 0;
+        if (s1 >= 1) {
             // Fit through the near passes (the slope alone through their centroid when they are
             // too few or too clustered to fix it).
             const double det = s1 * suu - su * su;
@@ -153,29 +204,43 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
             if (!(b > 0)) b = sc / su;  // count proportional to 1 / rho
             const double a = (sc - b * su) / s1;
             const double u_at_k = (k - a) / b;
-            const double center = u_at_k > 0 ? 1.0 / u_at_k : rho;
-            next = center * (1.0 + spread * (2.0 * g - 1.0));
-        } else if (c > 0) {
-            next = rho * double(c) / k;
-        } else {
-            next = have_lo ? std::sqrt(lo * rho) : rho * 0.5;
+            center = u_at_k > 0 ? 1.0 / u_at_k : 0;
         }
-        rho = next > 0 ? next : rho * 0.5;
+        if (center > 0) {
+            for (int l = 0; l < kLanes; ++l, ++j) {
+                const double g = double(j) * golden - std::floor(double(j) * golden);
+                trials[l] = center * (1.0 + spread * (2.0 * g - 1.0));
+            }
+            continue;
+        }
+        if (have_lo && have_hi && lo < hi) {
+            // Evenly across the bracket in u = 1 / rho, where the count is nearly linear.
+            const double ulo = 1.0 / lo, uhi = 1.0 / hi;
+            for (int l = 0; l < kLanes; ++l) trials[l] = 1.0 / (ulo + (uhi - ulo) * (l + 1.0) / (kLanes + 1.0));
+            continue;
+        }
+        // Nothing near K yet and no usable bracket: step with the model from the nearest side.
+        const double base = have_lo && (!have_hi || c_lo - count < count - c_hi) ? lo * double(c_lo) / k
+                            : have_hi && c_hi > 0                               ? hi * double(c_hi) / k
+                                                                                : (have_hi ? hi : rho0) * 0.25;
+        for (int l = 0; l < kLanes; ++l) trials[l] = base * std::exp((double(l) / (kLanes - 1) - 0.5) * 0.2);
     }
     result->exact = best_count == count;
     return Status::success();
 }
 
-Grid<double> ed_density(const Grid<double>& d, double gamma) {
-    Grid<double> out(d.width, d.height, 0.0);
+Grid<double> ed_density(Grid<double> d, double gamma) {
     double dmax = 0;
     for (double v : d.data) dmax = std::max(dmax, v);
-    if (!(dmax > 0)) return out;
-    for (std::size_t i = 0; i < d.data.size(); ++i) {
-        const double t = std::max(0.0, d.data[i]) / dmax;
-        out.data[i] = gamma == 1.0 ? t : (gamma == 0.5 ? std::sqrt(t) : std::pow(t, gamma));
+    if (!(dmax > 0)) {
+        std::fill(d.data.begin(), d.data.end(), 0.0);
+        return d;
     }
-    return out;
+    for (double& v : d.data) {
+        const double t = std::max(0.0, v) / dmax;
+        v = gamma == 1.0 ? t : (gamma == 0.5 ? std::sqrt(t) : std::pow(t, gamma));
+    }
+    return d;
 }
 
 Grid<std::uint8_t> edge_pixels(const Grid<std::uint8_t>& half_pixel_edges) {

@@ -6,13 +6,16 @@
 // eq. 3.5); the error v - emitted goes 7/16 ahead, 3/16 behind-below, 5/16 below, 1/16 ahead-below
 // (mirrored on right-to-left rows). Points outside the image receive no error (it is lost).
 //
-// Count search: rho is searched until the pass chooses exactly K points. The count follows the
+// Count search: rho is searched until a pass chooses exactly K points. The count follows the
 // sum / (2 rho) model of eq. 3.5 but is not monotone in rho: below relative changes of about 1/K it
-// jitters by several points either way, so plain bisection stalls on a jump across K. The search
-// steps with the model while the count is far from K, then samples rho on a deterministic
-// golden-ratio sequence within +-3/K (relative) of the model's estimate, until the count is exact
-// or max_passes passes have run. Without an exact count it returns the pass whose count was
-// nearest to K (ties: the smaller count) with exact = false.
+// jitters by several points either way, so plain bisection stalls on a jump across K. Each sweep
+// over the image runs 16 passes side by side (independent thresholds fill the latency of the
+// carried error, so a sweep costs about two single passes); the first spans 0.75 .. 1.02 times the
+// model's rho, later ones spread evenly over the bracket around K while it is wide, then sample
+// rho on a deterministic golden-ratio sequence within +-2/K (relative) of where a fit of the
+// counts near K gives K, until a pass gives K exactly or max_passes passes have run. Without an
+// exact count it returns the pass whose count was nearest to K (ties: the smaller count) with
+// exact = false. The diffused error is carried in float.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -45,14 +48,15 @@ struct DiffusionParams {
     // Optional (may be null): points with a nonzero entry are never chosen; their density still
     // enters the diffusion. Must have the density's size.
     const Grid<std::uint8_t>* forbidden = nullptr;
-    int max_passes = 64;
+    int max_passes = 256;  // thresholds tried at most (16 per sweep)
 };
 
 struct DiffusionResult {
     std::vector<LatticePoint> points;  // chosen pixels in doubled coordinates (2x, 2y), row-major order
     bool exact = false;                // points.size() == K
     double rho = 0;                    // threshold of the returned pass
-    int passes = 0;                    // diffusion passes run by the search
+    int passes = 0;                    // thresholds tried by the search (16 per sweep)
+    int sweeps = 0;                    // scans of the image by the search
 };
 
 // One diffusion pass with threshold rho (> 0). Returns the number of points chosen (inside the
@@ -68,7 +72,8 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
                      DiffusionResult* result);
 
 // The ED density sigma = (d / d_max)^gamma (thesis eq. 3.4), gamma > 0; all zeros when d_max <= 0.
-Grid<double> ed_density(const Grid<double>& d, double gamma);
+// Takes d by value so that a caller passing a temporary (ED: the MMSODD grid) reuses its storage.
+Grid<double> ed_density(Grid<double> d, double gamma);
 
 // Pixels lying on an edge of a half-pixel edge map (algorithms/canny.h): pixel (x, y) is marked when
 // the map is set at (2x, 2y). The map must be (2W-1) x (2H-1); the result is W x H. For ERDED,
