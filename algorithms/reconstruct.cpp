@@ -198,13 +198,6 @@ void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Se
     }
 }
 
-// TEMPORARY until kernel/raster.h has a row window: the spans of rows j_begin..j_end.
-void scan_rows(const Lattice& l, RasterDomain dom, LatticePoint a, LatticePoint b, LatticePoint c, std::int32_t j_begin,
-               std::int32_t j_end, std::vector<Span>* out) {
-    scan_triangle(l, dom, a, b, c, out);
-    out->erase(std::remove_if(out->begin(), out->end(), [&](const Span& s) { return s.y < j_begin || s.y > j_end; }), out->end());
-}
-
 // Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
 // vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles).
 void point_evaluation(const Model& m, const Prepared& p, Image* out) {
@@ -275,7 +268,7 @@ struct SubRow {
 // whose row 0 is pixel row `row0`. Each pixel gets its additions sub-row by sub-row, as a plain
 // span-by-span pass would; where all four sub-rows of a pixel row cover pixels whole, those
 // pixels take their four terms in one pass (one load and store, four independent chains of v).
-void add_spans(const SpanPlane& pl, const std::vector<Span>& spans, double* acc, std::size_t W, std::size_t row0) {
+void add_spans(const SpanPlane& pl, const Span* spans, std::size_t n, double* acc, std::size_t W, std::size_t row0) {
     const Lattice l = Lattice::supersample();
     // The plane in fine units (scale 4 is a power of two: no rounding is added).
     const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
@@ -285,7 +278,6 @@ void add_spans(const SpanPlane& pl, const std::vector<Span>& spans, double* acc,
         const double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
         return SubRow{row, v, s.x_begin, s.x_end};
     };
-    const std::size_t n = spans.size();
     for (std::size_t k = 0; k < n;) {
         // One span per row, rows in order: spans k..k+3 are the four sub-rows of one pixel row
         // when the first is sub-row 0 and the fourth three rows further.
@@ -363,7 +355,7 @@ std::vector<LateTerm> late_terms(const Model& m, const Prepared& p) {
 
 // Pixel sums are doubles of about this many bytes per band of rows: the band stays in the L2
 // cache while its faces are rasterised in any order.
-constexpr std::size_t kBandBytes = std::size_t(256) << 10;
+constexpr std::size_t kBandBytes = std::size_t(512) << 10;
 
 // Items 0..n-1 grouped by band, keeping their order within each band (a counting sort):
 // bands(i, fn) calls fn(b) for each band b item i belongs to. Returns item lists per band in
@@ -387,14 +379,17 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const std::size_t nb = (H + band - 1) / band;
     const Lattice l = Lattice::supersample();
     // Sub-sample rows j (pixel row j / 4) a face can own: fine y = phase + step * j within its extent.
-    const auto face_bands = [&](std::size_t f, auto fn) {
+    const auto sub_rows = [&](std::size_t f) {
         const auto& fc = m.faces[f];
         const std::int64_t ylo = std::min({m.vertices[fc[0]].y, m.vertices[fc[1]].y, m.vertices[fc[2]].y});
         const std::int64_t yhi = std::max({m.vertices[fc[0]].y, m.vertices[fc[1]].y, m.vertices[fc[2]].y});
         const std::int64_t j0 = (ylo * l.scale - l.phase_y + l.step_y - 1) / l.step_y;  // numerators >= 0
-        const std::int64_t j1 = (yhi * l.scale - l.phase_y) / l.step_y;
-        const std::size_t r0 = std::size_t(j0 >> 2), r1 = std::min(H - 1, std::size_t(j1 >> 2));
-        for (std::size_t b = r0 / band; b <= r1 / band; ++b) fn(b);
+        const std::int64_t j1 = std::min<std::int64_t>(4 * std::int64_t(H) - 1, (yhi * l.scale - l.phase_y) / l.step_y);
+        return std::make_pair(std::size_t(j0), std::size_t(j1));
+    };
+    const auto face_bands = [&](std::size_t f, auto fn) {
+        const auto [j0, j1] = sub_rows(f);
+        for (std::size_t b = (j0 >> 2) / band; b <= (j1 >> 2) / band; ++b) fn(b);
     };
     std::vector<std::uint32_t> face_first, late_first;
     const std::vector<std::uint32_t> band_faces = group_by_band(m.faces.size(), nb, face_bands, &face_first);
@@ -402,16 +397,41 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const std::vector<std::uint32_t> band_late =
         group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn(late[i].pixel / W / band); }, &late_first);
     std::vector<double> acc(band * W);
-    std::vector<Span> spans;
+    // Each face is scanned once, in its first band; the spans of its rows in later bands wait in
+    // `later` (indices later_at[f] .. later_end[f], rows in order) until their band comes.
+    std::vector<Span> spans, later;
+    std::vector<std::size_t> later_at(m.faces.size(), 0), later_end(m.faces.size(), 0);
+    std::vector<std::uint8_t> scanned(m.faces.size(), 0);
+    std::size_t deferred = 0;  // at most the rows below each face's first band: reserved, never regrown
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+        const auto [j0, j1] = sub_rows(f);
+        const std::size_t first_end = 4 * band * ((j0 >> 2) / band + 1);
+        deferred += j1 >= first_end ? j1 - first_end + 1 : 0;
+    }
+    later.reserve(deferred);
     const double maxval = m.maxval;
     for (std::size_t b = 0; b < nb; ++b) {
         const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
+        const std::int32_t next_band = std::int32_t(4 * (row0 + rows));  // first sub-row below the band
         std::fill(acc.begin(), acc.begin() + std::ptrdiff_t(rows * W), 0.0);
         for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
-            const auto& fc = m.faces[band_faces[k]];
-            scan_rows(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], std::int32_t(4 * row0),
-                      std::int32_t(4 * (row0 + rows) - 1), &spans);
-            add_spans(p.planes[band_faces[k]], spans, acc.data(), W, row0);
+            const std::uint32_t f = band_faces[k];
+            if (!scanned[f]) {
+                const auto& fc = m.faces[f];
+                scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
+                scanned[f] = 1;
+                std::size_t here = 0;
+                while (here < spans.size() && spans[here].y < next_band) ++here;
+                later_at[f] = later.size();
+                later.insert(later.end(), spans.begin() + std::ptrdiff_t(here), spans.end());
+                later_end[f] = later.size();
+                add_spans(p.planes[f], spans.data(), here, acc.data(), W, row0);
+            } else {
+                std::size_t e = later_at[f];
+                while (e < later_end[f] && later[e].y < next_band) ++e;
+                add_spans(p.planes[f], later.data() + later_at[f], e - later_at[f], acc.data(), W, row0);
+                later_at[f] = e;
+            }
         }
         for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) acc[late[band_late[k]].pixel - row0 * W] += late[band_late[k]].add;
         std::uint16_t* dst = out->samples.data() + row0 * W;

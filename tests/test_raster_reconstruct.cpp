@@ -254,11 +254,11 @@ TEST_CASE("reconstruct: refuses what is not a triangulation of the domain", "[ra
 }
 
 TEST_CASE("reconstruct: wide images are supersampled in several bands of rows", "[raster]") {
-    // 256 KiB of pixel sums per band: 6000 pixels a row gives 5 rows a band, so faces of a random
-    // triangulation with few points span several bands and are rasterised in pieces.
+    // 512 KiB of pixel sums per band: 6000 pixels a row gives 10 rows a band, so faces of a random
+    // triangulation with few points span up to four bands and are rasterised in pieces.
     std::mt19937 rng(77);
     std::uniform_real_distribution<double> val(0.0, 255.0);
-    const int W = 6000, H = 13;
+    const int W = 6000, H = 37;
     const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 12, false);
     Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
     m.kind = ModelKind::erd;
