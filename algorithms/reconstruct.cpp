@@ -420,8 +420,9 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
                 const auto& fc = m.faces[f];
                 scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
                 scanned[f] = 1;
-                std::size_t here = 0;
-                while (here < spans.size() && spans[here].y < next_band) ++here;
+                std::size_t here = spans.size();  // spans in this band: usually all of them
+                if (here > 0 && spans.back().y >= next_band)
+                    for (here = 0; spans[here].y < next_band;) ++here;
                 later_at[f] = later.size();
                 later.insert(later.end(), spans.begin() + std::ptrdiff_t(here), spans.end());
                 later_end[f] = later.size();
