@@ -79,7 +79,7 @@ std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const E
 double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>& x) {
     double sse = 0;
     for (const FaceSystem& fs : faces) sse += fs.sse(x[fs.entry[0]], x[fs.entry[1]], x[fs.entry[2]]);
-    return sse;
+    return sse > 0 ? sse : 0.0;  // an exact fit can leave a rounding residue below zero
 }
 
 }  // namespace
