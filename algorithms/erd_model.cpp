@@ -102,8 +102,17 @@ double ErdModel::mmsodd_at(double x, double y) {
     const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
     const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));
     const double fx = x - x0, fy = y - y0;
-    const double top = (1.0 - fx) * mmsodd_pixel(x0, y0) + fx * mmsodd_pixel(x0 + 1, y0);
-    const double bottom = (1.0 - fx) * mmsodd_pixel(x0, y0 + 1) + fx * mmsodd_pixel(x0 + 1, y0 + 1);
+    // Successive steps of a line search (0.05 px apart) mostly stay in one cell: keep its corners.
+    if (x0 != cell_x_ || y0 != cell_y_) {
+        cell_x_ = x0;
+        cell_y_ = y0;
+        cell_[0] = mmsodd_pixel(x0, y0);
+        cell_[1] = mmsodd_pixel(x0 + 1, y0);
+        cell_[2] = mmsodd_pixel(x0, y0 + 1);
+        cell_[3] = mmsodd_pixel(x0 + 1, y0 + 1);
+    }
+    const double top = (1.0 - fx) * cell_[0] + fx * cell_[1];
+    const double bottom = (1.0 - fx) * cell_[2] + fx * cell_[3];
     return (1.0 - fy) * top + fy * bottom;
 }
 

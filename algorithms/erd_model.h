@@ -117,6 +117,8 @@ private:
     std::unordered_map<std::size_t, double> local_;
     std::vector<double> taps_b_, taps_d1_, taps_d2_;
     std::vector<double> stencil_;  // one row of the pixel's filter stencil
+    int cell_x_ = -1, cell_y_ = -1;  // the last bilinear cell mmsodd_at read, and its corners
+    double cell_[4] = {0, 0, 0, 0};
     std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
     std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
     std::vector<Entry> entries_;
