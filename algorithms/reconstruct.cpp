@@ -12,11 +12,15 @@
 // Points on discontinuity edges were first evaluated on their owning face; a second pass over
 // those edges moves them to the mean of the two faces. Vertices never lie on the sub-sample
 // lattice (odd fine coordinates), except the corners, which the border pass takes care of.
+// The sums live for one band of pixel rows at a time (cache-sized), each pixel's additions made
+// in the same order as in one whole-image pass, so banding changes no bit (see supersampling()).
 #include "algorithms/reconstruct.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/model_topology.h"
@@ -398,35 +402,43 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
         group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn(late[i].pixel / W / band); }, &late_first);
     std::vector<double> acc(band * W);
     // Each face is scanned once, in its first band; the spans of its rows in later bands wait in
-    // `later` (indices later_at[f] .. later_end[f], rows in order) until their band comes.
+    // `later` (indices later_at[f] .. later_end[f], rows in order) until their band comes. That
+    // pool is reserved once: at most one span per row below each face's first band, which bounds
+    // it. Past 3 bytes a pixel (only faces far taller than the bands, in hostile models) each face
+    // is scanned again in each of its bands instead.
     std::vector<Span> spans, later;
     std::vector<std::size_t> later_at(m.faces.size(), 0), later_end(m.faces.size(), 0);
     std::vector<std::uint8_t> scanned(m.faces.size(), 0);
-    std::size_t deferred = 0;  // at most the rows below each face's first band: reserved, never regrown
+    std::size_t deferred = 0;
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
         const auto [j0, j1] = sub_rows(f);
         const std::size_t first_end = 4 * band * ((j0 >> 2) / band + 1);
         deferred += j1 >= first_end ? j1 - first_end + 1 : 0;
     }
-    later.reserve(deferred);
+    const bool keep = deferred <= W * H / 4;
+    if (keep) later.reserve(deferred);
     const double maxval = m.maxval;
     for (std::size_t b = 0; b < nb; ++b) {
         const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
-        const std::int32_t next_band = std::int32_t(4 * (row0 + rows));  // first sub-row below the band
+        const std::int32_t top = std::int32_t(4 * row0), next_band = std::int32_t(4 * (row0 + rows));  // sub-rows
         std::fill(acc.begin(), acc.begin() + std::ptrdiff_t(rows * W), 0.0);
         for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
             const std::uint32_t f = band_faces[k];
-            if (!scanned[f]) {
+            if (!scanned[f] || !keep) {
                 const auto& fc = m.faces[f];
                 scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
                 scanned[f] = 1;
-                std::size_t here = spans.size();  // spans in this band: usually all of them
-                if (here > 0 && spans.back().y >= next_band)
-                    for (here = 0; spans[here].y < next_band;) ++here;
-                later_at[f] = later.size();
-                later.insert(later.end(), spans.begin() + std::ptrdiff_t(here), spans.end());
-                later_end[f] = later.size();
-                add_spans(p.planes[f], spans.data(), here, acc.data(), W, row0);
+                // This band's spans: [first, here), usually all of them.
+                std::size_t first = 0, here = spans.size();
+                while (first < here && spans[first].y < top) ++first;
+                if (here > first && spans.back().y >= next_band)
+                    for (here = first; spans[here].y < next_band;) ++here;
+                if (keep) {
+                    later_at[f] = later.size();
+                    later.insert(later.end(), spans.begin() + std::ptrdiff_t(here), spans.end());
+                    later_end[f] = later.size();
+                }
+                add_spans(p.planes[f], spans.data() + first, here - first, acc.data(), W, row0);
             } else {
                 std::size_t e = later_at[f];
                 while (e < later_end[f] && later[e].y < next_band) ++e;

@@ -300,3 +300,38 @@ TEST_CASE("reconstruct: a given adjacency gives the same image; one that does no
         CHECK(a.samples == c.samples);
     }
 }
+
+TEST_CASE("reconstruct: faces much taller than the bands (rescanned per band)", "[raster]") {
+    // 64 x 4000 pixels cut into 126 slivers from the top row to the bottom row: every face spans
+    // all four bands of 1024 rows. One plane everywhere, so away from the border every pixel is
+    // the plane at its centre (the 16 offsets are symmetric); a lost or doubled span would show.
+    const int W = 64, H = 4000;
+    Model m;
+    m.kind = ModelKind::basic;
+    m.width = W;
+    m.height = H;
+    const auto z = [](double x, double y) { return 0.37 * x + 0.0151 * y + 10.3; };
+    for (int i = 0; i < W; ++i) {
+        m.vertices.push_back({2 * i, 0});
+        m.values.push_back(z(i, 0));
+        m.vertices.push_back({2 * i, 2 * H - 2});
+        m.values.push_back(z(i, H - 1));
+    }
+    for (std::uint32_t i = 0; i + 1 < std::uint32_t(W); ++i) {
+        const std::uint32_t top = 2 * i, bottom = 2 * i + 1;
+        m.faces.push_back({top, bottom + 2, bottom});
+        m.faces.push_back({top, top + 2, bottom + 2});
+    }
+    Image im;
+    REQUIRE(erd::reconstruct(m, true, &im).ok());
+    int bad = 0, checked = 0;
+    for (int y = 1; y + 1 < H; ++y)
+        for (int x = 1; x + 1 < W; ++x) {
+            const double v = z(x, y);
+            if (std::fabs(v - std::floor(v) - 0.5) < 1e-6) continue;
+            ++checked;
+            bad += im.at(x, y) != int(std::floor(v + 0.5));
+        }
+    CHECK(checked > 200000);
+    CHECK(bad == 0);
+}
