@@ -163,6 +163,7 @@ enum : std::uint8_t { kNone = 0, kCandidate = 1, kMain = 2, kSecondary = 4, kStr
 // Points of the half-pixel grid in a plane with a one-point frame: index (Y + 1) * stride + X + 1.
 struct Plane {
     int w = 0, h = 0, stride = 0;
+    Plane() = default;
     Plane(int width, int height) : w(width), h(height), stride(round8(width + 2) + 8) {}
     std::size_t cells() const { return std::size_t(stride) * std::size_t(h + 2); }
     std::ptrdiff_t at(int X, int Y) const { return std::ptrdiff_t(Y + 1) * stride + X + 1; }
@@ -210,7 +211,8 @@ class CellSet {
 public:
     explicit CellSet(std::size_t cells) : bits_((cells + 63) / 64, 0) {}
     void insert(std::size_t i) { bits_[i >> 6] |= std::uint64_t(1) << (i & 63); }
-    // Calls fn(i) for each member in increasing order.
+    void erase(std::size_t i) { bits_[i >> 6] &= ~(std::uint64_t(1) << (i & 63)); }
+    // Calls fn(i) for each member in increasing order (fn may erase i).
     template <class Fn>
     void for_each(Fn fn) const {
         for (std::size_t k = 0; k < bits_.size(); ++k)
@@ -410,149 +412,237 @@ void half_pixel_row(int width, int Y, Sample sample, float* r) {
     }
 }
 
-template <class Sample>
-Status detect(int width, int height, Sample sample, const CannyParams& params, Grid<std::uint8_t>* edges,
-              CannyStats* stats) {
-    if (width <= 0 || height <= 0) return Status::bad_input("edge detection: empty image");
+Status check_params(const CannyParams& params) {
     if (!(params.beta > 0.0 && params.beta <= 1.0)) return Status::bad_input("edge detection: beta must lie in (0, 1]");
     if (!(params.r >= 0.0 && params.r <= 1.0)) return Status::bad_input("edge detection: r must lie in [0, 1]");
     if (params.smoothing_order < 1 || params.smoothing_order % 2 == 0 || params.smoothing_order > 51)
         return Status::bad_input("edge detection: smoothing order must be odd, 1 to 51");
     if (params.max_link < 0 || params.max_link > 250) return Status::bad_input("edge detection: max_link must lie in [0, 250]");
-
-    const Plane pl(2 * width - 1, 2 * height - 1);
-    const int W = pl.w, H = pl.h;
-    const std::size_t M = std::size_t(W) * std::size_t(H);
-    const double kd = std::nearbyint(params.beta * double(M));
-    const std::size_t k_high = kd < 1.0 ? 1 : (kd > double(M) ? M : std::size_t(kd));
-
-    // 1. The magnitude plane g (frame replicated for the 3x3 stencils), streamed row by row. The
-    // k-th largest magnitude so far, known to its bin, only grows: so r times that bin's floor is
-    // a lower bound of tau_low, and only points at or above it are kept for step 3 (in `kept`,
-    // their gradient components appended to comp in row-major order); values in bins below the
-    // bound's bin cannot decide the quantile, so only the others are counted. Both skip most of
-    // the grid, eight points at a time. g is uninitialised on purpose: every cell read is written.
-    std::unique_ptr<float[]> gstore(new float[pl.cells()]);
-    float* const g = gstore.get();
-    CellSet kept(pl.cells());
-    std::vector<std::size_t> hist(kFloatBins, 0);  // exact for the bins >= floor_bin
-    std::uint32_t floor_bin = 0;                    // bin of the k-th largest so far (0 until k values)
-    std::size_t at_or_above_floor = 0;
-    float low = 0.0f;
-    std::unique_ptr<float[]> comp;  // gx, gy of the kept points
-    std::size_t comp_capacity = 0, n_kept = 0;
-    auto row = [&](int Y) { return g + pl.at(0, Y); };
-    auto copy_frame_row = [&](int from, int to) { std::copy(row(from) - 1, row(from) + W + 1, row(to) - 1); };
-    gradient_rows(
-        W, H, binomial_taps(params.smoothing_order), params.border,
-        [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); }, row,
-        [&](int y, const float* ax, const float* ay) {
-            float* r = row(y);
-            r[-1] = r[0];
-            r[W] = r[W - 1];
-            if (y == 0) copy_frame_row(0, -1);
-            if (y == H - 1) copy_frame_row(H - 1, H);
-            if (comp_capacity < 2 * (n_kept + std::size_t(W))) {  // grows without zeroing
-                const std::size_t cap = std::max(2 * comp_capacity, 2 * (n_kept + std::size_t(W)));
-                std::unique_ptr<float[]> bigger(new float[cap]);
-                std::copy(comp.get(), comp.get() + 2 * n_kept, bigger.get());
-                comp = std::move(bigger);
-                comp_capacity = cap;
-            }
-            float* c = comp.get();
-            const std::size_t base = std::size_t(pl.at(0, y));
-            CellSet::Appender keep(&kept);
-            auto visit = [&](int X) {
-                const float v = r[X];
-                const std::uint32_t b = float_bin(v);
-                if (b >= floor_bin) {
-                    ++hist[b];
-                    ++at_or_above_floor;
-                }
-                if (v >= low && v > 0.0f) {
-                    c[2 * n_kept] = ax[X];
-                    c[2 * n_kept + 1] = ay[X];
-                    ++n_kept;
-                    keep.insert(base + std::size_t(X));
-                }
-            };
-            // low <= the floor of floor_bin, so a block with nothing >= low has nothing to count.
-            int X = 0;
-            for (; X + 8 <= W; X += 8)
-                if (count_at_least8(r + X, low))
-                    for (int j = X; j < X + 8; ++j) visit(j);
-            for (; X < W; ++X) visit(X);
-            while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
-            low = float(params.r * double(bin_floor(floor_bin)));
-        });
-
-    // 2. Thresholds: the bin of the k-th largest, then selection inside it. Every value in that
-    // bin was at or above the bound of its time (bin 0 aside), so the kept points hold them all.
-    std::size_t above = 0, above_high = 0;
-    const std::uint32_t bin = kth_bin(hist, k_high, &above);
-    std::vector<float> in_bin;
-    in_bin.reserve(hist[bin]);
-    if (bin > 0) {
-        kept.for_each([&](std::size_t i) {
-            if (float_bin(g[i]) == bin) in_bin.push_back(g[i]);
-        });
-    } else {
-        for (int Y = 0; Y < H; ++Y)
-            for (int X = 0; X < W; ++X)
-                if (float_bin(row(Y)[X]) == bin) in_bin.push_back(row(Y)[X]);
-    }
-    const double tau_high = select_in_bin(&in_bin, k_high, above, &above_high);
-    const double tau_low = params.r * tau_high;
-    std::vector<float>().swap(in_bin);
-    const float th = float(tau_high), tl = float(tau_low);
-
-    // 3. Non-maxima suppression at the kept points with g >= tau_low, the strong points.
-    StrongPoints sp;
-    sp.points.stride = pl.stride;
-    std::size_t next = 0;
-    kept.for_each([&](std::size_t i) {
-        const float* c = comp.get() + 2 * next++;
-        const float m = g[i];
-        if (m < tl) return;
-        const std::uint8_t fl = suppress(g + i, c[0], c[1], pl.stride, params.modified);
-        if ((fl & kCandidate) && m >= th) sp.seeds.push_back(std::uint32_t(sp.size()));
-        sp.points.at.push_back(std::uint32_t(i));
-        sp.mag.push_back(m);
-        sp.flag.push_back(fl);
-    });
-    comp.reset();
-    gstore.reset();
-    kept = CellSet(0);
-    sp.points.link_rows();
-
-    // 4, 5.
-    const std::size_t main_points = hysteresis(&sp);
-    const std::size_t added = params.modified && params.max_link > 0 ? join_components(&sp, params.max_link, tl) : 0;
-
-    // 6. The main points, in row-major order, in a zero-framed plane for thinning.
-    std::vector<std::ptrdiff_t> live;
-    live.reserve(sp.mains.size());
-    for (std::size_t k = 0; k < sp.size(); ++k)
-        if (sp.flag[k] & kMain) live.push_back(std::ptrdiff_t(sp.points.at[k]));
-    sp = StrongPoints();
-    std::vector<std::uint8_t> plane(pl.cells(), 0);
-    for (const std::ptrdiff_t i : live) plane[std::size_t(i)] = 1;
-    if (params.thin) thin_plane(plane.data(), pl.stride, &live);
-    std::vector<std::uint8_t>().swap(plane);
-    *edges = Grid<std::uint8_t>(W, H, 0);
-    for (const std::ptrdiff_t i : live) (*edges)(int(i % pl.stride) - 1, int(i / pl.stride) - 1) = 1;
-    if (stats) {
-        stats->tau_high = tau_high;
-        stats->tau_low = tau_low;
-        stats->above_high = above_high;
-        stats->main_points = main_points;
-        stats->added_points = added;
-        stats->edge_points = live.size();
-    }
     return Status::success();
 }
 
 }  // namespace
+
+// Step 1 for one image: the magnitude plane g (frame replicated for the 3x3 stencils) and, for
+// the points above a lower bound of tau_low, their gradient components; the histogram of the
+// large magnitudes. Steps 2 to 6 read it without changing it, so it serves several detections.
+struct EdgeDetector::Pass {
+    Plane pl;
+    int smoothing_order = 0;
+    Border border = Border::replicate;
+    std::unique_ptr<float[]> g;
+    CellSet kept{0};                        // the points with g >= the bound of their time
+    std::unique_ptr<float[]> comp;          // gx, gy of the kept points, in row-major order
+    std::size_t n_kept = 0;
+    std::vector<std::size_t> hist;          // exact for the bins >= floor_bin
+    std::uint32_t floor_bin = 0;            // bin of the k-th largest (0 until k values)
+    std::size_t at_or_above_floor = 0;      // values in the bins >= floor_bin
+    float low = 0.0f;                       // the last (largest) bound points were kept above
+
+    // The streaming pass. The k-th largest magnitude so far, known to its bin, only grows: so
+    // r times that bin's floor is a lower bound of tau_low, and only points at or above it are
+    // kept for step 3; values in bins below the bound's bin cannot decide the quantile, so only
+    // the others are counted. Both skip most of the grid, eight points at a time.
+    template <class Sample>
+    void run(int width, int height, Sample sample, const CannyParams& params, std::size_t k_high) {
+        pl = Plane(2 * width - 1, 2 * height - 1);
+        smoothing_order = params.smoothing_order;
+        border = params.border;
+        const int W = pl.w, H = pl.h;
+        g.reset(new float[pl.cells()]);  // uninitialised on purpose: every cell read is written
+        kept = CellSet(pl.cells());
+        hist.assign(kFloatBins, 0);
+        std::size_t comp_capacity = 0;
+        auto row = [&](int Y) { return g.get() + pl.at(0, Y); };
+        auto copy_frame_row = [&](int from, int to) { std::copy(row(from) - 1, row(from) + W + 1, row(to) - 1); };
+        gradient_rows(
+            W, H, binomial_taps(params.smoothing_order), params.border,
+            [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); }, row,
+            [&](int y, const float* ax, const float* ay) {
+                float* r = row(y);
+                r[-1] = r[0];
+                r[W] = r[W - 1];
+                if (y == 0) copy_frame_row(0, -1);
+                if (y == H - 1) copy_frame_row(H - 1, H);
+                if (comp_capacity < 2 * (n_kept + std::size_t(W))) {
+                    // Full: first drop the points the bound has risen past (they can never be
+                    // strong), then grow, without zeroing, if still more than half full.
+                    std::size_t n = 0, next = 0;
+                    kept.for_each([&](std::size_t i) {
+                        if (g[i] >= low) {
+                            comp[2 * n] = comp[2 * next];
+                            comp[2 * n + 1] = comp[2 * next + 1];
+                            ++n;
+                        } else {
+                            kept.erase(i);
+                        }
+                        ++next;
+                    });
+                    n_kept = n;
+                    if (comp_capacity < 4 * (n_kept + std::size_t(W))) {
+                        const std::size_t cap = 4 * (n_kept + std::size_t(W));
+                        std::unique_ptr<float[]> bigger(new float[cap]);
+                        std::copy(comp.get(), comp.get() + 2 * n_kept, bigger.get());
+                        comp = std::move(bigger);
+                        comp_capacity = cap;
+                    }
+                }
+                float* c = comp.get();
+                const std::size_t base = std::size_t(pl.at(0, y));
+                CellSet::Appender keep(&kept);
+                auto visit = [&](int X) {
+                    const float v = r[X];
+                    const std::uint32_t b = float_bin(v);
+                    if (b >= floor_bin) {
+                        ++hist[b];
+                        ++at_or_above_floor;
+                    }
+                    if (v >= low && v > 0.0f) {
+                        c[2 * n_kept] = ax[X];
+                        c[2 * n_kept + 1] = ay[X];
+                        ++n_kept;
+                        keep.insert(base + std::size_t(X));
+                    }
+                };
+                // low <= the floor of floor_bin, so a block with nothing >= low has nothing to count.
+                int X = 0;
+                for (; X + 8 <= W; X += 8)
+                    if (count_at_least8(r + X, low))
+                        for (int j = X; j < X + 8; ++j) visit(j);
+                for (; X < W; ++X) visit(X);
+                while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
+                low = float(params.r * double(bin_floor(floor_bin)));
+            });
+    }
+
+    // Steps 2 to 6. Returns false, having written nothing, when the pass does not cover the
+    // parameters: a different filter, too few values counted for this beta, or a tau_low below
+    // the bound. release = the pass is not used again: its planes go as soon as they are read.
+    bool track(const CannyParams& params, bool release, Grid<std::uint8_t>* edges, CannyStats* stats) {
+        if (params.smoothing_order != smoothing_order || params.border != border) return false;
+        const int W = pl.w, H = pl.h;
+        const std::size_t M = std::size_t(W) * std::size_t(H);
+        const std::size_t k_high = k_of(params.beta, M);
+        if (at_or_above_floor < k_high) return false;  // the k-th largest is below the counted bins
+
+        // 2. Thresholds: the bin of the k-th largest, then selection inside it. Every value in that
+        // bin was at or above the bound of its time (bin 0 aside), so the kept points hold them all.
+        std::size_t above = 0, above_high = 0;
+        const std::uint32_t bin = kth_bin(hist, k_high, &above);
+        std::vector<float> in_bin;
+        in_bin.reserve(hist[bin]);
+        if (bin > 0) {
+            kept.for_each([&](std::size_t i) {
+                if (float_bin(g[i]) == bin) in_bin.push_back(g[i]);
+            });
+        } else {
+            for (int Y = 0; Y < H; ++Y)
+                for (int X = 0; X < W; ++X)
+                    if (float_bin(g[std::size_t(pl.at(X, Y))]) == bin) in_bin.push_back(g[std::size_t(pl.at(X, Y))]);
+        }
+        const double tau_high = select_in_bin(&in_bin, k_high, above, &above_high);
+        const double tau_low = params.r * tau_high;
+        std::vector<float>().swap(in_bin);
+        const float th = float(tau_high), tl = float(tau_low);
+        if (tl < low) return false;  // strong points may be missing from `kept`
+
+        // 3. Non-maxima suppression at the kept points with g >= tau_low, the strong points.
+        StrongPoints sp;
+        sp.points.stride = pl.stride;
+        std::size_t next = 0;
+        kept.for_each([&](std::size_t i) {
+            const float* c = comp.get() + 2 * next++;
+            const float m = g[i];
+            if (m < tl) return;
+            const std::uint8_t fl = suppress(g.get() + i, c[0], c[1], pl.stride, params.modified);
+            if ((fl & kCandidate) && m >= th) sp.seeds.push_back(std::uint32_t(sp.size()));
+            sp.points.at.push_back(std::uint32_t(i));
+            sp.mag.push_back(m);
+            sp.flag.push_back(fl);
+        });
+        if (release) clear();
+        sp.points.link_rows();
+
+        // 4, 5.
+        const std::size_t main_points = hysteresis(&sp);
+        const std::size_t added = params.modified && params.max_link > 0 ? join_components(&sp, params.max_link, tl) : 0;
+
+        // 6. The main points, in row-major order, thinned as a sparse set.
+        SortedPoints mains;
+        mains.stride = pl.stride;
+        mains.at.reserve(sp.mains.size());
+        for (std::size_t k = 0; k < sp.size(); ++k)
+            if (sp.flag[k] & kMain) mains.at.push_back(sp.points.at[k]);
+        sp = StrongPoints();
+        std::vector<std::uint8_t> alive(mains.size(), 1);
+        if (params.thin) {
+            mains.link_rows();
+            thin_points(mains, &alive);
+        }
+        *edges = Grid<std::uint8_t>(W, H, 0);
+        std::size_t edge_points = 0;
+        for (std::size_t k = 0; k < mains.size(); ++k)
+            if (alive[k]) {
+                (*edges)(int(mains.at[k] % std::uint32_t(pl.stride)) - 1, int(mains.at[k] / std::uint32_t(pl.stride)) - 1) = 1;
+                ++edge_points;
+            }
+        if (stats) {
+            stats->tau_high = tau_high;
+            stats->tau_low = tau_low;
+            stats->above_high = above_high;
+            stats->main_points = main_points;
+            stats->added_points = added;
+            stats->edge_points = edge_points;
+        }
+        return true;
+    }
+
+    void clear() {
+        g.reset();
+        comp.reset();
+        kept = CellSet(0);
+    }
+
+    // k = round(beta * M), at least 1 (step 2).
+    static std::size_t k_of(double beta, std::size_t M) {
+        const double kd = std::nearbyint(beta * double(M));
+        return kd < 1.0 ? 1 : (kd > double(M) ? M : std::size_t(kd));
+    }
+};
+
+namespace {
+
+template <class Sample>
+Status detect_once(int width, int height, Sample sample, const CannyParams& params, Grid<std::uint8_t>* edges,
+                   CannyStats* stats) {
+    if (width <= 0 || height <= 0) return Status::bad_input("edge detection: empty image");
+    Status st = check_params(params);
+    if (!st) return st;
+    EdgeDetector::Pass pass;
+    pass.run(width, height, sample, params, EdgeDetector::Pass::k_of(params.beta, std::size_t(2 * width - 1) * std::size_t(2 * height - 1)));
+    pass.track(params, true, edges, stats);  // a pass covers the parameters it was made with
+    return Status::success();
+}
+
+}  // namespace
+
+EdgeDetector::EdgeDetector(const Image& im) : im_(im) {}
+EdgeDetector::~EdgeDetector() = default;
+
+Status EdgeDetector::detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
+    if (im_.width <= 0 || im_.height <= 0) return Status::bad_input("edge detection: empty image");
+    Status st = check_params(params);
+    if (!st) return st;
+    if (pass_ && pass_->track(params, false, edges, stats)) return Status::success();
+    pass_.reset();  // the old pass goes before the new one is made
+    pass_.reset(new Pass);
+    const std::size_t M = std::size_t(2 * im_.width - 1) * std::size_t(2 * im_.height - 1);
+    pass_->run(im_.width, im_.height, [&](int x, int y) { return im_.at(x, y); }, params, Pass::k_of(params.beta, M));
+    pass_->track(params, false, edges, stats);
+    return Status::success();
+}
+
+void EdgeDetector::release() { pass_.reset(); }
 
 void canny_gradient(const Grid<double>& f, int smoothing_order, Border border, Grid<float>* gx, Grid<float>* gy) {
     std::vector<double> b = binomial_taps(smoothing_order);
@@ -588,11 +678,11 @@ double beta_quantile(const float* values, std::size_t n, double beta) {
 }
 
 Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
-    return detect(im.width, im.height, [&](int x, int y) { return im.at(x, y); }, params, edges, stats);
+    return detect_once(im.width, im.height, [&](int x, int y) { return im.at(x, y); }, params, edges, stats);
 }
 
 Status detect_edges(const Grid<double>& im, const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
-    return detect(im.width, im.height, [&](int x, int y) { return im(x, y); }, params, edges, stats);
+    return detect_once(im.width, im.height, [&](int x, int y) { return im(x, y); }, params, edges, stats);
 }
 
 }  // namespace erd

@@ -30,6 +30,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "algorithms/filters.h"
 #include "algorithms/image.h"
@@ -67,6 +68,29 @@ Status detect_edges(const Grid<double>& im, const CannyParams& params, Grid<std:
                     CannyStats* stats = nullptr);
 Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_t>* edges,
                     CannyStats* stats = nullptr);
+
+// Repeated detection on one image with varying beta and r (ERD's parameter selection): the
+// gradient pass of step 1, most of the work, runs once and is kept for later detections while it
+// covers them (it keeps the points above a lower bound of the first detection's tau_low, so it
+// covers any detection with a tau_low at least as high, e.g. a smaller beta with the same r);
+// otherwise it runs again. Results equal detect_edges(image, params, ...). Holds about 4 bytes
+// per half-pixel point plus 8 per kept point until release() or destruction; the image must
+// outlive the detector.
+class EdgeDetector {
+public:
+    explicit EdgeDetector(const Image& im);
+    ~EdgeDetector();
+    EdgeDetector(const EdgeDetector&) = delete;
+    EdgeDetector& operator=(const EdgeDetector&) = delete;
+    Status detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats = nullptr);
+    void release();  // frees the kept pass
+
+    struct Pass;  // defined in canny.cpp
+
+private:
+    const Image& im_;
+    std::unique_ptr<Pass> pass_;
+};
 
 // Gradient of f (any grid, no resampling) as described in step 1. Exposed for tests and tools.
 void canny_gradient(const Grid<double>& f, int smoothing_order, Border border, Grid<float>* gx, Grid<float>* gy);

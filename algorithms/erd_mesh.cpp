@@ -16,7 +16,7 @@ namespace {
 class StepOneCounter : public ConstraintPointCounter {
 public:
     StepOneCounter(const Image& image, LengthRule rule, double eps_unit)
-        : image_(image), rule_(rule), eps_unit_(eps_unit) {}
+        : detector_(image), rule_(rule), eps_unit_(eps_unit) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -32,7 +32,7 @@ public:
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
-        Status st = detect_edges(image_, cp, &edges_);
+        Status st = detector_.detect(cp, &edges_);  // reuses the gradient pass while it can
         if (!st.ok() && status_.ok()) status_ = st;
         traced_ = trace_polylines(edges_);
     }
@@ -48,13 +48,14 @@ public:
     }
 
     const Status& status() const { return status_; }
+    void release_detector() { detector_.release(); }
     Grid<std::uint8_t>& edges() { return edges_; }
     std::vector<Polyline>& kept() { return kept_; }
 
 private:
-    // The image, not a double copy of it: the ERD methods make their double phi only after step 1,
-    // so it is not alive beside the detector's planes (the peak of the whole run).
-    const Image& image_;
+    // On the image, not a double copy of it: the ERD methods make their double phi only after
+    // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
+    EdgeDetector detector_;
     LengthRule rule_;
     double eps_unit_;
     Status status_;
@@ -106,6 +107,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     StepOneCounter counter(image, options.length_rule, options.eps_unit);
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
+    counter.release_detector();
     if (!counter.status().ok()) return counter.status();
     out->edges = std::move(counter.edges());
     out->polylines = std::move(counter.kept());

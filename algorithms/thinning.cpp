@@ -42,18 +42,30 @@ inline int connectivity8(unsigned r) {
     return n;
 }
 
+// Zhang-Suen rule bits of a ring, in the order of `ring` above, from the ids of point_rings.h's
+// ring (E, SE, S, SW, W, NW, N, NE): bit k is direction (k + 6) mod 8.
+inline unsigned ring_bits(const std::uint32_t nb[8], const std::vector<std::uint8_t>& alive) {
+    unsigned r = 0;
+    for (int k = 0; k < 8; ++k) {
+        const std::uint32_t j = nb[(k + 6) & 7];
+        r |= unsigned(j != kNoPoint && alive[j] != 0) << k;
+    }
+    return r;
+}
+
 }  // namespace
 
-void thin_plane(std::uint8_t* b, std::ptrdiff_t s, std::vector<std::ptrdiff_t>* live_points) {
-    std::vector<std::ptrdiff_t>& live = *live_points;
+void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_points) {
+    std::vector<std::uint8_t>& alive = *alive_points;
+    const std::uint32_t n = std::uint32_t(pts.size());
     // Decisions depend on the 8-neighbour ring alone: tabulate them once (bit 0: Zhang-Suen
     // deletes in sub-iteration 1, bit 1: in sub-iteration 2, bit 2: a removable staircase corner).
     std::uint8_t table[256];
     for (unsigned r = 0; r < 256; ++r) {
-        const int n = popcount8(r);
+        const int c = popcount8(r);
         const unsigned N = r & 1u, E = (r >> 2) & 1u, S = (r >> 4) & 1u, Wb = (r >> 6) & 1u;
         std::uint8_t v = 0;
-        if (n >= 2 && n <= 6 && transitions(r) == 1) {
+        if (c >= 2 && c <= 6 && transitions(r) == 1) {
             if ((N & E & S) == 0 && (E & S & Wb) == 0) v |= 1;
             if ((N & E & Wb) == 0 && (N & S & Wb) == 0) v |= 2;
         }
@@ -63,69 +75,73 @@ void thin_plane(std::uint8_t* b, std::ptrdiff_t s, std::vector<std::ptrdiff_t>* 
     }
     // Zhang-Suen sub-iterations delete, all at once, the points whose ring meets their rule. A
     // point's verdict changes only when its ring does, so each sub-iteration re-examines only the
-    // points next to a deletion since its rule last ran (dirty bit 1 << (step + 1) in the plane):
-    // the same deletions as sweeping every point, for a fraction of the work.
-    std::vector<std::ptrdiff_t> dirty[2] = {live, live}, doomed;
-    for (std::ptrdiff_t i : live) b[i] = 1 | 2 | 4;
-    const std::ptrdiff_t around[8] = {-s - 1, -s, -s + 1, -1, 1, s - 1, s, s + 1};
+    // points next to a deletion since its rule last ran (dirty bit 2 << step in alive): the same
+    // deletions as sweeping every point, for a fraction of the work.
+    std::vector<std::uint32_t> dirty[2], doomed;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (alive[i]) {
+            alive[i] = 1 | 2 | 4;
+            dirty[0].push_back(i);
+            dirty[1].push_back(i);
+        }
+    std::uint32_t nb[8];
     for (int step = 0; !dirty[0].empty() || !dirty[1].empty(); step ^= 1) {
         const std::uint8_t bit = std::uint8_t(1u << step), mark = std::uint8_t(2u << step);
         doomed.clear();
-        for (std::ptrdiff_t i : dirty[step]) {
-            if (!b[i]) continue;  // deleted since it was marked
-            b[i] = std::uint8_t(b[i] & ~mark);
-            if (table[ring(b + i, s)] & bit) doomed.push_back(i);
+        for (const std::uint32_t i : dirty[step]) {
+            if (!alive[i]) continue;  // deleted since it was marked
+            alive[i] = std::uint8_t(alive[i] & ~mark);
+            pts.ring(i, nb);
+            if (table[ring_bits(nb, alive)] & bit) doomed.push_back(i);
         }
         dirty[step].clear();
-        for (std::ptrdiff_t i : doomed) b[i] = 0;
-        for (std::ptrdiff_t i : doomed)
-            for (std::ptrdiff_t o : around) {
-                const std::ptrdiff_t j = i + o;
-                if (!b[j]) continue;
+        for (const std::uint32_t i : doomed) alive[i] = 0;
+        for (const std::uint32_t i : doomed) {
+            pts.ring(i, nb);
+            for (const std::uint32_t j : nb) {
+                if (j == kNoPoint || !alive[j]) continue;
                 for (int k = 0; k < 2; ++k)
-                    if (!(b[j] & (2u << k))) {
-                        b[j] = std::uint8_t(b[j] | (2u << k));
+                    if (!(alive[j] & (2u << k))) {
+                        alive[j] = std::uint8_t(alive[j] | (2u << k));
                         dirty[k].push_back(j);
                     }
             }
-    }
-    std::size_t kept = 0;
-    for (std::ptrdiff_t i : live)
-        if (b[i]) {
-            b[i] = 1;
-            live[kept++] = i;
         }
-    live.resize(kept);
+    }
 
     // Staircase corners: a point whose set 4-neighbours are exactly two at a right angle (N+E, E+S,
-    // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time, so the
-    // decision for a point sees earlier deletions and a corner pair never loses both points.
-    std::size_t k = 0;
-    for (std::ptrdiff_t i : live) {
-        if (table[ring(b + i, s)] & 4)
-            b[i] = 0;
-        else
-            live[k++] = i;
+    // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time in
+    // row-major order, so the decision for a point sees earlier deletions and a corner pair never
+    // loses both points.
+    for (std::uint32_t i = 0; i < n; ++i) alive[i] = alive[i] ? 1 : 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (!alive[i]) continue;
+        pts.ring(i, nb);
+        if (table[ring_bits(nb, alive)] & 4) alive[i] = 0;
     }
-    live.resize(k);
 }
 
 std::size_t thin_edges(Grid<std::uint8_t>* map) {
     const int w = map->width, h = map->height;
     if (w <= 0 || h <= 0) return 0;
-    // Work on a copy with a zero frame so the ring never leaves the buffer.
-    const int s = w + 2;
-    std::vector<std::uint8_t> b(std::size_t(s) * std::size_t(h + 2), 0);
-    std::vector<std::ptrdiff_t> live;
+    // The set points as indices of a plane with a one-point frame (never allocated).
+    SortedPoints pts;
+    pts.stride = w + 2;
     for_each_set(map->data.data(), map->data.size(), [&](std::size_t k) {
-        const std::ptrdiff_t i = std::ptrdiff_t(k / std::size_t(w) + 1) * s + std::ptrdiff_t(k % std::size_t(w)) + 1;
-        b[std::size_t(i)] = 1;
+        pts.at.push_back(std::uint32_t((k / std::size_t(w) + 1) * std::size_t(pts.stride) + k % std::size_t(w) + 1));
         map->data[k] = 0;
-        live.push_back(i);
     });
-    thin_plane(b.data(), s, &live);
-    for (std::ptrdiff_t i : live) map->data[std::size_t(i / s - 1) * std::size_t(w) + std::size_t(i % s - 1)] = 1;
-    return live.size();
+    pts.link_rows();
+    std::vector<std::uint8_t> alive(pts.size(), 1);
+    thin_points(pts, &alive);
+    std::size_t left = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        if (alive[i]) {
+            const std::uint32_t s = std::uint32_t(pts.stride);
+            (*map)(int(pts.at[i] % s) - 1, int(pts.at[i] / s) - 1) = 1;
+            ++left;
+        }
+    return left;
 }
 
 }  // namespace erd

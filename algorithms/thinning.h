@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "algorithms/image.h"
+#include "algorithms/point_rings.h"
 
 namespace erd {
 
@@ -16,11 +17,9 @@ namespace erd {
 // skipping zero bytes eight at a time), so the cost follows the edge count more than the area.
 std::size_t thin_edges(Grid<std::uint8_t>* map);
 
-// The same thinning in place on a byte plane whose set points (nonzero) all have a zero frame of
-// one point around them (rows `stride` bytes apart). live lists every set point in increasing
-// index order (row-major, which the corner sweep depends on) and is left holding the survivors,
-// still in order; deleted points are zeroed in the plane. Lets edge detection thin in a plane it
-// already has instead of a copy.
-void thin_plane(std::uint8_t* plane, std::ptrdiff_t stride, std::vector<std::ptrdiff_t>* live);
+// The same thinning on a sparse set of points (point_rings.h: plane indices in row-major order,
+// which the corner sweep depends on): alive[i] != 0 marks point i as set; deleted points get 0,
+// survivors 1. Edge detection thins its main points this way, without a plane.
+void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive);
 
 }  // namespace erd
