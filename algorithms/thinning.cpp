@@ -9,14 +9,6 @@ namespace erd {
 
 namespace {
 
-// Neighbours of a point in the order of Zhang and Suen: P2 = N, P3 = NE, P4 = E, P5 = SE, P6 = S,
-// P7 = SW, P8 = W, P9 = NW, as bits 0..7 of one byte.
-inline unsigned ring(const std::uint8_t* p, std::ptrdiff_t s) {
-    return unsigned(p[-s] != 0) | unsigned(p[-s + 1] != 0) << 1 | unsigned(p[1] != 0) << 2 |
-           unsigned(p[s + 1] != 0) << 3 | unsigned(p[s] != 0) << 4 | unsigned(p[s - 1] != 0) << 5 |
-           unsigned(p[-1] != 0) << 6 | unsigned(p[-s - 1] != 0) << 7;
-}
-
 inline int popcount8(unsigned v) {
     int n = 0;
     for (; v; v &= v - 1) ++n;
@@ -42,8 +34,9 @@ inline int connectivity8(unsigned r) {
     return n;
 }
 
-// Zhang-Suen rule bits of a ring, in the order of `ring` above, from the ids of point_rings.h's
-// ring (E, SE, S, SW, W, NW, N, NE): bit k is direction (k + 6) mod 8.
+// The ring of a point as one byte in the order of Zhang and Suen: P2 = N, P3 = NE, P4 = E,
+// P5 = SE, P6 = S, P7 = SW, P8 = W, P9 = NW as bits 0..7, from the ids of point_rings.h's ring
+// (E, SE, S, SW, W, NW, N, NE): bit k is direction (k + 6) mod 8.
 inline unsigned ring_bits(const std::uint32_t nb[8], const std::vector<std::uint8_t>& alive) {
     unsigned r = 0;
     for (int k = 0; k < 8; ++k) {
