@@ -8,6 +8,7 @@
 #include "kernel/raster.h"
 
 #include <algorithm>
+#include <climits>
 #include <utility>
 
 #include "kernel/predicates.h"
@@ -189,12 +190,19 @@ struct Rows {
 // horizontal edge can matter, tests all three edges.
 std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b, LatticePoint c,
                            std::vector<Span>* out) {
+    return scan_triangle(l, d, a, b, c, out, INT32_MIN, INT32_MAX);
+}
+
+std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b, LatticePoint c,
+                           std::vector<Span>* out, std::int32_t j_begin, std::int32_t j_end) {
     out->clear();
     Setup s;
     if (!setup(l, d, a, b, c, &s)) return 0;
-    // Rows and columns of the bounding box, clipped to the closed domain.
-    const std::int64_t j0 = ceil_div(std::max<std::int64_t>(s.ymin, 0) - l.phase_y, l.step_y);
-    const std::int64_t j1 = floor_div(std::min(s.ymax, s.my) - l.phase_y, l.step_y);
+    // Rows and columns of the bounding box, clipped to the closed domain (and rows to the window:
+    // the row loops below start their steppers at their first row, so nothing else changes).
+    const std::int64_t j0 =
+        std::max<std::int64_t>(j_begin, ceil_div(std::max<std::int64_t>(s.ymin, 0) - l.phase_y, l.step_y));
+    const std::int64_t j1 = std::min<std::int64_t>(j_end, floor_div(std::min(s.ymax, s.my) - l.phase_y, l.step_y));
     if (j0 > j1) return 0;
     out->reserve(std::size_t(j1 - j0 + 1));
     const bool border_col = s.xmax == s.mx && (s.mx - l.phase_x) % l.step_x == 0;

@@ -69,6 +69,11 @@ struct Span {
 std::int64_t scan_triangle(const Lattice& lattice, RasterDomain domain, LatticePoint a, LatticePoint b,
                            LatticePoint c, std::vector<Span>* out);
 
+// The same, restricted to lattice rows j_begin..j_end (inclusive): exactly the full scan's spans
+// of those rows, at the cost of those rows only (for scanning a mesh in bands of rows).
+std::int64_t scan_triangle(const Lattice& lattice, RasterDomain domain, LatticePoint a, LatticePoint b,
+                           LatticePoint c, std::vector<Span>* out, std::int32_t j_begin, std::int32_t j_end);
+
 // The same rule for one lattice point (i, j): true when triangle (a, b, c) owns it.
 bool triangle_owns(const Lattice& lattice, RasterDomain domain, LatticePoint a, LatticePoint b, LatticePoint c,
                    std::int32_t i, std::int32_t j);

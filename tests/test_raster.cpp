@@ -189,3 +189,43 @@ TEST_CASE("raster: SpanPlane evaluates the plane along spans", "[raster]") {
     erd::SpanPlane q;
     CHECK_FALSE(q.set({0, 0}, 1.0, {2, 2}, 2.0, {4, 4}, 3.0));
 }
+
+TEST_CASE("raster: a row window gives exactly the full scan's spans of those rows", "[raster]") {
+    std::mt19937 rng(9090);
+    const Lattice lats[2] = {Lattice::pixels(), Lattice::supersample()};
+    std::int64_t windows_with_spans = 0;
+    for (int trial = 0; trial < 15; ++trial) {
+        const int W = 2 + int(rng() % 12), H = 2 + int(rng() % 12);
+        const RasterDomain d{2 * W - 2, 2 * H - 2};
+        const auto t = random_triangulation(rng, d.max_x, d.max_y, 12, trial % 2 == 0);
+        for (const Lattice& l : lats) {
+            const int nj = l.scale == 1 ? H : 4 * H;
+            std::vector<Span> full, part;
+            for (const Tri& f : t) {
+                erd::scan_triangle(l, d, f[0], f[1], f[2], &full);
+                for (int k = 0; k < 6; ++k) {
+                    // Windows inside, across and outside the rows (also empty and reversed ones).
+                    const std::int32_t jb = std::int32_t(rng() % std::uint32_t(nj + 4)) - 2;
+                    const std::int32_t je = jb + std::int32_t(rng() % 7) - 1;
+                    const std::int64_t n = erd::scan_triangle(l, d, f[0], f[1], f[2], &part, jb, je);
+                    std::vector<Span> want;
+                    std::int64_t count = 0;
+                    for (const Span& s : full)
+                        if (s.y >= jb && s.y <= je) {
+                            want.push_back(s);
+                            count += s.x_end - s.x_begin + 1;
+                        }
+                    CHECK(n == count);
+                    REQUIRE(part.size() == want.size());
+                    for (std::size_t i = 0; i < want.size(); ++i) {
+                        CHECK(part[i].y == want[i].y);
+                        CHECK(part[i].x_begin == want[i].x_begin);
+                        CHECK(part[i].x_end == want[i].x_end);
+                    }
+                    windows_with_spans += !want.empty();
+                }
+            }
+        }
+    }
+    CHECK(windows_with_spans > 100);
+}
