@@ -46,16 +46,27 @@ void weighted_sum_any(const double* const* src, const std::vector<double>& t, do
     const int m = int(t.size());
     switch (m) {
         case 3: weighted_sum<3>(src, t.data(), m, out, w); break;
+        case 4: weighted_sum<4>(src, t.data(), m, out, w); break;
         case 5: weighted_sum<5>(src, t.data(), m, out, w); break;
-        case 7: weighted_sum<7>(src, t.data(), m, out, w); break;
+        case 6: weighted_sum<6>(src, t.data(), m, out, w); break;
         default: weighted_sum<0>(src, t.data(), m, out, w); break;
     }
 }
 
-// The three separable filters of MMSODD: taps along x, taps along y.
-struct SeparablePair {
-    const std::vector<double>* hx;
-    const std::vector<double>* hy;
+// A 1-D filter without its zero taps: t * x = +-0 for finite x leaves the sum unchanged (above),
+// and the derivative filters have 1 or 2 zeros in 5 taps (a quarter of the work).
+// Tap taps[k] multiplies the sample at offset ct - k; kept in ascending k.
+struct SparseTaps {
+    std::vector<double> taps;
+    std::vector<int> offsets;
+    explicit SparseTaps(const std::vector<double>& all) {
+        const int ct = int(all.size() / 2);
+        for (std::size_t k = 0; k < all.size(); ++k)
+            if (all[k] != 0.0) {
+                taps.push_back(all[k]);
+                offsets.push_back(ct - int(k));
+            }
+    }
 };
 
 }  // namespace
@@ -65,7 +76,8 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
     if (b.empty()) b = {1.0};
     const std::vector<double> d2 = compose_taps(derivative2_taps(), b);
     const std::vector<double> d1 = compose_taps(derivative1_taps(), b);
-    const SeparablePair filters[3] = {{&d2, &b}, {&b, &d2}, {&d1, &d1}};  // fxx, fyy, fxy
+    const std::vector<double>* hx[3] = {&d2, &b, &d1};  // x taps of fxx, fyy, fxy
+    const std::vector<double>* hy[3] = {&b, &d2, &d1};  // y taps
     const int w = im.width, h = im.height;
     Grid<double> out(w, h);
     if (w <= 0 || h <= 0) return out;
@@ -74,7 +86,7 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
         // Replication is not used by the methods; the general filters serve it.
         Grid<double> f[3];
         for (int i = 0; i < 3; ++i)
-            f[i] = convolve_cols(convolve_rows(im, *filters[i].hx, border), *filters[i].hy, border);
+            f[i] = convolve_cols(convolve_rows(im, *hx[i], border), *hy[i], border);
         for (std::size_t i = 0; i < out.data.size(); ++i)
             out.data[i] = mmsodd_value(f[0].data[i], f[1].data[i], f[2].data[i]);
         return out;
@@ -90,27 +102,30 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
     std::vector<double> padded(uw + 2 * std::size_t(c), 0.0), zeros(uw, 0.0);
     std::vector<double> ring(3 * std::size_t(span) * uw), deriv(3 * uw);
     auto ring_row = [&](int i, int y) { return ring.data() + (std::size_t(i) * std::size_t(span) + std::size_t(y % span)) * uw; };
+    std::vector<SparseTaps> sx, sy;
+    for (int i = 0; i < 3; ++i) {
+        sx.emplace_back(*hx[i]);
+        sy.emplace_back(*hy[i]);
+    }
     std::vector<const double*> src(std::size_t(span), nullptr);
     for (int j = 0; j < h + c; ++j) {
         if (j < h) {
             std::copy(&im(0, j), &im(0, j) + w, padded.begin() + c);
             for (int i = 0; i < 3; ++i) {
-                const std::vector<double>& t = *filters[i].hx;
-                const int ct = int(t.size() / 2);
-                for (int k = 0; k < int(t.size()); ++k) src[std::size_t(k)] = padded.data() + c + ct - k;
-                weighted_sum_any(src.data(), t, ring_row(i, j), w);
+                const SparseTaps& f = sx[std::size_t(i)];
+                for (std::size_t k = 0; k < f.taps.size(); ++k) src[k] = padded.data() + c + f.offsets[k];
+                weighted_sum_any(src.data(), f.taps, ring_row(i, j), w);
             }
         }
         const int y = j - c;
         if (y < 0) continue;
         for (int i = 0; i < 3; ++i) {
-            const std::vector<double>& t = *filters[i].hy;
-            const int ct = int(t.size() / 2);
-            for (int k = 0; k < int(t.size()); ++k) {
-                const int r = y + ct - k;
-                src[std::size_t(k)] = r >= 0 && r < h ? ring_row(i, r) : zeros.data();
+            const SparseTaps& f = sy[std::size_t(i)];
+            for (std::size_t k = 0; k < f.taps.size(); ++k) {
+                const int r = y + f.offsets[k];
+                src[k] = r >= 0 && r < h ? ring_row(i, r) : zeros.data();
             }
-            weighted_sum_any(src.data(), t, deriv.data() + std::size_t(i) * uw, w);
+            weighted_sum_any(src.data(), f.taps, deriv.data() + std::size_t(i) * uw, w);
         }
         double* o = &out(0, y);
         for (int x = 0; x < w; ++x) o[x] = mmsodd_value(deriv[std::size_t(x)], deriv[uw + std::size_t(x)], deriv[2 * uw + std::size_t(x)]);
