@@ -34,18 +34,6 @@ inline int connectivity8(unsigned r) {
     return n;
 }
 
-// The ring of a point as one byte in the order of Zhang and Suen: P2 = N, P3 = NE, P4 = E,
-// P5 = SE, P6 = S, P7 = SW, P8 = W, P9 = NW as bits 0..7, from the ids of point_rings.h's ring
-// (E, SE, S, SW, W, NW, N, NE): bit k is direction (k + 6) mod 8.
-inline unsigned ring_bits(const std::uint32_t nb[8], const std::vector<std::uint8_t>& alive) {
-    unsigned r = 0;
-    for (int k = 0; k < 8; ++k) {
-        const std::uint32_t j = nb[(k + 6) & 7];
-        r |= unsigned(j != kNoPoint && alive[j] != 0) << k;
-    }
-    return r;
-}
-
 }  // namespace
 
 void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_points) {
@@ -66,6 +54,27 @@ void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_point
         if ((four == 0x05u || four == 0x14u || four == 0x50u || four == 0x41u) && connectivity8(r) == 1) v |= 4;
         table[r] = v;
     }
+    // ring[i]: the set neighbours of point i as one byte in the order of Zhang and Suen (P2 = N,
+    // P3 = NE, P4 = E, P5 = SE, P6 = S, P7 = SW, P8 = W, P9 = NW as bits 0..7), kept up to date
+    // as points go, so a verdict is one table lookup. point_rings.h gives E, SE, S, SW, W, NW, N,
+    // NE: direction d is bit (d + 2) mod 8, and a point in direction d from j sees j in direction
+    // d + 4.
+    std::vector<std::uint8_t> ring(n, 0);
+    std::uint32_t nb[8];
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (!alive[i]) continue;
+        pts.ring(i, nb);
+        unsigned r = 0;
+        for (int d = 0; d < 8; ++d) r |= unsigned(nb[d] != kNoPoint && alive[nb[d]] != 0) << ((d + 2) & 7);
+        ring[i] = std::uint8_t(r);
+    }
+    auto remove = [&](std::uint32_t i) {
+        alive[i] = 0;
+        pts.ring(i, nb);
+        for (int d = 0; d < 8; ++d)
+            if (nb[d] != kNoPoint) ring[nb[d]] = std::uint8_t(ring[nb[d]] & ~(1u << ((d + 6) & 7)));
+    };
+
     // Zhang-Suen sub-iterations delete, all at once, the points whose ring meets their rule. A
     // point's verdict changes only when its ring does, so each sub-iteration re-examines only the
     // points next to a deletion since its rule last ran (dirty bit 2 << step in alive): the same
@@ -77,18 +86,16 @@ void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_point
             dirty[0].push_back(i);
             dirty[1].push_back(i);
         }
-    std::uint32_t nb[8];
     for (int step = 0; !dirty[0].empty() || !dirty[1].empty(); step ^= 1) {
         const std::uint8_t bit = std::uint8_t(1u << step), mark = std::uint8_t(2u << step);
         doomed.clear();
         for (const std::uint32_t i : dirty[step]) {
             if (!alive[i]) continue;  // deleted since it was marked
             alive[i] = std::uint8_t(alive[i] & ~mark);
-            pts.ring(i, nb);
-            if (table[ring_bits(nb, alive)] & bit) doomed.push_back(i);
+            if (table[ring[i]] & bit) doomed.push_back(i);
         }
         dirty[step].clear();
-        for (const std::uint32_t i : doomed) alive[i] = 0;
+        for (const std::uint32_t i : doomed) remove(i);
         for (const std::uint32_t i : doomed) {
             pts.ring(i, nb);
             for (const std::uint32_t j : nb) {
@@ -106,11 +113,10 @@ void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_point
     // S+W or W+N) and which joins only one component of neighbours. Deleted one at a time in
     // row-major order, so the decision for a point sees earlier deletions and a corner pair never
     // loses both points.
-    for (std::uint32_t i = 0; i < n; ++i) alive[i] = alive[i] ? 1 : 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         if (!alive[i]) continue;
-        pts.ring(i, nb);
-        if (table[ring_bits(nb, alive)] & 4) alive[i] = 0;
+        alive[i] = 1;
+        if (table[ring[i]] & 4) remove(i);
     }
 }
 
