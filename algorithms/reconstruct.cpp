@@ -359,7 +359,7 @@ std::vector<LateTerm> late_terms(const Model& m, const Prepared& p) {
 
 // Pixel sums are doubles of about this many bytes per band of rows: the band stays in the L2
 // cache while its faces are rasterised in any order.
-constexpr std::size_t kBandBytes = std::size_t(512) << 10;
+constexpr std::size_t kBandBytes = std::size_t(256) << 10;
 
 // Items 0..n-1 grouped by band, keeping their order within each band (a counting sort):
 // bands(i, fn) calls fn(b) for each band b item i belongs to. Returns item lists per band in
@@ -382,18 +382,16 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const std::size_t band = std::max<std::size_t>(1, kBandBytes / (W * sizeof(double)));
     const std::size_t nb = (H + band - 1) / band;
     const Lattice l = Lattice::supersample();
-    // Sub-sample rows j (pixel row j / 4) a face can own: fine y = phase + step * j within its extent.
-    const auto sub_rows = [&](std::size_t f) {
+    // The bands of the sub-sample rows j (pixel row j / 4) a face can own: fine y = phase + step * j
+    // within its extent.
+    const auto face_bands = [&](std::size_t f, auto fn) {
         const auto& fc = m.faces[f];
         const std::int64_t ylo = std::min({m.vertices[fc[0]].y, m.vertices[fc[1]].y, m.vertices[fc[2]].y});
         const std::int64_t yhi = std::max({m.vertices[fc[0]].y, m.vertices[fc[1]].y, m.vertices[fc[2]].y});
         const std::int64_t j0 = (ylo * l.scale - l.phase_y + l.step_y - 1) / l.step_y;  // numerators >= 0
-        const std::int64_t j1 = std::min<std::int64_t>(4 * std::int64_t(H) - 1, (yhi * l.scale - l.phase_y) / l.step_y);
-        return std::make_pair(std::size_t(j0), std::size_t(j1));
-    };
-    const auto face_bands = [&](std::size_t f, auto fn) {
-        const auto [j0, j1] = sub_rows(f);
-        for (std::size_t b = (j0 >> 2) / band; b <= (j1 >> 2) / band; ++b) fn(b);
+        const std::int64_t j1 = (yhi * l.scale - l.phase_y) / l.step_y;
+        const std::size_t r0 = std::size_t(j0 >> 2), r1 = std::min(H - 1, std::size_t(j1 >> 2));
+        for (std::size_t b = r0 / band; b <= r1 / band; ++b) fn(b);
     };
     std::vector<std::uint32_t> face_first, late_first;
     const std::vector<std::uint32_t> band_faces = group_by_band(m.faces.size(), nb, face_bands, &face_first);
@@ -401,50 +399,18 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const std::vector<std::uint32_t> band_late =
         group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn(late[i].pixel / W / band); }, &late_first);
     std::vector<double> acc(band * W);
-    // Each face is scanned once, in its first band; the spans of its rows in later bands wait in
-    // `later` (indices later_at[f] .. later_end[f], rows in order) until their band comes. That
-    // pool is reserved once: at most one span per row below each face's first band, which bounds
-    // it. Past 3 bytes a pixel (only faces far taller than the bands, in hostile models) each face
-    // is scanned again in each of its bands instead.
-    std::vector<Span> spans, later;
-    std::vector<std::size_t> later_at(m.faces.size(), 0), later_end(m.faces.size(), 0);
-    std::vector<std::uint8_t> scanned(m.faces.size(), 0);
-    std::size_t deferred = 0;
-    for (std::size_t f = 0; f < m.faces.size(); ++f) {
-        const auto [j0, j1] = sub_rows(f);
-        const std::size_t first_end = 4 * band * ((j0 >> 2) / band + 1);
-        deferred += j1 >= first_end ? j1 - first_end + 1 : 0;
-    }
-    const bool keep = deferred <= W * H / 4;
-    if (keep) later.reserve(deferred);
+    std::vector<Span> spans;
     const double maxval = m.maxval;
     for (std::size_t b = 0; b < nb; ++b) {
         const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
-        const std::int32_t top = std::int32_t(4 * row0), next_band = std::int32_t(4 * (row0 + rows));  // sub-rows
         std::fill(acc.begin(), acc.begin() + std::ptrdiff_t(rows * W), 0.0);
         for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
             const std::uint32_t f = band_faces[k];
-            if (!scanned[f] || !keep) {
-                const auto& fc = m.faces[f];
-                scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
-                scanned[f] = 1;
-                // This band's spans: [first, here), usually all of them.
-                std::size_t first = 0, here = spans.size();
-                while (first < here && spans[first].y < top) ++first;
-                if (here > first && spans.back().y >= next_band)
-                    for (here = first; spans[here].y < next_band;) ++here;
-                if (keep) {
-                    later_at[f] = later.size();
-                    later.insert(later.end(), spans.begin() + std::ptrdiff_t(here), spans.end());
-                    later_end[f] = later.size();
-                }
-                add_spans(p.planes[f], spans.data() + first, here - first, acc.data(), W, row0);
-            } else {
-                std::size_t e = later_at[f];
-                while (e < later_end[f] && later[e].y < next_band) ++e;
-                add_spans(p.planes[f], later.data() + later_at[f], e - later_at[f], acc.data(), W, row0);
-                later_at[f] = e;
-            }
+            const auto& fc = m.faces[f];
+            // The band's sub-rows only: a face spanning several bands is scanned in pieces.
+            scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans, std::int32_t(4 * row0),
+                          std::int32_t(4 * (row0 + rows) - 1));
+            add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
         }
         for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) acc[late[band_late[k]].pixel - row0 * W] += late[band_late[k]].add;
         std::uint16_t* dst = out->samples.data() + row0 * W;

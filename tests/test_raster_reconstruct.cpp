@@ -254,8 +254,8 @@ TEST_CASE("reconstruct: refuses what is not a triangulation of the domain", "[ra
 }
 
 TEST_CASE("reconstruct: wide images are supersampled in several bands of rows", "[raster]") {
-    // 512 KiB of pixel sums per band: 6000 pixels a row gives 10 rows a band, so faces of a random
-    // triangulation with few points span up to four bands and are rasterised in pieces.
+    // 256 KiB of pixel sums per band: 6000 pixels a row gives 5 rows a band, so faces of a random
+    // triangulation with few points span up to eight bands and are rasterised in pieces.
     std::mt19937 rng(77);
     std::uniform_real_distribution<double> val(0.0, 255.0);
     const int W = 6000, H = 37;
@@ -301,9 +301,9 @@ TEST_CASE("reconstruct: a given adjacency gives the same image; one that does no
     }
 }
 
-TEST_CASE("reconstruct: faces much taller than the bands (rescanned per band)", "[raster]") {
+TEST_CASE("reconstruct: faces much taller than the bands", "[raster]") {
     // 64 x 4000 pixels cut into 126 slivers from the top row to the bottom row: every face spans
-    // all four bands of 1024 rows. One plane everywhere, so away from the border every pixel is
+    // all eight bands of 512 rows. One plane everywhere, so away from the border every pixel is
     // the plane at its centre (the 16 offsets are symmetric); a lost or doubled span would show.
     const int W = 64, H = 4000;
     Model m;
