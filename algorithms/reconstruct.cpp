@@ -403,7 +403,6 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const double maxval = m.maxval;
     for (std::size_t b = 0; b < nb; ++b) {
         const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
-        std::fill(acc.begin(), acc.begin() + std::ptrdiff_t(rows * W), 0.0);
         for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
             const std::uint32_t f = band_faces[k];
             const auto& fc = m.faces[f];
@@ -414,7 +413,10 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
         }
         for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) acc[late[band_late[k]].pixel - row0 * W] += late[band_late[k]].add;
         std::uint16_t* dst = out->samples.data() + row0 * W;
-        for (std::size_t i = 0; i < rows * W; ++i) dst[i] = to_sample(acc[i] * (1.0 / 16.0), maxval);
+        for (std::size_t i = 0; i < rows * W; ++i) {
+            dst[i] = to_sample(acc[i] * (1.0 / 16.0), maxval);
+            acc[i] = 0.0;  // ready for the next band (no separate clearing pass)
+        }
     }
 }
 
