@@ -311,6 +311,43 @@ TEST_CASE("a T-junction keeps its junction with the modified Canny and loses it 
     CHECK(sp.added_points == 0);
 }
 
+TEST_CASE("EdgeDetector reuses its gradient pass and gives what detect_edges gives", "[imaging]") {
+    // Disks, a ramp and hashed noise, so that many points sit near every threshold.
+    Image im(61, 47, 255);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            const double d1 = std::hypot(x - 20.3, y - 17.6), d2 = std::hypot(x - 44.1, y - 30.2);
+            double v = 40 + 1.5 * x + (d1 < 11 ? 90 : 0) + (d2 < 8 ? -35 : 0);
+            v += double((std::uint32_t(x) * 2654435761u ^ std::uint32_t(y) * 40503u) % 17u);
+            im.at(x, y) = std::uint16_t(std::min(255.0, v));
+        }
+    EdgeDetector detector(im);
+    // Falling beta with r fixed (ERD's loop) reuses the pass; a lower r or a larger beta needs
+    // thresholds below what the pass kept and makes a new one; both must match a fresh detection.
+    const double runs[][2] = {{0.055, 0.4}, {0.028, 0.4}, {0.021, 0.4}, {0.028, 0.1}, {0.2, 0.4}, {0.02, 0.9}};
+    for (const auto& run : runs) {
+        CannyParams p;
+        p.beta = run[0];
+        p.r = run[1];
+        Grid<std::uint8_t> a, b;
+        CannyStats sa, sb;
+        REQUIRE(detector.detect(p, &a, &sa).ok());
+        REQUIRE(detect_edges(im, p, &b, &sb).ok());
+        CHECK(a.data == b.data);
+        CHECK(sa.tau_high == sb.tau_high);
+        CHECK(sa.above_high == sb.above_high);
+        CHECK(sa.main_points == sb.main_points);
+        CHECK(sa.added_points == sb.added_points);
+        CHECK(sa.edge_points == sb.edge_points);
+        CHECK(sa.edge_points > 0);
+    }
+    detector.release();
+    CannyParams bad;
+    bad.beta = 0;
+    Grid<std::uint8_t> e;
+    CHECK(detector.detect(bad, &e).code == Code::input);
+}
+
 TEST_CASE("tracing splits at junctions and keeps closed loops", "[imaging]") {
     // A T of three arms, a ring without nodes, an isolated point.
     const Grid<std::uint8_t> m = make_map({
