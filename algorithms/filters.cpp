@@ -79,27 +79,41 @@ void rows_interior_any(const double* in, double* out, int i0, int i1, int c, con
     }
 }
 
-// Column pass for output row i whose taps all fall inside the image: src[k] = input row i + c - k.
+// Blocks of outputs in a local array (which no source row can alias) let the compiler vectorise
+// without runtime alias checks; M > 0 fixes the tap count so the taps stay in registers.
 template <int M>
-void cols_row(const double* const* src, double* out, int w, const double* t) {
-    double tt[M];
-    for (int k = 0; k < M; ++k) tt[k] = t[k];
-    for (int x = 0; x < w; ++x) {
-        double acc = 0.0;
-        for (int k = 0; k < M; ++k) acc += tt[k] * src[k][x];
-        out[x] = acc;
+void weighted_rows_fixed(const double* const* src, const double* t, int m, double* out, int w) {
+    constexpr int block = 64;
+    const int n = M > 0 ? M : m;
+    int x = 0;
+    for (; x + block <= w; x += block) {
+        double acc[block] = {};
+        for (int k = 0; k < n; ++k) {
+            const double tk = t[k];
+            const double* s = src[k] + x;
+            for (int j = 0; j < block; ++j) acc[j] += tk * s[j];
+        }
+        std::copy(acc, acc + block, out + x);
     }
-}
-
-void cols_row_any(const double* const* src, double* out, int w, const double* t, int m) {
-    for (int x = 0; x < w; ++x) {
+    for (; x < w; ++x) {
         double acc = 0.0;
-        for (int k = 0; k < m; ++k) acc += t[k] * src[k][x];
+        for (int k = 0; k < n; ++k) acc += t[k] * src[k][x];
         out[x] = acc;
     }
 }
 
 }  // namespace
+
+void weighted_rows(const double* const* rows, const double* t, int m, double* out, int w) {
+    switch (m) {
+        case 3: weighted_rows_fixed<3>(rows, t, m, out, w); break;
+        case 4: weighted_rows_fixed<4>(rows, t, m, out, w); break;
+        case 5: weighted_rows_fixed<5>(rows, t, m, out, w); break;
+        case 6: weighted_rows_fixed<6>(rows, t, m, out, w); break;
+        case 7: weighted_rows_fixed<7>(rows, t, m, out, w); break;
+        default: weighted_rows_fixed<0>(rows, t, m, out, w); break;
+    }
+}
 
 Grid<double> convolve_rows(const Grid<double>& in, const std::vector<double>& taps, Border border) {
     Grid<double> out(in.width, in.height);
@@ -136,13 +150,7 @@ Grid<double> convolve_cols(const Grid<double>& in, const std::vector<double>& ta
     std::vector<const double*> src(std::size_t(m), nullptr);
     for (int i = lo; i < hi; ++i) {
         for (int k = 0; k < m; ++k) src[std::size_t(k)] = &in(0, i + c - k);
-        double* dst = &out(0, i);
-        switch (m) {
-            case 3: cols_row<3>(src.data(), dst, w, t); break;
-            case 5: cols_row<5>(src.data(), dst, w, t); break;
-            case 7: cols_row<7>(src.data(), dst, w, t); break;
-            default: cols_row_any(src.data(), dst, w, t, m); break;
-        }
+        weighted_rows(src.data(), t, m, &out(0, i), w);
     }
     return out;
 }

@@ -36,6 +36,11 @@ std::vector<double> derivative2_taps();
 // equal to applying a then b to an infinitely extended signal.
 std::vector<double> compose_taps(const std::vector<double>& a, const std::vector<double>& b);
 
+// One output row of a column filter: out[x] = sum over k = 0..m-1 (ascending, from +0) of
+// t[k] * rows[k][x], x in [0, w). convolve_cols sums the same products in the same order through
+// it, so callers that stream rows (MMSODD) get bit-identical results.
+void weighted_rows(const double* const* rows, const double* t, int m, double* out, int w);
+
 // 1-D convolution of each row (x direction) / each column (y direction). taps must have odd length.
 Grid<double> convolve_rows(const Grid<double>& in, const std::vector<double>& taps, Border border = Border::zero);
 Grid<double> convolve_cols(const Grid<double>& in, const std::vector<double>& taps, Border border = Border::zero);

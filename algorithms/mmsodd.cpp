@@ -15,45 +15,9 @@ double mmsodd_value(double fxx, double fyy, double fxy) {
 
 namespace {
 
-// out[x] = sum over k (ascending) of t[k] * src[k][x], from acc = 0: the same products summed in
-// the same order as convolve_rows / convolve_cols (algorithms/filters.cpp), so the results are
-// bit-identical to theirs; a source outside the image is a row of zeros, and adding t * 0 = +-0
-// to a sum that starts at +0 never changes it. M > 0 fixes the tap count so the taps stay in
-// registers; blocks of outputs in a local array (which no source can alias) let the compiler
-// vectorise without runtime alias checks.
-template <int M>
-void weighted_sum(const double* const* src, const double* t, int m, double* out, int w) {
-    constexpr int block = 64;
-    const int n = M > 0 ? M : m;
-    int x = 0;
-    for (; x + block <= w; x += block) {
-        double acc[block] = {};
-        for (int k = 0; k < n; ++k) {
-            const double tk = t[k];
-            const double* s = src[k] + x;
-            for (int j = 0; j < block; ++j) acc[j] += tk * s[j];
-        }
-        std::copy(acc, acc + block, out + x);
-    }
-    for (; x < w; ++x) {
-        double acc = 0.0;
-        for (int k = 0; k < n; ++k) acc += t[k] * src[k][x];
-        out[x] = acc;
-    }
-}
-
-void weighted_sum_any(const double* const* src, const std::vector<double>& t, double* out, int w) {
-    const int m = int(t.size());
-    switch (m) {
-        case 3: weighted_sum<3>(src, t.data(), m, out, w); break;
-        case 4: weighted_sum<4>(src, t.data(), m, out, w); break;
-        case 5: weighted_sum<5>(src, t.data(), m, out, w); break;
-        case 6: weighted_sum<6>(src, t.data(), m, out, w); break;
-        default: weighted_sum<0>(src, t.data(), m, out, w); break;
-    }
-}
-
-// A 1-D filter without its zero taps: t * x = +-0 for finite x leaves the sum unchanged (above),
+// Rows are summed by weighted_rows (filters.h), in convolve_cols's order; sources outside the
+// image are rows of zeros: adding t * 0 = +-0 to a sum that starts at +0 never changes it.
+// A 1-D filter without its zero taps: t * x = +-0 for finite x leaves the sum unchanged,
 // and the derivative filters have 1 or 2 zeros in 5 taps (a quarter of the work).
 // Tap taps[k] multiplies the sample at offset ct - k; kept in ascending k.
 struct SparseTaps {
@@ -114,7 +78,7 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
             for (int i = 0; i < 3; ++i) {
                 const SparseTaps& f = sx[std::size_t(i)];
                 for (std::size_t k = 0; k < f.taps.size(); ++k) src[k] = padded.data() + c + f.offsets[k];
-                weighted_sum_any(src.data(), f.taps, ring_row(i, j), w);
+                weighted_rows(src.data(), f.taps.data(), int(f.taps.size()), ring_row(i, j), w);
             }
         }
         const int y = j - c;
@@ -125,7 +89,7 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
                 const int r = y + f.offsets[k];
                 src[k] = r >= 0 && r < h ? ring_row(i, r) : zeros.data();
             }
-            weighted_sum_any(src.data(), f.taps, deriv.data() + std::size_t(i) * uw, w);
+            weighted_rows(src.data(), f.taps.data(), int(f.taps.size()), deriv.data() + std::size_t(i) * uw, w);
         }
         double* o = &out(0, y);
         for (int x = 0; x < w; ++x) o[x] = mmsodd_value(deriv[std::size_t(x)], deriv[uw + std::size_t(x)], deriv[2 * uw + std::size_t(x)]);

@@ -53,10 +53,16 @@ void Cdt::set_face(FaceInd f, VertInd a, VertInd b, VertInd c) {
     touch(f);
 }
 
-void Cdt::link(EdgeInd e, EdgeInd t) {
-    twin_[e] = t;
-    if (t != noEdge) twin_[t] = e;
+namespace {
+// Makes e and t twins (t may be noEdge) in the raw twin array T: the hot paths (flip,
+// split_face) work on local array pointers.
+inline void link_twins(EdgeInd* T, EdgeInd e, EdgeInd t) {
+    T[e] = t;
+    if (t != noEdge) T[t] = e;
 }
+}  // namespace
+
+void Cdt::link(EdgeInd e, EdgeInd t) { link_twins(twin_.data(), e, t); }
 
 Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     if (max_x < 1 || max_y < 1 || max_x >= kMaxCoord || max_y >= kMaxCoord)
@@ -129,14 +135,10 @@ EdgeInd Cdt::flip(EdgeInd e) {
     O[b] = g2 + 1;
     O[c] = g1;
     O[d] = g2;
-    T[g1] = tca;
-    if (tca != noEdge) T[tca] = g1;
-    T[g1 + 1] = tad;
-    if (tad != noEdge) T[tad] = g1 + 1;
-    T[g2] = tdb;
-    if (tdb != noEdge) T[tdb] = g2;
-    T[g2 + 1] = tbc;
-    if (tbc != noEdge) T[tbc] = g2 + 1;
+    link_twins(T, g1, tca);
+    link_twins(T, g1 + 1, tad);
+    link_twins(T, g2, tdb);
+    link_twins(T, g2 + 1, tbc);
     T[g1 + 2] = g2 + 2;
     T[g2 + 2] = g1 + 2;
     F[g1] = fca;
@@ -208,10 +210,8 @@ void Cdt::split_face(FaceInd f, VertInd p) {
     O[b] = e1;
     O[c] = e2;
     O[p] = e2 + 2;
-    T[e1] = tbc;
-    if (tbc != noEdge) T[tbc] = e1;
-    T[e2] = tca;
-    if (tca != noEdge) T[tca] = e2;
+    link_twins(T, e1, tbc);
+    link_twins(T, e2, tca);
     T[e + 1] = e1 + 2;
     T[e1 + 2] = e + 1;
     T[e1 + 1] = e2 + 2;
