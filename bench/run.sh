@@ -20,39 +20,25 @@ elif [[ -d /dev/shm && -w /dev/shm ]]; then OUT=$(mktemp -d /dev/shm/erd-bench-X
 else OUT=out/bench; fi
 mkdir -p "$OUT"
 if [[ ! -x $ERD ]]; then echo "bench: $ERD is not built (try: make)"; exit 1; fi
-TIME=/usr/bin/time
-[[ -x $TIME ]] || TIME=""
+# Whole-process cases are timed by bench/timeit.cpp (fork, exec, wait4: microsecond CPU times
+# from the child's own rusage, no shell or /usr/bin/time in the measured interval).
+TIMEIT=$(dirname "$ERD")/timeit
+if ! ${CXX:-g++} -O2 -std=c++17 bench/timeit.cpp -o "$TIMEIT"; then echo "bench: bench/timeit.cpp did not build"; exit 1; fi
 
-median() { sort -g | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-
-# bench_case NAME TARGET_MS -- COMMAND...   (COMMAND is run RUNS times; its output is discarded)
-# Prints: name, median wall ms, median CPU ms (user+sys, 10 ms resolution), peak RSS, target.
+# bench_case NAME TARGET_MS -- COMMAND...   (one warm-up run, then RUNS timed runs; output discarded)
+# Prints: name, median wall ms, median CPU ms (user+sys), peak RSS, target, and with CALLGRIND=1
+# the instruction count of one run.
 bench_case() {
     local name=$1 target=$2
     shift 3
-    local walls=() cpus=() rss=0 i t0 t1 line
-    for ((i = 0; i < RUNS; i++)); do
-        t0=$(date +%s%N)
-        if [[ -n $TIME ]]; then
-            line=$("$TIME" -f "%U %S %M" "$@" 2>&1 >/dev/null | tail -1)
-        else
-            "$@" >/dev/null 2>&1; line="0 0 0"
-        fi
-        t1=$(date +%s%N)
-        walls+=("$(( (t1 - t0) / 1000 ))")
-        read -r u s m <<<"$line"
-        cpus+=("$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.0f", (u + s) * 1000 }')")
-        (( m > rss )) && rss=$m
-    done
-    local wall cpu verdict ir=""
-    wall=$(printf '%s\n' "${walls[@]}" | median | awk '{ printf "%.1f", $1 / 1000 }')
-    cpu=$(printf '%s\n' "${cpus[@]}" | median)
-    verdict=$(awk -v w="$wall" -v t="$target" 'BEGIN { print (w <= t) ? "ok" : "over" }')
+    local wall cpu rss verdict ir=""
+    read -r wall cpu rss < <("$TIMEIT" "$RUNS" "$@" || echo "- - -")
+    verdict=$(awk -v w="$wall" -v t="$target" 'BEGIN { print (w != "-" && w <= t) ? "ok" : "over" }')
     if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
         ir=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 >/dev/null |
              sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | awk '{ printf "  %.0fM instr", $1 / 1e6 }')
     fi
-    printf '%-34s wall %8s ms  cpu %5s ms  rss %7s KB  target %5s ms %-4s%s\n' "$name" "$wall" "$cpu" "$rss" "$target" "$verdict" "$ir"
+    printf '%-34s wall %8s ms  cpu %6s ms  rss %7s KB  target %5s ms %-4s%s\n' "$name" "$wall" "$cpu" "$rss" "$target" "$verdict" "$ir"
 }
 
 echo "bench: $RUNS runs per case, medians; $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); outputs in $OUT"
