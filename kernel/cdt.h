@@ -251,7 +251,7 @@ private:
     // Scratch buffers reused across calls.
     std::vector<EdgeInd> stack_;
     std::vector<Pair> pairs_, pairs2_;
-    std::vector<std::uint64_t> sort_buf_, sort_tmp_;  // insert_points' ordering (packed keys)
+    std::vector<std::uint64_t> sort_buf_, sort_tmp_;  // insert_points' order (spatial_order.h)
 };
 
 // A canonical form of the triangulation for comparisons: every face as its three points rotated

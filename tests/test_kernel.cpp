@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <set>
 #include <string>
@@ -11,6 +12,7 @@
 
 #include "kernel/cdt.h"
 #include "kernel/predicates.h"
+#include "kernel/spatial_order.h"
 
 using namespace erd;
 
@@ -606,4 +608,55 @@ TEST_CASE("insert_points on a huge rectangle (keys too wide to pack) agrees with
     for (const LatticePoint& p : pts) must_insert(single, p);
     CHECK(canonical_faces(batch) == canonical_faces(single));
     must_verify(batch);
+}
+
+TEST_CASE("hilbert_index walks the whole square in unit steps", "[kernel]") {
+    for (int order = 1; order <= 6; ++order) {
+        const std::uint32_t side = 1u << order;
+        std::vector<std::array<std::uint32_t, 2>> at(std::size_t(side) * side, {side, side});
+        for (std::uint32_t y = 0; y < side; ++y)
+            for (std::uint32_t x = 0; x < side; ++x) {
+                const std::uint64_t d = hilbert_index(x, y, order);
+                REQUIRE(d < at.size());
+                REQUIRE(at[d][0] == side);  // a bijection: no index taken twice
+                at[d] = {x, y};
+            }
+        for (std::size_t d = 1; d < at.size(); ++d) {  // consecutive indices are 4-neighbours
+            const int dx = int(at[d][0]) - int(at[d - 1][0]), dy = int(at[d][1]) - int(at[d - 1][1]);
+            INFO("order " << order << " index " << d);
+            REQUIRE(std::abs(dx) + std::abs(dy) == 1);
+        }
+    }
+}
+
+TEST_CASE("brio_order is a permutation in rounds of doubling size, each in Hilbert order", "[kernel]") {
+    std::mt19937 rng(11);
+    for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(64), std::size_t(65), std::size_t(1000)}) {
+        std::vector<LatticePoint> pts(n);
+        for (LatticePoint& p : pts) p = {int(rng() % 200), int(rng() % 120)};
+        std::vector<std::uint64_t> order, tmp;
+        brio_order(pts, 8, &order, &tmp);
+        REQUIRE(order.size() == n);
+        std::vector<bool> seen(n, false);
+        for (const std::uint64_t i : order) {
+            REQUIRE(i < n);
+            REQUIRE_FALSE(seen[i]);
+            seen[i] = true;
+        }
+        std::size_t round_begin = 0, round_end = 64;
+        for (std::size_t j = 1; j < n; ++j) {
+            if (j == round_end) {
+                round_begin = j;
+                round_end *= 2;
+                continue;
+            }
+            const LatticePoint a = pts[order[j - 1]], b = pts[order[j]];
+            INFO("n " << n << " position " << j << " round from " << round_begin);
+            REQUIRE(hilbert_index(std::uint32_t(a.x), std::uint32_t(a.y), 8) <=
+                    hilbert_index(std::uint32_t(b.x), std::uint32_t(b.y), 8));
+        }
+        std::vector<std::uint64_t> again, tmp2;
+        brio_order(pts, 8, &again, &tmp2);
+        REQUIRE(again == order);  // deterministic
+    }
 }
