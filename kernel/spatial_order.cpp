@@ -68,11 +68,10 @@ void radix_sort(std::vector<std::uint64_t>* v, std::vector<std::uint64_t>* tmp, 
     }
 }
 
-}  // namespace
-
-// The levels are padded at the top to a multiple of three; a padding level (bits 0, 0) only toggles the swap
-// bit, so starting in state (padding & 1) gives the same curve as the unpadded order.
-std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
+// hilbert_index, inlined into brio_order's key loop. The levels are padded at the top to a multiple
+// of three; a padding level (bits 0, 0) only toggles the swap bit, so starting in state
+// (padding & 1) gives the same curve as the unpadded order.
+inline std::uint64_t hilbert_key(std::uint32_t x, std::uint32_t y, int order) {
     const int levels = (order + 2) / 3 * 3;
     const std::uint64_t morton = spread_bits(x) << 1 | spread_bits(y);
     std::uint64_t d = 0;
@@ -84,6 +83,10 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
     }
     return d;
 }
+
+}  // namespace
+
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) { return hilbert_key(x, y, order); }
 
 // BRIO (Amenta, Choi, Rote): points go into rounds of doubling size by a deterministic shuffle,
 // each round in Hilbert order. Pure Hilbert order inserts each point next to the long thin
@@ -121,7 +124,7 @@ void brio_order(const std::vector<LatticePoint>& pts, int bits, std::vector<std:
         const std::uint64_t index = buf[j];
         const LatticePoint q = pts[index];
         const std::uint64_t key =
-            std::uint64_t(round) << (2 * bits) | hilbert_index(std::uint32_t(q.x), std::uint32_t(q.y), bits);
+            std::uint64_t(round) << (2 * bits) | hilbert_key(std::uint32_t(q.x), std::uint32_t(q.y), bits);
         if (packed)
             buf[j] = key << index_bits | index;
         else
