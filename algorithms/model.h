@@ -15,14 +15,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace erd {
+#include "kernel/lattice.h"
 
-struct LatticePoint {
-    std::int32_t x = 0;  // doubled
-    std::int32_t y = 0;  // doubled
-    friend bool operator==(LatticePoint a, LatticePoint b) { return a.x == b.x && a.y == b.y; }
-    friend bool operator!=(LatticePoint a, LatticePoint b) { return !(a == b); }
-};
+namespace erd {
 
 enum class ModelKind { basic, erd };
 

@@ -46,7 +46,7 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/model.h"
+#include "kernel/lattice.h"
 #include "kernel/predicates.h"
 #include "kernel/status.h"
 

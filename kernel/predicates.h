@@ -30,7 +30,7 @@
 #pragma once
 #include <cstdint>
 
-#include "algorithms/model.h"
+#include "kernel/lattice.h"
 
 namespace erd {
 
