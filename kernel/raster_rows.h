@@ -100,21 +100,22 @@ inline EdgeLine edge_line(const Lattice& l, const EdgeFn& e, std::int64_t j) {
     return {K0 + e.A * l.phase_x, -e.A * l.step_x, dK};
 }
 
-// The bound kept as quotient and remainder and stepped per row instead of dividing.
-// Branch-free: the carry is as likely as not, so a branch on it would be mispredicted half the
-// time.
+// The bound ceil(n / D) kept with its excess s = ceil(n / D)*D - n in [0, D) and stepped per row
+// instead of dividing: n += dn with dn = dq*D + dr (0 <= dr < D) takes s to s - dr - dq*D, so the
+// bound grows by dq, plus one when s - dr borrows. Branch-free: the borrow is as likely as not,
+// so a branch on it would be mispredicted half the time.
 struct Stepper {
-    std::int64_t q = 0, r = 0, D = 1, dq = 0, dr = 0;  // n = q*D + r, 0 <= r < D
+    std::int64_t c = 0, s = 0, D = 1, dq = 0, dr = 0;
     Stepper() = default;
     explicit Stepper(const EdgeLine& e)
-        : q(floor_div(e.n0, e.den)), r(e.n0 - q * e.den), D(e.den), dq(floor_div(e.dn, e.den)),
+        : c(ceil_div(e.n0, e.den)), s(c * e.den - e.n0), D(e.den), dq(floor_div(e.dn, e.den)),
           dr(e.dn - dq * e.den) {}
-    std::int64_t ceil() const { return q + (r != 0); }
+    std::int64_t ceil() const { return c; }
     void step() {
-        r += dr;
-        const std::int64_t carry = r >= D;
-        q += dq + carry;
-        r -= D & -carry;
+        s -= dr;
+        const std::int64_t borrow = s < 0;
+        c += dq + borrow;
+        s += D & -borrow;
     }
 };
 
