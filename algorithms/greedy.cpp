@@ -142,12 +142,13 @@ inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banne
 // rounded square is monotone in |e|, so every pixel that passes the exact test passes the screen,
 // and the screen costs nothing because e^2 is needed for the sum anyway. The sum is accumulated
 // pixel by pixel in scan order, as before, so it is the same double.
-inline bool scan_real(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
-                      double v, double dv, double* sum, double* best, double* best2, std::int32_t* bx) {
+inline bool scan_real(const std::uint16_t* samples, const double* as_double, const std::uint8_t* banned,
+                      std::int32_t x0, std::int32_t x1, double v, double dv, double* sum, double* best,
+                      double* best2, std::int32_t* bx) {
     double acc = 0.0, b = *best, b2 = *best2;
     bool moved = false;
     auto visit = [&](std::int32_t x, double vx) {
-        const double e = double(samples[x]) - vx;
+        const double e = as_double[samples[x]] - vx;
         const double e2 = e * e;
         acc += e2;
         if (e2 >= b2 && std::fabs(e) > b && !banned[x]) {
@@ -183,6 +184,8 @@ public:
           banned_(std::size_t(image.width) * std::size_t(image.height), 0),
           domain_{cdt.max_x(), cdt.max_y()} {
         peak_ = std::pow(2.0, image.bits()) - 1.0;
+        if (!options.round_values)
+            for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
         track_max_ = options.max_error >= 0.0;
         // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
         std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
@@ -323,7 +326,7 @@ private:
             double best2 = -1.0;
             walk([&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j, std::int32_t lo,
                      std::int32_t hi, double v) {
-                if (scan_real(srow, brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
+                if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
             });
         }
         fs.sum = sum;
@@ -345,6 +348,9 @@ private:
     GreedyModel& model_;
     const GreedyOptions& options_;
     std::vector<std::uint8_t> banned_;  // per pixel: vertex already, or refused by the model
+    // Sample value -> double, for the real-valued scan: a load instead of a conversion (which
+    // also needs a register cleared first).
+    std::vector<double> as_double_;
     RasterDomain domain_;
     std::vector<FaceState> faces_;
     std::vector<std::uint32_t> stamp_;  // generation in which the face was last scanned
