@@ -57,6 +57,25 @@ inline std::int32_t rounded(double v, double maxval) {
     return r < 0 ? 0 : r;
 }
 
+// Calls visit(x, v) for x = x0..x1 with the running value v, v + dv, v + dv + dv, ... (the
+// serial sum reconstruction steps too). Four pixels per trip; v is updated in place (no copies of
+// it are live, which saves a register copy per pixel with two-operand SSE).
+template <class Visit>
+inline void step_span(std::int32_t x0, std::int32_t x1, double v, double dv, Visit& visit) {
+    std::int32_t x = x0;
+    for (; x + 3 <= x1; x += 4) {
+        visit(x, v);
+        v += dv;
+        visit(x + 1, v);
+        v += dv;
+        visit(x + 2, v);
+        v += dv;
+        visit(x + 3, v);
+        v += dv;
+    }
+    for (; x <= x1; ++x, v += dv) visit(x, v);
+}
+
 // Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
 template <Rounding R>
 inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
@@ -75,20 +94,7 @@ inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* 
             moved = true;
         }
     };
-    // Four pixels per trip; v is updated in place (no copies of it are live, which saves a
-    // register copy per pixel with two-operand SSE).
-    std::int32_t x = x0;
-    for (; x + 3 <= x1; x += 4) {
-        visit(x, v);
-        v += dv;
-        visit(x + 1, v);
-        v += dv;
-        visit(x + 2, v);
-        v += dv;
-        visit(x + 3, v);
-        v += dv;
-    }
-    for (; x <= x1; ++x, v += dv) visit(x, v);
+    step_span(x0, x1, v, dv, visit);
     *sum += std::int64_t(acc);
     *best_sq = b;
     return moved;
@@ -158,19 +164,7 @@ inline bool scan_real(const std::uint16_t* samples, const double* as_double, con
             moved = true;
         }
     };
-    // Four pixels per trip with v updated in place, as in scan_rounded_impl.
-    std::int32_t x = x0;
-    for (; x + 3 <= x1; x += 4) {
-        visit(x, v);
-        v += dv;
-        visit(x + 1, v);
-        v += dv;
-        visit(x + 2, v);
-        v += dv;
-        visit(x + 3, v);
-        v += dv;
-    }
-    for (; x <= x1; ++x, v += dv) visit(x, v);
+    step_span(x0, x1, v, dv, visit);
     *sum += acc;
     *best = b;
     *best2 = b2;
