@@ -18,6 +18,7 @@ std::int64_t scan_triangle(const Lattice& l, RasterDomain d, LatticePoint a, Lat
                            std::vector<Span>* out, std::int32_t j_begin, std::int32_t j_end) {
     out->clear();
     OwnedRows rows(l, d, a, b, c, j_begin, j_end);
+    out->reserve(rows.max_rows());  // push_back below then never reallocates
     std::int64_t count = 0;
     for (RowRun part; rows.next(&part);) {
         for (RowRun run = part; run.j <= run.j_end; run.step()) {

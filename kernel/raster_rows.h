@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 
@@ -119,6 +120,15 @@ struct Stepper {
     }
 };
 
+// The right border x == max_x as a lattice column a triangle reaches: the row rule (sx = +1)
+// never owns it, so it is tested with sx = -1; if it is owned, convexity puts every point between
+// the row's span and it in the triangle too.
+struct BorderColumn {
+    const Setup* s = nullptr;
+    std::int64_t i = 0;            // its column index
+    std::int64_t y0 = 0, dy = 0;   // fine y of lattice row j: y0 + dy*j
+};
+
 }  // namespace raster_detail
 
 // Consecutive rows j..j_end whose owned columns are bounded by the same two steppers (see
@@ -128,20 +138,15 @@ struct RowRun {
     std::int64_t j = 0, j_end = -1;
     raster_detail::Stepper left, right;  // lo = left.ceil(), hi = right.ceil() - 1 before clipping
     std::int64_t i_lo = 0, i_hi = -1;    // the bounding box's columns, clipped to the domain
-    // Set when the right border x == max_x is a lattice column the triangle reaches: the row rule
-    // (sx = +1) never owns it, so it is tested with sx = -1; if it is owned, convexity puts every
-    // point between the row's span and it in the triangle too.
-    const raster_detail::Setup* border = nullptr;
-    std::int64_t i_border = 0;
-    Lattice lattice;
+    const raster_detail::BorderColumn* border = nullptr;  // set when the triangle reaches it
 
     // The owned columns lo..hi of row j (none when lo > hi).
     void columns(std::int64_t* lo, std::int64_t* hi) const {
         *lo = std::max(left.ceil(), i_lo);
         *hi = std::min(right.ceil() - 1, i_hi);
-        if (border && raster_detail::owns_point(*border, border->mx, lattice.fine_y(j))) {
-            if (*lo > *hi) *lo = i_border;
-            *hi = i_border;
+        if (border && raster_detail::owns_point(*border->s, border->s->mx, border->y0 + border->dy * j)) {
+            if (*lo > *hi) *lo = border->i;
+            *hi = border->i;
         }
     }
     void step() {
@@ -179,13 +184,11 @@ public:
         j0_ = std::max<std::int64_t>(j_begin, ceil_div(std::max<std::int64_t>(s_.ymin, 0) - l.phase_y, l.step_y));
         j1_ = std::min<std::int64_t>(j_end, floor_div(std::min(s_.ymax, s_.my) - l.phase_y, l.step_y));
         if (j0_ > j1_) return;
-        proto_.lattice = l;
-        proto_.i_lo = ceil_div(std::max<std::int64_t>(s_.xmin, 0) - l.phase_x, l.step_x);
-        proto_.i_hi = floor_div(std::min(s_.xmax, s_.mx) - l.phase_x, l.step_x);
-        if (s_.xmax == s_.mx && (s_.mx - l.phase_x) % l.step_x == 0) {
-            proto_.border = &s_;
-            proto_.i_border = (s_.mx - l.phase_x) / l.step_x;
-        }
+        lattice_ = l;
+        i_lo_ = ceil_div(std::max<std::int64_t>(s_.xmin, 0) - l.phase_x, l.step_x);
+        i_hi_ = floor_div(std::min(s_.xmax, s_.mx) - l.phase_x, l.step_x);
+        if (s_.xmax == s_.mx && (s_.mx - l.phase_x) % l.step_x == 0)
+            border_ = BorderColumn{&s_, (s_.mx - l.phase_x) / l.step_x, l.phase_y, l.step_y};
         // Edge t runs from vertex t to vertex t+1. T: a vertex of least y; Bt: of largest y.
         int t = 0, bt = 0;
         for (int k = 1; k < 3; ++k) {
@@ -204,6 +207,9 @@ public:
         part_ = 0;
     }
 
+    // At most this many rows own points (the bounding box's rows in the window).
+    std::size_t max_rows() const { return part_ == 3 ? 0 : std::size_t(j1_ - j0_ + 1); }
+
     // The next run of rows; false when there is none left. A run may hold rows that own nothing.
     bool next(RowRun* run) {
         using namespace raster_detail;
@@ -213,9 +219,11 @@ public:
             else if (part_ == 1) first = std::max(above_ + 1, j0_), last = std::min(below_ - 1, j1_);
             else first = below_, last = j1_;
             if (first > last) continue;
-            *run = proto_;
             run->j = first;
             run->j_end = last;
+            run->i_lo = i_lo_;
+            run->i_hi = i_hi_;
+            run->border = border_.s ? &border_ : nullptr;
             if (part_ == 1) {
                 std::int64_t lo, hi;
                 all_edges(first, &lo, &hi);
@@ -223,8 +231,8 @@ public:
                 run->right = Stepper(EdgeLine{hi + 1, 1, 0});
             } else {
                 const int* e = part_ == 0 ? upper_.data() : lower_.data();
-                run->left = Stepper(edge_line(proto_.lattice, s_.e[e[0]], first));
-                run->right = Stepper(edge_line(proto_.lattice, s_.e[e[1]], first));
+                run->left = Stepper(edge_line(lattice_, s_.e[e[0]], first));
+                run->right = Stepper(edge_line(lattice_, s_.e[e[1]], first));
             }
             ++part_;
             return true;
@@ -236,15 +244,15 @@ private:
     // Row j with all three edges tested (the middle vertex's row): a horizontal edge lies on such
     // a row and is K = 0 along it, ties by sy.
     void all_edges(std::int64_t j, std::int64_t* lo, std::int64_t* hi) const {
-        *lo = proto_.i_lo;
-        *hi = proto_.i_hi;
-        const std::int64_t y = proto_.lattice.fine_y(j);
+        *lo = i_lo_;
+        *hi = i_hi_;
+        const std::int64_t y = lattice_.fine_y(j);
         for (const raster_detail::EdgeFn& e : s_.e) {
             if (e.A == 0) {
                 if (y == e.ay && !((y == s_.my ? -e.B : e.B) > 0)) *hi = *lo - 1;
                 continue;
             }
-            const raster_detail::EdgeLine line = raster_detail::edge_line(proto_.lattice, e, j);
+            const raster_detail::EdgeLine line = raster_detail::edge_line(lattice_, e, j);
             const std::int64_t bound = raster_detail::ceil_div(line.n0, line.den);
             if (e.A > 0) *lo = std::max(*lo, bound);
             else *hi = std::min(*hi, bound - 1);
@@ -252,7 +260,9 @@ private:
     }
 
     raster_detail::Setup s_;
-    RowRun proto_;                       // what every run shares: clipping, border, lattice
+    Lattice lattice_;
+    std::int64_t i_lo_ = 0, i_hi_ = -1;  // the bounding box's columns, clipped to the domain
+    raster_detail::BorderColumn border_;  // border_.s null: the triangle does not reach it
     std::int64_t j0_ = 0, j1_ = -1;      // the rows of the bounding box in the window
     std::int64_t above_ = 0, below_ = 0;  // last row above M, first row below M
     std::array<int, 2> upper_{}, lower_{};  // (left, right) edges of the rows above and below M
