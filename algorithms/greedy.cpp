@@ -1,11 +1,13 @@
 #include "algorithms/greedy.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <limits>
 
 #include "algorithms/heap.h"
+#include "kernel/raster_rows.h"
 
 namespace erd {
 
@@ -55,6 +57,25 @@ inline std::int32_t rounded(double v, double maxval) {
     return r < 0 ? 0 : r;
 }
 
+// Calls visit(x, v) for x = x0..x1 with the running value v, v + dv, v + dv + dv, ... (the
+// serial sum reconstruction steps too). Four pixels per trip; v is updated in place (no copies of
+// it are live, which saves a register copy per pixel with two-operand SSE).
+template <class Visit>
+inline void step_span(std::int32_t x0, std::int32_t x1, double v, double dv, Visit& visit) {
+    std::int32_t x = x0;
+    for (; x + 3 <= x1; x += 4) {
+        visit(x, v);
+        v += dv;
+        visit(x + 1, v);
+        v += dv;
+        visit(x + 2, v);
+        v += dv;
+        visit(x + 3, v);
+        v += dv;
+    }
+    for (; x <= x1; ++x, v += dv) visit(x, v);
+}
+
 // Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
 template <Rounding R>
 inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
@@ -73,20 +94,7 @@ inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* 
             moved = true;
         }
     };
-    // Four pixels per trip; v is updated in place (no copies of it are live, which saves a
-    // register copy per pixel with two-operand SSE).
-    std::int32_t x = x0;
-    for (; x + 3 <= x1; x += 4) {
-        visit(x, v);
-        v += dv;
-        visit(x + 1, v);
-        v += dv;
-        visit(x + 2, v);
-        v += dv;
-        visit(x + 3, v);
-        v += dv;
-    }
-    for (; x <= x1; ++x, v += dv) visit(x, v);
+    step_span(x0, x1, v, dv, visit);
     *sum += std::int64_t(acc);
     *best_sq = b;
     return moved;
@@ -135,23 +143,31 @@ inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banne
     return scan_rounded_impl<Rounding::plain>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
 }
 
-// Real-valued: errors against the plane itself.
-inline bool scan_real(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
-                      double v, double dv, double* sum, double* best, std::int32_t* bx) {
-    double acc = 0.0, b = *best;
+// Real-valued: errors against the plane itself. The candidate test |e| > best is screened by
+// e^2 >= best^2 (*best2 holds the rounded square of *best, or -1 while there is no candidate): the
+// rounded square is monotone in |e|, so every pixel that passes the exact test passes the screen,
+// and the screen costs nothing because e^2 is needed for the sum anyway. The sum is accumulated
+// pixel by pixel in scan order, as before, so it is the same double.
+inline bool scan_real(const std::uint16_t* samples, const double* as_double, const std::uint8_t* banned,
+                      std::int32_t x0, std::int32_t x1, double v, double dv, double* sum, double* best,
+                      double* best2, std::int32_t* bx) {
+    double acc = 0.0, b = *best, b2 = *best2;
     bool moved = false;
-    for (std::int32_t x = x0; x <= x1; ++x, v += dv) {
-        const double e = double(samples[x]) - v;
-        acc += e * e;
-        const double ae = std::fabs(e);
-        if (ae > b && !banned[x]) {
-            b = ae;
+    auto visit = [&](std::int32_t x, double vx) {
+        const double e = as_double[samples[x]] - vx;
+        const double e2 = e * e;
+        acc += e2;
+        if (e2 >= b2 && std::fabs(e) > b && !banned[x]) {
+            b = std::fabs(e);
+            b2 = e2;
             *bx = x;
             moved = true;
         }
-    }
+    };
+    step_span(x0, x1, v, dv, visit);
     *sum += acc;
     *best = b;
+    *best2 = b2;
     return moved;
 }
 
@@ -162,6 +178,8 @@ public:
           banned_(std::size_t(image.width) * std::size_t(image.height), 0),
           domain_{cdt.max_x(), cdt.max_y()} {
         peak_ = std::pow(2.0, image.bits()) - 1.0;
+        if (!options.round_values)
+            for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
         track_max_ = options.max_error >= 0.0;
         // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
         std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
@@ -251,12 +269,29 @@ private:
         FaceState& fs = faces_[f];
         total_ -= fs.sum;
         const SpanPlane plane = model_.face_plane(cdt_, f);
-        scan_triangle(Lattice::pixels(), domain_, cdt_.point(cdt_.face_vertex(f, 0)),
-                      cdt_.point(cdt_.face_vertex(f, 1)), cdt_.point(cdt_.face_vertex(f, 2)), &spans_);
-        // Pixel (i, j) is doubled point (2i, 2j): the same values as plane.at(Lattice::pixels(), i, j)
-        // and step_x (which divide by the lattice's scale 1) without two divisions per span.
-        auto start = [&plane](const Span& s) { return plane.at(double(2 * s.x_begin), double(2 * s.y)); };
+        const LatticePoint p[3] = {cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
+                                   cdt_.point(cdt_.face_vertex(f, 2))};
         const double dv = 2.0 * plane.gx;
+        // Row j of the pixel lattice, columns lo..hi: the row's samples and ban flags, and the
+        // plane at its first pixel. Pixel (i, j) is doubled point (2i, 2j): the same values as
+        // plane.at(Lattice::pixels(), i, j) and step_x (which divide by the lattice's scale 1)
+        // without two divisions per row.
+        const std::uint16_t* const samples = image_.samples.data();
+        const std::uint8_t* const banned = banned_.data();
+        const std::size_t width = std::size_t(image_.width);
+        auto walk = [&](auto&& scan_row) {
+            OwnedRows rows(Lattice::pixels(), domain_, p[0], p[1], p[2]);
+            for (RowRun part; rows.next(&part);) {
+                for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                    std::int64_t lo64, hi64;
+                    run.columns(&lo64, &hi64);
+                    if (lo64 > hi64) continue;
+                    const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
+                    const std::size_t row = std::size_t(j) * width;
+                    scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+                }
+            }
+        };
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
         if (options_.round_values) {
@@ -265,8 +300,7 @@ private:
             // its corners: if these pass (with the margin that covers the running sum's drift),
             // every span does.
             double zlo = std::numeric_limits<double>::infinity(), zhi = -zlo;
-            for (int i = 0; i < 3; ++i) {
-                const LatticePoint q = cdt_.point(cdt_.face_vertex(f, i));
+            for (const LatticePoint& q : p) {
                 const double z = plane.at(q.x, q.y);
                 zlo = std::min(zlo, z);
                 zhi = std::max(zhi, z);
@@ -276,21 +310,18 @@ private:
                 range = zlo - 1e-3 > 0.0 && binade(zlo - 1e-3) == binade(zhi + 0.5 + 1e-3) ? FaceRange::one_binade
                                                                                           : FaceRange::clamp_free;
             std::int64_t isum = 0, ibest_sq = -1;
-            for (const Span& s : spans_) {
-                const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
-                if (scan_rounded(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
-                                 start(s), dv, maxval, range, &isum, &ibest_sq, &bx))
-                    by = s.y;
-            }
+            walk([&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j, std::int32_t lo,
+                     std::int32_t hi, double v) {
+                if (scan_rounded(srow, brow, lo, hi, v, dv, maxval, range, &isum, &ibest_sq, &bx)) by = j;
+            });
             sum = double(isum);
             best = ibest_sq < 0 ? -1.0 : std::sqrt(double(ibest_sq));  // exact: a perfect square
         } else {
-            for (const Span& s : spans_) {
-                const std::size_t row = std::size_t(s.y) * std::size_t(image_.width);
-                if (scan_real(image_.samples.data() + row, banned_.data() + row, s.x_begin, s.x_end,
-                              start(s), dv, &sum, &best, &bx))
-                    by = s.y;
-            }
+            double best2 = -1.0;
+            walk([&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j, std::int32_t lo,
+                     std::int32_t hi, double v) {
+                if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
+            });
         }
         fs.sum = sum;
         total_ += sum;
@@ -311,6 +342,9 @@ private:
     GreedyModel& model_;
     const GreedyOptions& options_;
     std::vector<std::uint8_t> banned_;  // per pixel: vertex already, or refused by the model
+    // Sample value -> double, for the real-valued scan: a load instead of a conversion (which
+    // also needs a register cleared first).
+    std::vector<double> as_double_;
     RasterDomain domain_;
     std::vector<FaceState> faces_;
     std::vector<std::uint32_t> stamp_;  // generation in which the face was last scanned
@@ -320,7 +354,6 @@ private:
     bool track_max_ = false;
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
-    std::vector<Span> spans_;
 };
 
 }  // namespace
