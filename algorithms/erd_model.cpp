@@ -21,7 +21,7 @@ void wedge_bisector(LatticePoint u1, LatticePoint u2, double* dx, double* dy) {
     *dy = std::sin(t);
 }
 
-ErdModel::ErdModel(const Grid<double>& phi, const WedgeValueOptions& options) : phi_(phi), options_(options) {}
+ErdModel::ErdModel(const Image& image, const WedgeValueOptions& options) : phi_(image), options_(options) {}
 
 double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     const LatticePoint p = cdt.point(v);
@@ -72,7 +72,11 @@ double ErdModel::mmsodd_pixel(int x, int y) {
     double fxx = 0, fyy = 0, fxy = 0;
     for (int m = -rad; m <= rad; ++m) {
         const int v = y - m;
-        for (int n = -rad; n <= rad; ++n) f[-n] = phi_.inside(x - n, v) ? phi_(x - n, v) : 0.0;
+        const bool row_in = v >= 0 && v < phi_.height;
+        for (int n = -rad; n <= rad; ++n) {
+            const int u = x - n;
+            f[-n] = row_in && u >= 0 && u < phi_.width ? double(phi_.at(u, v)) : 0.0;
+        }
         double rb = 0, rd1 = 0, rd2 = 0;
         for (int n = -cb; n <= cb; ++n) rb += taps_b_[std::size_t(n + cb)] * f[-n];
         for (int n = -cd; n <= cd; ++n) {

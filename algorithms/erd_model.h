@@ -46,9 +46,10 @@ struct WedgeValueOptions {
 // which keeps every existing wedge id.
 class ErdModel {
 public:
-    // phi: the image samples (pixel grid, W x H), kept by reference for the model's lifetime.
-    // The MMSODD grid of the line search is computed once, on the first multi-wedge vertex.
-    ErdModel(const Grid<double>& phi, const WedgeValueOptions& options);
+    // image: the samples phi (W x H), kept by reference for the model's lifetime and read as
+    // integers (no W x H double copy: bit for bit the same values). Without set_mmsodd the line
+    // search computes the MMSODD at the pixels it reads (see local_).
+    ErdModel(const Image& image, const WedgeValueOptions& options);
 
     // Supplies the MMSODD grid of the line search (it must be mmsodd(phi, smoothing_order) with
     // zero borders), so a caller that computed it already (ERDED's density) does not pay twice.
@@ -107,7 +108,7 @@ private:
     double mmsodd_at(double x, double y);  // bilinear MMSODD, from the grid or computed locally
     double mmsodd_pixel(int x, int y);     // MMSODD at one pixel, computed on first use
 
-    const Grid<double>& phi_;
+    const Image& phi_;
     WedgeValueOptions options_;
     Grid<double> mmsodd_;
     bool have_mmsodd_ = false;

@@ -134,7 +134,6 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     InitialMesh mesh;
     Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result);
     if (!st) return st;
-    const Grid<double> phi = to_grid(image);
     const std::int64_t n = std::int64_t(result->requested);
     auto t0 = std::chrono::steady_clock::now();
 
@@ -149,7 +148,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
-        d5 = mmsodd(phi, 5);
+        d5 = mmsodd(to_grid(image), 5);  // the double copy lives only while the MMSODD is made
         Grid<double> density = ed_density(d5, 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
@@ -175,7 +174,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     std::vector<VertInd> ids;
     st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it
     if (!st) return st;
-    ErdModel model(phi, wo);
+    ErdModel model(image, wo);
     if (wo.rule == 1 && wo.smoothing_order == 5 && d5.width > 0) model.set_mmsodd(std::move(d5));
     model.assign_all(cdt);
     result->stages.push_back({"triangulation and wedge values", seconds_since(t0)});

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/bilinear.h"
 #include "algorithms/erd_mesh.h"
 #include "algorithms/erd_model.h"
 #include "algorithms/erded.h"
@@ -134,7 +135,6 @@ TEST_CASE("wedge values on a step image take the two intensities", "[erd]") {
     // 16 x 16, columns 0..7 = 50, 8..15 = 200; the edge x = 7.5 is the vertical constraint
     // X = 15 from the top to the bottom border, split by a vertex in the middle.
     const Image im = step_image(16, 16, 8, 50, 200);
-    const Grid<double> phi = to_grid(im);
     for (int rule : {1, 0}) {
         Cdt cdt;
         REQUIRE(cdt.reset(30, 30).ok());
@@ -145,7 +145,7 @@ TEST_CASE("wedge values on a step image take the two intensities", "[erd]") {
         REQUIRE(cdt.insert_constraint(top, bottom).ok());
         WedgeValueOptions wo;
         wo.rule = rule;
-        ErdModel model(phi, wo);
+        ErdModel model(im, wo);
         model.assign_all(cdt);
         for (VertInd v : {top, mid, bottom}) {
             REQUIRE(model.wedge_count(v) == 2);
@@ -181,11 +181,10 @@ TEST_CASE("approximating function on a hand-made mesh with a diagonal constraint
     Image im(9, 9, 255);
     for (int y = 0; y < 9; ++y)
         for (int x = 0; x < 9; ++x) im.at(x, y) = x > y ? 100 : x < y ? 20 : 60;
-    const Grid<double> phi = to_grid(im);
     Cdt cdt;
     REQUIRE(cdt.reset(16, 16).ok());
     REQUIRE(cdt.insert_constraint(0, 2).ok());
-    ErdModel model(phi, WedgeValueOptions{});
+    ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
     REQUIRE(model.wedge_count(0) == 2);
     REQUIRE(model.wedge_count(2) == 2);
@@ -298,7 +297,6 @@ TEST_CASE("least-squares wedge refit reproduces a planar image and lowers the er
     Image im(40, 30, 255);
     for (int y = 0; y < 30; ++y)
         for (int x = 0; x < 40; ++x) im.at(x, y) = std::uint16_t(3 * x + 2 * y + 10);
-    const Grid<double> phi = to_grid(im);
     Cdt cdt;
     REQUIRE(cdt.reset(78, 58).ok());
     std::vector<Polyline> lines = {{{5, 7}, {31, 20}, {60, 41}}, {{31, 20}, {40, 50}}, {{70, 3}, {71, 30}}};
@@ -308,7 +306,7 @@ TEST_CASE("least-squares wedge refit reproduces a planar image and lowers the er
         VertInd v = 0;
         REQUIRE(cdt.insert_point(p, &v).ok());
     }
-    ErdModel model(phi, WedgeValueOptions{});
+    ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
     WedgeFitStats fs;
     fit_wedge_values(cdt, im, 60, &model, &fs);
@@ -342,7 +340,6 @@ TEST_CASE("wedge refit: the face-assembled normal equations report the true pixe
     // The refit sums each face's pixels into a 3x3 Gram matrix; its before/after errors must be
     // the squared errors of the actual planes at the pixels, and the refit must lower them.
     const Image im = scene(64, 48);
-    const Grid<double> phi = to_grid(im);
     InitialMeshOptions mo;
     mo.target = 120;
     Cdt cdt;
@@ -352,7 +349,7 @@ TEST_CASE("wedge refit: the face-assembled normal equations report the true pixe
         VertInd v = 0;
         REQUIRE(cdt.insert_point(p, &v).ok());
     }
-    ErdModel model(phi, WedgeValueOptions{});
+    ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
     const double before = pixel_sse(cdt, model, im);
     WedgeFitStats fs;
@@ -431,7 +428,7 @@ TEST_CASE("the line search's local MMSODD matches the full-grid MMSODD", "[erd]"
     std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}}};
     std::size_t dropped = 0;
     REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
-    ErdModel local(phi, WedgeValueOptions{}), full(phi, WedgeValueOptions{});
+    ErdModel local(im, WedgeValueOptions{}), full(im, WedgeValueOptions{});
     full.set_mmsodd(mmsodd(phi, 5));
     local.assign_all(cdt);
     full.assign_all(cdt);
@@ -443,4 +440,24 @@ TEST_CASE("the line search's local MMSODD matches the full-grid MMSODD", "[erd]"
     }
     CHECK(local.stats().alpha_first == full.stats().alpha_first);
     CHECK(local.stats().alpha_last == full.stats().alpha_last);
+}
+
+TEST_CASE("bilinear on the integer samples equals bilinear on their double copy, bit for bit", "[erd]") {
+    // The wedge values read the Image directly since the W x H double copy was dropped: every
+    // value must be the one the copy gave (outputs byte-identical).
+    for (const Image& im : {scene(40, 32), step_image(2, 2, 1, 0, 65535), step_image(1, 5, 1, 7, 9), step_image(9, 1, 4, 3, 250)}) {
+        const Grid<double> phi = to_grid(im);
+        std::uint64_t state = 12345;
+        auto unit = [&state] {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            return double(state >> 11) / 9007199254740992.0;
+        };
+        for (int i = 0; i < 4000; ++i) {
+            // Inside, on the border, and outside (clamped) in both directions.
+            const double x = (unit() * 1.4 - 0.2) * (im.width - 1), y = (unit() * 1.4 - 0.2) * (im.height - 1);
+            REQUIRE(bilinear(im, x, y) == bilinear(phi, x, y));
+        }
+        for (int Y = 0; Y <= 2 * (im.height - 1); ++Y)
+            for (int X = 0; X <= 2 * (im.width - 1); ++X) REQUIRE(bilinear_doubled(im, X, Y) == bilinear_doubled(phi, X, Y));
+    }
 }
