@@ -58,36 +58,80 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     return bilinear(phi_, bx, by);
 }
 
+namespace {
+
+// The nonzero taps of h (radius c = size / 2) as (n, h[n + c]) in increasing n.
+std::vector<ErdModel::Tap> nonzero_taps(const std::vector<double>& h) {
+    std::vector<ErdModel::Tap> out;
+    const int c = int(h.size() / 2);
+    for (int n = -c; n <= c; ++n)
+        if (h[std::size_t(n + c)] != 0) out.push_back({n, h[std::size_t(n + c)]});
+    return out;
+}
+
+// h's taps of radius c spread over [-rad, rad] (zeros outside), indexed by n + rad.
+std::vector<double> padded_taps(const std::vector<double>& h, int rad) {
+    std::vector<double> out(std::size_t(2 * rad + 1), 0.0);
+    const int c = int(h.size() / 2);
+    for (int n = -c; n <= c; ++n) out[std::size_t(n + rad)] = h[std::size_t(n + c)];
+    return out;
+}
+
+}  // namespace
+
+void ErdModel::prepare_taps() {
+    std::vector<double> b = binomial_taps(options_.smoothing_order);
+    if (b.empty()) b = {1.0};
+    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
+    const int cb = int(b.size() / 2), cd = int(d2.size() / 2);
+    stencil_radius_ = cb > cd ? cb : cd;
+    x_b_ = nonzero_taps(b);
+    x_d1_ = nonzero_taps(d1);
+    x_d2_ = nonzero_taps(d2);
+    y_b_ = padded_taps(b, stencil_radius_);
+    y_d1_ = padded_taps(d1, stencil_radius_);
+    y_d2_ = padded_taps(d2, stencil_radius_);
+}
+
+double ErdModel::apply_taps(const std::vector<Tap>& taps, const double* f) {
+    double sum = 0;
+    for (const Tap& t : taps) sum += t.value * f[-t.n];
+    return sum;
+}
+
 double ErdModel::mmsodd_pixel(int x, int y) {
     const std::size_t key = std::size_t(y) * std::size_t(phi_.width) + std::size_t(x);
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
     // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
-    // vector h of radius c is applied as sum_n h[n + c] * f(i - n).
-    const int cb = int(taps_b_.size() / 2), cd = int(taps_d2_.size() / 2), rad = cb > cd ? cb : cd;
+    // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
+    // +-0 (a zero tap, or a stencil row outside the image) are left out: every sum starts at +0
+    // and adding +-0 never changes it, so the values are those of the whole-grid filters.
+    const int rad = stencil_radius_;
     // Each stencil row is read once into stencil_ (zero outside the image) and the three filters
-    // read it there: one bounds test per sample instead of three, the same sums in the same order.
+    // read it there.
     stencil_.resize(std::size_t(2 * rad + 1));
     double* const f = stencil_.data() + rad;  // f[-n] = phi(x - n, v)
+    const bool cols_in = x - rad >= 0 && x + rad < phi_.width;
     double fxx = 0, fyy = 0, fxy = 0;
     for (int m = -rad; m <= rad; ++m) {
         const int v = y - m;
-        const bool row_in = v >= 0 && v < phi_.height;
-        for (int n = -rad; n <= rad; ++n) {
-            const int u = x - n;
-            f[-n] = row_in && u >= 0 && u < phi_.width ? double(phi_.at(u, v)) : 0.0;
+        if (v < 0 || v >= phi_.height) continue;  // a row of zeros
+        const std::uint16_t* row = &phi_.samples[std::size_t(v) * std::size_t(phi_.width)];
+        if (cols_in) {
+            for (int n = -rad; n <= rad; ++n) f[-n] = double(row[x - n]);
+        } else {
+            for (int n = -rad; n <= rad; ++n) {
+                const int u = x - n;
+                f[-n] = u >= 0 && u < phi_.width ? double(row[u]) : 0.0;
+            }
         }
-        double rb = 0, rd1 = 0, rd2 = 0;
-        for (int n = -cb; n <= cb; ++n) rb += taps_b_[std::size_t(n + cb)] * f[-n];
-        for (int n = -cd; n <= cd; ++n) {
-            rd1 += taps_d1_[std::size_t(n + cd)] * f[-n];
-            rd2 += taps_d2_[std::size_t(n + cd)] * f[-n];
-        }
-        if (m >= -cb && m <= cb) fxx += taps_b_[std::size_t(m + cb)] * rd2;
-        if (m >= -cd && m <= cd) {
-            fyy += taps_d2_[std::size_t(m + cd)] * rb;
-            fxy += taps_d1_[std::size_t(m + cd)] * rd1;
-        }
+        // Row m enters fxx through the y smoothing taps (with the x second derivative), fyy
+        // through the y second derivative (with x smoothing), fxy through the y first derivative.
+        const double wb = y_b_[std::size_t(m + rad)], wd2 = y_d2_[std::size_t(m + rad)], wd1 = y_d1_[std::size_t(m + rad)];
+        if (wb != 0) fxx += wb * apply_taps(x_d2_, f);
+        if (wd2 != 0) fyy += wd2 * apply_taps(x_b_, f);
+        if (wd1 != 0) fxy += wd1 * apply_taps(x_d1_, f);
     }
     const double value = mmsodd_value(fxx, fyy, fxy);
     local_.emplace(key, value);
@@ -96,12 +140,7 @@ double ErdModel::mmsodd_pixel(int x, int y) {
 
 double ErdModel::mmsodd_at(double x, double y) {
     if (have_mmsodd_) return bilinear(mmsodd_, x, y);
-    if (taps_b_.empty()) {
-        taps_b_ = binomial_taps(options_.smoothing_order);
-        if (taps_b_.empty()) taps_b_ = {1.0};
-        taps_d1_ = compose_taps(derivative1_taps(), taps_b_);
-        taps_d2_ = compose_taps(derivative2_taps(), taps_b_);
-    }
+    if (stencil_radius_ < 0) prepare_taps();
     // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
     const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
     const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));

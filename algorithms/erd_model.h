@@ -99,6 +99,12 @@ public:
     // positive orientation, their corner (wedge) values, and the constrained edges.
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 
+    // One filter tap: weight `value` on the sample n places back (mmsodd_pixel's filters).
+    struct Tap {
+        int n;
+        double value;
+    };
+
 private:
     struct Entry {
         WedgeId id;
@@ -116,7 +122,14 @@ private:
     // (ERDGPI reads well under 1% of them): the same filters, cached by pixel index in a map
     // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
     std::unordered_map<std::size_t, double> local_;
-    std::vector<double> taps_b_, taps_d1_, taps_d2_;
+    void prepare_taps();
+    static double apply_taps(const std::vector<Tap>& taps, const double* f);  // sum t.value * f[-t.n]
+    // The filters of mmsodd_pixel: along x the nonzero taps of smoothing b and the derivatives
+    // d1 = [1/2 0 -1/2] * b and d2 = [1 -2 1] * b; along y the same taps spread over the stencil
+    // rows [-stencil_radius_, stencil_radius_] (zeros where a filter is shorter).
+    int stencil_radius_ = -1;  // < 0 until the first use
+    std::vector<Tap> x_b_, x_d1_, x_d2_;
+    std::vector<double> y_b_, y_d1_, y_d2_;
     std::vector<double> stencil_;  // one row of the pixel's filter stencil
     int cell_x_ = -1, cell_y_ = -1;  // the last bilinear cell mmsodd_at read, and its corners
     double cell_[4] = {0, 0, 0, 0};
