@@ -295,13 +295,14 @@ Status decode_pgm(const unsigned char* data, std::size_t size, Image* out, std::
     }
     const unsigned char* p = data + c.i;
     const std::size_t n = std::size_t(pixels);
-    // The samples in one pass each way and the maxval check as a maximum (loops the compiler can
-    // vectorise); only a file with a sample above maxval is searched for the first one.
+    // The samples in one pass, the maxval check as a maximum (none for 8-bit maxval 255); only a
+    // file with a sample above maxval is searched for the first one.
     std::uint32_t top = 0;
     if (bps == 1) {
         im.samples.assign(p, p + n);  // widened on the way, no zero fill first
         unsigned char m = 0;
-        for (std::size_t k = 0; k < n; ++k) m = p[k] > m ? p[k] : m;
+        if (im.maxval < 255)  // else no byte can exceed it
+            for (std::size_t k = 0; k < n; ++k) m = p[k] > m ? p[k] : m;
         top = m;
     } else {
         im.samples.resize(n);
