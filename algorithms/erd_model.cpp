@@ -194,19 +194,36 @@ double ErdModel::wedge_value(VertInd v, WedgeId id) const {
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+std::uint32_t ErdModel::multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const {
+    // Cdt::wedge_id's walk: rotate negatively from the corner to the bounding constrained (or
+    // hull) edge. Its direction names the wedge; instead of reducing it by the gcd as wedge_id
+    // does (and counting v's wedges first), it is compared with each stored id's reduced
+    // direction: the same ray exactly when the cross product is 0 and the dot product positive.
+    EdgeInd b = e;
+    while (cdt.twin(b) != noEdge && !cdt.constrained(b)) b = cdt.rot_prev(b);
+    const LatticePoint p = cdt.point(v), q = cdt.point(cdt.dest(b));
+    const std::int64_t dx = std::int64_t(q.x) - p.x, dy = std::int64_t(q.y) - p.y;
+    for (std::uint32_t i = first_[v]; i < first_[v] + count_[v]; ++i) {
+        const WedgeId id = entries_[i].id;
+        const std::int64_t ex = std::int32_t(std::uint32_t(id >> 32)), ey = std::int32_t(std::uint32_t(id));
+        if (ex * dy - ey * dx == 0 && ex * dx + ey * dy > 0) return i;
+    }
+    return kNoEntry;
+}
+
 double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
-    if (v < count_.size() && count_[v] == 1) return entries_[first_[v]].value;
-    return wedge_value(v, cdt.wedge_id(e));
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (count_[v] == 1) return entries_[first_[v]].value;
+    const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+    return i == kNoEntry ? std::numeric_limits<double>::quiet_NaN() : entries_[i].value;
 }
 
 std::uint32_t ErdModel::corner_entry(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
     if (count_[v] == 1) return first_[v];
-    const WedgeId id = cdt.wedge_id(e);
-    for (std::uint32_t i = 0; i < count_[v]; ++i)
-        if (entries_[first_[v] + i].id == id) return first_[v] + i;
-    return first_[v];
+    const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+    return i == kNoEntry ? first_[v] : i;
 }
 
 double ErdModel::vertex_value(VertInd v) const {

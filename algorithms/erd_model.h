@@ -110,6 +110,10 @@ private:
         WedgeId id;
         double value;
     };
+    static constexpr std::uint32_t kNoEntry = 0xffffffffu;
+    // The entry of the wedge of multi-wedge vertex v that corner e lies in (kNoEntry if none):
+    // the one wedge_value(v, cdt.wedge_id(e)) finds, without wedge_id's count and gcd.
+    std::uint32_t multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const;
     double multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w);
     double mmsodd_at(double x, double y);  // bilinear MMSODD, from the grid or computed locally
     double mmsodd_pixel(int x, int y);     // MMSODD at one pixel, computed on first use

@@ -461,3 +461,36 @@ TEST_CASE("bilinear on the integer samples equals bilinear on their double copy,
             for (int X = 0; X <= 2 * (im.width - 1); ++X) REQUIRE(bilinear_doubled(im, X, Y) == bilinear_doubled(phi, X, Y));
     }
 }
+
+TEST_CASE("corner values found by direction match wedge_value(v, wedge_id(e)) on every corner", "[erd]") {
+    // corner_value / corner_entry match a corner to its wedge by comparing the bounding edge's
+    // direction with the stored ids instead of calling Cdt::wedge_id; the reference is wedge_id.
+    const Image im = scene(40, 32);
+    Cdt cdt;
+    REQUIRE(cdt.reset(78, 62).ok());
+    std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}},
+                                   {{40, 10}, {50, 10}, {50, 30}, {40, 30}, {40, 10}}, {{0, 40}, {78, 44}}};
+    std::size_t dropped = 0;
+    REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(cdt);
+    // Insertions split constrained edges and add vertices of every kind; existing ids must hold.
+    std::uint64_t state = 99;
+    for (int i = 0; i < 300; ++i) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        const LatticePoint p{std::int32_t((state >> 20) % 79), std::int32_t((state >> 40) % 63)};
+        VertInd v = 0;
+        const std::size_t before = cdt.vertex_count();
+        if (!cdt.insert_point(p, &v).ok()) continue;
+        if (cdt.vertex_count() > before) model.assign_vertex(cdt, v);
+    }
+    std::size_t multi = 0;
+    for (EdgeInd e = 0; e < 3 * cdt.face_count(); ++e) {
+        const VertInd v = cdt.org(e);
+        const double want = model.wedge_value(v, cdt.wedge_id(e));
+        REQUIRE(model.corner_value(cdt, e) == want);
+        REQUIRE(model.entry_value(model.corner_entry(cdt, e)) == want);
+        if (model.wedge_count(v) > 1) ++multi;
+    }
+    CHECK(multi > 40);
+}
