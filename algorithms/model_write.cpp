@@ -43,9 +43,8 @@ char* put_uint(char* p, std::uint64_t v) {
     } else {
         *--t = char('0' + v);
     }
-    const std::size_t n = std::size_t(tmp + sizeof tmp - t);
-    std::copy(t, t + n, p);
-    return p + n;
+    while (t < tmp + sizeof tmp) *p++ = *t++;  // at most 20 characters: no memcpy call
+    return p;
 }
 
 char* put_int(char* p, std::int64_t v) {
@@ -76,6 +75,11 @@ public:
     Lines& num(std::uint64_t v) { return sep(put_uint(p_, v)); }
     Lines& sint(std::int64_t v) { return sep(put_int(p_, v)); }
     Lines& value(double v) { return sep(put_value(p_, v)); }
+    Lines& chars(const char* s, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) *p_++ = s[i];
+        *p_++ = ' ';
+        return *this;
+    }
     Lines& text(const char* s) {
         while (*s) *p_++ = *s++;
         *p_++ = ' ';
@@ -139,14 +143,30 @@ void put_wedge_lines(const Model& m, std::string* o) {
     std::string lines;
     Lines line(&lines);
     std::size_t nw = 0;
+    // A vertex's corners share its few wedge values: each distinct value is formatted once.
+    struct Formatted {
+        double value;
+        std::size_t length;
+        char text[kValueBytes];
+    };
+    std::vector<Formatted> seen;
     for (std::uint32_t v = 0; v < nv; ++v) {
         const std::uint32_t b = begin[v], e = begin[v + 1];
         bool odd = false;
         for (std::uint32_t i = b; i < e && !odd; ++i) odd = corner_value(m, corners[i]) != m.values[v];
         if (!odd) continue;
+        seen.clear();
         for (std::uint32_t i = b; i < e; ++i) {
             const std::uint32_t c = corners[i];
-            line.num(v).num(c / 3).value(corner_value(m, c)).end();
+            const double z = corner_value(m, c);
+            std::size_t k = 0;
+            while (k < seen.size() && seen[k].value != z) ++k;  // finite values: == is identity up to
+            if (k == seen.size()) {                              // the sign of 0, which prints "0" both ways
+                seen.emplace_back();
+                seen[k].value = z;
+                seen[k].length = std::size_t(put_value(seen[k].text, z) - seen[k].text);
+            }
+            line.num(v).num(c / 3).chars(seen[k].text, seen[k].length).end();
         }
         nw += e - b;
     }
