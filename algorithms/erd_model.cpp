@@ -60,15 +60,6 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
 
 namespace {
 
-// The nonzero taps of h (radius c = size / 2) as (n, h[n + c]) in increasing n.
-std::vector<ErdModel::Tap> nonzero_taps(const std::vector<double>& h) {
-    std::vector<ErdModel::Tap> out;
-    const int c = int(h.size() / 2);
-    for (int n = -c; n <= c; ++n)
-        if (h[std::size_t(n + c)] != 0) out.push_back({n, h[std::size_t(n + c)]});
-    return out;
-}
-
 // h's taps of radius c spread over [-rad, rad] (zeros outside), indexed by n + rad.
 std::vector<double> padded_taps(const std::vector<double>& h, int rad) {
     std::vector<double> out(std::size_t(2 * rad + 1), 0.0);
@@ -85,34 +76,30 @@ void ErdModel::prepare_taps() {
     const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
     const int cb = int(b.size() / 2), cd = int(d2.size() / 2);
     stencil_radius_ = cb > cd ? cb : cd;
-    x_b_ = nonzero_taps(b);
-    x_d1_ = nonzero_taps(d1);
-    x_d2_ = nonzero_taps(d2);
-    y_b_ = padded_taps(b, stencil_radius_);
-    y_d1_ = padded_taps(d1, stencil_radius_);
-    y_d2_ = padded_taps(d2, stencil_radius_);
-}
-
-double ErdModel::apply_taps(const std::vector<Tap>& taps, const double* f) {
-    double sum = 0;
-    for (const Tap& t : taps) sum += t.value * f[-t.n];
-    return sum;
+    taps_b_ = padded_taps(b, stencil_radius_);
+    taps_d1_ = padded_taps(d1, stencil_radius_);
+    taps_d2_ = padded_taps(d2, stencil_radius_);
 }
 
 double ErdModel::mmsodd_pixel(int x, int y) {
     const std::size_t key = std::size_t(y) * std::size_t(phi_.width) + std::size_t(x);
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
+    if (stencil_radius_ < 0) prepare_taps();
     // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
     // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
-    // +-0 (a zero tap, or a stencil row outside the image) are left out: every sum starts at +0
-    // and adding +-0 never changes it, so the values are those of the whole-grid filters.
+    // +-0 may be added or left out (the taps padded with zeros to the stencil radius; stencil rows
+    // outside the image): every sum starts at +0 and adding +-0 never changes it, so the values
+    // are those of the whole-grid filters.
     const int rad = stencil_radius_;
     // Each stencil row is read once into stencil_ (zero outside the image) and the three filters
     // read it there.
     stencil_.resize(std::size_t(2 * rad + 1));
     double* const f = stencil_.data() + rad;  // f[-n] = phi(x - n, v)
     const bool cols_in = x - rad >= 0 && x + rad < phi_.width;
+    const double* const b = taps_b_.data() + rad;  // b[n] for n in [-rad, rad]
+    const double* const d1 = taps_d1_.data() + rad;
+    const double* const d2 = taps_d2_.data() + rad;
     double fxx = 0, fyy = 0, fxy = 0;
     for (int m = -rad; m <= rad; ++m) {
         const int v = y - m;
@@ -126,12 +113,19 @@ double ErdModel::mmsodd_pixel(int x, int y) {
                 f[-n] = u >= 0 && u < phi_.width ? double(row[u]) : 0.0;
             }
         }
+        // The three x filters in one sweep over the padded taps (their zeros add +-0).
+        double rb = 0, rd1 = 0, rd2 = 0;
+        for (int n = -rad; n <= rad; ++n) {
+            const double sample = f[-n];
+            rb += b[n] * sample;
+            rd1 += d1[n] * sample;
+            rd2 += d2[n] * sample;
+        }
         // Row m enters fxx through the y smoothing taps (with the x second derivative), fyy
         // through the y second derivative (with x smoothing), fxy through the y first derivative.
-        const double wb = y_b_[std::size_t(m + rad)], wd2 = y_d2_[std::size_t(m + rad)], wd1 = y_d1_[std::size_t(m + rad)];
-        if (wb != 0) fxx += wb * apply_taps(x_d2_, f);
-        if (wd2 != 0) fyy += wd2 * apply_taps(x_b_, f);
-        if (wd1 != 0) fxy += wd1 * apply_taps(x_d1_, f);
+        if (b[m] != 0) fxx += b[m] * rd2;
+        if (d2[m] != 0) fyy += d2[m] * rb;
+        if (d1[m] != 0) fxy += d1[m] * rd1;
     }
     const double value = mmsodd_value(fxx, fyy, fxy);
     local_.emplace(key, value);
@@ -140,7 +134,6 @@ double ErdModel::mmsodd_pixel(int x, int y) {
 
 double ErdModel::mmsodd_at(double x, double y) {
     if (have_mmsodd_) return bilinear(mmsodd_, x, y);
-    if (stencil_radius_ < 0) prepare_taps();
     // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
     const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
     const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));

@@ -86,6 +86,11 @@ public:
     double entry_value(std::size_t i) const { return entries_[i].value; }
     void set_entry_value(std::size_t i, double z) { entries_[i].value = z; }
 
+    // The line search's MMSODD at pixel (x, y) inside the image when no grid was supplied: the
+    // filters of mmsodd(phi, smoothing_order) with zero borders at that pixel, computed on first
+    // use and cached. Public for tests.
+    double mmsodd_pixel(int x, int y);
+
     // Wedge-value search statistics: how many multi-wedge values were computed, and how many of
     // those had their maximum at the first / last alpha.
     struct Stats {
@@ -99,12 +104,6 @@ public:
     // positive orientation, their corner (wedge) values, and the constrained edges.
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 
-    // One filter tap: weight `value` on the sample n places back (mmsodd_pixel's filters).
-    struct Tap {
-        int n;
-        double value;
-    };
-
 private:
     struct Entry {
         WedgeId id;
@@ -116,7 +115,6 @@ private:
     std::uint32_t multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const;
     double multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w);
     double mmsodd_at(double x, double y);  // bilinear MMSODD, from the grid or computed locally
-    double mmsodd_pixel(int x, int y);     // MMSODD at one pixel, computed on first use
 
     const Image& phi_;
     WedgeValueOptions options_;
@@ -127,13 +125,11 @@ private:
     // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
     std::unordered_map<std::size_t, double> local_;
     void prepare_taps();
-    static double apply_taps(const std::vector<Tap>& taps, const double* f);  // sum t.value * f[-t.n]
-    // The filters of mmsodd_pixel: along x the nonzero taps of smoothing b and the derivatives
-    // d1 = [1/2 0 -1/2] * b and d2 = [1 -2 1] * b; along y the same taps spread over the stencil
-    // rows [-stencil_radius_, stencil_radius_] (zeros where a filter is shorter).
+    // The filters of mmsodd_pixel, along x and y: smoothing b and the derivatives
+    // d1 = [1/2 0 -1/2] * b and d2 = [1 -2 1] * b, each spread over [-stencil_radius_,
+    // stencil_radius_] (zeros where a filter is shorter), indexed by n + stencil_radius_.
     int stencil_radius_ = -1;  // < 0 until the first use
-    std::vector<Tap> x_b_, x_d1_, x_d2_;
-    std::vector<double> y_b_, y_d1_, y_d2_;
+    std::vector<double> taps_b_, taps_d1_, taps_d2_;
     std::vector<double> stencil_;  // one row of the pixel's filter stencil
     int cell_x_ = -1, cell_y_ = -1;  // the last bilinear cell mmsodd_at read, and its corners
     double cell_[4] = {0, 0, 0, 0};

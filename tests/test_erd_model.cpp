@@ -15,6 +15,7 @@
 #include "algorithms/erd_model.h"
 #include "algorithms/erded.h"
 #include "algorithms/erdgpi.h"
+#include "algorithms/filters.h"
 #include "algorithms/mmsodd.h"
 #include "algorithms/model_io.h"
 #include "algorithms/reconstruct.h"
@@ -493,4 +494,62 @@ TEST_CASE("corner values found by direction match wedge_value(v, wedge_id(e)) on
         if (model.wedge_count(v) > 1) ++multi;
     }
     CHECK(multi > 40);
+}
+
+namespace {
+
+// The order-k MMSODD at every pixel, written as plainly as possible: each filter over its own
+// taps, every sample bounds-checked (zero outside), sums in increasing tap order.
+Grid<double> reference_mmsodd(const Image& im, int order) {
+    std::vector<double> b = binomial_taps(order);
+    if (b.empty()) b = {1.0};
+    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
+    auto phi = [&](int x, int y) { return x >= 0 && y >= 0 && x < im.width && y < im.height ? double(im.at(x, y)) : 0.0; };
+    // sum over m of ty[m] * (sum over n of tx[n] * phi(x - n, y - m))
+    auto separable = [&](const std::vector<double>& tx, const std::vector<double>& ty, int x, int y) {
+        const int cx = int(tx.size() / 2), cy = int(ty.size() / 2);
+        double outer = 0;
+        for (int m = -cy; m <= cy; ++m) {
+            double inner = 0;
+            for (int n = -cx; n <= cx; ++n) inner += tx[std::size_t(n + cx)] * phi(x - n, y - m);
+            outer += ty[std::size_t(m + cy)] * inner;
+        }
+        return outer;
+    };
+    Grid<double> g(im.width, im.height);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x)
+            g(x, y) = mmsodd_value(separable(d2, b, x, y), separable(b, d2, x, y), separable(d1, d1, x, y));
+    return g;
+}
+
+}  // namespace
+
+TEST_CASE("the line search's local MMSODD equals a plain per-pixel MMSODD bit for bit", "[erd]") {
+    // mmsodd_pixel leaves out +-0 terms and sweeps padded taps; its values, and so the wedge
+    // values, must be exactly those of the plain filters (outputs byte-identical), borders included.
+    for (int order : {5, 3, 7}) {
+        const Image im = scene(40, 32);
+        Cdt cdt;
+        REQUIRE(cdt.reset(78, 62).ok());
+        std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}},
+                                       {{0, 2}, {78, 3}}, {{76, 0}, {77, 62}}};
+        std::size_t dropped = 0;
+        REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
+        WedgeValueOptions wo;
+        wo.smoothing_order = order;
+        ErdModel local(im, wo), full(im, wo);
+        const Grid<double> want = reference_mmsodd(im, order);
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) REQUIRE(local.mmsodd_pixel(x, y) == want(x, y));
+        full.set_mmsodd(want);
+        local.assign_all(cdt);
+        full.assign_all(cdt);
+        REQUIRE(local.stats().multi_wedges > 6);
+        std::vector<Wedge> ws;
+        for (VertInd v = 0; v < cdt.vertex_count(); ++v) {
+            cdt.wedges(v, &ws);
+            for (const Wedge& w : ws) REQUIRE(local.wedge_value(v, w.id) == full.wedge_value(v, w.id));
+        }
+    }
 }
