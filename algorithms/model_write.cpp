@@ -68,14 +68,16 @@ char* put_value(char* p, double v) {
     return std::to_chars(p, p + kValueBytes, v).ptr;
 }
 
-// One output line at a time: append with the put_* helpers, then end() adds '\n' and the line.
+// One output line at a time: each field is followed by a space, and end() turns the last space
+// into '\n' and appends the line (so a line has at least one field). A line holds at most
+// kRecordBytes: three integers, or two and a value, as the writers use it.
 class Lines {
 public:
     explicit Lines(std::string* out) : out_(out) {}
     Lines& num(std::uint64_t v) { return sep(put_uint(p_, v)); }
     Lines& sint(std::int64_t v) { return sep(put_int(p_, v)); }
     Lines& value(double v) { return sep(put_value(p_, v)); }
-    Lines& chars(const char* s, std::size_t n) {
+    Lines& chars(const char* s, std::size_t n) {  // a field already formatted
         for (std::size_t i = 0; i < n; ++i) *p_++ = s[i];
         *p_++ = ' ';
         return *this;
