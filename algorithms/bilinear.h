@@ -9,10 +9,14 @@ namespace erd {
 // clamped onto it first, so callers that step slightly outside (wedge line search) get the border
 // value. At integer coordinates the result equals the sample exactly. An empty grid gives 0.
 double bilinear(const Grid<double>& im, double x, double y);
+// The same on the integer samples (converted exactly, so the result is bit for bit that of the
+// Grid<double> copy of the image, without making the copy).
+double bilinear(const Image& im, double x, double y);
 
 // phi_bar at the lattice point (X, Y) in doubled coordinates (X = 2x), computed without rounding
 // issues: the mean of 1, 2 or 4 samples.
 double bilinear_doubled(const Grid<double>& im, int X, int Y);
+double bilinear_doubled(const Image& im, int X, int Y);
 
 // phi_bar sampled on the (2W-1) x (2H-1) half-pixel grid: entry (X, Y) is the lattice point (X, Y)
 // in doubled coordinates, i.e. pixel coordinates (X/2, Y/2). Even entries equal the samples; odd

@@ -21,7 +21,7 @@ void wedge_bisector(LatticePoint u1, LatticePoint u2, double* dx, double* dy) {
     *dy = std::sin(t);
 }
 
-ErdModel::ErdModel(const Grid<double>& phi, const WedgeValueOptions& options) : phi_(phi), options_(options) {}
+ErdModel::ErdModel(const Image& image, const WedgeValueOptions& options) : phi_(image), options_(options) {}
 
 double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     const LatticePoint p = cdt.point(v);
@@ -58,32 +58,74 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     return bilinear(phi_, bx, by);
 }
 
+namespace {
+
+// h's taps of radius c spread over [-rad, rad] (zeros outside), indexed by n + rad.
+std::vector<double> padded_taps(const std::vector<double>& h, int rad) {
+    std::vector<double> out(std::size_t(2 * rad + 1), 0.0);
+    const int c = int(h.size() / 2);
+    for (int n = -c; n <= c; ++n) out[std::size_t(n + rad)] = h[std::size_t(n + c)];
+    return out;
+}
+
+}  // namespace
+
+void ErdModel::prepare_taps() {
+    std::vector<double> b = binomial_taps(options_.smoothing_order);
+    if (b.empty()) b = {1.0};
+    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
+    const int cb = int(b.size() / 2), cd = int(d2.size() / 2);
+    stencil_radius_ = cb > cd ? cb : cd;
+    taps_b_ = padded_taps(b, stencil_radius_);
+    taps_d1_ = padded_taps(d1, stencil_radius_);
+    taps_d2_ = padded_taps(d2, stencil_radius_);
+}
+
 double ErdModel::mmsodd_pixel(int x, int y) {
     const std::size_t key = std::size_t(y) * std::size_t(phi_.width) + std::size_t(x);
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
+    if (stencil_radius_ < 0) prepare_taps();
     // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
-    // vector h of radius c is applied as sum_n h[n + c] * f(i - n).
-    const int cb = int(taps_b_.size() / 2), cd = int(taps_d2_.size() / 2), rad = cb > cd ? cb : cd;
+    // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
+    // +-0 may be added or left out (the taps padded with zeros to the stencil radius; stencil rows
+    // outside the image): every sum starts at +0 and adding +-0 never changes it, so the values
+    // are those of the whole-grid filters.
+    const int rad = stencil_radius_;
     // Each stencil row is read once into stencil_ (zero outside the image) and the three filters
-    // read it there: one bounds test per sample instead of three, the same sums in the same order.
+    // read it there.
     stencil_.resize(std::size_t(2 * rad + 1));
     double* const f = stencil_.data() + rad;  // f[-n] = phi(x - n, v)
+    const bool cols_in = x - rad >= 0 && x + rad < phi_.width;
+    const double* const b = taps_b_.data() + rad;  // b[n] for n in [-rad, rad]
+    const double* const d1 = taps_d1_.data() + rad;
+    const double* const d2 = taps_d2_.data() + rad;
     double fxx = 0, fyy = 0, fxy = 0;
     for (int m = -rad; m <= rad; ++m) {
         const int v = y - m;
-        for (int n = -rad; n <= rad; ++n) f[-n] = phi_.inside(x - n, v) ? phi_(x - n, v) : 0.0;
+        if (v < 0 || v >= phi_.height) continue;  // a row of zeros
+        const std::uint16_t* row = &phi_.samples[std::size_t(v) * std::size_t(phi_.width)];
+        if (cols_in) {
+            for (int n = -rad; n <= rad; ++n) f[-n] = double(row[x - n]);
+        } else {
+            for (int n = -rad; n <= rad; ++n) {
+                const int u = x - n;
+                f[-n] = u >= 0 && u < phi_.width ? double(row[u]) : 0.0;
+            }
+        }
+        // The three x filters in one sweep over the padded taps (their zeros add +-0).
         double rb = 0, rd1 = 0, rd2 = 0;
-        for (int n = -cb; n <= cb; ++n) rb += taps_b_[std::size_t(n + cb)] * f[-n];
-        for (int n = -cd; n <= cd; ++n) {
-            rd1 += taps_d1_[std::size_t(n + cd)] * f[-n];
-            rd2 += taps_d2_[std::size_t(n + cd)] * f[-n];
+        for (int n = -rad; n <= rad; ++n) {
+            const double sample = f[-n];
+            rb += b[n] * sample;
+            rd1 += d1[n] * sample;
+            rd2 += d2[n] * sample;
         }
-        if (m >= -cb && m <= cb) fxx += taps_b_[std::size_t(m + cb)] * rd2;
-        if (m >= -cd && m <= cd) {
-            fyy += taps_d2_[std::size_t(m + cd)] * rb;
-            fxy += taps_d1_[std::size_t(m + cd)] * rd1;
-        }
+        // Row m enters fxx through the y smoothing taps (with the x second derivative), fyy
+        // through the y second derivative (with x smoothing), fxy through the y first derivative.
+        if (b[m] != 0) fxx += b[m] * rd2;
+        if (d2[m] != 0) fyy += d2[m] * rb;
+        if (d1[m] != 0) fxy += d1[m] * rd1;
     }
     const double value = mmsodd_value(fxx, fyy, fxy);
     local_.emplace(key, value);
@@ -92,12 +134,6 @@ double ErdModel::mmsodd_pixel(int x, int y) {
 
 double ErdModel::mmsodd_at(double x, double y) {
     if (have_mmsodd_) return bilinear(mmsodd_, x, y);
-    if (taps_b_.empty()) {
-        taps_b_ = binomial_taps(options_.smoothing_order);
-        if (taps_b_.empty()) taps_b_ = {1.0};
-        taps_d1_ = compose_taps(derivative1_taps(), taps_b_);
-        taps_d2_ = compose_taps(derivative2_taps(), taps_b_);
-    }
     // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
     const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
     const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));
@@ -151,19 +187,36 @@ double ErdModel::wedge_value(VertInd v, WedgeId id) const {
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+std::uint32_t ErdModel::multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const {
+    // Cdt::wedge_id's walk: rotate negatively from the corner to the bounding constrained (or
+    // hull) edge. Its direction names the wedge; instead of reducing it by the gcd as wedge_id
+    // does (and counting v's wedges first), it is compared with each stored id's reduced
+    // direction: the same ray exactly when the cross product is 0 and the dot product positive.
+    EdgeInd b = e;
+    while (cdt.twin(b) != noEdge && !cdt.constrained(b)) b = cdt.rot_prev(b);
+    const LatticePoint p = cdt.point(v), q = cdt.point(cdt.dest(b));
+    const std::int64_t dx = std::int64_t(q.x) - p.x, dy = std::int64_t(q.y) - p.y;
+    for (std::uint32_t i = first_[v]; i < first_[v] + count_[v]; ++i) {
+        const WedgeId id = entries_[i].id;
+        const std::int64_t ex = std::int32_t(std::uint32_t(id >> 32)), ey = std::int32_t(std::uint32_t(id));
+        if (ex * dy - ey * dx == 0 && ex * dx + ey * dy > 0) return i;
+    }
+    return kNoEntry;
+}
+
 double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
-    if (v < count_.size() && count_[v] == 1) return entries_[first_[v]].value;
-    return wedge_value(v, cdt.wedge_id(e));
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (count_[v] == 1) return entries_[first_[v]].value;
+    const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+    return i == kNoEntry ? std::numeric_limits<double>::quiet_NaN() : entries_[i].value;
 }
 
 std::uint32_t ErdModel::corner_entry(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
     if (count_[v] == 1) return first_[v];
-    const WedgeId id = cdt.wedge_id(e);
-    for (std::uint32_t i = 0; i < count_[v]; ++i)
-        if (entries_[first_[v] + i].id == id) return first_[v] + i;
-    return first_[v];
+    const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+    return i == kNoEntry ? first_[v] : i;
 }
 
 double ErdModel::vertex_value(VertInd v) const {

@@ -46,9 +46,10 @@ struct WedgeValueOptions {
 // which keeps every existing wedge id.
 class ErdModel {
 public:
-    // phi: the image samples (pixel grid, W x H), kept by reference for the model's lifetime.
-    // The MMSODD grid of the line search is computed once, on the first multi-wedge vertex.
-    ErdModel(const Grid<double>& phi, const WedgeValueOptions& options);
+    // image: the samples phi (W x H), kept by reference for the model's lifetime and read as
+    // integers (no W x H double copy: bit for bit the same values). Without set_mmsodd the line
+    // search computes the MMSODD at the pixels it reads (see local_).
+    ErdModel(const Image& image, const WedgeValueOptions& options);
 
     // Supplies the MMSODD grid of the line search (it must be mmsodd(phi, smoothing_order) with
     // zero borders), so a caller that computed it already (ERDED's density) does not pay twice.
@@ -85,6 +86,11 @@ public:
     double entry_value(std::size_t i) const { return entries_[i].value; }
     void set_entry_value(std::size_t i, double z) { entries_[i].value = z; }
 
+    // The line search's MMSODD at pixel (x, y) inside the image when no grid was supplied: the
+    // filters of mmsodd(phi, smoothing_order) with zero borders at that pixel, computed on first
+    // use and cached. Public for tests.
+    double mmsodd_pixel(int x, int y);
+
     // Wedge-value search statistics: how many multi-wedge values were computed, and how many of
     // those had their maximum at the first / last alpha.
     struct Stats {
@@ -103,11 +109,14 @@ private:
         WedgeId id;
         double value;
     };
+    static constexpr std::uint32_t kNoEntry = 0xffffffffu;
+    // The entry of the wedge of multi-wedge vertex v that corner e lies in (kNoEntry if none):
+    // the one wedge_value(v, cdt.wedge_id(e)) finds, without wedge_id's count and gcd.
+    std::uint32_t multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const;
     double multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w);
     double mmsodd_at(double x, double y);  // bilinear MMSODD, from the grid or computed locally
-    double mmsodd_pixel(int x, int y);     // MMSODD at one pixel, computed on first use
 
-    const Grid<double>& phi_;
+    const Image& phi_;
     WedgeValueOptions options_;
     Grid<double> mmsodd_;
     bool have_mmsodd_ = false;
@@ -115,6 +124,11 @@ private:
     // (ERDGPI reads well under 1% of them): the same filters, cached by pixel index in a map
     // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
     std::unordered_map<std::size_t, double> local_;
+    void prepare_taps();
+    // The filters of mmsodd_pixel, along x and y: smoothing b and the derivatives
+    // d1 = [1/2 0 -1/2] * b and d2 = [1 -2 1] * b, each spread over [-stencil_radius_,
+    // stencil_radius_] (zeros where a filter is shorter), indexed by n + stencil_radius_.
+    int stencil_radius_ = -1;  // < 0 until the first use
     std::vector<double> taps_b_, taps_d1_, taps_d2_;
     std::vector<double> stencil_;  // one row of the pixel's filter stencil
     int cell_x_ = -1, cell_y_ = -1;  // the last bilinear cell mmsodd_at read, and its corners

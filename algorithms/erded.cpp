@@ -134,7 +134,6 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     InitialMesh mesh;
     Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result);
     if (!st) return st;
-    const Grid<double> phi = to_grid(image);
     const std::int64_t n = std::int64_t(result->requested);
     auto t0 = std::chrono::steady_clock::now();
 
@@ -149,16 +148,18 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
-        d5 = mmsodd(phi, 5);
+        d5 = mmsodd(to_grid(image), 5);  // the double copy lives only while the MMSODD is made
         Grid<double> density = ed_density(d5, 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
-        for (int y = 0; y < image.height; ++y)
-            for (int x = 0; x < image.width; ++x) {
-                if (!on_edge(x, y)) continue;
-                for (int v = std::max(0, y - rad); v <= std::min(image.height - 1, y + rad); ++v)
-                    for (int u = std::max(0, x - rad); u <= std::min(image.width - 1, x + rad); ++u) density(u, v) = 0.0;
-            }
+        // Only the edge pixels are visited (the map is mostly empty); the zeros written do not
+        // depend on the order.
+        for_each_set(on_edge.data.data(), on_edge.data.size(), [&](std::size_t i) {
+            const int x = int(i % std::size_t(image.width)), y = int(i / std::size_t(image.width));
+            const int u0 = std::max(0, x - rad), u1 = std::min(image.width - 1, x + rad);
+            for (int v = std::max(0, y - rad); v <= std::min(image.height - 1, y + rad); ++v)
+                for (int u = u0; u <= u1; ++u) density(u, v) = 0.0;
+        });
         DiffusionParams dp;
         dp.startup = options.startup == 1 ? Startup::force : options.startup == 2 ? Startup::none : Startup::mirror;
         dp.forbidden = &occupied;
@@ -175,7 +176,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     std::vector<VertInd> ids;
     st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it
     if (!st) return st;
-    ErdModel model(phi, wo);
+    ErdModel model(image, wo);
     if (wo.rule == 1 && wo.smoothing_order == 5 && d5.width > 0) model.set_mmsodd(std::move(d5));
     model.assign_all(cdt);
     result->stages.push_back({"triangulation and wedge values", seconds_since(t0)});

@@ -85,12 +85,11 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result);
     if (!st) return st;
     mesh.edges = Grid<std::uint8_t>();  // only ERDED reads the edge map again
-    const Grid<double> phi = to_grid(image);
     const std::int64_t n = std::int64_t(result->requested);
     auto t0 = std::chrono::steady_clock::now();
 
     options.progress("wedge values", 0.0);
-    ErdModel model(phi, wedge_options(options));
+    ErdModel model(image, wedge_options(options));
     model.assign_all(cdt);
     result->stages.push_back({"wedge values", seconds_since(t0)});
 

@@ -1,4 +1,4 @@
-// Readers and writers of .model, .erd and -t files (formats in model_io.h).
+// Readers of .model, .erd and -t files (formats in model_io.h; writers in model_write.cpp).
 #include "algorithms/model_io.h"
 
 #include <algorithm>
@@ -369,46 +369,7 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
     return Status::success();
 }
 
-void put_face(std::string* o, const std::array<std::uint32_t, 3>& f) {
-    *o += std::to_string(f[0]);
-    *o += ' ';
-    *o += std::to_string(f[1]);
-    *o += ' ';
-    *o += std::to_string(f[2]);
-    *o += '\n';
-}
-
-// Shared checks of the writers: indices, orientation, finite values.
-Status check_for_writing(const Model& m, bool values) {
-    const std::size_t nv = m.vertices.size();
-    if (values && m.values.size() != nv) return Status::failure("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices");
-    if (values && m.kind == ModelKind::erd && m.corner_values.size() != m.faces.size())
-        return Status::failure("ERD model has corner values for " + std::to_string(m.corner_values.size()) + " of " +
-                               std::to_string(m.faces.size()) + " faces");
-    for (std::size_t f = 0; f < m.faces.size(); ++f)
-        for (std::uint32_t v : m.faces[f])
-            if (v >= nv) return Status::failure(fname(f) + ": vertex index out of range");
-    if (values) {
-        for (double z : m.values)
-            if (!std::isfinite(z)) return Status::failure("model has a value that is not a finite number");
-        for (const auto& c : m.corner_values)
-            for (double z : c)
-                if (!std::isfinite(z)) return Status::failure("model has a wedge value that is not a finite number");
-    }
-    return Status::success();
-}
-
 }  // namespace
-
-std::string format_value(double v) {
-    if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e15) {
-        const long long i = static_cast<long long>(v);
-        return std::to_string(i);  // also turns -0 into 0
-    }
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
-}
 
 ModelFileKind model_kind_from_name(const std::string& name) {
     const auto ends = [&](const char* ext) {
@@ -489,85 +450,6 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
     *out = std::move(m);
     if (topo_out) *topo_out = std::move(topo);
-    return Status::success();
-}
-
-Status write_model(const Model& m, std::string* out) {
-    if (Status s = check_for_writing(m, true); !s) return s;
-    const bool erd = m.kind == ModelKind::erd;
-    if (!erd)
-        for (const LatticePoint& p : m.vertices)
-            if (p.x % 2 != 0 || p.y % 2 != 0) return Status::failure("a basic model has a vertex off the pixel lattice");
-    std::string o;
-    o.reserve(m.vertices.size() * 16 + m.faces.size() * 18);
-    o += std::to_string(m.maxval) + "\n" + std::to_string(m.vertices.size()) + "\n";
-    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
-        const LatticePoint p = m.vertices[i];
-        o += std::to_string(erd ? p.x : p.x / 2);
-        o += ' ';
-        o += std::to_string(erd ? p.y : p.y / 2);
-        o += ' ';
-        o += format_value(m.values[i]);
-        o += '\n';
-    }
-    // Positive orientation (corner values follow their vertices).
-    Model pos;
-    const Model* mm = &m;
-    bool flip = false;
-    for (const auto& f : m.faces) flip = flip || orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) < 0;
-    if (flip) {
-        pos = m;
-        for (std::size_t f = 0; f < pos.faces.size(); ++f)
-            if (orient2d(pos.vertices[pos.faces[f][0]], pos.vertices[pos.faces[f][1]], pos.vertices[pos.faces[f][2]]) < 0) {
-                std::swap(pos.faces[f][1], pos.faces[f][2]);
-                if (erd) std::swap(pos.corner_values[f][1], pos.corner_values[f][2]);
-            }
-        mm = &pos;
-    }
-    o += std::to_string(mm->faces.size()) + "\n";
-    for (const auto& f : mm->faces) put_face(&o, f);
-    if (erd) {
-        ModelTopology t;
-        if (Status s = build_topology(*mm, &t); !s) return Status::failure("cannot write the wedges: " + s.message);
-        std::string lines;
-        std::size_t nw = 0;
-        for (std::uint32_t v = 0; v < mm->vertices.size(); ++v) {
-            const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1];
-            // Lines for every vertex whose faces do not all take the value of its vertex line:
-            // every vertex with wedges of different values. Wedges that share one value need
-            // none (the vertex line gives it back), which keeps write(read(write(m))) stable.
-            bool odd = false;
-            for (std::uint32_t i = b; i < e; ++i) odd = odd || corner_value(*mm, t.corners[i]) != mm->values[v];
-            if (!odd) continue;
-            for (std::uint32_t i = b; i < e; ++i) {
-                const std::uint32_t c = t.corners[i];
-                lines += std::to_string(v) + ' ' + std::to_string(c / 3) + ' ' + format_value(corner_value(*mm, c)) + '\n';
-                ++nw;
-            }
-        }
-        o += std::to_string(nw) + "\n" + lines;
-    }
-    *out = std::move(o);
-    return Status::success();
-}
-
-Status write_triangulation(const Model& m, std::string* out) {
-    if (Status s = check_for_writing(m, false); !s) return s;
-    std::string o = "erd-triangulation 1\n" + std::to_string(m.width) + " " + std::to_string(m.height) + "\n" +
-                    std::to_string(m.vertices.size()) + "\n";
-    for (const LatticePoint& p : m.vertices) o += std::to_string(p.x) + ' ' + std::to_string(p.y) + '\n';
-    o += std::to_string(m.faces.size()) + "\n";
-    for (auto f : m.faces) {
-        if (orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) < 0) std::swap(f[1], f[2]);
-        put_face(&o, f);
-    }
-    std::vector<std::array<std::uint32_t, 2>> cons = m.constraints;
-    for (auto& c : cons)
-        if (c[0] > c[1]) std::swap(c[0], c[1]);
-    std::sort(cons.begin(), cons.end());
-    o += std::to_string(cons.size()) + "\n";
-    for (const auto& c : cons) o += std::to_string(c[0]) + ' ' + std::to_string(c[1]) + '\n';
-    *out = std::move(o);
     return Status::success();
 }
 

@@ -47,14 +47,20 @@ std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const E
         SpanPlane l0, l1;  // the weights of corners 0 and 1 as planes
         l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
         l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
-        double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0 = 0, h1 = 0, h2 = 0, bb = 0;
+        // The weights are l.at(X, Y) = (z0 + gx (X - x0)) + gy (Y - y0) with z0 = 1 for l0 and 0
+        // for l1, computed below with the same roundings in the same order: X - x0 is an exact
+        // small integer stepped by 2, and dropping l1's "0 +" changes at most the sign of a zero
+        // weight, which no sum below can see (the sums start at +0, and +0 + -0 = +0).
+        const double gx0 = l0.gx, gx1 = l1.gx;
+        double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0 = 0, h1 = 0, h2 = 0;
+        std::uint64_t bb = 0;  // sum b^2 in integers: exact, and what the double sum gave while exact
         for (const Span& sp : spans) {
             const double Y = double(2 * sp.y);
             const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
             const std::uint16_t* px = &image.samples[std::size_t(sp.y) * std::size_t(image.width)];
-            for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i) {
-                const double X = double(2 * i);
-                const double w0 = l0.z0 + l0.gx * (X - l0.x0) + t0, w1 = l1.z0 + l1.gx * (X - l1.x0) + t1;
+            double a = double(2 * sp.x_begin) - l0.x0;
+            for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, a += 2.0) {
+                const double w0 = (1.0 + gx0 * a) + t0, w1 = gx1 * a + t1;
                 const double w2 = 1.0 - w0 - w1, b = double(px[i]);
                 g00 += w0 * w0;
                 g01 += w0 * w1;
@@ -65,13 +71,13 @@ std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const E
                 h0 += b * w0;
                 h1 += b * w1;
                 h2 += b * w2;
-                bb += b * b;
+                bb += std::uint64_t(px[i]) * px[i];
             }
         }
         faces.push_back({{model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1), model.corner_entry(cdt, e + 2)},
                          {g00, g01, g02, g11, g12, g22},
                          {h0, h1, h2},
-                         bb});
+                         double(bb)});
     }
     return faces;
 }

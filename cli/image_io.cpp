@@ -293,14 +293,33 @@ Status decode_pgm(const unsigned char* data, std::size_t size, Image* out, std::
         note += "ignored " + std::to_string(std::uint64_t(left) - expected) +
                 " bytes after the image (only the first image of a file is read)";
     }
-    im.samples.assign(std::size_t(pixels), 0);
     const unsigned char* p = data + c.i;
-    for (std::size_t k = 0; k < std::size_t(pixels); ++k) {
-        std::uint32_t v = bps == 1 ? p[k] : (std::uint32_t(p[2 * k]) << 8 | p[2 * k + 1]);
-        if (v > im.maxval)
-            return Status::bad_input("sample " + std::to_string(v) + " at " + at((long long)(k % w), (long long)(k / w)) +
-                                     " is above maxval " + std::to_string(maxval));
-        im.samples[k] = std::uint16_t(v);
+    const std::size_t n = std::size_t(pixels);
+    // The samples in one pass, the maxval check as a maximum (none for 8-bit maxval 255); only a
+    // file with a sample above maxval is searched for the first one.
+    std::uint32_t top = 0;
+    if (bps == 1) {
+        im.samples.assign(p, p + n);  // widened on the way, no zero fill first
+        unsigned char m = 0;
+        if (im.maxval < 255)  // else no byte can exceed it
+            for (std::size_t k = 0; k < n; ++k) m = p[k] > m ? p[k] : m;
+        top = m;
+    } else {
+        im.samples.resize(n);
+        std::uint16_t* out_samples = im.samples.data();
+        std::uint16_t m = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint16_t v = std::uint16_t(std::uint32_t(p[2 * k]) << 8 | p[2 * k + 1]);
+            out_samples[k] = v;
+            m = v > m ? v : m;
+        }
+        top = m;
+    }
+    if (top > im.maxval) {
+        std::size_t k = 0;
+        while (im.samples[k] <= im.maxval) ++k;
+        return Status::bad_input("sample " + std::to_string(im.samples[k]) + " at " + at((long long)(k % w), (long long)(k / w)) +
+                                 " is above maxval " + std::to_string(maxval));
     }
     if (warning) *warning = note;
     *out = std::move(im);

@@ -2,8 +2,13 @@
 #include <cerrno>
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "cli/commands.h"
 
@@ -100,8 +105,32 @@ static int flush_stdout(const char* name, int status) {
 
 }  // namespace erd::cli
 
+namespace {
+
+// glibc serves blocks above a dynamic threshold (128 KiB at first) with fresh mmaps and unmaps
+// them on free, so every whole-image array the pipeline allocates again after freeing one (the
+// edge detector's planes between detections, the greedy and refit arrays after them) is paid
+// for again in page faults, ~2 us each on this machine. A fixed threshold above the largest of
+// them takes them from the heap, where freed blocks are reused as they are: bull ERDGPI 1%
+// 14.0k -> 10.3k minor faults, ~13 ms less system time, peak RSS +0.5 MB. (Keeping the freed top
+// of the heap as well, M_TRIM_THRESHOLD, saves 0.9k faults more but costs 1 MB more RSS.)
+//
+// Not under Valgrind: its tools run glibc's allocator in a brk segment of a few MB, and heap
+// growth beyond it fails (std::bad_alloc on lena). Valgrind always preloads its vgpreload_*
+// objects, which is how it is recognised here.
+void tune_allocator() {
+#if defined(__GLIBC__)
+    const char* preload = std::getenv("LD_PRELOAD");
+    if (preload && std::strstr(preload, "vgpreload")) return;
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace erd::cli;
+    tune_allocator();
     const char* self = argc > 0 && argv[0] ? argv[0] : "erd";
     const char* base = std::strrchr(self, '/');
     base = base ? base + 1 : self;

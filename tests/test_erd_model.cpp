@@ -8,12 +8,15 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "algorithms/bilinear.h"
 #include "algorithms/erd_mesh.h"
 #include "algorithms/erd_model.h"
 #include "algorithms/erded.h"
 #include "algorithms/erdgpi.h"
+#include "algorithms/filters.h"
 #include "algorithms/mmsodd.h"
 #include "algorithms/model_io.h"
 #include "algorithms/reconstruct.h"
@@ -134,7 +137,6 @@ TEST_CASE("wedge values on a step image take the two intensities", "[erd]") {
     // 16 x 16, columns 0..7 = 50, 8..15 = 200; the edge x = 7.5 is the vertical constraint
     // X = 15 from the top to the bottom border, split by a vertex in the middle.
     const Image im = step_image(16, 16, 8, 50, 200);
-    const Grid<double> phi = to_grid(im);
     for (int rule : {1, 0}) {
         Cdt cdt;
         REQUIRE(cdt.reset(30, 30).ok());
@@ -145,7 +147,7 @@ TEST_CASE("wedge values on a step image take the two intensities", "[erd]") {
         REQUIRE(cdt.insert_constraint(top, bottom).ok());
         WedgeValueOptions wo;
         wo.rule = rule;
-        ErdModel model(phi, wo);
+        ErdModel model(im, wo);
         model.assign_all(cdt);
         for (VertInd v : {top, mid, bottom}) {
             REQUIRE(model.wedge_count(v) == 2);
@@ -181,11 +183,10 @@ TEST_CASE("approximating function on a hand-made mesh with a diagonal constraint
     Image im(9, 9, 255);
     for (int y = 0; y < 9; ++y)
         for (int x = 0; x < 9; ++x) im.at(x, y) = x > y ? 100 : x < y ? 20 : 60;
-    const Grid<double> phi = to_grid(im);
     Cdt cdt;
     REQUIRE(cdt.reset(16, 16).ok());
     REQUIRE(cdt.insert_constraint(0, 2).ok());
-    ErdModel model(phi, WedgeValueOptions{});
+    ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
     REQUIRE(model.wedge_count(0) == 2);
     REQUIRE(model.wedge_count(2) == 2);
@@ -298,7 +299,6 @@ TEST_CASE("least-squares wedge refit reproduces a planar image and lowers the er
     Image im(40, 30, 255);
     for (int y = 0; y < 30; ++y)
         for (int x = 0; x < 40; ++x) im.at(x, y) = std::uint16_t(3 * x + 2 * y + 10);
-    const Grid<double> phi = to_grid(im);
     Cdt cdt;
     REQUIRE(cdt.reset(78, 58).ok());
     std::vector<Polyline> lines = {{{5, 7}, {31, 20}, {60, 41}}, {{31, 20}, {40, 50}}, {{70, 3}, {71, 30}}};
@@ -308,7 +308,7 @@ TEST_CASE("least-squares wedge refit reproduces a planar image and lowers the er
         VertInd v = 0;
         REQUIRE(cdt.insert_point(p, &v).ok());
     }
-    ErdModel model(phi, WedgeValueOptions{});
+    ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
     WedgeFitStats fs;
     fit_wedge_values(cdt, im, 60, &model, &fs);
@@ -342,7 +342,6 @@ TEST_CASE("wedge refit: the face-assembled normal equations report the true pixe
     // The refit sums each face's pixels into a 3x3 Gram matrix; its before/after errors must be
     // the squared errors of the actual planes at the pixels, and the refit must lower them.
     const Image im = scene(64, 48);
-    const Grid<double> phi = to_grid(im);
     InitialMeshOptions mo;
     mo.target = 120;
     Cdt cdt;
@@ -352,7 +351,7 @@ TEST_CASE("wedge refit: the face-assembled normal equations report the true pixe
         VertInd v = 0;
         REQUIRE(cdt.insert_point(p, &v).ok());
     }
-    ErdModel model(phi, WedgeValueOptions{});
+    ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
     const double before = pixel_sse(cdt, model, im);
     WedgeFitStats fs;
@@ -423,6 +422,32 @@ TEST_CASE(".erd and -t round trip of ERD models", "[erd]") {
     }
 }
 
+namespace {
+
+// Assigns the wedge values of cdt with *local (its own per-pixel MMSODD) and with a model given
+// `grid` as its MMSODD, and checks they agree (relative tolerance `eps`, 0 = bit for bit), search
+// statistics included.
+void compare_wedge_values(const Cdt& cdt, ErdModel* local, const Image& im, const WedgeValueOptions& wo, Grid<double> grid,
+                          double eps) {
+    ErdModel full(im, wo);
+    full.set_mmsodd(std::move(grid));
+    local->assign_all(cdt);
+    full.assign_all(cdt);
+    REQUIRE(local->stats().multi_wedges > 6);
+    std::vector<Wedge> ws;
+    for (VertInd v = 0; v < cdt.vertex_count(); ++v) {
+        cdt.wedges(v, &ws);
+        for (const Wedge& w : ws) {
+            if (eps == 0) REQUIRE(local->wedge_value(v, w.id) == full.wedge_value(v, w.id));
+            else CHECK(local->wedge_value(v, w.id) == Approx(full.wedge_value(v, w.id)).epsilon(eps));
+        }
+    }
+    CHECK(local->stats().alpha_first == full.stats().alpha_first);
+    CHECK(local->stats().alpha_last == full.stats().alpha_last);
+}
+
+}  // namespace
+
 TEST_CASE("the line search's local MMSODD matches the full-grid MMSODD", "[erd]") {
     const Image im = scene(40, 32);
     const Grid<double> phi = to_grid(im);
@@ -431,16 +456,109 @@ TEST_CASE("the line search's local MMSODD matches the full-grid MMSODD", "[erd]"
     std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}}};
     std::size_t dropped = 0;
     REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
-    ErdModel local(phi, WedgeValueOptions{}), full(phi, WedgeValueOptions{});
-    full.set_mmsodd(mmsodd(phi, 5));
-    local.assign_all(cdt);
-    full.assign_all(cdt);
-    REQUIRE(local.stats().multi_wedges > 6);
-    std::vector<Wedge> ws;
-    for (VertInd v = 0; v < cdt.vertex_count(); ++v) {
-        cdt.wedges(v, &ws);
-        for (const Wedge& w : ws) CHECK(local.wedge_value(v, w.id) == Approx(full.wedge_value(v, w.id)).epsilon(1e-9));
+    ErdModel local(im, WedgeValueOptions{});
+    compare_wedge_values(cdt, &local, im, WedgeValueOptions{}, mmsodd(phi, 5), 1e-9);
+}
+
+TEST_CASE("bilinear on the integer samples equals bilinear on their double copy, bit for bit", "[erd]") {
+    // The wedge values read the Image directly since the W x H double copy was dropped: every
+    // value must be the one the copy gave (outputs byte-identical).
+    for (const Image& im : {scene(40, 32), step_image(2, 2, 1, 0, 65535), step_image(1, 5, 1, 7, 9), step_image(9, 1, 4, 3, 250)}) {
+        const Grid<double> phi = to_grid(im);
+        std::uint64_t state = 12345;
+        auto unit = [&state] {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            return double(state >> 11) / 9007199254740992.0;
+        };
+        for (int i = 0; i < 4000; ++i) {
+            // Inside, on the border, and outside (clamped) in both directions.
+            const double x = (unit() * 1.4 - 0.2) * (im.width - 1), y = (unit() * 1.4 - 0.2) * (im.height - 1);
+            REQUIRE(bilinear(im, x, y) == bilinear(phi, x, y));
+        }
+        for (int Y = 0; Y <= 2 * (im.height - 1); ++Y)
+            for (int X = 0; X <= 2 * (im.width - 1); ++X) REQUIRE(bilinear_doubled(im, X, Y) == bilinear_doubled(phi, X, Y));
     }
-    CHECK(local.stats().alpha_first == full.stats().alpha_first);
-    CHECK(local.stats().alpha_last == full.stats().alpha_last);
+}
+
+TEST_CASE("corner values found by direction match wedge_value(v, wedge_id(e)) on every corner", "[erd]") {
+    // corner_value / corner_entry match a corner to its wedge by comparing the bounding edge's
+    // direction with the stored ids instead of calling Cdt::wedge_id; the reference is wedge_id.
+    const Image im = scene(40, 32);
+    Cdt cdt;
+    REQUIRE(cdt.reset(78, 62).ok());
+    std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}},
+                                   {{40, 10}, {50, 10}, {50, 30}, {40, 30}, {40, 10}}, {{0, 40}, {78, 44}}};
+    std::size_t dropped = 0;
+    REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(cdt);
+    // Insertions split constrained edges and add vertices of every kind; existing ids must hold.
+    std::uint64_t state = 99;
+    for (int i = 0; i < 300; ++i) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        const LatticePoint p{std::int32_t((state >> 20) % 79), std::int32_t((state >> 40) % 63)};
+        VertInd v = 0;
+        const std::size_t before = cdt.vertex_count();
+        if (!cdt.insert_point(p, &v).ok()) continue;
+        if (cdt.vertex_count() > before) model.assign_vertex(cdt, v);
+    }
+    std::size_t multi = 0;
+    for (EdgeInd e = 0; e < 3 * cdt.face_count(); ++e) {
+        const VertInd v = cdt.org(e);
+        const double want = model.wedge_value(v, cdt.wedge_id(e));
+        REQUIRE(model.corner_value(cdt, e) == want);
+        REQUIRE(model.entry_value(model.corner_entry(cdt, e)) == want);
+        if (model.wedge_count(v) > 1) ++multi;
+    }
+    CHECK(multi > 40);
+}
+
+namespace {
+
+// The order-k MMSODD at every pixel, written as plainly as possible: each filter over its own
+// taps, every sample bounds-checked (zero outside), sums in increasing tap order.
+Grid<double> reference_mmsodd(const Image& im, int order) {
+    std::vector<double> b = binomial_taps(order);
+    if (b.empty()) b = {1.0};
+    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
+    auto phi = [&](int x, int y) { return x >= 0 && y >= 0 && x < im.width && y < im.height ? double(im.at(x, y)) : 0.0; };
+    // sum over m of ty[m] * (sum over n of tx[n] * phi(x - n, y - m))
+    auto separable = [&](const std::vector<double>& tx, const std::vector<double>& ty, int x, int y) {
+        const int cx = int(tx.size() / 2), cy = int(ty.size() / 2);
+        double outer = 0;
+        for (int m = -cy; m <= cy; ++m) {
+            double inner = 0;
+            for (int n = -cx; n <= cx; ++n) inner += tx[std::size_t(n + cx)] * phi(x - n, y - m);
+            outer += ty[std::size_t(m + cy)] * inner;
+        }
+        return outer;
+    };
+    Grid<double> g(im.width, im.height);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x)
+            g(x, y) = mmsodd_value(separable(d2, b, x, y), separable(b, d2, x, y), separable(d1, d1, x, y));
+    return g;
+}
+
+}  // namespace
+
+TEST_CASE("the line search's local MMSODD equals a plain per-pixel MMSODD bit for bit", "[erd]") {
+    // mmsodd_pixel leaves out +-0 terms and sweeps padded taps; its values, and so the wedge
+    // values, must be exactly those of the plain filters (outputs byte-identical), borders included.
+    for (int order : {5, 3, 7}) {
+        const Image im = scene(40, 32);
+        Cdt cdt;
+        REQUIRE(cdt.reset(78, 62).ok());
+        std::vector<Polyline> lines = {{{1, 9}, {30, 20}, {60, 41}, {77, 61}}, {{30, 20}, {33, 0}}, {{4, 60}, {10, 31}},
+                                       {{0, 2}, {78, 3}}, {{76, 0}, {77, 62}}};
+        std::size_t dropped = 0;
+        REQUIRE(insert_polylines(lines, &cdt, &dropped).ok());
+        WedgeValueOptions wo;
+        wo.smoothing_order = order;
+        ErdModel local(im, wo);
+        const Grid<double> want = reference_mmsodd(im, order);
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) REQUIRE(local.mmsodd_pixel(x, y) == want(x, y));
+        compare_wedge_values(cdt, &local, im, wo, want, 0.0);
+    }
 }

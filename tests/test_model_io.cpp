@@ -1,6 +1,11 @@
 // Model files: .model, .erd and -t round trips, lenient reading, and one message per malformed case.
 #include <catch2/catch.hpp>
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -42,6 +47,50 @@ TEST_CASE("model_io: format_value is canonical and round-trips", "[model_io]") {
     CHECK(erd::format_value(-7.0) == "-7");
     const double third = 1.0 / 3.0;
     CHECK(std::stod(erd::format_value(third)) == third);
+}
+
+namespace {
+
+// The writers' value format as it was first written, with std::to_string and std::floor: the
+// reference the hand-written integer path of format_value must reproduce character for character.
+std::string reference_format(double v) {
+    if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+TEST_CASE("model_io: format_value matches the std::to_string / std::to_chars reference", "[model_io]") {
+    std::vector<double> vs = {0.0, -0.0, 1.0, -1.0, 9.0, 10.0, 99.0, 100.0, 255.0, 65535.0, 0.5, -0.5, 1e-300,
+                              5e-324, -5e-324, 2.2250738585072014e-308, 1.7976931348623157e308, -1.7976931348623157e308,
+                              1e15, -1e15, 1e15 - 1, -(1e15 - 1), 999999999999999.5, 1e15 + 2, 9007199254740992.0,
+                              std::nextafter(1e15, 0.0), std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0),
+                              std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                              std::numeric_limits<double>::quiet_NaN()};
+    for (int d = 0; d <= 15; ++d) {  // every digit count, at the edges of each decade
+        const double p = std::pow(10.0, d);
+        for (double v : {p, p - 1, p + 1, -p, -(p - 1), p / 2, p + 0.25}) vs.push_back(v);
+    }
+    std::mt19937_64 rng(20261201);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 20000; ++i) {
+        vs.push_back(std::floor(unit(rng) * 65536.0));                     // integral sample values
+        vs.push_back(unit(rng) * 65535.0);                                 // wedge values
+        vs.push_back((unit(rng) - 0.5) * std::pow(10.0, int(rng() % 40) - 20));  // any magnitude
+        vs.push_back(double(std::int64_t(rng() % 2000000000000000ull) - 1000000000000000ll));  // big integers
+        std::uint64_t bits = rng();
+        double any = 0;
+        std::memcpy(&any, &bits, sizeof any);  // any bit pattern, NaNs and subnormals included
+        vs.push_back(any);
+    }
+    std::size_t bad = 0;
+    for (double v : vs)
+        if (erd::format_value(v) != reference_format(v)) {
+            if (++bad <= 5) FAIL_CHECK(std::to_string(v) << ": " << erd::format_value(v) << " vs " << reference_format(v));
+        }
+    CHECK(bad == 0);
 }
 
 TEST_CASE("model_io: kind from the file name", "[model_io]") {
