@@ -73,9 +73,9 @@ Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_
 // gradient pass of step 1, most of the work, runs once and is kept for later detections while it
 // covers them (it keeps the points above a lower bound of the first detection's tau_low, so it
 // covers any detection with a tau_low at least as high, e.g. a smaller beta with the same r);
-// otherwise it runs again. Results equal detect_edges(image, params, ...). Holds about 4 bytes
-// per half-pixel point plus 8 per kept point until release() or destruction; the image must
-// outlive the detector.
+// otherwise it runs again. Results equal detect_edges(image, params, ...). Holds 9 bytes per kept
+// point (a few percent of the half-pixel grid more than the strong points) until release() or
+// destruction; the image must outlive the detector.
 class EdgeDetector {
 public:
     explicit EdgeDetector(const Image& im);
