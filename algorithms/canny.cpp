@@ -208,16 +208,17 @@ inline std::uint8_t suppress(const float* up, const float* mid, const float* dow
     return fl;
 }
 
-// The points with g >= tau_low (about a tenth of the grid) in row-major order with what steps 4
-// and 5 need, so those steps touch small arrays instead of grid planes.
+// One detection's view of the pass's kept points (a superset of the points with g >= tau_low),
+// so steps 4 and 5 touch small arrays instead of grid planes; a kept point below tau_low has no
+// flags, which makes it absent for both steps.
 struct StrongPoints {
-    SortedPoints points;                // plane indices and rings
-    std::vector<float> mag;             // g
-    std::vector<std::uint8_t> flag;     // kCandidate, kSecondary, kMain
-    std::vector<std::uint32_t> seeds;   // candidates with g >= tau_high, in row-major order
-    std::vector<std::uint32_t> mains;   // every point marked kMain, in the order marked
-    std::size_t size() const { return points.size(); }
-    void ring(std::uint32_t i, std::uint32_t nb[8]) const { points.ring(i, nb); }
+    const SortedPoints* points = nullptr;  // plane indices and rings of the kept points
+    const float* mag = nullptr;            // their g
+    std::vector<std::uint8_t> flag;        // kCandidate, kSecondary, kMain; none below tau_low
+    std::vector<std::uint32_t> seeds;      // candidates with g >= tau_high, in row-major order
+    std::vector<std::uint32_t> mains;      // every point marked kMain, in the order marked
+    std::size_t size() const { return points->size(); }
+    void ring(std::uint32_t i, std::uint32_t nb[8]) const { points->ring(i, nb); }
 };
 
 // Step 4: grow from the seeds through 8-connected candidates. Returns the number of main points.
@@ -425,12 +426,16 @@ struct EdgeDetector::Pass {
     Plane pl;  // index space of the points (never allocated)
     int smoothing_order = 0;
     Border border = Border::replicate;
-    // The kept points in row-major order: plane index, g, and kCandidate | kSecondary; raw arrays
-    // because the pass makes room for a row before it appends to them.
+    // While the pass runs: the kept points in row-major order (plane index, g, kCandidate |
+    // kSecondary) in raw arrays, because it makes room for a row before it appends to them.
     std::unique_ptr<std::uint32_t[]> at;
     std::unique_ptr<float[]> mag;
     std::unique_ptr<std::uint8_t[]> flag;
     std::size_t n_kept = 0, capacity = 0;
+    // After it: the points at or above the final bound, linked once for every detection.
+    SortedPoints kept;
+    std::vector<float> kept_mag;
+    std::vector<std::uint8_t> kept_flag;
     std::vector<std::size_t> hist;          // exact for the bins >= floor_bin
     std::uint32_t floor_bin = 0;            // bin of the k-th largest (0 until k values)
     std::size_t at_or_above_floor = 0;      // values in the bins >= floor_bin
@@ -494,6 +499,24 @@ struct EdgeDetector::Pass {
                 prev_gx = ax;
                 prev_gy = ay;
             });
+        // Only the points at or above the final bound can be strong in a detection this pass
+        // covers; with narrow bins they are hardly more than the first detection's strong points.
+        const std::size_t n = count_at_least(mag.get(), n_kept, low);
+        kept = SortedPoints();
+        kept.stride = pl.stride;
+        kept.at.reserve(n);
+        kept_mag.reserve(n);
+        kept_flag.reserve(n);
+        for_each_at_least(mag.get(), n_kept, low, [&](std::size_t k) {
+            kept.at.push_back(at[k]);
+            kept_mag.push_back(mag[k]);
+            kept_flag.push_back(flag[k]);
+        });
+        at.reset();
+        mag.reset();
+        flag.reset();
+        n_kept = capacity = 0;
+        kept.link_rows();
     }
 
     // Room for `more` points: first drop the points the bound has risen past (they can never be
@@ -533,8 +556,10 @@ struct EdgeDetector::Pass {
         const std::uint32_t bin = kth_bin(hist, k_high, &above);
         std::vector<float> in_bin;
         in_bin.reserve(hist[bin]);
-        for_each_at_least(mag.get(), n_kept, bin_floor(bin), [&](std::size_t k) {
-            if (float_bin(mag[k]) == bin) in_bin.push_back(mag[k]);
+        const std::size_t n = kept.size();
+        const float* g = kept_mag.data();
+        for_each_at_least(g, n, bin_floor(bin), [&](std::size_t k) {
+            if (float_bin(g[k]) == bin) in_bin.push_back(g[k]);
         });
         if (bin == 0) in_bin.resize(hist[0], 0.0f);
         const double tau_high = select_in_bin(&in_bin, k_high, above, &above_high);
@@ -543,24 +568,16 @@ struct EdgeDetector::Pass {
         const float th = float(tau_high), tl = float(tau_low);
         if (tl < low) return false;  // strong points may be missing
 
-        // The kept points with g >= tau_low are the strong points.
+        // The kept points with g >= tau_low are the strong points; the others lose their flags.
         StrongPoints sp;
-        sp.points.stride = pl.stride;
-        const std::size_t strong = count_at_least(mag.get(), n_kept, tl);
-        sp.points.at.reserve(strong);
-        sp.mag.reserve(strong);
-        sp.flag.reserve(strong);
+        sp.points = &kept;
+        sp.mag = g;
+        sp.flag.resize(n);
         const std::uint8_t used = params.modified ? std::uint8_t(kCandidate | kSecondary) : std::uint8_t(kCandidate);
-        for_each_at_least(mag.get(), n_kept, tl, [&](std::size_t k) {
-            const float m = mag[k];
-            const std::uint8_t fl = std::uint8_t(flag[k] & used);
-            if ((fl & kCandidate) && m >= th) sp.seeds.push_back(std::uint32_t(sp.size()));
-            sp.points.at.push_back(at[k]);
-            sp.mag.push_back(m);
-            sp.flag.push_back(fl);
+        for (std::size_t k = 0; k < n; ++k) sp.flag[k] = g[k] >= tl ? std::uint8_t(kept_flag[k] & used) : std::uint8_t(0);
+        for_each_at_least(g, n, th, [&](std::size_t k) {
+            if (sp.flag[k] & kCandidate) sp.seeds.push_back(std::uint32_t(k));
         });
-        if (release) clear();
-        sp.points.link_rows();
 
         // 4, 5.
         const std::size_t main_points = hysteresis(&sp);
@@ -570,9 +587,10 @@ struct EdgeDetector::Pass {
         SortedPoints mains;
         mains.stride = pl.stride;
         mains.at.reserve(sp.mains.size());
-        for (std::size_t k = 0; k < sp.size(); ++k)
-            if (sp.flag[k] & kMain) mains.at.push_back(sp.points.at[k]);
+        for (std::size_t k = 0; k < n; ++k)
+            if (sp.flag[k] & kMain) mains.at.push_back(kept.at[k]);
         sp = StrongPoints();
+        if (release) clear();
         std::vector<std::uint8_t> alive(mains.size(), 1);
         if (params.thin) {
             mains.link_rows();
@@ -597,10 +615,9 @@ struct EdgeDetector::Pass {
     }
 
     void clear() {
-        at.reset();
-        mag.reset();
-        flag.reset();
-        n_kept = capacity = 0;
+        kept.clear();
+        std::vector<float>().swap(kept_mag);
+        std::vector<std::uint8_t>().swap(kept_flag);
     }
 
     // k = round(beta * M), at least 1 (step 2).
