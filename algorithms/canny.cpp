@@ -217,21 +217,28 @@ struct StrongPoints {
     std::vector<std::uint8_t> flag;        // kCandidate, kSecondary, kMain; none below tau_low
     std::vector<std::uint32_t> seeds;      // candidates with g >= tau_high, in row-major order
     std::vector<std::uint32_t> mains;      // every point marked kMain, in the order marked
+    std::vector<std::uint32_t> label;      // main component (steps 4, 5), 0 = none
     std::size_t size() const { return points->size(); }
     void ring(std::uint32_t i, std::uint32_t nb[8]) const { points->ring(i, nb); }
 };
 
 // Step 4: grow from the seeds through 8-connected candidates. Returns the number of main points.
-std::size_t hysteresis(StrongPoints* sp) {
+// Each growth is one 8-connected component of the main points (a candidate next to it would have
+// joined it); with `labels`, sp->label receives its number, 1, 2, ... in the order grown.
+std::size_t hysteresis(StrongPoints* sp, bool labels) {
+    if (labels) sp->label.assign(sp->size(), 0);
     std::vector<std::uint32_t> stack;
+    std::uint32_t component = 0;
     for (const std::uint32_t s : sp->seeds) {
         if (sp->flag[s] & kMain) continue;
         sp->flag[s] |= kMain;
         stack.push_back(s);
+        ++component;
         while (!stack.empty()) {
             const std::uint32_t i = stack.back();
             stack.pop_back();
             sp->mains.push_back(i);
+            if (labels) sp->label[i] = component;
             std::uint32_t nb[8];
             sp->ring(i, nb);
             for (const std::uint32_t j : nb) {
@@ -249,30 +256,20 @@ std::size_t hysteresis(StrongPoints* sp) {
 // multi-source breadth-first search from every main point over secondary-only points labels each
 // reached point with its nearest main component; where two labels meet, the two parent chains
 // back to their sources are the shortest secondary link between those components. Returns the
-// number of points added.
+// number of points added. Needs hysteresis(sp, true): its labels, and its mains, whose order
+// (component by component, each in the order grown) starts the search.
 std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     const std::size_t n = sp->size();
     std::vector<std::uint8_t>& flag = sp->flag;
-    std::vector<std::uint32_t> label(n, 0);  // main component + 1, 0 = unreached
-    std::vector<std::uint8_t> dist(n, 0);
-    std::vector<std::uint32_t> from(n, kNoPoint);
-    std::vector<std::uint32_t> queue, stack;
-    std::uint32_t components = 0;
-    for (const std::uint32_t s : sp->mains) {
-        if (label[s]) continue;
-        ++components;
-        label[s] = components;
-        stack.push_back(s);
-        while (!stack.empty()) {
-            const std::uint32_t i = stack.back();
-            stack.pop_back();
-            queue.push_back(i);
-            std::uint32_t nb[8];
-            sp->ring(i, nb);
-            for (const std::uint32_t j : nb) {
-                if (j != kNoPoint && (flag[j] & kMain) && !label[j]) { label[j] = components; stack.push_back(j); }
-            }
-        }
+    std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
+    // dist and from are read only at labelled points: set for the sources below, and for a
+    // reached point when it is reached, so neither is initialised.
+    std::unique_ptr<std::uint8_t[]> dist(new std::uint8_t[n]);
+    std::unique_ptr<std::uint32_t[]> from(new std::uint32_t[n]);
+    std::vector<std::uint32_t> queue(sp->mains);
+    for (const std::uint32_t i : queue) {
+        dist[i] = 0;
+        from[i] = kNoPoint;
     }
     struct Meeting { std::uint64_t key; std::uint32_t p, q; };
     std::vector<Meeting> meetings;
@@ -580,8 +577,9 @@ struct EdgeDetector::Pass {
         });
 
         // 4, 5.
-        const std::size_t main_points = hysteresis(&sp);
-        const std::size_t added = params.modified && params.max_link > 0 ? join_components(&sp, params.max_link, tl) : 0;
+        const bool join = params.modified && params.max_link > 0;
+        const std::size_t main_points = hysteresis(&sp, join);
+        const std::size_t added = join ? join_components(&sp, params.max_link, tl) : 0;
 
         // 6. The main points, in row-major order, thinned as a sparse set.
         SortedPoints mains;
