@@ -539,10 +539,9 @@ struct EdgeDetector::Pass {
     // Steps 2 and 4 to 6. Returns false, having written nothing, when the pass does not cover the
     // parameters: a different filter, too few values counted for this beta, or a tau_low below
     // the bound. release = the pass is not used again: its arrays go as soon as they are read.
-    bool track(const CannyParams& params, bool release, Grid<std::uint8_t>* edges, CannyStats* stats) {
+    bool track(const CannyParams& params, bool release, SortedPoints* edges, CannyStats* stats) {
         if (params.smoothing_order != smoothing_order || params.border != border) return false;
-        const int W = pl.w, H = pl.h;
-        const std::size_t M = std::size_t(W) * std::size_t(H);
+        const std::size_t M = std::size_t(pl.w) * std::size_t(pl.h);
         const std::size_t k_high = k_of(params.beta, M);
         if (at_or_above_floor < k_high) return false;  // the k-th largest is below the counted bins
 
@@ -594,13 +593,11 @@ struct EdgeDetector::Pass {
             mains.link_rows();
             thin_points(mains, &alive);
         }
-        *edges = Grid<std::uint8_t>(W, H, 0);
-        std::size_t edge_points = 0;
+        *edges = SortedPoints();
+        edges->stride = pl.stride;
         for (std::size_t k = 0; k < mains.size(); ++k)
-            if (alive[k]) {
-                (*edges)(int(mains.at[k] % std::uint32_t(pl.stride)) - 1, int(mains.at[k] / std::uint32_t(pl.stride)) - 1) = 1;
-                ++edge_points;
-            }
+            if (alive[k]) edges->at.push_back(mains.at[k]);
+        const std::size_t edge_points = edges->size();
         if (stats) {
             stats->tau_high = tau_high;
             stats->tau_low = tau_low;
@@ -635,7 +632,9 @@ Status detect_once(int width, int height, Sample sample, const CannyParams& para
     if (!st) return st;
     EdgeDetector::Pass pass;
     pass.run(width, height, sample, params, EdgeDetector::Pass::k_of(params.beta, std::size_t(2 * width - 1) * std::size_t(2 * height - 1)));
-    pass.track(params, true, edges, stats);  // a pass covers the parameters it was made with
+    SortedPoints points;
+    pass.track(params, true, &points, stats);  // a pass covers the parameters it was made with
+    *edges = edge_map(points, 2 * width - 1, 2 * height - 1);
     return Status::success();
 }
 
@@ -644,7 +643,7 @@ Status detect_once(int width, int height, Sample sample, const CannyParams& para
 EdgeDetector::EdgeDetector(const Image& im) : im_(im) {}
 EdgeDetector::~EdgeDetector() = default;
 
-Status EdgeDetector::detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
+Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, CannyStats* stats) {
     if (im_.width <= 0 || im_.height <= 0) return Status::bad_input("edge detection: empty image");
     Status st = check_params(params);
     if (!st) return st;
@@ -655,6 +654,20 @@ Status EdgeDetector::detect(const CannyParams& params, Grid<std::uint8_t>* edges
     pass_->run(im_.width, im_.height, [&](int x, int y) { return im_.at(x, y); }, params, Pass::k_of(params.beta, M));
     pass_->track(params, false, edges, stats);
     return Status::success();
+}
+
+Status EdgeDetector::detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
+    SortedPoints points;
+    Status st = detect(params, &points, stats);
+    if (st) *edges = edge_map(points, 2 * im_.width - 1, 2 * im_.height - 1);
+    return st;
+}
+
+Grid<std::uint8_t> edge_map(const SortedPoints& points, int width, int height) {
+    Grid<std::uint8_t> map(width, height, 0);
+    const std::uint32_t s = std::uint32_t(points.stride);
+    for (const std::uint32_t i : points.at) map(int(i % s) - 1, int(i / s) - 1) = 1;
+    return map;
 }
 
 void EdgeDetector::release() { pass_.reset(); }
