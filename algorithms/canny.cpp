@@ -393,14 +393,25 @@ void regrow(std::unique_ptr<T[]>* a, std::size_t n, std::size_t cap) {
 // Row Y of phi_bar on the half-pixel grid (step 1's f): even entries are samples, odd ones means.
 template <class Sample>
 void half_pixel_row(int width, int Y, Sample sample, float* r) {
-    const int y0 = Y >> 1, y1 = (Y & 1) ? y0 + 1 : y0;
-    float prev = 0.0f;
-    for (int x = 0; x < width; ++x) {
-        const float top = float(sample(x, y0)), bottom = float(sample(x, y1));
-        const float v = (Y & 1) ? 0.5f * (top + bottom) : top;
-        r[2 * x] = v;
-        if (x > 0) r[2 * x - 1] = 0.5f * (prev + v);
-        prev = v;
+    const int y0 = Y >> 1;
+    // Even rows are sample rows, odd rows the means of two; written apart so that an even row
+    // reads each sample once.
+    float prev = (Y & 1) ? 0.5f * (float(sample(0, y0)) + float(sample(0, y0 + 1))) : float(sample(0, y0));
+    r[0] = prev;
+    if (Y & 1) {
+        for (int x = 1; x < width; ++x) {
+            const float v = 0.5f * (float(sample(x, y0)) + float(sample(x, y0 + 1)));
+            r[2 * x] = v;
+            r[2 * x - 1] = 0.5f * (prev + v);
+            prev = v;
+        }
+    } else {
+        for (int x = 1; x < width; ++x) {
+            const float v = float(sample(x, y0));
+            r[2 * x] = v;
+            r[2 * x - 1] = 0.5f * (prev + v);
+            prev = v;
+        }
     }
 }
 
@@ -568,9 +579,9 @@ struct EdgeDetector::Pass {
         StrongPoints sp;
         sp.points = &kept;
         sp.mag = g;
-        sp.flag.resize(n);
+        sp.flag.assign(n, 0);
         const std::uint8_t used = params.modified ? std::uint8_t(kCandidate | kSecondary) : std::uint8_t(kCandidate);
-        for (std::size_t k = 0; k < n; ++k) sp.flag[k] = g[k] >= tl ? std::uint8_t(kept_flag[k] & used) : std::uint8_t(0);
+        for_each_at_least(g, n, tl, [&](std::size_t k) { sp.flag[k] = std::uint8_t(kept_flag[k] & used); });
         for_each_at_least(g, n, th, [&](std::size_t k) {
             if (sp.flag[k] & kCandidate) sp.seeds.push_back(std::uint32_t(k));
         });
