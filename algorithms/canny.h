@@ -34,6 +34,7 @@
 
 #include "algorithms/filters.h"
 #include "algorithms/image.h"
+#include "algorithms/point_rings.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -73,9 +74,9 @@ Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_
 // gradient pass of step 1, most of the work, runs once and is kept for later detections while it
 // covers them (it keeps the points above a lower bound of the first detection's tau_low, so it
 // covers any detection with a tau_low at least as high, e.g. a smaller beta with the same r);
-// otherwise it runs again. Results equal detect_edges(image, params, ...). Holds about 4 bytes
-// per half-pixel point plus 8 per kept point until release() or destruction; the image must
-// outlive the detector.
+// otherwise it runs again. Results equal detect_edges(image, params, ...). Holds 9 bytes per kept
+// point (a few percent of the half-pixel grid more than the strong points) until release() or
+// destruction; the image must outlive the detector.
 class EdgeDetector {
 public:
     explicit EdgeDetector(const Image& im);
@@ -83,6 +84,10 @@ public:
     EdgeDetector(const EdgeDetector&) = delete;
     EdgeDetector& operator=(const EdgeDetector&) = delete;
     Status detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats = nullptr);
+    // The same detection as the edge points in row-major order: point (X, Y) of the half-pixel
+    // grid is plane index (Y + 1) * stride + X + 1 (a frame of at least one column; not linked).
+    // edge_map() turns it into the map; trace_polylines (algorithms/polylines.h) takes it as is.
+    Status detect(const CannyParams& params, SortedPoints* edges, CannyStats* stats = nullptr);
     void release();  // frees the kept pass
 
     struct Pass;  // defined in canny.cpp
@@ -91,6 +96,9 @@ private:
     const Image& im_;
     std::unique_ptr<Pass> pass_;
 };
+
+// The width x height edge map (1 = edge) of points from EdgeDetector::detect.
+Grid<std::uint8_t> edge_map(const SortedPoints& points, int width, int height);
 
 // Gradient of f (any grid, no resampling) as described in step 1. Exposed for tests and tools.
 void canny_gradient(const Grid<double>& f, int smoothing_order, Border border, Grid<float>* gx, Grid<float>* gy);

@@ -16,7 +16,7 @@ namespace {
 class StepOneCounter : public ConstraintPointCounter {
 public:
     StepOneCounter(const Image& image, LengthRule rule, double eps_unit)
-        : detector_(image), rule_(rule), eps_unit_(eps_unit) {}
+        : detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule), eps_unit_(eps_unit) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -24,16 +24,18 @@ public:
         r_ = r;
         have_edges_ = true;
         have_count_ = false;
-        // The previous detection's map and polylines are dead now: free them before the detector
-        // allocates its grids, so they do not add to the peak (about 1 byte per half-pixel point).
-        edges_ = Grid<std::uint8_t>();
+        // The previous detection's points and polylines are dead now: free them before the
+        // detector allocates, so they do not add to the peak.
+        edges_.clear();
         std::vector<Polyline>().swap(traced_);
         std::vector<Polyline>().swap(kept_);
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
+        // Points, not a map: only the chosen detection's map is ever made (edges()).
         Status st = detector_.detect(cp, &edges_);  // reuses the gradient pass while it can
         if (!st.ok() && status_.ok()) status_ = st;
+        edges_.link_rows();
         traced_ = trace_polylines(edges_);
     }
 
@@ -49,13 +51,14 @@ public:
 
     const Status& status() const { return status_; }
     void release_detector() { detector_.release(); }
-    Grid<std::uint8_t>& edges() { return edges_; }
+    Grid<std::uint8_t> edges() const { return edge_map(edges_, map_w_, map_h_); }
     std::vector<Polyline>& kept() { return kept_; }
 
 private:
     // On the image, not a double copy of it: the ERD methods make their double phi only after
     // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
     EdgeDetector detector_;
+    int map_w_, map_h_;  // the half-pixel grid
     LengthRule rule_;
     double eps_unit_;
     Status status_;
@@ -63,7 +66,7 @@ private:
     double beta_ = 0, r_ = 0, eps_ = 0;
     int l_ = 0;
     std::size_t count_ = 0;
-    Grid<std::uint8_t> edges_;
+    SortedPoints edges_;  // of the last detection
     std::vector<Polyline> traced_, kept_;
 };
 
@@ -109,7 +112,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
                                     counter);
     counter.release_detector();
     if (!counter.status().ok()) return counter.status();
-    out->edges = std::move(counter.edges());
+    out->edges = counter.edges();
     out->polylines = std::move(counter.kept());
     out->constraint_points = out->params.constrained_points;
 

@@ -9,9 +9,8 @@
 namespace erd {
 
 std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
-    std::vector<Polyline> out;
     const int w = edges.width, h = edges.height;
-    if (w <= 0 || h <= 0) return out;
+    if (w <= 0 || h <= 0) return {};
     // The set points in row-major order (found by skipping zero bytes eight at a time) as
     // indices of a plane with a one-point frame that is never allocated: per-point arrays only.
     SortedPoints pts;
@@ -20,6 +19,11 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
         pts.at.push_back(std::uint32_t((k / std::size_t(w) + 1) * std::size_t(pts.stride) + k % std::size_t(w) + 1));
     });
     pts.link_rows();
+    return trace_polylines(pts);
+}
+
+std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
+    std::vector<Polyline> out;
     const std::size_t n = pts.size();
     auto point = [&](std::uint32_t i) {
         const std::uint32_t s = std::uint32_t(pts.stride);

@@ -25,6 +25,8 @@ using Polyline = std::vector<LatticePoint>;
 // give one-point polylines. Deterministic: nodes in row-major order, links in a fixed order
 // (E, SE, S, SW, W, NW, N, NE), loops after all node runs. Each link is used by one polyline.
 std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges);
+// The same for edge points as EdgeDetector::detect gives them, after pts.link_rows().
+std::vector<Polyline> trace_polylines(const SortedPoints& pts);
 
 // Steps 1.1 to 1.3 in one call: detect edges, trace, simplify with Douglas-Peucker (epsilon in
 // half-pixel grid units, algorithms/douglas_peucker.h), keep polylines that had at least

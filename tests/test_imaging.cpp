@@ -348,6 +348,112 @@ TEST_CASE("EdgeDetector reuses its gradient pass and gives what detect_edges giv
     CHECK(detector.detect(bad, &e).code == Code::input);
 }
 
+namespace {
+
+// Plain Canny without thinning, the straightforward way: the whole gradient and magnitude planes,
+// the quantile over all of them, suppression on the plane with its frame replicated, then a flood
+// from the seeds. The streamed pass (suppression row by row, points kept above a rising bound)
+// must give exactly this.
+Grid<std::uint8_t> plain_canny_reference(const Image& im, double beta, double r, double* tau_high) {
+    Grid<double> f0(im.width, im.height);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) f0(x, y) = im.at(x, y);
+    const Grid<double> f = half_pixel(f0);
+    Grid<float> gx, gy;
+    canny_gradient(f, 5, Border::replicate, &gx, &gy);
+    const int W = f.width, H = f.height;
+    Grid<float> g(W, H);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const float sq = gx.data[i] * gx.data[i] + gy.data[i] * gy.data[i];
+        g.data[i] = std::sqrt(sq);
+    }
+    *tau_high = beta_quantile(g.data.data(), g.size(), beta);
+    const float th = float(*tau_high), tl = float(r * *tau_high);
+    auto at = [&](int X, int Y) { return g(std::min(std::max(X, 0), W - 1), std::min(std::max(Y, 0), H - 1)); };
+    Grid<std::uint8_t> cand(W, H, 0), out(W, H, 0);
+    for (int Y = 0; Y < H; ++Y)
+        for (int X = 0; X < W; ++X) {
+            const float m = g(X, Y), ux = gx(X, Y), uy = gy(X, Y);
+            if (!(m >= tl) || m <= 0.0f) continue;
+            const int sx = ux > 0 ? 1 : -1, sy = uy > 0 ? 1 : -1;
+            float ahead, behind;
+            if (std::fabs(ux) >= std::fabs(uy)) {
+                const float w = std::fabs(uy) / std::fabs(ux);
+                ahead = (1.0f - w) * at(X + sx, Y) + w * at(X + sx, Y + sy);
+                behind = (1.0f - w) * at(X - sx, Y) + w * at(X - sx, Y - sy);
+            } else {
+                const float w = std::fabs(ux) / std::fabs(uy);
+                ahead = (1.0f - w) * at(X, Y + sy) + w * at(X + sx, Y + sy);
+                behind = (1.0f - w) * at(X, Y - sy) + w * at(X - sx, Y - sy);
+            }
+            cand(X, Y) = m > ahead && m >= behind;
+        }
+    std::vector<int> stack;
+    for (int i = 0; i < int(g.size()); ++i) {
+        if (!cand.data[std::size_t(i)] || out.data[std::size_t(i)] || !(g.data[std::size_t(i)] >= th)) continue;
+        out.data[std::size_t(i)] = 1;
+        stack.push_back(i);
+        while (!stack.empty()) {
+            const int p = stack.back(), x = p % W, y = p / W;
+            stack.pop_back();
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = x + dx, qy = y + dy;
+                    if (qx < 0 || qy < 0 || qx >= W || qy >= H || !cand(qx, qy) || out(qx, qy)) continue;
+                    out(qx, qy) = 1;
+                    stack.push_back(qy * W + qx);
+                }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("the streamed edge pass equals plain Canny computed on whole planes", "[imaging]") {
+    // Shapes, a ramp and hashed noise; a flat image (no edges); one-row, one-column and one-pixel
+    // images; a 12-bit image; a large flat part first, so the bound stays low for many rows.
+    auto make = [](int w, int h, std::uint32_t maxval, int kind) {
+        Image im(w, h, maxval);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const double d = std::hypot(x - 0.4 * w, y - 0.6 * h);
+                double v = kind == 1 ? 77.0 : 30 + 0.8 * x + (d < 0.3 * std::min(w, h) ? 0.5 * maxval : 0.0);
+                if (kind == 0) v += double((std::uint32_t(x) * 2654435761u ^ std::uint32_t(y) * 40503u) % 23u);
+                if (kind == 2 && y < h / 2) v = 9.0;
+                im.at(x, y) = std::uint16_t(std::min(double(maxval), v));
+            }
+        return im;
+    };
+    const Image images[] = {make(37, 29, 255, 0), make(23, 41, 4095, 0), make(16, 16, 255, 1), make(19, 1, 255, 0),
+                            make(1, 17, 255, 0),  make(1, 1, 255, 0),    make(45, 60, 255, 2)};
+    const double betas[] = {0.01, 0.055, 0.3, 1.0};
+    const double rs[] = {0.0, 0.4, 1.0};
+    int with_edges = 0;
+    for (const Image& im : images) {
+        EdgeDetector detector(im);
+        for (const double beta : betas)
+            for (const double r : rs) {
+                CannyParams p;
+                p.beta = beta;
+                p.r = r;
+                p.modified = false;
+                p.thin = false;
+                double tau = 0;
+                const Grid<std::uint8_t> want = plain_canny_reference(im, beta, r, &tau);
+                Grid<std::uint8_t> got, reused;
+                CannyStats st;
+                REQUIRE(detect_edges(im, p, &got, &st).ok());
+                REQUIRE(detector.detect(p, &reused).ok());
+                CHECK(st.tau_high == tau);
+                CHECK(got.data == want.data);
+                CHECK(reused.data == want.data);
+                with_edges += std::count(want.data.begin(), want.data.end(), 1) > 0;
+            }
+    }
+    CHECK(with_edges > 40);  // the comparisons are not all between empty maps
+}
+
 TEST_CASE("tracing splits at junctions and keeps closed loops", "[imaging]") {
     // A T of three arms, a ring without nodes, an isolated point.
     const Grid<std::uint8_t> m = make_map({
