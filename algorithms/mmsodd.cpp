@@ -16,23 +16,13 @@ double mmsodd_value(double fxx, double fyy, double fxy) {
     return std::fabs(l1) + l2;
 }
 
-Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) {
-    std::vector<double> b = binomial_taps(smoothing_order);
-    if (b.empty()) b = {1.0};
-    const int w = im.width, h = im.height;
+namespace {
+
+// The zero-border MMSODD of a w x h row-major array of samples (double or 16-bit integers).
+template <class T>
+Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<double>& b) {
     Grid<double> out(w, h);
     if (w <= 0 || h <= 0) return out;
-
-    if (border != Border::zero) {
-        // Replication is not used by the methods; the general filters serve it.
-        const std::vector<double> d2 = compose_taps(derivative2_taps(), b);
-        const std::vector<double> d1 = compose_taps(derivative1_taps(), b);
-        const Grid<double> fxx = convolve_cols(convolve_rows(im, d2, border), b, border);
-        const Grid<double> fyy = convolve_cols(convolve_rows(im, b, border), d2, border);
-        const Grid<double> fxy = convolve_cols(convolve_rows(im, d1, border), d1, border);
-        for (std::size_t i = 0; i < out.data.size(); ++i) out.data[i] = mmsodd_value(fxx.data[i], fyy.data[i], fxy.data[i]);
-        return out;
-    }
 
     // Each derivative filter is the binomial composed with a 3-tap derivative, and composition
     // is associative on the zero-extended image: fxx = [1 -2 1]_x S, fyy = [1 -2 1]_y S,
@@ -57,7 +47,8 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
     int next = 0;  // the next input row to smooth along x
     for (int j = -1; j <= h; ++j) {
         for (; next < h && next <= j + c; ++next) {
-            std::copy(&im(0, next), &im(0, next) + w, padded.begin() + c + 1);
+            const T* row = samples + std::size_t(next) * std::size_t(w);
+            std::copy(row, row + w, padded.begin() + c + 1);
             // Smoothed sample x - 1 = sum_k b[k] f(x - 1 + c - k) = sum_k b[k] padded[x + 2c - k].
             for (int k = 0; k < span; ++k) src[std::size_t(k)] = padded.data() + 2 * c - k;
             weighted_rows(src.data(), b.data(), span, hrow(next), int(ew));
@@ -82,6 +73,32 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
         }
     }
     return out;
+}
+
+std::vector<double> smoothing_taps(int order) {
+    std::vector<double> b = binomial_taps(order);
+    if (b.empty()) b = {1.0};
+    return b;
+}
+
+}  // namespace
+
+Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) {
+    const std::vector<double> b = smoothing_taps(smoothing_order);
+    if (border == Border::zero) return mmsodd_zero(im.data.data(), im.width, im.height, b);
+    // Replication is not used by the methods; the general filters serve it.
+    const std::vector<double> d2 = compose_taps(derivative2_taps(), b);
+    const std::vector<double> d1 = compose_taps(derivative1_taps(), b);
+    const Grid<double> fxx = convolve_cols(convolve_rows(im, d2, border), b, border);
+    const Grid<double> fyy = convolve_cols(convolve_rows(im, b, border), d2, border);
+    const Grid<double> fxy = convolve_cols(convolve_rows(im, d1, border), d1, border);
+    Grid<double> out(im.width, im.height);
+    for (std::size_t i = 0; i < out.data.size(); ++i) out.data[i] = mmsodd_value(fxx.data[i], fyy.data[i], fxy.data[i]);
+    return out;
+}
+
+Grid<double> mmsodd(const Image& im, int smoothing_order) {
+    return mmsodd_zero(im.samples.data(), im.width, im.height, smoothing_taps(smoothing_order));
 }
 
 }  // namespace erd

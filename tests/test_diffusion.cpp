@@ -84,6 +84,20 @@ TEST_CASE("MMSODD from one smoothing equals the three separable filters", "[diff
     for (int order : {3, 5}) CHECK(mmsodd(spike, order).data == mmsodd_reference(spike, order, Border::zero).data);
 }
 
+TEST_CASE("MMSODD of an image's samples equals that of its grid", "[diffusion]") {
+    for (int order : {1, 3, 5}) {
+        Image im(37, 23, 65535);
+        Rng rng{std::uint64_t(order)};
+        for (auto& v : im.samples) v = std::uint16_t(rng.next() * 65536.0);
+        im.at(0, 0) = 65535;
+        const Grid<double> a = mmsodd(im, order), b = mmsodd(to_grid(im), order);
+        REQUIRE(a.width == 37);
+        REQUIRE(a.height == 23);
+        CHECK(a.data == b.data);
+    }
+    CHECK(mmsodd(Image(0, 0, 255), 3).data.empty());
+}
+
 TEST_CASE("mmsodd_value is the larger magnitude of l1 +- l2", "[diffusion]") {
     Rng rng{11};
     for (int i = 0; i < 10000; ++i) {
