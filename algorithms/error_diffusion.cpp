@@ -13,9 +13,10 @@ namespace erd {
 namespace {
 
 // Four lanes of the diffusion as one value. Written as plain loops over four floats, which the
-// compiler turns into single SSE instructions at the x86-64 baseline; kept in locals, the
-// state of all lanes stays in registers across a row (16 lanes as arrays lived on the stack,
-// which cost about twice the instructions per pixel).
+// compiler turns into single SSE instructions at the x86-64 baseline. Passed by value and kept
+// in locals, the carried error of every lane stays in a register across a row (as 16-float
+// arrays, the previous form, it went through the stack at every pixel: 155 instructions a
+// pixel for a 16-lane sweep then, about 125 now).
 struct alignas(16) Quad {
     float v[4];
 };
@@ -60,10 +61,10 @@ inline Quad emitted(Quad v, Quad rho, Quad level) {
 // Lanes: one sweep over the image runs up to kLanes passes with different thresholds side by
 // side, in kGroups quads. A single pass is bound by the latency of its carried error (add,
 // compare, subtract, multiply per pixel, each waiting for the previous pixel); independent lanes
-// fill that wait. Four quads are what the 16 SSE registers hold: the two carried errors of each
-// (8 registers), the four share weights and the pixel's density; rho and the emitted level are
-// read from memory operands. float: the error stays within a few rho of 0 and the density within
-// [0, 1] (ED) or a few units, so 24 bits are ample, and a vector holds twice as many as double.
+// fill that wait. Four quads fit the 16 SSE registers: the carried error of each, the four share
+// weights, the pixel's density and temporaries; rho and the emitted level come from memory
+// operands. float: the error stays within a few rho of 0 and the density within [0, 1] (ED) or
+// a few units, so 24 bits are ample, and a vector holds twice as many as double.
 constexpr int kGroups = 4;
 constexpr int kLanes = 4 * kGroups;
 constexpr int kFirstGroups = 1;  // quads of the count search's first sweep (see select_points)
@@ -86,6 +87,8 @@ struct Sweep {
 // state carried from pixel to pixel in registers is e_prev (the rest waits in memory, off the
 // chain of dependent operations). Shares pushed past either end of the row land in the spare
 // cells and are dropped. Chosen pixels (when `counted`) are counted and recorded in scan order.
+// Not inlined: inside select_points the register allocator spilled the share weights, which
+// cost 6% more instructions (an attribute other compilers ignore).
 template <int G, int Dir, bool Masked>
 [[gnu::noinline]] void diffuse_row(const double* sig, const std::uint8_t* forb, float* buf, int w, int y, bool counted, Sweep<G>* sw) {
     constexpr int L = 4 * G;

@@ -83,10 +83,8 @@ std::vector<double> smoothing_taps(int order) {
 
 }  // namespace
 
-Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) {
+Grid<double> mmsodd_separable(const Grid<double>& im, int smoothing_order, Border border) {
     const std::vector<double> b = smoothing_taps(smoothing_order);
-    if (border == Border::zero) return mmsodd_zero(im.data.data(), im.width, im.height, b);
-    // Replication is not used by the methods; the general filters serve it.
     const std::vector<double> d2 = compose_taps(derivative2_taps(), b);
     const std::vector<double> d1 = compose_taps(derivative1_taps(), b);
     const Grid<double> fxx = convolve_cols(convolve_rows(im, d2, border), b, border);
@@ -95,6 +93,12 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
     Grid<double> out(im.width, im.height);
     for (std::size_t i = 0; i < out.data.size(); ++i) out.data[i] = mmsodd_value(fxx.data[i], fyy.data[i], fxy.data[i]);
     return out;
+}
+
+Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) {
+    // Replication is not used by the methods; the general filters serve it.
+    if (border != Border::zero) return mmsodd_separable(im, smoothing_order, border);
+    return mmsodd_zero(im.data.data(), im.width, im.height, smoothing_taps(smoothing_order));
 }
 
 Grid<double> mmsodd(const Image& im, int smoothing_order) {
