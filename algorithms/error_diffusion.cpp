@@ -323,10 +323,13 @@ Grid<double> ed_density(Grid<double> d, double gamma) {
         std::fill(d.data.begin(), d.data.end(), 0.0);
         return d;
     }
-    for (double& v : d.data) {
-        const double t = std::max(0.0, v) / dmax;
-        v = gamma == 1.0 ? t : (gamma == 0.5 ? std::sqrt(t) : std::pow(t, gamma));
-    }
+    // One loop per exponent (the choice inside the loop cost 4 instructions a pixel).
+    if (gamma == 1.0)
+        for (double& v : d.data) v = std::max(0.0, v) / dmax;
+    else if (gamma == 0.5)
+        for (double& v : d.data) v = std::sqrt(std::max(0.0, v) / dmax);
+    else
+        for (double& v : d.data) v = std::pow(std::max(0.0, v) / dmax, gamma);
     return d;
 }
 
