@@ -90,7 +90,8 @@ struct Sweep {
 // Not inlined: inside select_points the register allocator spilled the share weights, which
 // cost 6% more instructions (an attribute other compilers ignore).
 template <int G, int Dir, bool Masked>
-[[gnu::noinline]] void diffuse_row(const double* sig, const std::uint8_t* forb, float* buf, int w, int y, bool counted, Sweep<G>* sw) {
+[[gnu::noinline]] void diffuse_row(const double* sig, const std::uint8_t* forb, float* buf, int w, int y, bool counted,
+                                   Sweep<G>* sw) {
     constexpr int L = 4 * G;
     // e_prev: the previous pixel's error, whose 7/16 is carried ahead and 1/16 goes below-ahead.
     Quad e_prev[G] = {}, rho[G], level[G];

@@ -57,7 +57,8 @@ TEST_CASE("MMSODD from one smoothing equals the three separable filters", "[diff
             const Grid<double> reals = random_grid(size, h, std::uint64_t(order * 1000 + size + 7), 300.0, false);
             const Grid<double> dr = mmsodd(reals, order), wr = mmsodd_separable(reals, order, Border::zero);
             double worst = 0;
-            for (std::size_t i = 0; i < dr.data.size(); ++i) worst = std::max(worst, std::fabs(dr.data[i] - wr.data[i]));
+            for (std::size_t i = 0; i < dr.data.size(); ++i)
+                worst = std::max(worst, std::fabs(dr.data[i] - wr.data[i]));
             CHECK(worst <= 1e-9);
         }
     // A corner at full scale and a single spike: values on and next to the frame.
