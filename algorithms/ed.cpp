@@ -60,7 +60,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     // Step 1: sigma = (d / d_max)^1 with d the MMSODD after 3rd-order binomial smoothing,
     // zero extension at the borders (thesis 3.2.1).
     auto t0 = std::chrono::steady_clock::now();
-    Grid<double> sigma = ed_density(mmsodd(to_grid(image), 3, Border::zero), 1.0);
+    Grid<double> sigma = ed_density(mmsodd(image, 3), 1.0);
     result->stages.push_back({"mmsodd density", seconds_since(t0)});
 
     // Steps 2-3: error diffusion chooses the N - 4 non-corner points; the corners are forbidden

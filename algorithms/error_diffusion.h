@@ -9,12 +9,13 @@
 // Count search: rho is searched until a pass chooses exactly K points. The count follows the
 // sum / (2 rho) model of eq. 3.5 but is not monotone in rho: below relative changes of about 1/K it
 // jitters by several points either way, so plain bisection stalls on a jump across K. Each sweep
-// over the image runs 16 passes side by side (independent thresholds fill the latency of the
-// carried error, so a sweep costs about two single passes); the first spans 0.75 .. 1.02 times the
-// model's rho, later ones spread evenly over the bracket around K while it is wide, then sample
-// rho on a deterministic golden-ratio sequence within +-2/K (relative) of where a fit of the
-// counts near K gives K, until a pass gives K exactly or max_passes passes have run. Without an
-// exact count it returns the pass whose count was nearest to K (ties: the smaller count) with
+// over the image runs several passes side by side (independent thresholds fill the latency of
+// the carried error): the first runs 4 lanes at 0.75 .. 0.99 times the model's rho to locate the
+// crossing, later ones 16 lanes on a deterministic golden-ratio sequence within +-3/K
+// (relative) of where a fit of the counts near K gives K (or, with none near K yet, of the
+// crossing interpolated between the closest counts on either side, twice as widely), until a
+// pass gives K exactly or max_passes passes have run. Without an exact count it returns the
+// pass whose count was nearest to K (ties: the smaller count) with
 // exact = false. The diffused error is carried in float.
 #pragma once
 #include <cstddef>
@@ -48,14 +49,14 @@ struct DiffusionParams {
     // Optional (may be null): points with a nonzero entry are never chosen; their density still
     // enters the diffusion. Must have the density's size.
     const Grid<std::uint8_t>* forbidden = nullptr;
-    int max_passes = 256;  // thresholds tried at most (16 per sweep)
+    int max_passes = 256;  // thresholds tried at most (4 in the first sweep, 16 in each later one)
 };
 
 struct DiffusionResult {
     std::vector<LatticePoint> points;  // chosen pixels in doubled coordinates (2x, 2y), row-major order
     bool exact = false;                // points.size() == K
     double rho = 0;                    // threshold of the returned pass
-    int passes = 0;                    // thresholds tried by the search (16 per sweep)
+    int passes = 0;                    // thresholds tried by the search (4, then 16 per sweep)
     int sweeps = 0;                    // scans of the image by the search
 };
 

@@ -19,6 +19,15 @@ namespace erd {
 // an invalid order is treated as 1.
 Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border = Border::zero);
 
+// The same with zero extension, straight from an image's samples: equal to
+// mmsodd(to_grid(im), smoothing_order) without the image-sized copy in doubles.
+Grid<double> mmsodd(const Image& im, int smoothing_order);
+
+// The MMSODD by its definition: the three separable filter pairs above, any border, three
+// image-sized temporaries. mmsodd() serves Border::replicate with it; tests use it as the
+// reference for the one-smoothing form of the zero border.
+Grid<double> mmsodd_separable(const Grid<double>& im, int smoothing_order, Border border);
+
 // The formula alone, from the three second derivatives at one point.
 double mmsodd_value(double fxx, double fyy, double fxy);
 
