@@ -148,7 +148,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
-        d5 = mmsodd(to_grid(image), 5);  // the double copy lives only while the MMSODD is made
+        d5 = mmsodd(image, 5);
         Grid<double> density = ed_density(d5, 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
