@@ -101,4 +101,44 @@ struct SpanPlane {
     double step_x(const Lattice& l) const { return gx * l.step_x / l.scale; }
 };
 
+// The plane of a face whose three corner values are integers in [0, maxval] (every basic model
+// erd makes: its values are image samples), rounded half up EXACTLY on the pixel lattice, so a
+// value that lies exactly on .5 goes up whatever the face's shape (a running sum of doubles can
+// land on either side of it).
+//
+// With D = |orient2d(p0, p1, p2)| the plane is v = N / D for the integer
+//     N(X, Y) = z0*D + a*(X - x0) + b*(Y - y0)    (doubled coordinates; a, b as in SpanPlane),
+// and round-half-up(v) = floor(v + 1/2) = floor(t / (4D)) with the ODD integer t = 4N + 2D + 1
+// (for integers m and n > 0, floor(m / n) = floor((2m + 1) / (2n))). Every q = t / (4D) is thus
+// at least 1/(4D) away from every integer, and a double within 1/(4D) of q truncates to floor(q).
+// On a pixel the face owns, 0 <= v <= maxval (the pixel lies in the closed face, where the plane
+// stays between its corner values), so 0 < q < maxval + 1 =: V1 and t < 4*V1*D < 2^50 (D < 2^32
+// with doubled coordinates <= 65534): t and its steps are exact doubles.
+//
+// Along a row the scan steps p = t * (1 / 4D) instead of t: p_0 = fl(t_0 * inv), p_k+1 =
+// fl(p_k + dp), inv = fl(1/(4D)), dp = fl(dt * inv). With u = 2^-53: p_0 and dp carry relative
+// errors <= 2u + u^2, k*|dq| = |q_k - q_0| < V1, and each addition adds <= u*(V1 + tiny), so
+//     |p_k - q_k| <= (2u + u^2) V1 + (2u + u^2) V1 + k u (V1 + tiny) < (k + 5) V1 u,
+// which is below 1/(4D) while (k + 5) * V1 * D <= 2^51. run() is the number of pixels one start
+// value may be stepped over (>= 2 at the largest images and maxval; the face's width for any
+// realistic face); a longer span restarts from t, which is exact at every pixel.
+struct RoundedPlane {
+    std::int64_t x0 = 0, y0 = 0;  // doubled coordinates of p0
+    std::int64_t c = 1;           // t at p0: 4*z0*D + 2D + 1
+    std::int64_t kx = 0, ky = 0;  // t per doubled unit in x and y: 4a, 4b
+    double inv = 0.0;             // fl(1 / (4D))
+    double dp = 0.0;              // fl(2*kx * inv): the step of p from pixel (i, j) to (i + 1, j)
+    std::int32_t run = 1;         // pixels one start value may be stepped over (see above)
+
+    // The plane through values z0..z2 at p0..p2; false when the points are collinear or a value
+    // is outside [0, maxval] (1 <= maxval <= 65535), the cases the argument above does not cover.
+    bool set(LatticePoint p0, std::int64_t z0v, LatticePoint p1, std::int64_t z1v, LatticePoint p2, std::int64_t z2v,
+             std::int64_t maxval);
+    // t at pixel (i, j), exact.
+    std::int64_t t_pixel(std::int64_t i, std::int64_t j) const { return c + kx * (2 * i - x0) + ky * (2 * j - y0); }
+    // p at pixel (i, j): truncates to the rounded value there, and may be stepped by dp over
+    // `run` pixels.
+    double p_pixel(std::int64_t i, std::int64_t j) const { return double(t_pixel(i, j)) * inv; }
+};
+
 }  // namespace erd
