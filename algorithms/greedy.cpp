@@ -97,18 +97,16 @@ inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banne
     return moved;
 }
 
-// Exact rounding of row j, columns x0..x1: p stepped from an exact start value over at most
-// plane.run pixels at a time (kernel/raster.h has the error bound), truncated, no clamp (the
+// Exact rounding of row j, columns x0..x1: p stepped from an exact start value over each piece
+// of at most plane.run pixels (kernel/raster.h has the error bound), truncated, no clamp (the
 // rounded plane of a face stays in [0, maxval] on the pixels it owns).
 inline bool scan_exact(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t j, std::int32_t x0,
                        std::int32_t x1, const RoundedPlane& plane, std::int64_t* sum, std::int64_t* best_sq,
                        std::int32_t* bx) {
     bool moved = false;
-    for (std::int64_t c = x0; c <= x1; c += plane.run) {
-        const std::int32_t end = std::int32_t(std::min<std::int64_t>(x1, c + plane.run - 1));
-        moved |= scan_rounded<Rounding::exact>(samples, banned, std::int32_t(c), end, plane.p_pixel(c, j), plane.dp,
-                                               0.0, sum, best_sq, bx);
-    }
+    plane.pieces(x0, x1, j, [&](std::int32_t first, std::int32_t last, double p) {
+        moved |= scan_rounded<Rounding::exact>(samples, banned, first, last, p, plane.dp, 0.0, sum, best_sq, bx);
+    });
     return moved;
 }
 

@@ -231,14 +231,12 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out) {
         const auto& fc = m.faces[f];
         scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
         if (exact_plane(m, f, &rp)) {
-            // p stepped from an exact start over at most rp.run pixels, truncated (raster.h).
+            // p stepped from an exact start over each piece, truncated (kernel/raster.h).
             for (const Span& s : spans) {
                 std::uint16_t* row = px + std::size_t(s.y) * W;
-                for (std::int64_t c = s.x_begin; c <= s.x_end; c += rp.run) {
-                    const std::int64_t end = std::min<std::int64_t>(s.x_end, c + rp.run - 1);
-                    double v = rp.p_pixel(c, s.y);
-                    for (std::int64_t x = c; x <= end; ++x, v += rp.dp) row[x] = std::uint16_t(std::int32_t(v));
-                }
+                rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
+                    for (std::int32_t x = first; x <= last; ++x, v += rp.dp) row[x] = std::uint16_t(std::int32_t(v));
+                });
             }
             continue;
         }

@@ -25,6 +25,7 @@
 // Fine coordinates must stay below 2^28 in magnitude (doubled coordinates < 2^24, scale <= 4,
 // |phase| and step small): every product below is then exact in int64.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -139,6 +140,16 @@ struct RoundedPlane {
     // p at pixel (i, j): truncates to the rounded value there, and may be stepped by dp over
     // `run` pixels.
     double p_pixel(std::int64_t i, std::int64_t j) const { return double(t_pixel(i, j)) * inv; }
+    // Cuts columns i0..i1 of row j into consecutive pieces of at most `run` pixels and calls
+    // fn(first, last, p) for each, p = p_pixel(first, j): stepping p by dp along a piece and
+    // truncating gives the rounded value at every pixel of it (the pixels must be the face's).
+    template <class Fn>
+    void pieces(std::int32_t i0, std::int32_t i1, std::int32_t j, Fn&& fn) const {
+        for (std::int64_t first = i0; first <= i1; first += run) {
+            const std::int64_t last = std::min<std::int64_t>(i1, first + run - 1);
+            fn(std::int32_t(first), std::int32_t(last), p_pixel(first, j));
+        }
+    }
 };
 
 }  // namespace erd

@@ -389,10 +389,10 @@ TEST_CASE("ED on the thesis photos: exactly N points", "[basic]") {
     }
 }
 
-TEST_CASE("greedy loop: exact totals on a 16-bit image with values at binade edges and the clamps", "[basic]") {
-    // Values cluster around powers of two (where the scan's shifted running sum must give way)
-    // and touch 0 and maxval (where the clamps act); the incremental total must still equal a
-    // fresh scan with the plain running sum.
+TEST_CASE("greedy loop: exact totals on a 16-bit image with values at binade edges and the extremes", "[basic]") {
+    // Values cluster around powers of two and touch 0 and maxval (16-bit faces, where RoundedPlane
+    // restarts from the exact t most often); the incremental total must still equal a fresh scan
+    // with exact integer rounding.
     Image im(40, 33, 65535);
     std::mt19937 rng(77);
     const int edges[] = {1, 2, 128, 256, 1024, 32768, 65535};

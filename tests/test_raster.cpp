@@ -285,6 +285,28 @@ TEST_CASE("raster: RoundedPlane rounds half up exactly, stepped over its run", "
             }
         }
     }
+    // pieces() with short runs: every column once, in order, each piece from an exact start.
+    for (int iter = 0; iter < 200; ++iter) {
+        const LatticePoint p[3] = {{0, 0}, {2 * std::int32_t(20 + rng() % 60), 2 * std::int32_t(rng() % 10)},
+                                   {2 * std::int32_t(rng() % 10), 2 * std::int32_t(20 + rng() % 40)}};
+        const std::int64_t z[3] = {std::int64_t(rng() % 256), std::int64_t(rng() % 256), std::int64_t(rng() % 256)};
+        RoundedPlane rp;
+        REQUIRE(rp.set(p[0], z[0], p[1], z[1], p[2], z[2], 255));
+        rp.run = std::int32_t(1 + iter % 5);
+        std::vector<Span> spans;
+        erd::scan_triangle(Lattice::pixels(), RasterDomain{2000, 2000}, p[0], p[1], p[2], &spans);
+        for (const Span& s : spans) {
+            std::int32_t next = s.x_begin;
+            rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
+                REQUIRE(first == next);
+                REQUIRE(last - first < rp.run);
+                for (std::int32_t i = first; i <= last; ++i, v += rp.dp)
+                    REQUIRE(std::int32_t(v) == erd_test::exact_rounded(p, z, 2 * std::int64_t(i), 2 * std::int64_t(s.y)));
+                next = last + 1;
+            });
+            REQUIRE(next == s.x_end + 1);
+        }
+    }
     // Ties go up: the midpoint of values 73 and 54 is exactly 63.5, and 64 is its rounding.
     RoundedPlane rp;
     REQUIRE(rp.set(LatticePoint{0, 0}, 73, LatticePoint{4, 0}, 54, LatticePoint{0, 4}, 73, 255));
