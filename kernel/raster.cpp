@@ -69,13 +69,12 @@ bool RoundedPlane::set(LatticePoint p0, std::int64_t z0v, LatticePoint p1, std::
     const std::int64_t dz1 = z1v - z0v, dz2 = z2v - z0v;
     std::int64_t a = dz1 * dy2 - dz2 * dy1, b = dz2 * dx1 - dz1 * dx2;
     if (D < 0) D = -D, a = -a, b = -b;
-    x0 = p0.x;
-    y0 = p0.y;
-    c = 4 * z0v * D + 2 * D + 1;
-    kx = 4 * a;
-    ky = 4 * b;
+    // t = 4N + 2D + 1 with N = z0*D + a*(X - x0) + b*(Y - y0) at doubled (X, Y) = (2i, 2j).
+    tx = 8 * a;
+    ty = 8 * b;
+    t00 = 4 * z0v * D + 2 * D + 1 - 4 * a * p0.x - 4 * b * p0.y;
     inv = 1.0 / double(4 * D);
-    dp = double(2 * kx) * inv;
+    dp = double(tx) * inv;
     // (k + 5) * (maxval + 1) * D <= 2^51 for k < run (raster.h); at least one pixel per start.
     const std::int64_t k_max = ((std::int64_t(1) << 51) / ((maxval + 1) * D)) - 5;
     run = std::int32_t(std::clamp<std::int64_t>(k_max + 1, 1, INT32_MAX));

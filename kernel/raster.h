@@ -124,19 +124,18 @@ struct SpanPlane {
 // value may be stepped over (4 at the largest image and maxval; ~2.8M on the first faces of an
 // 8-bit 1024 x 768 image); a longer span restarts from t, which is exact at every pixel.
 struct RoundedPlane {
-    std::int64_t x0 = 0, y0 = 0;  // doubled coordinates of p0
-    std::int64_t c = 1;           // t at p0: 4*z0*D + 2D + 1
-    std::int64_t kx = 0, ky = 0;  // t per doubled unit in x and y: 4a, 4b
+    std::int64_t t00 = 1;         // t at pixel (0, 0): 4*z0*D + 2D + 1 - 4a*x0 - 4b*y0
+    std::int64_t tx = 0, ty = 0;  // t per pixel in x and y: 8a, 8b
     double inv = 0.0;             // fl(1 / (4D))
-    double dp = 0.0;              // fl(2*kx * inv): the step of p from pixel (i, j) to (i + 1, j)
+    double dp = 0.0;              // fl(tx * inv): the step of p from pixel (i, j) to (i + 1, j)
     std::int32_t run = 1;         // pixels one start value may be stepped over (see above)
 
     // The plane through values z0..z2 at p0..p2; false when the points are collinear or a value
     // is outside [0, maxval] (1 <= maxval <= 65535), the cases the argument above does not cover.
     bool set(LatticePoint p0, std::int64_t z0v, LatticePoint p1, std::int64_t z1v, LatticePoint p2, std::int64_t z2v,
              std::int64_t maxval);
-    // t at pixel (i, j), exact.
-    std::int64_t t_pixel(std::int64_t i, std::int64_t j) const { return c + kx * (2 * i - x0) + ky * (2 * j - y0); }
+    // t at pixel (i, j), exact (every term is below 2^53 in magnitude).
+    std::int64_t t_pixel(std::int64_t i, std::int64_t j) const { return t00 + tx * i + ty * j; }
     // p at pixel (i, j): truncates to the rounded value there, and may be stepped by dp over
     // `run` pixels.
     double p_pixel(std::int64_t i, std::int64_t j) const { return double(t_pixel(i, j)) * inv; }
@@ -145,6 +144,10 @@ struct RoundedPlane {
     // truncating gives the rounded value at every pixel of it (the pixels must be the face's).
     template <class Fn>
     void pieces(std::int32_t i0, std::int32_t i1, std::int32_t j, Fn&& fn) const {
+        if (i1 - std::int64_t(i0) < run) {  // nearly always: the whole row in one piece
+            fn(i0, i1, p_pixel(i0, j));
+            return;
+        }
         for (std::int64_t first = i0; first <= i1; first += run) {
             const std::int64_t last = std::min<std::int64_t>(i1, first + run - 1);
             fn(std::int32_t(first), std::int32_t(last), p_pixel(first, j));
