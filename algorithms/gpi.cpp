@@ -29,6 +29,14 @@ SpanPlane BasicGreedyModel::face_plane(const Cdt& cdt, FaceInd f) const {
     return plane;
 }
 
+bool BasicGreedyModel::integer_values(const Cdt& cdt, FaceInd f, std::int64_t z[3]) const {
+    for (int i = 0; i < 3; ++i) {
+        const LatticePoint p = cdt.point(cdt.face_vertex(f, i));
+        z[i] = image_.at(p.x / 2, p.y / 2);
+    }
+    return true;
+}
+
 Status BasicGreedyModel::on_vertex_inserted(const Cdt&, VertInd, std::vector<FaceInd>*) {
     return Status::success();  // values are read from the image in face_plane
 }

@@ -18,6 +18,8 @@ class BasicGreedyModel : public GreedyModel {
 public:
     explicit BasicGreedyModel(const Image& image) : image_(image) {}
     SpanPlane face_plane(const Cdt& cdt, FaceInd f) const override;
+    // The samples at the face's vertices: always integers.
+    bool integer_values(const Cdt& cdt, FaceInd f, std::int64_t z[3]) const override;
     Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>* dirty) override;
 
 private:

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "algorithms/heap.h"
 #include "kernel/raster_rows.h"
@@ -32,26 +32,23 @@ struct FaceState {
 
 std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
 
-// The inner loops of the face scan, one span at a time: the plane value v steps by dv per pixel.
-// Each adds the squared errors to *sum and moves the candidate (*best, *bx) to the first pixel
-// of larger absolute error that is not banned; returns true when it moved.
+// The inner loops of the face scan, one span at a time: the value v steps by dv per pixel. Each
+// adds the squared errors to *sum and moves the candidate (*best, *bx) to the first pixel of
+// larger absolute error that is not banned; returns true when it moved.
 //
-// Rounded: the approximation as imgsyn makes it (algorithms/reconstruct.cpp to_sample: clamp to
-// [0, maxval], round half up), so errors are integers and sums exact. Truncation stands in for
-// std::floor (a libm call without SSE4.1): they agree for v + 0.5 >= 0, and below that both end
-// at 0 after clamping. Plane values are interpolated samples, so they are finite and small.
-// How the loop turns a plane value into the rounded approximation (see scan_rounded for when each
-// applies): clamp, plain (no clamp can act), or shifted (no clamp can act and the values passed
-// are already plane + 0.5).
-enum class Rounding { clamp, plain, shifted };
+// Rounded: the approximation as imgsyn makes it (algorithms/reconstruct.cpp), so errors are
+// integers and sums exact. Two ways to get it (see scan_exact and Refiner::rescan):
+//   exact: v is p of kernel/raster.h RoundedPlane, whose truncation IS the rounded value;
+//   clamp: v is the real plane, clamped to [0, maxval] and rounded half up as to_sample does.
+enum class Rounding { exact, clamp };
 
 template <Rounding R>
 inline std::int32_t rounded(double v, double maxval) {
-    if (R == Rounding::shifted) return std::int32_t(v);
-    if (R == Rounding::plain) return std::int32_t(v + 0.5);
+    if (R == Rounding::exact) return std::int32_t(v);
     // Clamp above in double (also keeps the conversion in range), round by truncation, clamp
-    // below in integers: any v < 0.5 gives 0 as to_sample does. Cheaper than a double clamp,
-    // which GCC compiles into a 5-instruction blend.
+    // below in integers: any v < 0.5 gives 0 as to_sample does (truncation stands in for
+    // std::floor, a libm call without SSE4.1; they agree for v + 0.5 >= 0). Cheaper than a
+    // double clamp, which GCC compiles into a 5-instruction blend.
     const double c = v < maxval ? v : maxval;
     const std::int32_t r = std::int32_t(c + 0.5);
     return r < 0 ? 0 : r;
@@ -78,9 +75,9 @@ inline void step_span(std::int32_t x0, std::int32_t x1, double v, double dv, Vis
 
 // Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
 template <Rounding R>
-inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
-                              std::int32_t x1, double v, double dv, double maxval, std::int64_t* sum,
-                              std::int64_t* best_sq, std::int32_t* bx) {
+inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
+                         double v, double dv, double maxval, std::int64_t* sum, std::int64_t* best_sq,
+                         std::int32_t* bx) {
     std::uint64_t acc = 0;
     std::int64_t b = *best_sq;  // the candidate is compared by squared error: no abs
     bool moved = false;
@@ -100,47 +97,17 @@ inline bool scan_rounded_impl(const std::uint16_t* samples, const std::uint8_t* 
     return moved;
 }
 
-// The span's values are v + k*dv (k = 0..x1-x0) up to the rounding of the running sum, far below
-// 1e-3 (at most 2^15 steps of half an ulp of a value <= 65535). When every value lies in
-// [-0.5 + 1e-3, maxval - 1e-3], neither clamp can act (v < maxval, and v + 0.5 > 0 truncates to
-// r >= 0), so the loop without them gives the same r at every pixel: about 5 instructions less
-// per pixel, and planes interpolate samples, so nearly every span qualifies.
-inline bool clamp_free(double lo, double hi, double maxval) {
-    return lo >= -0.5 + 1e-3 && hi <= maxval - 1e-3;  // false for NaN: the clamping loop then
-}
-
-// The biased exponent of a positive double: equal for two positive doubles in the same binade
-// [2^e, 2^(e+1)).
-inline std::uint64_t binade(double d) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &d, sizeof bits);
-    return bits >> 52;
-}
-
-// How a face's spans may be scanned, from the plane's values at its corners (see Refiner::rescan).
-enum class FaceRange {
-    any,        // a span may need clamping: test each span
-    clamp_free, // no clamp can act anywhere on the face
-    one_binade, // no clamp can act, and every value and value + 0.5 lie in one binade
-};
-
-// Shifted: when the values and the values + 0.5 all lie in one binade (again with the 1e-3
-// margin), the running sum can carry v + 0.5 instead of v at no cost in exactness: adding 0.5 is
-// exact there, and rounding to that binade's grid commutes with a shift by 0.5 (an even multiple
-// of its spacing), so each step gives exactly the old value + 0.5 and truncation the same r. It
-// saves an addition and a register copy per pixel.
-inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0,
-                         std::int32_t x1, double v, double dv, double maxval, FaceRange range,
-                         std::int64_t* sum, std::int64_t* best_sq, std::int32_t* bx) {
-    if (range == FaceRange::one_binade)
-        return scan_rounded_impl<Rounding::shifted>(samples, banned, x0, x1, v + 0.5, dv, maxval, sum, best_sq,
-                                                    bx);
-    if (range == FaceRange::any) {
-        const double end = v + double(x1 - x0) * dv;
-        if (!clamp_free(std::min(v, end), std::max(v, end), maxval))
-            return scan_rounded_impl<Rounding::clamp>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
-    }
-    return scan_rounded_impl<Rounding::plain>(samples, banned, x0, x1, v, dv, maxval, sum, best_sq, bx);
+// Exact rounding of row j, columns x0..x1: p stepped from an exact start value over each piece
+// of at most plane.run pixels (kernel/raster.h has the error bound), truncated, no clamp (the
+// rounded plane of a face stays in [0, maxval] on the pixels it owns).
+inline bool scan_exact(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t j, std::int32_t x0,
+                       std::int32_t x1, const RoundedPlane& plane, std::int64_t* sum, std::int64_t* best_sq,
+                       std::int32_t* bx) {
+    bool moved = false;
+    plane.pieces(x0, x1, j, [&](std::int32_t first, std::int32_t last, double p) {
+        moved |= scan_rounded<Rounding::exact>(samples, banned, first, last, p, plane.dp, 0.0, sum, best_sq, bx);
+    });
+    return moved;
 }
 
 // Real-valued: errors against the plane itself. The candidate test |e| > best is screened by
@@ -268,18 +235,25 @@ private:
         stamp_[f] = generation_;
         FaceState& fs = faces_[f];
         total_ -= fs.sum;
-        const SpanPlane plane = model_.face_plane(cdt_, f);
         const LatticePoint p[3] = {cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
                                    cdt_.point(cdt_.face_vertex(f, 2))};
+        // Rounded scans of a face with integer corner values in [0, maxval] round exactly (as
+        // reconstruction does for such a face); the others step the model's plane.
+        std::int64_t z[3];
+        RoundedPlane exact;
+        const bool is_exact = options_.round_values && model_.integer_values(cdt_, f, z) &&
+                              exact.set(p[0], z[0], p[1], z[1], p[2], z[2], image_.maxval);
+        const SpanPlane plane = is_exact ? SpanPlane() : model_.face_plane(cdt_, f);
         const double dv = 2.0 * plane.gx;
         // Row j of the pixel lattice, columns lo..hi: the row's samples and ban flags, and the
-        // plane at its first pixel. Pixel (i, j) is doubled point (2i, 2j): the same values as
+        // plane at its first pixel (with_value; the exact scan does not need it).
+        // Pixel (i, j) is doubled point (2i, 2j): the same values as
         // plane.at(Lattice::pixels(), i, j) and step_x (which divide by the lattice's scale 1)
         // without two divisions per row.
         const std::uint16_t* const samples = image_.samples.data();
         const std::uint8_t* const banned = banned_.data();
         const std::size_t width = std::size_t(image_.width);
-        auto walk = [&](auto&& scan_row) {
+        auto walk = [&](auto with_value, auto&& scan_row) {
             OwnedRows rows(Lattice::pixels(), domain_, p[0], p[1], p[2]);
             for (RowRun part; rows.next(&part);) {
                 for (RowRun run = part; run.j <= run.j_end; run.step()) {
@@ -288,38 +262,35 @@ private:
                     if (lo64 > hi64) continue;
                     const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
                     const std::size_t row = std::size_t(j) * width;
-                    scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+                    if constexpr (decltype(with_value)::value)
+                        scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+                    else
+                        scan_row(samples + row, banned + row, j, lo, hi);
                 }
             }
         };
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
         if (options_.round_values) {
-            const double maxval = double(image_.maxval);
-            // Owned pixels lie in the closed face, where the plane takes values between those at
-            // its corners: if these pass (with the margin that covers the running sum's drift),
-            // every span does.
-            double zlo = std::numeric_limits<double>::infinity(), zhi = -zlo;
-            for (const LatticePoint& q : p) {
-                const double z = plane.at(q.x, q.y);
-                zlo = std::min(zlo, z);
-                zhi = std::max(zhi, z);
-            }
-            FaceRange range = FaceRange::any;
-            if (clamp_free(zlo, zhi, maxval))
-                range = zlo - 1e-3 > 0.0 && binade(zlo - 1e-3) == binade(zhi + 0.5 + 1e-3) ? FaceRange::one_binade
-                                                                                          : FaceRange::clamp_free;
             std::int64_t isum = 0, ibest_sq = -1;
-            walk([&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j, std::int32_t lo,
-                     std::int32_t hi, double v) {
-                if (scan_rounded(srow, brow, lo, hi, v, dv, maxval, range, &isum, &ibest_sq, &bx)) by = j;
-            });
+            if (is_exact) {
+                walk(std::false_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                            std::int32_t lo, std::int32_t hi) {
+                    if (scan_exact(srow, brow, j, lo, hi, exact, &isum, &ibest_sq, &bx)) by = j;
+                });
+            } else {
+                const double maxval = double(image_.maxval);
+                walk(std::true_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                           std::int32_t lo, std::int32_t hi, double v) {
+                    if (scan_rounded<Rounding::clamp>(srow, brow, lo, hi, v, dv, maxval, &isum, &ibest_sq, &bx)) by = j;
+                });
+            }
             sum = double(isum);
             best = ibest_sq < 0 ? -1.0 : std::sqrt(double(ibest_sq));  // exact: a perfect square
         } else {
             double best2 = -1.0;
-            walk([&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j, std::int32_t lo,
-                     std::int32_t hi, double v) {
+            walk(std::true_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                       std::int32_t lo, std::int32_t hi, double v) {
                 if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
             });
         }

@@ -50,9 +50,10 @@ public:
     virtual ~GreedyModel() = default;
 
     // The approximating plane on face f of the current triangulation (kernel/raster.h SpanPlane,
-    // the type reconstruction evaluates too, so both compute the same values). Called for every
-    // face when the loop starts and for each face to re-scan after an insertion, always after
-    // on_vertex_inserted for that insertion. Must be deterministic.
+    // the type reconstruction evaluates too, so both compute the same values). Called when a face
+    // is scanned (every face when the loop starts, then each face to re-scan after an insertion,
+    // always after on_vertex_inserted for that insertion) unless integer_values() answered.
+    // Must be deterministic.
     virtual SpanPlane face_plane(const Cdt& cdt, FaceInd f) const = 0;
 
     // Called once after each insertion that created the new vertex v (cdt.changes() describes
@@ -61,6 +62,19 @@ public:
     // loop tolerates duplicates). An error status stops refinement and is returned by
     // greedy_refine.
     virtual Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>* dirty) = 0;
+
+    // Face f's corner values (in the order of cdt.face_vertex(f, 0..2)) when they are integers,
+    // as the basic model's image samples are: true and *z filled. Rounded scans
+    // (GreedyOptions::round_values) then round the plane exactly (kernel/raster.h RoundedPlane),
+    // as reconstruction does for such a model; otherwise (default) they step the face_plane()
+    // value along each span and round that, as reconstruction does for other values. Must agree
+    // with face_plane().
+    virtual bool integer_values(const Cdt& cdt, FaceInd f, std::int64_t z[3]) const {
+        (void)cdt;
+        (void)f;
+        (void)z;
+        return false;
+    }
 
     // May the candidate point p (a pixel, even coordinates) be inserted? Asked when a face's
     // candidate reaches the top of the heap. On false the loop bans p for the rest of the run

@@ -202,6 +202,22 @@ void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Se
     }
 }
 
+// The exactly rounded plane of face f of a basic model whose corner values are integers in
+// [0, maxval] (kernel/raster.h RoundedPlane); false for any other face, which is evaluated in
+// doubles. Greedy refinement (algorithms/greedy.cpp) makes the same choice per face, so GPI's
+// errors are exactly those of this reconstruction.
+bool exact_plane(const Model& m, std::size_t f, RoundedPlane* rp) {
+    if (m.kind != ModelKind::basic) return false;
+    const auto& fc = m.faces[f];
+    std::int64_t z[3];
+    for (int i = 0; i < 3; ++i) {
+        const double v = m.values[fc[i]];
+        if (!(v >= 0.0 && v <= double(m.maxval)) || v != std::floor(v)) return false;
+        z[i] = std::int64_t(v);
+    }
+    return rp->set(m.vertices[fc[0]], z[0], m.vertices[fc[1]], z[1], m.vertices[fc[2]], z[2], m.maxval);
+}
+
 // Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
 // vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles).
 void point_evaluation(const Model& m, const Prepared& p, Image* out) {
@@ -210,9 +226,20 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out) {
     std::uint16_t* px = out->samples.data();
     const Lattice l = Lattice::pixels();
     std::vector<Span> spans;
+    RoundedPlane rp;
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
         const auto& fc = m.faces[f];
         scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
+        if (exact_plane(m, f, &rp)) {
+            // p stepped from an exact start over each piece, truncated (kernel/raster.h).
+            for (const Span& s : spans) {
+                std::uint16_t* row = px + std::size_t(s.y) * W;
+                rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
+                    for (std::int32_t x = first; x <= last; ++x, v += rp.dp) row[x] = std::uint16_t(std::int32_t(v));
+                });
+            }
+            continue;
+        }
         const SpanPlane& pl = p.planes[f];
         const double dv = pl.step_x(l);
         for (const Span& s : spans) {

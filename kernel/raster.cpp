@@ -2,7 +2,9 @@
 // kernel/raster_rows.h.
 #include "kernel/raster.h"
 
+#include <algorithm>
 #include <climits>
+#include <initializer_list>
 
 #include "kernel/predicates.h"
 #include "kernel/raster_rows.h"
@@ -52,6 +54,30 @@ bool SpanPlane::set(LatticePoint p0, double z0v, LatticePoint p1, double z1v, La
     const double inv = 1.0 / double(D);
     gx = (dz1 * dy2 - dz2 * dy1) * inv;
     gy = (dz2 * dx1 - dz1 * dx2) * inv;
+    return true;
+}
+
+bool RoundedPlane::set(LatticePoint p0, std::int64_t z0v, LatticePoint p1, std::int64_t z1v, LatticePoint p2,
+                       std::int64_t z2v, std::int64_t maxval) {
+    if (maxval < 1 || maxval > 65535) return false;
+    for (std::int64_t z : {z0v, z1v, z2v})
+        if (z < 0 || z > maxval) return false;
+    std::int64_t D = orient2d(p0, p1, p2);
+    if (D == 0) return false;
+    const std::int64_t dx1 = std::int64_t(p1.x) - p0.x, dy1 = std::int64_t(p1.y) - p0.y;
+    const std::int64_t dx2 = std::int64_t(p2.x) - p0.x, dy2 = std::int64_t(p2.y) - p0.y;
+    const std::int64_t dz1 = z1v - z0v, dz2 = z2v - z0v;
+    std::int64_t a = dz1 * dy2 - dz2 * dy1, b = dz2 * dx1 - dz1 * dx2;
+    if (D < 0) D = -D, a = -a, b = -b;
+    // t = 4N + 2D + 1 with N = z0*D + a*(X - x0) + b*(Y - y0) at doubled (X, Y) = (2i, 2j).
+    tx = 8 * a;
+    ty = 8 * b;
+    t00 = 4 * z0v * D + 2 * D + 1 - 4 * a * p0.x - 4 * b * p0.y;
+    inv = 1.0 / double(4 * D);
+    dp = double(tx) * inv;
+    // (k + 5) * (maxval + 1) * D <= 2^51 for k < run (raster.h); at least one pixel per start.
+    const std::int64_t k_max = ((std::int64_t(1) << 51) / ((maxval + 1) * D)) - 5;
+    run = std::int32_t(std::clamp<std::int64_t>(k_max + 1, 1, INT32_MAX));
     return true;
 }
 

@@ -25,6 +25,7 @@
 // Fine coordinates must stay below 2^28 in magnitude (doubled coordinates < 2^24, scale <= 4,
 // |phase| and step small): every product below is then exact in int64.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -99,6 +100,59 @@ struct SpanPlane {
     }
     // Increment from lattice point (i, j) to (i + 1, j).
     double step_x(const Lattice& l) const { return gx * l.step_x / l.scale; }
+};
+
+// The plane of a face whose three corner values are integers in [0, maxval] (every basic model
+// erd makes: its values are image samples), rounded half up EXACTLY on the pixel lattice, so a
+// value that lies exactly on .5 goes up whatever the face's shape (a running sum of doubles can
+// land on either side of it).
+//
+// With D = |orient2d(p0, p1, p2)| the plane is v = N / D for the integer
+//     N(X, Y) = z0*D + a*(X - x0) + b*(Y - y0)    (doubled coordinates; a, b as in SpanPlane),
+// and round-half-up(v) = floor(v + 1/2) = floor(t / (4D)) with the ODD integer t = 4N + 2D + 1
+// (for integers m and n > 0, floor(m / n) = floor((2m + 1) / (2n))). Every q = t / (4D) is thus
+// at least 1/(4D) away from every integer, and a double within 1/(4D) of q truncates to floor(q).
+// On a pixel the face owns, 0 <= v <= maxval (the pixel lies in the closed face, where the plane
+// stays between its corner values), so 0 < q < maxval + 1 =: V1 and t < 4*V1*D < 2^50 (D < 2^32
+// with doubled coordinates <= 65534): t and its steps are exact doubles.
+//
+// Along a row the scan steps p = t * (1 / 4D) instead of t: p_0 = fl(t_0 * inv), p_k+1 =
+// fl(p_k + dp), inv = fl(1/(4D)), dp = fl(dt * inv). With u = 2^-53: p_0 and dp carry relative
+// errors <= 2u + u^2, k*|dq| = |q_k - q_0| < V1, and each addition adds <= u*(V1 + tiny), so
+//     |p_k - q_k| <= (2u + u^2) V1 + (2u + u^2) V1 + k u (V1 + tiny) < (k + 5) V1 u,
+// which is below 1/(4D) while (k + 5) * V1 * D <= 2^51. `run` is the number of pixels one start
+// value may be stepped over (4 at the largest image and maxval; ~2.8M on the first faces of an
+// 8-bit 1024 x 768 image); a longer span restarts from t, which is exact at every pixel.
+struct RoundedPlane {
+    std::int64_t t00 = 1;         // t at pixel (0, 0): 4*z0*D + 2D + 1 - 4a*x0 - 4b*y0
+    std::int64_t tx = 0, ty = 0;  // t per pixel in x and y: 8a, 8b
+    double inv = 0.0;             // fl(1 / (4D))
+    double dp = 0.0;              // fl(tx * inv): the step of p from pixel (i, j) to (i + 1, j)
+    std::int32_t run = 1;         // pixels one start value may be stepped over (see above)
+
+    // The plane through values z0..z2 at p0..p2; false when the points are collinear or a value
+    // is outside [0, maxval] (1 <= maxval <= 65535), the cases the argument above does not cover.
+    bool set(LatticePoint p0, std::int64_t z0v, LatticePoint p1, std::int64_t z1v, LatticePoint p2, std::int64_t z2v,
+             std::int64_t maxval);
+    // t at pixel (i, j), exact (every term is below 2^53 in magnitude).
+    std::int64_t t_pixel(std::int64_t i, std::int64_t j) const { return t00 + tx * i + ty * j; }
+    // p at pixel (i, j): truncates to the rounded value there, and may be stepped by dp over
+    // `run` pixels.
+    double p_pixel(std::int64_t i, std::int64_t j) const { return double(t_pixel(i, j)) * inv; }
+    // Cuts columns i0..i1 of row j into consecutive pieces of at most `run` pixels and calls
+    // fn(first, last, p) for each, p = p_pixel(first, j): stepping p by dp along a piece and
+    // truncating gives the rounded value at every pixel of it (the pixels must be the face's).
+    template <class Fn>
+    void pieces(std::int32_t i0, std::int32_t i1, std::int32_t j, Fn&& fn) const {
+        if (i1 - std::int64_t(i0) < run) {  // nearly always: the whole row in one piece
+            fn(i0, i1, p_pixel(i0, j));
+            return;
+        }
+        for (std::int64_t first = i0; first <= i1; first += run) {
+            const std::int64_t last = std::min<std::int64_t>(i1, first + run - 1);
+            fn(std::int32_t(first), std::int32_t(last), p_pixel(first, j));
+        }
+    }
 };
 
 }  // namespace erd

@@ -1,9 +1,10 @@
 // greedy_refine against a straightforward reference: the same greedy rule (thesis 3.2.2) written
 // the slow, obvious way, rescanning every face from scratch after every insertion with plain
-// per-pixel loops (span list from scan_triangle, the plane stepped as reconstruction steps it,
-// std::floor rounding, the candidate test on |e|). The fast loop (row walk fused with the scan,
-// shifted and clamp-free rounding, the e^2 screen of the candidate test) must insert the same
-// points in the same order, so the meshes agree point for point.
+// per-pixel loops (span list from scan_triangle; rounded values by exact integer division when
+// the model has integer corner values in [0, maxval], else the plane stepped as reconstruction
+// steps it with std::floor rounding; the candidate test on |e|). The fast loop (row walk fused
+// with the scan, RoundedPlane's stepped truncation, the e^2 screen of the candidate test) must
+// insert the same points in the same order, so the meshes agree point for point.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "algorithms/greedy.h"
 #include "kernel/cdt.h"
 #include "kernel/raster.h"
+#include "tests/test_rounding_util.h"
 
 using namespace erd;
 
@@ -23,25 +25,39 @@ namespace {
 
 // Planes through the samples plus a per-vertex offset (so vertex pixels have errors, values leave
 // [0, maxval] and the clamps act), or exactly GPI's planes when `offset` is 0. Flat: each face
-// takes the value at its first vertex everywhere, so errors are integers and ties abound.
+// takes the value at its first vertex everywhere, so errors are integers and ties abound. An
+// integral offset gives integer corner values (integer_values), some of them outside [0, maxval]
+// (those faces take the real-valued rounding, the others the exact one).
 class OffsetModel : public GreedyModel {
 public:
     OffsetModel(const Image& im, double offset, bool flat) : im_(im), offset_(offset), flat_(flat) {}
     SpanPlane face_plane(const Cdt& cdt, FaceInd f) const override {
         LatticePoint p[3];
         double z[3];
+        values(cdt, f, p, z);
+        SpanPlane pl;
+        pl.set(p[0], z[0], p[1], z[1], p[2], z[2]);
+        return pl;
+    }
+    bool integer_values(const Cdt& cdt, FaceInd f, std::int64_t zi[3]) const override {
+        if (offset_ != std::floor(offset_)) return false;
+        LatticePoint p[3];
+        double z[3];
+        values(cdt, f, p, z);
+        for (int i = 0; i < 3; ++i) zi[i] = std::int64_t(z[i]);
+        return true;
+    }
+    Status on_vertex_inserted(const Cdt&, VertInd, std::vector<FaceInd>*) override { return Status::success(); }
+
+private:
+    void values(const Cdt& cdt, FaceInd f, LatticePoint p[3], double z[3]) const {
         for (int i = 0; i < 3; ++i) {
             p[i] = cdt.point(cdt.face_vertex(f, i));
             z[i] = double(im_.at(p[i].x / 2, p[i].y / 2)) + offset_ * double((p[i].x / 2 + 3 * (p[i].y / 2)) % 5 - 2);
         }
         if (flat_) z[1] = z[2] = z[0];
-        SpanPlane pl;
-        pl.set(p[0], z[0], p[1], z[1], p[2], z[2]);
-        return pl;
     }
-    Status on_vertex_inserted(const Cdt&, VertInd, std::vector<FaceInd>*) override { return Status::success(); }
 
-private:
     const Image& im_;
     double offset_;
     bool flat_;
@@ -53,20 +69,32 @@ struct RefFace {
     LatticePoint cand;
 };
 
+// The model's integer corner values when all lie in [0, maxval]: the faces greedy_refine rounds
+// exactly.
+bool integer_values_in_range(const Cdt& cdt, FaceInd f, const Image& im, const GreedyModel& model, std::int64_t z[3]) {
+    if (!model.integer_values(cdt, f, z)) return false;
+    for (int i = 0; i < 3; ++i)
+        if (z[i] < 0 || z[i] > std::int64_t(im.maxval)) return false;
+    return true;
+}
+
 // One face, scanned the obvious way.
 RefFace scan_face(const Cdt& cdt, FaceInd f, const Image& im, const GreedyModel& model, bool rounded,
                   const std::vector<char>& vertex) {
     const Lattice lat = Lattice::pixels();
     const SpanPlane pl = model.face_plane(cdt, f);
+    const LatticePoint p[3] = {cdt.point(cdt.face_vertex(f, 0)), cdt.point(cdt.face_vertex(f, 1)),
+                               cdt.point(cdt.face_vertex(f, 2))};
+    std::int64_t z[3] = {0, 0, 0};
+    const bool integers = integer_values_in_range(cdt, f, im, model, z);
     std::vector<Span> spans;
-    scan_triangle(lat, RasterDomain{cdt.max_x(), cdt.max_y()}, cdt.point(cdt.face_vertex(f, 0)),
-                  cdt.point(cdt.face_vertex(f, 1)), cdt.point(cdt.face_vertex(f, 2)), &spans);
+    scan_triangle(lat, RasterDomain{cdt.max_x(), cdt.max_y()}, p[0], p[1], p[2], &spans);
     RefFace r;
     std::int64_t isum = 0;
     for (const Span& s : spans) {
         double v = pl.at(lat, s.x_begin, s.y), acc = 0.0;
         for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += pl.step_x(lat)) {
-            const double approx = rounded ? std::floor(std::clamp(v, 0.0, double(im.maxval)) + 0.5) : v;
+            const double approx = rounded ? erd_test::reference_rounded(integers, p, z, x, s.y, v, im.maxval) : v;
             const double e = double(im.at(x, s.y)) - approx;
             if (rounded) isum += std::llround(e * e);
             else acc += e * e;
@@ -122,9 +150,10 @@ std::vector<LatticePoint> fast_greedy(const Image& im, GreedyModel& model, bool 
 }  // namespace
 
 TEST_CASE("greedy loop: the same points in the same order as a from-scratch reference", "[basic]") {
-    // Sizes, maxvals and planes that exercise every scan path: 8-bit samples near the binade
-    // edges 64 and 128 (shifted and plain rounding), offsets that push values past 0 and maxval
-    // (clamps), 16-bit samples, and the real-valued loop of ERDGPI.
+    // Sizes, maxvals and planes that exercise every scan path: exact rounding of integer planes
+    // (GPI's own, flat ones full of exact .5 values, 16-bit), integral offsets that push some
+    // faces' values past 0 and maxval (those faces take the clamping real-valued rounding),
+    // fractional offsets (all faces real-valued), and the real-valued loop of ERDGPI.
     struct Case {
         int w, h;
         std::uint32_t maxval;

@@ -1,6 +1,7 @@
 // Scan conversion: exact-once ownership over arbitrary triangulations of the rectangle.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <random>
@@ -9,6 +10,7 @@
 #include "kernel/predicates.h"
 #include "kernel/raster.h"
 #include "tests/test_raster_util.h"
+#include "tests/test_rounding_util.h"
 
 using erd::Lattice;
 using erd::LatticePoint;
@@ -228,4 +230,89 @@ TEST_CASE("raster: a row window gives exactly the full scan's spans of those row
         }
     }
     CHECK(windows_with_spans > 100);
+}
+
+TEST_CASE("raster: RoundedPlane rounds half up exactly, stepped over its run", "[raster]") {
+    using erd::RoundedPlane;
+    std::mt19937 rng(2027);
+    // Faces from tiny to the largest the kernel allows (doubled coordinates up to 65534), values
+    // anywhere in [0, maxval] with the extremes and equal values (flat faces, many exact .5s).
+    for (int iter = 0; iter < 3000; ++iter) {
+        const std::int64_t maxval = iter % 3 == 0 ? 65535 : 255;
+        const std::int32_t span = iter % 4 == 0 ? 65534 : iter % 4 == 1 ? 2000 : 40;
+        LatticePoint p[3];
+        std::int64_t z[3];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = {2 * std::int32_t(rng() % std::uint64_t(span / 2 + 1)), 2 * std::int32_t(rng() % std::uint64_t(span / 2 + 1))};
+            const std::uint64_t pick = rng() % 6;
+            z[k] = pick == 0 ? 0 : pick == 1 ? maxval : pick == 2 && k > 0 ? z[0] : std::int64_t(rng() % std::uint64_t(maxval + 1));
+        }
+        if (iter % 7 == 0) {  // a face with an edge midpoint on the lattice: v there is exactly (z0 + z1) / 2
+            p[1] = {p[0].x + 4, p[0].y};
+            p[2] = {p[0].x, p[0].y + 4};
+        }
+        RoundedPlane rp;
+        const bool ok = rp.set(p[0], z[0], p[1], z[1], p[2], z[2], maxval);
+        if (erd::orient2d(p[0], p[1], p[2]) == 0) {
+            CHECK_FALSE(ok);
+            continue;
+        }
+        REQUIRE(ok);
+        REQUIRE(rp.run >= 1);
+        // Rows of pixels in the closed face, each checked from its first pixel over the run.
+        const std::int32_t ymin = std::min({p[0].y, p[1].y, p[2].y}) / 2, ymax = std::max({p[0].y, p[1].y, p[2].y}) / 2;
+        const std::int32_t xmin = std::min({p[0].x, p[1].x, p[2].x}) / 2, xmax = std::max({p[0].x, p[1].x, p[2].x}) / 2;
+        const std::int64_t o = erd::orient2d(p[0], p[1], p[2]);
+        auto inside = [&](std::int32_t i, std::int32_t j) {
+            const LatticePoint q{2 * i, 2 * j};
+            const std::int64_t a = erd::orient2d(p[0], p[1], q), b = erd::orient2d(p[1], p[2], q), c = erd::orient2d(p[2], p[0], q);
+            return o > 0 ? (a >= 0 && b >= 0 && c >= 0) : (a <= 0 && b <= 0 && c <= 0);
+        };
+        for (int row = 0; row < 6; ++row) {
+            const std::int32_t j = ymin + std::int32_t(rng() % std::uint64_t(ymax - ymin + 1));
+            std::int32_t i0 = xmin;
+            while (i0 <= xmax && !inside(i0, j)) ++i0;
+            if (i0 > xmax) continue;
+            double v = rp.p_pixel(i0, j);
+            for (std::int32_t i = i0, k = 0; i <= xmax && inside(i, j) && k < rp.run && k < 3000; ++i, ++k, v += rp.dp) {
+                const std::int64_t want = erd_test::exact_rounded(p, z, 2 * std::int64_t(i), 2 * std::int64_t(j));
+                REQUIRE(want >= 0);
+                REQUIRE(want <= maxval);
+                INFO("face " << p[0].x << "," << p[0].y << " " << p[1].x << "," << p[1].y << " " << p[2].x << ","
+                             << p[2].y << " values " << z[0] << " " << z[1] << " " << z[2] << " pixel " << i << "," << j);
+                REQUIRE(std::int64_t(std::int32_t(v)) == want);
+                REQUIRE(std::int64_t(std::int32_t(rp.p_pixel(i, j))) == want);
+            }
+        }
+    }
+    // pieces() with short runs: every column once, in order, each piece from an exact start.
+    for (int iter = 0; iter < 200; ++iter) {
+        const LatticePoint p[3] = {{0, 0}, {2 * std::int32_t(20 + rng() % 60), 2 * std::int32_t(rng() % 10)},
+                                   {2 * std::int32_t(rng() % 10), 2 * std::int32_t(20 + rng() % 40)}};
+        const std::int64_t z[3] = {std::int64_t(rng() % 256), std::int64_t(rng() % 256), std::int64_t(rng() % 256)};
+        RoundedPlane rp;
+        REQUIRE(rp.set(p[0], z[0], p[1], z[1], p[2], z[2], 255));
+        rp.run = std::int32_t(1 + iter % 5);
+        std::vector<Span> spans;
+        erd::scan_triangle(Lattice::pixels(), RasterDomain{2000, 2000}, p[0], p[1], p[2], &spans);
+        for (const Span& s : spans) {
+            std::int32_t next = s.x_begin;
+            rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
+                REQUIRE(first == next);
+                REQUIRE(last - first < rp.run);
+                for (std::int32_t i = first; i <= last; ++i, v += rp.dp)
+                    REQUIRE(std::int32_t(v) == erd_test::exact_rounded(p, z, 2 * std::int64_t(i), 2 * std::int64_t(s.y)));
+                next = last + 1;
+            });
+            REQUIRE(next == s.x_end + 1);
+        }
+    }
+    // Ties go up: the midpoint of values 73 and 54 is exactly 63.5, and 64 is its rounding.
+    RoundedPlane rp;
+    REQUIRE(rp.set(LatticePoint{0, 0}, 73, LatticePoint{4, 0}, 54, LatticePoint{0, 4}, 73, 255));
+    CHECK(std::int32_t(rp.p_pixel(1, 0)) == 64);
+    // Values outside [0, maxval] and collinear points are refused.
+    CHECK_FALSE(rp.set(LatticePoint{0, 0}, -1, LatticePoint{4, 0}, 5, LatticePoint{0, 4}, 5, 255));
+    CHECK_FALSE(rp.set(LatticePoint{0, 0}, 1, LatticePoint{4, 0}, 256, LatticePoint{0, 4}, 5, 255));
+    CHECK_FALSE(rp.set(LatticePoint{0, 0}, 1, LatticePoint{2, 2}, 5, LatticePoint{4, 4}, 5, 255));
 }
