@@ -307,8 +307,11 @@ struct EdgeDetector::Pass {
     // The streaming pass. The k-th largest magnitude so far, known to its bin, only grows: so
     // r times that bin's floor is a lower bound of tau_low, and only points at or above it are
     // suppressed and kept; values in bins below the bound's bin cannot decide the quantile, so
-    // only the others are counted (they are all >= the bound). Row y is suppressed once row
-    // y + 1 exists, so three rows of g are all the plane there is.
+    // only the others are counted (they are all >= the bound). Row y is counted and suppressed
+    // in one scan once row y + 1 exists, so three rows of g are all the plane there is. The
+    // bound then lags one row behind the rows made (a lower bound is still a bound); the final
+    // bin, the counts at and above it and the points kept at the end do not depend on when the
+    // bound rose.
     template <class Sample>
     void run(int width, int height, Sample sample, const CannyParams& params, std::size_t k_high) {
         pl = Plane(2 * width - 1, 2 * height - 1);
@@ -321,7 +324,9 @@ struct EdgeDetector::Pass {
         hist.assign(kFloatBins, 0);
         const float* prev_gx = nullptr;  // components of the row before the last one emitted
         const float* prev_gy = nullptr;
-        auto suppress_row = [&](int y, const float* gx, const float* gy) {
+        // Counts row y's magnitudes at or above the bound, suppresses and keeps its points, then
+        // raises the bound.
+        auto finish_row = [&](int y, const float* gx, const float* gy) {
             if (capacity < n_kept + std::size_t(W)) make_room(std::size_t(W));
             const float* up = row(y > 0 ? y - 1 : 0);
             const float* mid = row(y);
@@ -330,15 +335,24 @@ struct EdgeDetector::Pass {
             std::uint32_t* a = at.get();
             float* g = mag.get();
             std::uint8_t* f = flag.get();
-            std::size_t n = n_kept;
+            std::size_t n = n_kept, counted = 0;
             for_each_at_least(mid, std::size_t(W), low, [&](std::size_t X) {
-                if (mid[X] <= 0.0f) return;
+                const float v = mid[X];
+                const std::uint32_t b = float_bin(v);
+                if (b >= floor_bin) {
+                    ++hist[b];
+                    ++counted;
+                }
+                if (v <= 0.0f) return;
                 a[n] = base + std::uint32_t(X);
-                g[n] = mid[X];
+                g[n] = v;
                 f[n] = suppress(up, mid, down, int(X), gx[X], gy[X]);
                 ++n;
             });
             n_kept = n;
+            at_or_above_floor += counted;
+            while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
+            low = float(params.r * double(bin_floor(floor_bin)));
         };
         gradient_rows(
             W, H, binomial_taps(params.smoothing_order), params.border,
@@ -347,18 +361,8 @@ struct EdgeDetector::Pass {
                 float* r = row(y);
                 r[-1] = r[0];
                 r[W] = r[W - 1];
-                for_each_at_least(r, std::size_t(W), low, [&](std::size_t X) {
-                    const std::uint32_t b = float_bin(r[X]);
-                    if (b >= floor_bin) {
-                        ++hist[b];
-                        ++at_or_above_floor;
-                    }
-                });
-                while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
-                low = float(params.r * double(bin_floor(floor_bin)));
-                // A later (larger) bound than row y - 1's own is still a bound: fewer points kept.
-                if (y > 0) suppress_row(y - 1, prev_gx, prev_gy);
-                if (y == H - 1) suppress_row(y, ax, ay);
+                if (y > 0) finish_row(y - 1, prev_gx, prev_gy);
+                if (y == H - 1) finish_row(y, ax, ay);
                 prev_gx = ax;
                 prev_gy = ay;
             });
