@@ -140,12 +140,14 @@ void regrow(std::unique_ptr<T[]>* a, std::size_t n, std::size_t cap) {
     *a = std::move(b);
 }
 
-// The streaming pass's guess of its final bound (EdgeDetector::Pass::sampled_bound): every
-// kSampleStride-th row of the half-pixel grid is sampled, and the guess is kGuessMargin times
-// the sample's estimate (on bull, lena and peppers the estimate was within ~6% of the final
-// bound, on cameraman, house, ct_head and phantom within ~10%; a guess above the final bound
-// costs a second pass).
-constexpr int kSampleStride = 16;
+// The streaming pass's guess of its final bound (EdgeDetector::Pass::sampled_bound): runs of
+// kSampleRun rows of the half-pixel grid, one every kSampleStride rows, are sampled (runs
+// rather than single rows: a run's rows share their smoothed neighbours), and the guess is
+// kGuessMargin times the sample's estimate. The estimate was within 0.97-1.09 of the final
+// bound on bull, lena, peppers, cameraman, house, phantom and ct_head at beta 0.01, 0.055 and
+// 0.2, 1.15 at worst (ct_head, 0.2); a guess above the final bound costs a second pass.
+constexpr int kSampleStride = 32;
+constexpr std::size_t kSampleRun = 2;
 constexpr double kGuessMargin = 0.8;
 
 Status check_params(const CannyParams& params) {
@@ -192,7 +194,7 @@ struct EdgeDetector::Pass {
     // bound rose.
     // In row order the bound stays low while the pass crosses flat rows (lena: 340K of 539K
     // suppressions were for points below the final bound), so the pass starts from a guess of
-    // the final bound made from a sample of rows (sampled_bound). Every value it skips is below
+    // the final bound made from a sample of the rows (sampled_bound). Every value it skips is below
     // the guess; if the final bound is at or above the guess, the skipped values could neither
     // be kept nor be counted in a bin at or above the final one, so the result is the one
     // without a guess (the final bin can only be reached from below: it is the k-th largest's
@@ -286,22 +288,25 @@ struct EdgeDetector::Pass {
     }
 
     // A guess of the streaming pass's final bound: r times the magnitude of the same rank among
-    // every kSampleStride-th row as tau_high has among all, less a margin (kGuessMargin). The
-    // sampled rows cost about three times a streamed row each (their smoothed neighbours are
-    // made for them alone). 0 (no guess) when the sample is too small to rank.
+    // the sampled rows as tau_high has among all, less a margin (kGuessMargin). A sampled run
+    // costs about twice as much a row as the stream (its smoothed neighbours are made for it
+    // alone): 1.6% of the rows, ~4M instructions on lena. 0 (no guess) when the sample is too
+    // small to rank.
     template <class Sample>
     float sampled_bound(int width, Sample sample, const CannyParams& params, std::size_t k_high) const {
         const int W = pl.w, H = pl.h;
-        const std::size_t rows = std::size_t(H / kSampleStride), n = rows * std::size_t(W);
+        const std::size_t blocks = std::size_t(H / kSampleStride), n = blocks * kSampleRun * std::size_t(W);
         const double rank = double(k_high) * double(n) / (double(W) * double(H));
-        if (rows < 8 || rank < 64.0) return 0.0f;
+        if (blocks < 8 || rank < 64.0) return 0.0f;
         std::vector<float> g(n);
         const std::vector<double> taps = binomial_taps(params.smoothing_order);
-        for (std::size_t i = 0; i < rows; ++i) {
+        for (std::size_t i = 0; i < blocks; ++i) {
             const int y = int(i) * kSampleStride + kSampleStride / 2;
             gradient_rows(
-                W, H, y, y + 1, taps, params.border, [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); },
-                [&](int) { return g.data() + i * std::size_t(W); }, [](int, const float*, const float*) {});
+                W, H, y, y + int(kSampleRun), taps, params.border,
+                [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); },
+                [&](int Y) { return g.data() + (i * kSampleRun + std::size_t(Y - y)) * std::size_t(W); },
+                [](int, const float*, const float*) {});
         }
         const std::size_t k = std::size_t(rank) - 1;  // the rank-th largest
         std::nth_element(g.begin(), g.begin() + std::ptrdiff_t(k), g.end(), std::greater<float>());
