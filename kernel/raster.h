@@ -29,7 +29,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "algorithms/model.h"
+#include "kernel/lattice.h"
 
 namespace erd {
 
