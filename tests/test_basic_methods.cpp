@@ -21,6 +21,7 @@
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "kernel/cdt.h"
+#include "tests/thesis_cases.h"
 #include "tests/test_rounding_util.h"
 
 using namespace erd;
@@ -421,44 +422,26 @@ TEST_CASE("greedy loop: exact totals on a 16-bit image with values at binade edg
 TEST_CASE("ED and GPI on the thesis images at the thesis densities: -t files are Delaunay, vertices reproduced", "[basic][images]") {
     // Issue 5: every generated model's -t file is the Delaunay triangulation of its vertices over
     // the image rectangle, the model has exactly N vertices, and its reconstruction equals the
-    // image at every vertex. Under the sanitizers the lowest density of each image stands for all.
-    const char* dir = std::getenv("ERD_IMAGES");
-    const std::string images = dir && *dir ? dir : "../shared/images";
-    const bool sanitized = std::getenv("ERD_SANITIZED") != nullptr;
-    const std::vector<std::pair<const char*, std::vector<double>>> cases = {
-        {"bull", {0.125, 0.25, 0.5, 1}}, {"lena", {0.5, 1, 2, 3}}, {"peppers", {0.5, 1, 2, 3}}};
-    for (const auto& c : cases) {
-        std::string bytes;
-        Image im;
-        if (!cli::read_file(images + "/" + c.first + ".pgm", &bytes).ok() ||
-            !cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &im, nullptr).ok()) {
-            WARN("skipped: " << images << "/" << c.first << ".pgm not readable");
-            continue;
+    // image at every vertex.
+    test::for_each_thesis_case([](const char*, const Image& im, const GenerateOptions& o) {
+        for (const char* method : {"ed", "gpi"}) {
+            INFO(method);
+            GenerateResult r;
+            REQUIRE((std::string(method) == "ed" ? generate_ed(im, o, &r) : generate_gpi(im, o, &r)).ok());
+            CHECK(r.achieved == r.requested);
+            CHECK(r.model.size() == r.requested);
+            std::string tri;
+            REQUIRE(write_triangulation(r.model, &tri).ok());
+            Model t;
+            REQUIRE(read_triangulation(tri, &t).ok());
+            t.width = im.width;
+            t.height = im.height;
+            REQUIRE(t.vertices == r.model.vertices);
+            require_delaunay(t);
+            Image rec;
+            REQUIRE(reconstruct(r.model, false, &rec).ok());
+            for (const LatticePoint p : r.model.vertices)
+                REQUIRE(rec.at(p.x / 2, p.y / 2) == im.at(p.x / 2, p.y / 2));
         }
-        for (const double d : c.second) {
-            if (sanitized && d != c.second.front()) continue;
-            for (const char* method : {"ed", "gpi"}) {
-                INFO(c.first << " " << d << "% " << method);
-                GenerateOptions o;
-                o.density = d;
-                o.density_given = true;
-                GenerateResult r;
-                REQUIRE((std::string(method) == "ed" ? generate_ed(im, o, &r) : generate_gpi(im, o, &r)).ok());
-                CHECK(r.achieved == r.requested);
-                CHECK(r.model.size() == r.requested);
-                std::string tri;
-                REQUIRE(write_triangulation(r.model, &tri).ok());
-                Model t;
-                REQUIRE(read_triangulation(tri, &t).ok());
-                t.width = im.width;
-                t.height = im.height;
-                REQUIRE(t.vertices == r.model.vertices);
-                require_delaunay(t);
-                Image rec;
-                REQUIRE(reconstruct(r.model, false, &rec).ok());
-                for (const LatticePoint p : r.model.vertices)
-                    REQUIRE(rec.at(p.x / 2, p.y / 2) == im.at(p.x / 2, p.y / 2));
-            }
-        }
-    }
+    });
 }

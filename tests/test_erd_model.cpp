@@ -25,6 +25,7 @@
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "kernel/cdt.h"
+#include "tests/thesis_cases.h"
 #include "kernel/raster.h"
 
 using namespace erd;
@@ -568,50 +569,31 @@ TEST_CASE("the line search's local MMSODD equals a plain per-pixel MMSODD bit fo
 
 TEST_CASE("ERDGPI and ERDED on the thesis images at the thesis densities: .erd and -t read back verify", "[erd][images]") {
     // Issue 6: every .erd and -t file on every test image and density is a valid CDT of the image
-    // rectangle whose wedges match the constraints, with exactly N vertices. Under the sanitizers
-    // (ERD_SANITIZED, ~20x slower) the lowest density of each image stands for the rest.
-    const char* dir = std::getenv("ERD_IMAGES");
-    const std::string images = dir && *dir ? dir : "../shared/images";
-    const bool sanitized = std::getenv("ERD_SANITIZED") != nullptr;
-    const std::vector<std::pair<const char*, std::vector<double>>> cases = {
-        {"bull", {0.125, 0.25, 0.5, 1}}, {"lena", {0.5, 1, 2, 3}}, {"peppers", {0.5, 1, 2, 3}}};
-    for (const auto& c : cases) {
-        std::string bytes;
-        Image im;
-        if (!cli::read_file(images + "/" + c.first + ".pgm", &bytes).ok() ||
-            !cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &im, nullptr).ok()) {
-            WARN("skipped: " << images << "/" << c.first << ".pgm not readable");
-            continue;
+    // rectangle whose wedges match the constraints, with exactly N vertices.
+    test::for_each_thesis_case([](const char*, const Image& im, const GenerateOptions& o) {
+        for (const char* method : {"erdgpi", "erded"}) {
+            INFO(method);
+            GenerateResult r;
+            REQUIRE((std::string(method) == "erdgpi" ? generate_erdgpi(im, o, &r) : generate_erded(im, o, &r)).ok());
+            CHECK(r.achieved == r.requested);
+            std::string text, tri;
+            REQUIRE(write_model(r.model, &text).ok());
+            REQUIRE(write_triangulation(r.model, &tri).ok());
+            Model back, t;
+            REQUIRE(read_model(text, ModelFileKind::erd, &back).ok());
+            REQUIRE(read_triangulation(tri, &t).ok());
+            CHECK(back.size() == r.requested);
+            REQUIRE(t.vertices == back.vertices);
+            REQUIRE(t.faces == back.faces);
+            // The .erd file carries the values, the -t file the constrained edges (a .erd
+            // reader can only infer constraints from value jumps).
+            auto sorted = [](std::vector<std::array<std::uint32_t, 2>> v) {
+                std::sort(v.begin(), v.end());
+                return v;
+            };
+            CHECK(sorted(t.constraints) == sorted(r.model.constraints));
+            back.constraints = t.constraints;
+            check_model(back);
         }
-        for (const double d : c.second) {
-            if (sanitized && d != c.second.front()) continue;
-            for (const char* method : {"erdgpi", "erded"}) {
-                INFO(c.first << " " << d << "% " << method);
-                GenerateOptions o;
-                o.density = d;
-                o.density_given = true;
-                GenerateResult r;
-                REQUIRE((std::string(method) == "erdgpi" ? generate_erdgpi(im, o, &r) : generate_erded(im, o, &r)).ok());
-                CHECK(r.achieved == r.requested);
-                std::string text, tri;
-                REQUIRE(write_model(r.model, &text).ok());
-                REQUIRE(write_triangulation(r.model, &tri).ok());
-                Model back, t;
-                REQUIRE(read_model(text, ModelFileKind::erd, &back).ok());
-                REQUIRE(read_triangulation(tri, &t).ok());
-                CHECK(back.size() == r.requested);
-                REQUIRE(t.vertices == back.vertices);
-                REQUIRE(t.faces == back.faces);
-                // The .erd file carries the values, the -t file the constrained edges (a .erd
-                // reader can only infer constraints from value jumps).
-                auto sorted = [](std::vector<std::array<std::uint32_t, 2>> v) {
-                    std::sort(v.begin(), v.end());
-                    return v;
-                };
-                CHECK(sorted(t.constraints) == sorted(r.model.constraints));
-                back.constraints = t.constraints;
-                check_model(back);
-            }
-        }
-    }
+    });
 }
