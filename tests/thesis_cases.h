@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,9 +17,10 @@
 
 namespace erd::test {
 
-// Calls run(image_name, image, options) for every case, options asking for that density.
+// Runs each of the named methods (the registry's names) on every case and calls
+// run(image, result) with its result, after checking that it made exactly the requested count.
 template <class Run>
-void for_each_thesis_case(Run run) {
+void for_each_thesis_case(std::initializer_list<const char*> method_names, Run run) {
     const char* dir = std::getenv("ERD_IMAGES");
     const std::string images = dir && *dir ? dir : "../shared/images";
     const bool sanitized = std::getenv("ERD_SANITIZED") != nullptr;
@@ -38,7 +40,15 @@ void for_each_thesis_case(Run run) {
             o.density = d;
             o.density_given = true;
             INFO(c.first << " " << d << "%");
-            run(c.first, im, o);
+            for (const char* name : method_names) {
+                INFO(name);
+                const Method* m = find_method(name);
+                REQUIRE(m != nullptr);
+                GenerateResult r;
+                REQUIRE(m->run(im, o, &r).ok());
+                CHECK(r.achieved == r.requested);
+                run(im, r);
+            }
         }
     }
 }
