@@ -1,6 +1,6 @@
 # erd: build, test, fuzz, bench, eval.  `make help` lists the targets.
 #
-# Layout: kernel/ + algorithms/ -> build/liberd.a (standard library only);
+# Layout: kernel/ + algorithms/*/ + api/ -> build/liberd.a (standard library only);
 #         cli/ + third_party/stb glue -> build/erd; tests/ -> build/erd_tests.
 # Every source directory is globbed, so adding a file needs no Makefile edit.
 
@@ -22,7 +22,7 @@ LDFLAGS   ?=
 IMAGES    ?= ../shared/images
 FUZZ_SECONDS ?= 300
 
-LIB_SRC   := $(sort $(wildcard kernel/*.cpp algorithms/*.cpp))
+LIB_SRC   := $(sort $(wildcard kernel/*.cpp algorithms/*/*.cpp api/*.cpp))
 CLI_SRC   := $(sort $(wildcard cli/*.cpp))
 TEST_SRC  := $(sort $(wildcard tests/*.cpp))
 LIB_OBJ   := $(LIB_SRC:%.cpp=$(BUILD)/%.o)
@@ -114,7 +114,7 @@ clean:
 # `make install PREFIX=/usr/local DESTDIR=` installs bin/erd plus the thesis's seven command
 # names as symlinks to it, lib/liberd.a, the library headers under include/erd/ (kernel/ and
 # algorithms/ keep their names, so the headers' own "kernel/x.h" includes resolve with
-# -I$(includedir)/erd, which erd.pc supplies), include/erd/erd.h (forwards to algorithms/erd.h),
+# -I$(includedir)/erd, which erd.pc supplies), include/erd/erd.h (forwards to api/erd.h),
 # lib/pkgconfig/erd.pc and share/man/man1/erd.1 (with a ".so" page per thesis name). It installs
 # what $(BUILD) already holds.
 PREFIX     ?= /usr/local
@@ -129,14 +129,16 @@ ERD_PC_VERSION ?= 0.1.0
 .PHONY: install uninstall embedded
 install: $(BUILD)/erd $(BUILD)/liberd.a
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(MANDIR)/man1 \
-	  $(DESTDIR)$(INCLUDEDIR)/erd/kernel $(DESTDIR)$(INCLUDEDIR)/erd/algorithms
+	  $(DESTDIR)$(INCLUDEDIR)/erd/kernel $(DESTDIR)$(INCLUDEDIR)/erd/api \
+	  $(addprefix $(DESTDIR)$(INCLUDEDIR)/erd/algorithms/,imaging model methods output)
 	install -m 755 $(BUILD)/erd $(DESTDIR)$(BINDIR)/erd
 	for a in $(ERD_ALIASES); do ln -sf erd $(DESTDIR)$(BINDIR)/$$a; done
 	install -m 644 $(BUILD)/liberd.a $(DESTDIR)$(LIBDIR)/liberd.a
 	install -m 644 $(wildcard kernel/*.h) $(DESTDIR)$(INCLUDEDIR)/erd/kernel/
-	install -m 644 $(wildcard algorithms/*.h) $(DESTDIR)$(INCLUDEDIR)/erd/algorithms/
-	printf '%s\n' '// erd public API: see algorithms/erd.h. Compile with `pkg-config --cflags erd`.' \
-	  '#pragma once' '#include "algorithms/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
+	for d in imaging model methods output; do install -m 644 algorithms/$$d/*.h $(DESTDIR)$(INCLUDEDIR)/erd/algorithms/$$d/; done
+	install -m 644 api/*.h $(DESTDIR)$(INCLUDEDIR)/erd/api/
+	printf '%s\n' '// erd public API: see api/erd.h. Compile with `pkg-config --cflags erd`.' \
+	  '#pragma once' '#include "api/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
 	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
 	  'Name: erd' 'Description: image meshes with explicit discontinuities (ERD model): mesh generation, reconstruction, PSNR' \
 	  'Version: $(ERD_PC_VERSION)' 'Cflags: -I$${includedir}/erd -I$${includedir}' 'Libs: -L$${libdir} -lerd' \

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/douglas_peucker.h"
-#include "algorithms/error_diffusion.h"
-#include "algorithms/mmsodd.h"
-#include "algorithms/polylines.h"
+#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/error_diffusion.h"
+#include "algorithms/imaging/mmsodd.h"
+#include "algorithms/imaging/polylines.h"
 
 using namespace erd;
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/bilinear.h"
-#include "algorithms/canny.h"
-#include "algorithms/douglas_peucker.h"
-#include "algorithms/polylines.h"
+#include "algorithms/imaging/bilinear.h"
+#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/polylines.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"

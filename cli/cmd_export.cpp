@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/export.h"
+#include "algorithms/output/export.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"

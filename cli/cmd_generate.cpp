@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/methods.h"
-#include "algorithms/metrics.h"
-#include "algorithms/model_io.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/reconstruct.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/metrics.h"
+#include "algorithms/model/metrics.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"

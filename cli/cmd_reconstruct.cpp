@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/model.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/model/model.h"
+#include "algorithms/model/reconstruct.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/reconstruct.h"
-#include "algorithms/render.h"
+#include "algorithms/model/reconstruct.h"
+#include "algorithms/output/render.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/synth.h"
+#include "algorithms/imaging/synth.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "algorithms/image.h"
+#include "algorithms/imaging/image.h"
 #include "kernel/status.h"
 
 namespace erd::cli {

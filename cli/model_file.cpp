@@ -1,6 +1,6 @@
 #include "cli/model_file.h"
 
-#include "algorithms/model_io.h"
+#include "algorithms/model/model_io.h"
 #include "cli/fileio.h"
 
 namespace erd::cli {

@@ -2,8 +2,8 @@
 #pragma once
 #include <string>
 
-#include "algorithms/model.h"
-#include "algorithms/model_topology.h"
+#include "algorithms/model/model.h"
+#include "algorithms/model/model_topology.h"
 #include "kernel/status.h"
 
 namespace erd::cli {

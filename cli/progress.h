@@ -8,7 +8,7 @@
 #include <chrono>
 #include <string>
 
-#include "algorithms/progress.h"
+#include "algorithms/methods/progress.h"
 
 namespace erd::cli {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "algorithms/model_topology.h"
+#include "algorithms/model/model_topology.h"
 #include "cli/report.h"
 
 namespace erd::cli {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/options.h"
+#include "algorithms/methods/options.h"
 
 namespace erd::cli {
 

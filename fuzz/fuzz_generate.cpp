@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/image.h"
-#include "algorithms/methods.h"
-#include "algorithms/options.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/methods/options.h"
+#include "algorithms/model/reconstruct.h"
 #include "kernel/cdt.h"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "algorithms/model_io.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/reconstruct.h"
 #include "kernel/predicates.h"
 
 namespace {

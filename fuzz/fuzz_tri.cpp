@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "algorithms/model_io.h"
+#include "algorithms/model/model_io.h"
 #include "kernel/predicates.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

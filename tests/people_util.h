@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/image.h"
-#include "algorithms/model.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/model.h"
 #include "tests/erd_run.h"
 
 namespace people_test {

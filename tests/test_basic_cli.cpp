@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
-#include "algorithms/image.h"
-#include "algorithms/model.h"
-#include "algorithms/model_io.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/model.h"
+#include "algorithms/model/model_io.h"
 #include "cli/image_io.h"
 #include "tests/erd_run.h"
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "algorithms/heap.h"
+#include "algorithms/methods/heap.h"
 
 using erd::IndexedMaxHeap;
 

@@ -11,13 +11,13 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/ed.h"
-#include "algorithms/gpi.h"
-#include "algorithms/greedy.h"
-#include "algorithms/methods.h"
-#include "algorithms/metrics.h"
-#include "algorithms/model_io.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/methods/ed.h"
+#include "algorithms/methods/gpi.h"
+#include "algorithms/methods/greedy.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/reconstruct.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "kernel/cdt.h"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/metrics.h"
-#include "algorithms/synth.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/imaging/synth.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "tests/erd_run.h"

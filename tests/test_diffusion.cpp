@@ -9,9 +9,9 @@
 #include <cstring>
 #include <vector>
 
-#include "algorithms/error_diffusion.h"
-#include "algorithms/filters.h"
-#include "algorithms/mmsodd.h"
+#include "algorithms/imaging/error_diffusion.h"
+#include "algorithms/imaging/filters.h"
+#include "algorithms/imaging/mmsodd.h"
 
 using namespace erd;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "algorithms/erd_params.h"
+#include "algorithms/methods/erd_params.h"
 
 using namespace erd;
 

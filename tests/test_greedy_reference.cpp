@@ -13,8 +13,8 @@
 #include <random>
 #include <vector>
 
-#include "algorithms/gpi.h"
-#include "algorithms/greedy.h"
+#include "algorithms/methods/gpi.h"
+#include "algorithms/methods/greedy.h"
 #include "kernel/cdt.h"
 #include "kernel/raster.h"
 #include "tests/test_rounding_util.h"

@@ -7,14 +7,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "algorithms/bilinear.h"
-#include "algorithms/canny.h"
-#include "algorithms/douglas_peucker.h"
-#include "algorithms/error_diffusion.h"
-#include "algorithms/filters.h"
-#include "algorithms/mmsodd.h"
-#include "algorithms/polylines.h"
-#include "algorithms/thinning.h"
+#include "algorithms/imaging/bilinear.h"
+#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/error_diffusion.h"
+#include "algorithms/imaging/filters.h"
+#include "algorithms/imaging/mmsodd.h"
+#include "algorithms/imaging/polylines.h"
+#include "algorithms/imaging/thinning.h"
 
 using namespace erd;
 

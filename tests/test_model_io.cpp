@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/model_io.h"
-#include "algorithms/model_topology.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/model_topology.h"
+#include "algorithms/model/reconstruct.h"
 #include "tests/test_raster_util.h"
 
 using erd::Model;

@@ -17,10 +17,10 @@
 #include <thread>
 #include <vector>
 
-#include "algorithms/erd.h"
-#include "algorithms/methods.h"
-#include "algorithms/metrics.h"
-#include "algorithms/synth.h"
+#include "api/erd.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/imaging/synth.h"
 #include "cli/image_io.h"
 #include "tests/erd_run.h"
 
@@ -492,7 +492,7 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
     CHECK(exists(erd_bin()));
     const std::string top = dest.path + prefix;
     for (const char* f : {"bin/erd", "lib/liberd.a", "lib/pkgconfig/erd.pc", "share/man/man1/erd.1", "include/erd/erd.h",
-                          "include/erd/algorithms/erd.h", "include/erd/algorithms/model.h", "include/erd/kernel/cdt.h",
+                          "include/erd/api/erd.h", "include/erd/algorithms/model/model.h", "include/erd/kernel/cdt.h",
                           "include/erd/kernel/status.h", "share/man/man1/ywb.1", "share/man/man1/Cal_PSNR.1"}) {
         INFO(f);
         CHECK(exists(top + "/" + f));
@@ -514,7 +514,7 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
     // The headers are installed from the tree, the library from the build dir: when a header was
     // edited after the library was built (helpers share one tree) the two disagree and a program
     // built against them is meaningless. After `make` they always agree.
-    RunResult newer = run_in(root, "find kernel algorithms -name '*.h' -newer " + sh_quote(build + "/liberd.a"));
+    RunResult newer = run_in(root, "find kernel algorithms api -name '*.h' -newer " + sh_quote(build + "/liberd.a"));
     if (std::getenv("ERD_SANITIZED")) {
         WARN("sanitized build: liberd.a needs the sanitizer runtime, the pkg-config program is not linked");
     } else if (!newer.out.empty()) {

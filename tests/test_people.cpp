@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/export.h"
-#include "algorithms/methods.h"
-#include "algorithms/model_io.h"
-#include "algorithms/model_topology.h"
-#include "algorithms/render.h"
+#include "algorithms/output/export.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/model_topology.h"
+#include "algorithms/output/render.h"
 #include "cli/progress.h"
 #include "cli/stats_json.h"
 #include "tests/people_util.h"

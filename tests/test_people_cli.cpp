@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/model_io.h"
+#include "algorithms/model/model_io.h"
 #include "cli/image_io.h"
 #include "tests/people_util.h"
 

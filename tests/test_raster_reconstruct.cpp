@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/model_io.h"
-#include "algorithms/reconstruct.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/reconstruct.h"
 #include "kernel/predicates.h"
 #include "tests/test_raster_util.h"
 

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "algorithms/model.h"
+#include "algorithms/model/model.h"
 #include "kernel/predicates.h"
 
 namespace erd_test {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "algorithms/model.h"
+#include "algorithms/model/model.h"
 #include "kernel/predicates.h"
 
 namespace erd_test {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/methods.h"
+#include "algorithms/methods/methods.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 

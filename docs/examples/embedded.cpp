@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "algorithms/erd.h"
+#include "api/erd.h"
 
 int main() {
     const int w = 128, h = 96;

@@ -1,0 +1,526 @@
+#include "algorithms/imaging/canny.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "algorithms/imaging/edge_linking.h"
+#include "algorithms/imaging/gradient_rows.h"
+#include "algorithms/imaging/point_rings.h"
+#include "algorithms/imaging/thinning.h"
+
+namespace erd {
+
+using namespace edge_flags;
+using namespace canny_detail;
+
+namespace {
+
+// Monotone bins from the bit pattern of a non-negative float (sign, exponent and 6 mantissa bits:
+// 32768 bins, each 1/64 of an octave wide), so a histogram needs no prior pass for the maximum.
+// Narrow bins make the streaming pass's bound on tau_low tight (within 1.1%): on bull at beta
+// 0.055 it ends with 0.53M points kept for 0.52M strong ones.
+constexpr int kBinShift = 17;
+inline std::uint32_t float_bin(float v) {
+    std::uint32_t u;
+    std::memcpy(&u, &v, sizeof u);
+    return u >> kBinShift;
+}
+constexpr std::uint32_t kFloatBins = 1u << (32 - kBinShift);
+
+// The smallest float in bin b.
+inline float bin_floor(std::uint32_t b) {
+    const std::uint32_t u = b << kBinShift;
+    float v;
+    std::memcpy(&v, &u, sizeof v);
+    return v;
+}
+
+// The bin holding the k-th largest of the values counted in hist; *above receives the number of
+// values in higher bins.
+std::uint32_t kth_bin(const std::vector<std::size_t>& hist, std::size_t k, std::size_t* above) {
+    *above = 0;
+    std::uint32_t bin = kFloatBins - 1;
+    for (; bin > 0; --bin) {
+        if (*above + hist[bin] >= k) break;
+        *above += hist[bin];
+    }
+    return bin;
+}
+
+// The rank (k - above)-th largest of in_bin (the values of the bin kth_bin chose); *at_or_above
+// receives the number of values >= the result.
+float select_in_bin(std::vector<float>* in_bin, std::size_t k, std::size_t above, std::size_t* at_or_above) {
+    if (in_bin->empty()) { *at_or_above = above; return 0.0f; }
+    const std::size_t r = std::min(k - above, in_bin->size()) - 1;  // rank from the top inside the bin
+    std::nth_element(in_bin->begin(), in_bin->begin() + std::ptrdiff_t(r), in_bin->end(), std::greater<float>());
+    const float q = (*in_bin)[r];
+    std::size_t n = above;
+    for (float v : *in_bin) n += v >= q;
+    *at_or_above = n;
+    return q;
+}
+
+
+// Points of the half-pixel grid in a plane with a one-point frame: index (Y + 1) * stride + X + 1.
+struct Plane {
+    int w = 0, h = 0, stride = 0;
+    Plane() = default;
+    Plane(int width, int height) : w(width), h(height), stride(round8(width + 2) + 8) {}
+    std::size_t cells() const { return std::size_t(stride) * std::size_t(h + 2); }
+    std::ptrdiff_t at(int X, int Y) const { return std::ptrdiff_t(Y + 1) * stride + X + 1; }
+};
+
+// Step 3 at point X of row `mid` of the magnitude plane (rows up and down are its neighbours, all
+// three with the replicated frame column on either side) with gradient (ux, uy): g is compared with
+// g linearly interpolated where the gradient line crosses the 3x3 ring, ahead and behind. Returns
+// kCandidate and kSecondary (a maximum in any of the four directions, step 5).
+inline std::uint8_t suppress(const float* up, const float* mid, const float* down, int X, float ux, float uy) {
+    const float m = mid[X];
+    const float aux = std::fabs(ux), auy = std::fabs(uy);
+    const int sx = ux > 0 ? 1 : -1;
+    const float* fwd = uy > 0 ? down : up;  // the row on the side uy points to (uy = 0: up)
+    const float* bwd = uy > 0 ? up : down;
+    float ahead, behind;
+    if (aux >= auy) {
+        const float w = auy / aux;
+        ahead = (1.0f - w) * mid[X + sx] + w * fwd[X + sx];
+        behind = (1.0f - w) * mid[X - sx] + w * bwd[X - sx];
+    } else {
+        const float w = aux / auy;
+        ahead = (1.0f - w) * fwd[X] + w * fwd[X + sx];
+        behind = (1.0f - w) * bwd[X] + w * bwd[X - sx];
+    }
+    std::uint8_t fl = (m > ahead && m >= behind) ? kCandidate : kNone;
+    if ((m > mid[X - 1] && m > mid[X + 1]) || (m > up[X] && m > down[X]) || (m > up[X - 1] && m > down[X + 1]) ||
+        (m > up[X + 1] && m > down[X - 1]))
+        fl |= kSecondary;
+    return fl;
+}
+
+// How many of p[0..8) are >= low: a count rather than a flag, so that -O2 vectorises it.
+inline int count_at_least8(const float* p, float low) {
+    int n = 0;
+    for (int j = 0; j < 8; ++j) n += p[j] >= low;
+    return n;
+}
+
+// Calls fn(k) for each k in [0, n) with v[k] >= low, in increasing order, skipping blocks of eight
+// below low with one vectorised test (most of a magnitude row is below every bound).
+template <class Fn>
+void for_each_at_least(const float* v, std::size_t n, float low, Fn fn) {
+    std::size_t k = 0;
+    for (; k + 8 <= n; k += 8)
+        if (count_at_least8(v + k, low))
+            for (std::size_t j = k; j < k + 8; ++j)
+                if (v[j] >= low) fn(j);
+    for (; k < n; ++k)
+        if (v[k] >= low) fn(k);
+}
+
+// How many of v[0..n) are >= low.
+inline std::size_t count_at_least(const float* v, std::size_t n, float low) {
+    std::size_t c = 0, k = 0;
+    for (; k + 8 <= n; k += 8) c += std::size_t(count_at_least8(v + k, low));
+    for (; k < n; ++k) c += v[k] >= low;
+    return c;
+}
+
+// Grows a to cap elements keeping the first n (one array at a time, so the peak of a growing
+// store is its size plus one array's new copy).
+template <class T>
+void regrow(std::unique_ptr<T[]>* a, std::size_t n, std::size_t cap) {
+    std::unique_ptr<T[]> b(new T[cap]);
+    std::copy(a->get(), a->get() + n, b.get());
+    *a = std::move(b);
+}
+
+// The streaming pass's guess of its final bound (EdgeDetector::Pass::sampled_bound): runs of
+// kSampleRun rows of the half-pixel grid, one every kSampleStride rows, are sampled (runs
+// rather than single rows: a run's rows share their smoothed neighbours), and the guess is
+// kGuessMargin times the sample's estimate. The estimate was within 0.97-1.09 of the final
+// bound on bull, lena, peppers, cameraman, house, phantom and ct_head at beta 0.01, 0.055 and
+// 0.2, 1.15 at worst (ct_head, 0.2); a guess above the final bound costs a second pass.
+constexpr int kSampleStride = 32;
+constexpr std::size_t kSampleRun = 2;
+constexpr double kGuessMargin = 0.8;
+
+Status check_params(const CannyParams& params) {
+    if (!(params.beta > 0.0 && params.beta <= 1.0)) return Status::bad_input("edge detection: beta must lie in (0, 1]");
+    if (!(params.r >= 0.0 && params.r <= 1.0)) return Status::bad_input("edge detection: r must lie in [0, 1]");
+    if (params.smoothing_order < 1 || params.smoothing_order % 2 == 0 || params.smoothing_order > 51)
+        return Status::bad_input("edge detection: smoothing order must be odd, 1 to 51");
+    if (params.max_link < 0 || params.max_link > 250) return Status::bad_input("edge detection: max_link must lie in [0, 250]");
+    return Status::success();
+}
+
+}  // namespace
+
+// Steps 1 and 3 for one image: for the points above a lower bound of tau_low, their magnitude and
+// their non-maxima flags, and the histogram of the large magnitudes. Flags depend on the gradient
+// alone, not on the thresholds, so steps 2 to 6 read the pass without changing it and it serves
+// several detections.
+struct EdgeDetector::Pass {
+    Plane pl;  // index space of the points (never allocated)
+    int smoothing_order = 0;
+    Border border = Border::replicate;
+    // While the pass runs: the kept points in row-major order (plane index, g, kCandidate |
+    // kSecondary) in raw arrays, because it makes room for a row before it appends to them.
+    std::unique_ptr<std::uint32_t[]> at;
+    std::unique_ptr<float[]> mag;
+    std::unique_ptr<std::uint8_t[]> flag;
+    std::size_t n_kept = 0, capacity = 0;
+    // After it: the points at or above the final bound, linked once for every detection.
+    SortedPoints kept;
+    std::vector<float> kept_mag;
+    std::vector<std::uint8_t> kept_flag;
+    std::vector<std::size_t> hist;          // exact for the bins >= floor_bin
+    std::uint32_t floor_bin = 0;            // bin of the k-th largest (0 until k values)
+    std::size_t at_or_above_floor = 0;      // values in the bins >= floor_bin
+    float low = 0.0f;                       // the last (largest) bound points were kept above
+
+    // The streaming pass. The k-th largest magnitude so far, known to its bin, only grows: so
+    // r times that bin's floor is a lower bound of tau_low, and only points at or above it are
+    // suppressed and kept; values in bins below the bound's bin cannot decide the quantile, so
+    // only the others are counted (they are all >= the bound). Row y is counted and suppressed
+    // in one scan once row y + 1 exists, so three rows of g are all the plane there is. The
+    // bound then lags one row behind the rows made (a lower bound is still a bound); the final
+    // bin, the counts at and above it and the points kept at the end do not depend on when the
+    // bound rose.
+    // In row order the bound stays low while the pass crosses flat rows (lena: 340K of 539K
+    // suppressions were for points below the final bound), so the pass starts from a guess of
+    // the final bound made from a sample of the rows (sampled_bound). Every value it skips is below
+    // the guess; if the final bound is at or above the guess, the skipped values could neither
+    // be kept nor be counted in a bin at or above the final one, so the result is the one
+    // without a guess (the final bin can only be reached from below: it is the k-th largest's
+    // when every value of the bins above was counted). Otherwise the pass runs again without.
+    template <class Sample>
+    void run(int width, int height, Sample sample, const CannyParams& params, std::size_t k_high) {
+        pl = Plane(2 * width - 1, 2 * height - 1);
+        smoothing_order = params.smoothing_order;
+        border = params.border;
+        std::size_t expected = 0;  // points the guess is expected to keep
+        const float guess = sampled_bound(width, sample, params, k_high, &expected);
+        // Room for them up front (a quarter more): the store then rarely fills, and a full one
+        // is compacted and copied (bull: make_room 16M instructions while it grew from empty).
+        if (expected > 0) {
+            capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
+            regrow(&at, 0, capacity);
+            regrow(&mag, 0, capacity);
+            regrow(&flag, 0, capacity);
+        }
+        if (!stream(width, sample, params, k_high, guess)) stream(width, sample, params, k_high, 0.0f);
+        // Only the points at or above the final bound can be strong in a detection this pass
+        // covers; with narrow bins they are hardly more than the first detection's strong points.
+        const std::size_t n = count_at_least(mag.get(), n_kept, low);
+        kept = SortedPoints();
+        kept.stride = pl.stride;
+        kept.at.reserve(n);
+        kept_mag.reserve(n);
+        kept_flag.reserve(n);
+        for_each_at_least(mag.get(), n_kept, low, [&](std::size_t k) {
+            kept.at.push_back(at[k]);
+            kept_mag.push_back(mag[k]);
+            kept_flag.push_back(flag[k]);
+        });
+        at.reset();
+        mag.reset();
+        flag.reset();
+        n_kept = capacity = 0;
+        kept.link_rows();
+    }
+
+    // One streaming pass from the bound `guess` (0: none); false when the final bound is below
+    // the guess (the result is then incomplete). On success `low` is the final bound.
+    template <class Sample>
+    bool stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess) {
+        const int W = pl.w, H = pl.h;
+        const std::size_t rs = std::size_t(W) + 2;  // a row of g with its replicated frame columns
+        std::vector<float> rows(3 * rs);
+        auto row = [&](int Y) { return rows.data() + std::size_t(Y % 3) * rs + 1; };
+        hist.assign(kFloatBins, 0);
+        floor_bin = 0;
+        at_or_above_floor = 0;
+        n_kept = 0;
+        low = guess;
+        const float* prev_gx = nullptr;  // components of the row before the last one emitted
+        const float* prev_gy = nullptr;
+        // Counts row y's magnitudes at or above the bound, suppresses and keeps its points, then
+        // raises the bound.
+        auto finish_row = [&](int y, const float* gx, const float* gy) {
+            if (capacity < n_kept + std::size_t(W)) make_room(std::size_t(W));
+            const float* up = row(y > 0 ? y - 1 : 0);
+            const float* mid = row(y);
+            const float* down = row(y + 1 < H ? y + 1 : y);
+            const std::uint32_t base = std::uint32_t(pl.at(0, y));
+            std::uint32_t* a = at.get();
+            float* g = mag.get();
+            std::uint8_t* f = flag.get();
+            std::size_t n = n_kept, counted = 0;
+            for_each_at_least(mid, std::size_t(W), low, [&](std::size_t X) {
+                const float v = mid[X];
+                const std::uint32_t b = float_bin(v);
+                if (b >= floor_bin) {
+                    ++hist[b];
+                    ++counted;
+                }
+                if (v <= 0.0f) return;
+                a[n] = base + std::uint32_t(X);
+                g[n] = v;
+                f[n] = suppress(up, mid, down, int(X), gx[X], gy[X]);
+                ++n;
+            });
+            n_kept = n;
+            at_or_above_floor += counted;
+            while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
+            low = std::max(guess, float(params.r * double(bin_floor(floor_bin))));
+        };
+        gradient_rows(
+            W, H, 0, H, binomial_taps(params.smoothing_order), params.border,
+            [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); }, row,
+            [&](int y, const float* ax, const float* ay) {
+                float* r = row(y);
+                r[-1] = r[0];
+                r[W] = r[W - 1];
+                if (y > 0) finish_row(y - 1, prev_gx, prev_gy);
+                if (y == H - 1) finish_row(y, ax, ay);
+                prev_gx = ax;
+                prev_gy = ay;
+            });
+        low = float(params.r * double(bin_floor(floor_bin)));
+        return !(low < guess);
+    }
+
+    // A guess of the streaming pass's final bound: r times the magnitude of the same rank among
+    // the sampled rows as tau_high has among all, less a margin (kGuessMargin). A sampled run
+    // costs about twice as much a row as the stream (its smoothed neighbours are made for it
+    // alone): 1.6% of the rows, ~4M instructions on lena. 0 (no guess) when the sample is too
+    // small to rank. *expected: the sample's count at or above the guess, scaled to the grid.
+    template <class Sample>
+    float sampled_bound(int width, Sample sample, const CannyParams& params, std::size_t k_high,
+                        std::size_t* expected) const {
+        *expected = 0;
+        const int W = pl.w, H = pl.h;
+        const std::size_t blocks = std::size_t(H / kSampleStride), n = blocks * kSampleRun * std::size_t(W);
+        const double rank = double(k_high) * double(n) / (double(W) * double(H));
+        if (blocks < 8 || rank < 64.0) return 0.0f;
+        std::vector<float> g(n);
+        const std::vector<double> taps = binomial_taps(params.smoothing_order);
+        for (std::size_t i = 0; i < blocks; ++i) {
+            const int y = int(i) * kSampleStride + kSampleStride / 2;
+            gradient_rows(
+                W, H, y, y + int(kSampleRun), taps, params.border,
+                [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); },
+                [&](int Y) { return g.data() + (i * kSampleRun + std::size_t(Y - y)) * std::size_t(W); },
+                [](int, const float*, const float*) {});
+        }
+        const std::size_t k = std::size_t(rank) - 1;  // the rank-th largest
+        std::nth_element(g.begin(), g.begin() + std::ptrdiff_t(k), g.end(), std::greater<float>());
+        const float guess = float(kGuessMargin * params.r * double(g[k]));
+        *expected = std::size_t(double(count_at_least(g.data(), n, guess)) * (double(W) * double(H)) / double(n));
+        return guess;
+    }
+
+    // Room for `more` points: first drop the points the bound has risen past (they can never be
+    // strong), then grow if still more than half full.
+    void make_room(std::size_t more) {
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < n_kept; ++k)
+            if (mag[k] >= low) {
+                at[n] = at[k];
+                mag[n] = mag[k];
+                flag[n] = flag[k];
+                ++n;
+            }
+        n_kept = n;
+        if (capacity < 2 * (n + more)) {
+            capacity = 4 * (n + more);
+            regrow(&at, n, capacity);
+            regrow(&mag, n, capacity);
+            regrow(&flag, n, capacity);
+        }
+    }
+
+    // Steps 2 and 4 to 6. Returns false, having written nothing, when the pass does not cover the
+    // parameters: a different filter, too few values counted for this beta, or a tau_low below
+    // the bound. release = the pass is not used again: its arrays go as soon as they are read.
+    bool track(const CannyParams& params, bool release, SortedPoints* edges, CannyStats* stats) {
+        if (params.smoothing_order != smoothing_order || params.border != border) return false;
+        const std::size_t M = std::size_t(pl.w) * std::size_t(pl.h);
+        const std::size_t k_high = k_of(params.beta, M);
+        if (at_or_above_floor < k_high) return false;  // the k-th largest is below the counted bins
+
+        // 2. Thresholds: the bin of the k-th largest, then selection inside it. Every value in that
+        // bin was at or above the bound of its time, so the kept points hold them all; bin 0 aside,
+        // where only g = 0 is missing (never kept) and hist counts all of the bin.
+        std::size_t above = 0, above_high = 0;
+        const std::uint32_t bin = kth_bin(hist, k_high, &above);
+        std::vector<float> in_bin;
+        in_bin.reserve(hist[bin]);
+        const std::size_t n = kept.size();
+        const float* g = kept_mag.data();
+        for_each_at_least(g, n, bin_floor(bin), [&](std::size_t k) {
+            if (float_bin(g[k]) == bin) in_bin.push_back(g[k]);
+        });
+        if (bin == 0) in_bin.resize(hist[0], 0.0f);
+        const double tau_high = select_in_bin(&in_bin, k_high, above, &above_high);
+        const double tau_low = params.r * tau_high;
+        std::vector<float>().swap(in_bin);
+        const float th = float(tau_high), tl = float(tau_low);
+        if (tl < low) return false;  // strong points may be missing
+
+        // The kept points with g >= tau_low are the strong points; the others lose their flags.
+        StrongPoints sp;
+        sp.points = &kept;
+        sp.mag = g;
+        sp.flag.assign(n, 0);
+        const std::uint8_t used = params.modified ? std::uint8_t(kCandidate | kSecondary) : std::uint8_t(kCandidate);
+        for_each_at_least(g, n, tl, [&](std::size_t k) { sp.flag[k] = std::uint8_t(kept_flag[k] & used); });
+        for_each_at_least(g, n, th, [&](std::size_t k) {
+            if (sp.flag[k] & kCandidate) sp.seeds.push_back(std::uint32_t(k));
+        });
+
+        // 4, 5.
+        const bool join = params.modified && params.max_link > 0;
+        const std::size_t main_points = hysteresis(&sp, join);
+        const std::size_t added = join ? join_components(&sp, params.max_link, tl) : 0;
+
+        // 6. The main points, in row-major order, thinned as a sparse set.
+        SortedPoints mains;
+        mains.stride = pl.stride;
+        mains.at.reserve(sp.mains.size());
+        for (std::size_t k = 0; k < n; ++k)
+            if (sp.flag[k] & kMain) mains.at.push_back(kept.at[k]);
+        sp = StrongPoints();
+        if (release) clear();
+        std::vector<std::uint8_t> alive(mains.size(), 1);
+        if (params.thin) {
+            mains.link_rows();
+            thin_points(mains, &alive);
+        }
+        *edges = SortedPoints();
+        edges->stride = pl.stride;
+        for (std::size_t k = 0; k < mains.size(); ++k)
+            if (alive[k]) edges->at.push_back(mains.at[k]);
+        const std::size_t edge_points = edges->size();
+        if (stats) {
+            stats->tau_high = tau_high;
+            stats->tau_low = tau_low;
+            stats->above_high = above_high;
+            stats->main_points = main_points;
+            stats->added_points = added;
+            stats->edge_points = edge_points;
+        }
+        return true;
+    }
+
+    void clear() {
+        kept.clear();
+        std::vector<float>().swap(kept_mag);
+        std::vector<std::uint8_t>().swap(kept_flag);
+    }
+
+    // k = round(beta * M), at least 1 (step 2).
+    static std::size_t k_of(double beta, std::size_t M) {
+        const double kd = std::nearbyint(beta * double(M));
+        return kd < 1.0 ? 1 : (kd > double(M) ? M : std::size_t(kd));
+    }
+};
+
+namespace {
+
+template <class Sample>
+Status detect_once(int width, int height, Sample sample, const CannyParams& params, Grid<std::uint8_t>* edges,
+                   CannyStats* stats) {
+    if (width <= 0 || height <= 0) return Status::bad_input("edge detection: empty image");
+    Status st = check_params(params);
+    if (!st) return st;
+    EdgeDetector::Pass pass;
+    pass.run(width, height, sample, params, EdgeDetector::Pass::k_of(params.beta, std::size_t(2 * width - 1) * std::size_t(2 * height - 1)));
+    SortedPoints points;
+    pass.track(params, true, &points, stats);  // a pass covers the parameters it was made with
+    *edges = edge_map(points, 2 * width - 1, 2 * height - 1);
+    return Status::success();
+}
+
+}  // namespace
+
+EdgeDetector::EdgeDetector(const Image& im) : im_(im) {}
+EdgeDetector::~EdgeDetector() = default;
+
+Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, CannyStats* stats) {
+    if (im_.width <= 0 || im_.height <= 0) return Status::bad_input("edge detection: empty image");
+    Status st = check_params(params);
+    if (!st) return st;
+    if (pass_ && pass_->track(params, false, edges, stats)) return Status::success();
+    pass_.reset();  // the old pass goes before the new one is made
+    pass_.reset(new Pass);
+    const std::size_t M = std::size_t(2 * im_.width - 1) * std::size_t(2 * im_.height - 1);
+    pass_->run(im_.width, im_.height, [&](int x, int y) { return im_.at(x, y); }, params, Pass::k_of(params.beta, M));
+    pass_->track(params, false, edges, stats);
+    return Status::success();
+}
+
+Status EdgeDetector::detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
+    SortedPoints points;
+    Status st = detect(params, &points, stats);
+    if (st) *edges = edge_map(points, 2 * im_.width - 1, 2 * im_.height - 1);
+    return st;
+}
+
+Grid<std::uint8_t> edge_map(const SortedPoints& points, int width, int height) {
+    Grid<std::uint8_t> map(width, height, 0);
+    const std::uint32_t s = std::uint32_t(points.stride);
+    for (const std::uint32_t i : points.at) map(int(i % s) - 1, int(i / s) - 1) = 1;
+    return map;
+}
+
+void EdgeDetector::release() { pass_.reset(); }
+
+void canny_gradient(const Grid<double>& f, int smoothing_order, Border border, Grid<float>* gx, Grid<float>* gy) {
+    std::vector<double> b = binomial_taps(smoothing_order);
+    if (b.empty()) b = {1.0};
+    if (f.width <= 0 || f.height <= 0) { *gx = Grid<float>(); *gy = Grid<float>(); return; }
+    *gx = Grid<float>(f.width, f.height);
+    *gy = Grid<float>(f.width, f.height);
+    std::vector<float> mag(std::size_t(f.width));
+    gradient_rows(
+        f.width, f.height, 0, f.height, b, border,
+        [&](int y, float* r) {
+            for (int x = 0; x < f.width; ++x) r[x] = float(f(x, y));
+        },
+        [&](int) { return mag.data(); },
+        [&](int y, const float* ax, const float* ay) {
+            std::copy(ax, ax + f.width, &(*gx)(0, y));
+            std::copy(ay, ay + f.width, &(*gy)(0, y));
+        });
+}
+
+double beta_quantile(const float* values, std::size_t n, double beta) {
+    if (n == 0) return 0.0;
+    const double kd = std::nearbyint(beta * double(n));
+    const std::size_t k = kd < 1.0 ? 1 : (kd > double(n) ? n : std::size_t(kd));
+    std::vector<std::size_t> hist(kFloatBins, 0);
+    for (std::size_t i = 0; i < n; ++i) ++hist[float_bin(values[i])];
+    std::size_t above = 0, count = 0;
+    const std::uint32_t bin = kth_bin(hist, k, &above);
+    std::vector<float> in_bin;
+    for (std::size_t i = 0; i < n; ++i)
+        if (float_bin(values[i]) == bin) in_bin.push_back(values[i]);
+    return double(select_in_bin(&in_bin, k, above, &count));
+}
+
+Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
+    return detect_once(im.width, im.height, [&](int x, int y) { return im.at(x, y); }, params, edges, stats);
+}
+
+Status detect_edges(const Grid<double>& im, const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {
+    return detect_once(im.width, im.height, [&](int x, int y) { return im(x, y); }, params, edges, stats);
+}
+
+}  // namespace erd

@@ -1,0 +1,141 @@
+#include "algorithms/imaging/edge_linking.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace erd {
+
+using namespace edge_flags;
+
+std::size_t hysteresis(StrongPoints* sp, bool labels) {
+    if (labels) sp->label.assign(sp->size(), 0);
+    std::vector<std::uint32_t> stack;
+    std::uint32_t component = 0;
+    for (const std::uint32_t s : sp->seeds) {
+        if (sp->flag[s] & kMain) continue;
+        sp->flag[s] |= kMain;
+        stack.push_back(s);
+        ++component;
+        while (!stack.empty()) {
+            const std::uint32_t i = stack.back();
+            stack.pop_back();
+            sp->mains.push_back(i);
+            if (labels) sp->label[i] = component;
+            std::uint32_t nb[8];
+            sp->ring(i, nb);
+            for (const std::uint32_t j : nb) {
+                if (j != kNoPoint && (sp->flag[j] & (kCandidate | kMain)) == kCandidate) {
+                    sp->flag[j] |= kMain;
+                    stack.push_back(j);
+                }
+            }
+        }
+    }
+    return sp->mains.size();
+}
+
+// Step 5, Ding-Goshtasby: join different main components through short secondary paths. A
+// multi-source breadth-first search from every main point over secondary-only points labels each
+// reached point with its nearest main component; where two labels meet, the two parent chains
+// back to their sources are the shortest secondary link between those components. Returns the
+// number of points added. The search starts from hysteresis's mains in their order (component by
+// component, each in the order grown), which is the order a labelling pass over them would find.
+std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
+    const std::size_t n = sp->size();
+    std::vector<std::uint8_t>& flag = sp->flag;
+    std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
+    // dist and from are read only at labelled points: set for the sources below, and for a
+    // reached point when it is reached, so neither is initialised.
+    std::unique_ptr<std::uint8_t[]> dist(new std::uint8_t[n]);
+    std::unique_ptr<std::uint32_t[]> from(new std::uint32_t[n]);
+    std::vector<std::uint32_t> queue(sp->mains);
+    for (const std::uint32_t i : queue) {
+        dist[i] = 0;
+        from[i] = kNoPoint;
+    }
+    struct Meeting { std::uint64_t key; std::uint32_t p, q; };
+    std::vector<Meeting> meetings;
+    const std::uint8_t limit = std::uint8_t(max_link);
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const std::uint32_t i = queue[head];
+        const std::uint32_t li = label[i];
+        const std::uint8_t di = dist[i];
+        std::uint32_t nb[8];
+        sp->ring(i, nb);
+        for (const std::uint32_t j : nb) {
+            if (j == kNoPoint) continue;
+            const std::uint32_t lj = label[j];
+            if (lj == 0) {
+                if (di < limit && (flag[j] & (kSecondary | kMain)) == kSecondary) {
+                    label[j] = li;
+                    dist[j] = std::uint8_t(di + 1);
+                    from[j] = i;
+                    queue.push_back(j);
+                }
+            } else if (lj != li && std::uint32_t(di) + dist[j] <= limit) {
+                if (li < lj) meetings.push_back({(std::uint64_t(li) << 32) | lj, i, j});
+                else meetings.push_back({(std::uint64_t(lj) << 32) | li, j, i});
+            }
+        }
+    }
+    // One link per pair of components: the first found, i.e. (nearly) the shortest.
+    std::size_t added = 0;
+    std::stable_sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& c) { return a.key < c.key; });
+    for (std::size_t k = 0; k < meetings.size(); ++k) {
+        if (k > 0 && meetings[k].key == meetings[k - 1].key) continue;
+        for (std::uint32_t i : {meetings[k].p, meetings[k].q})
+            for (; i != kNoPoint && !(flag[i] & kMain); i = from[i]) {
+                flag[i] |= kMain;
+                sp->mains.push_back(i);
+                ++added;
+            }
+    }
+
+    // Where an edge runs into a stronger one (the stem of a T), the last points before the
+    // junction lie on the flank of the stronger edge and are maxima in no direction, so no
+    // secondary path exists. From each end of a main curve, climb the magnitude (strictly
+    // increasing, >= tau_low, at most max_link points) and keep the climb if it arrives next
+    // to a different main component. Only strong points can be climbed to: the climb starts at
+    // g >= tau_low and only rises.
+    std::vector<std::uint32_t> path;
+    for (const std::uint32_t end : queue) {
+        if (dist[end] != 0 || !(flag[end] & kMain)) continue;
+        int neighbours = 0;
+        std::uint32_t nb[8];
+        sp->ring(end, nb);
+        for (const std::uint32_t j : nb) neighbours += j != kNoPoint && (flag[j] & kMain);
+        if (neighbours != 1) continue;
+        const std::uint32_t own = label[end];
+        path.clear();
+        std::uint32_t cur = end;
+        bool joined = false;
+        for (int step = 0; step <= max_link && !joined; ++step) {
+            sp->ring(cur, nb);
+            for (const std::uint32_t j : nb)
+                if (j != kNoPoint && (flag[j] & kMain) && label[j] != own && label[j] != 0) joined = true;
+            if (joined || step == max_link) break;
+            std::uint32_t best = kNoPoint;
+            float bg = sp->mag[cur];
+            for (const std::uint32_t j : nb) {
+                if (j == kNoPoint || (flag[j] & kMain)) continue;
+                if (sp->mag[j] > bg && sp->mag[j] >= tl) { bg = sp->mag[j]; best = j; }
+            }
+            if (best == kNoPoint) break;
+            path.push_back(best);
+            cur = best;
+        }
+        if (!joined || path.empty()) continue;
+        for (const std::uint32_t i : path) {
+            flag[i] |= kMain;
+            label[i] = own;
+            sp->mains.push_back(i);
+            ++added;
+        }
+    }
+    return added;
+}
+
+}  // namespace erd

@@ -1,0 +1,95 @@
+#include "algorithms/imaging/polylines.h"
+
+#include <cstddef>
+
+#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/point_rings.h"
+#include "algorithms/imaging/set_points.h"
+
+namespace erd {
+
+std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
+    const int w = edges.width, h = edges.height;
+    if (w <= 0 || h <= 0) return {};
+    // The set points in row-major order (found by skipping zero bytes eight at a time) as
+    // indices of a plane with a one-point frame that is never allocated: per-point arrays only.
+    SortedPoints pts;
+    pts.stride = w + 2;
+    for_each_set(edges.data.data(), edges.data.size(), [&](std::size_t k) {
+        pts.at.push_back(std::uint32_t((k / std::size_t(w) + 1) * std::size_t(pts.stride) + k % std::size_t(w) + 1));
+    });
+    pts.link_rows();
+    return trace_polylines(pts);
+}
+
+std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
+    std::vector<Polyline> out;
+    const std::size_t n = pts.size();
+    auto point = [&](std::uint32_t i) {
+        const std::uint32_t s = std::uint32_t(pts.stride);
+        return LatticePoint{std::int32_t(pts.at[i] % s) - 1, std::int32_t(pts.at[i] / s) - 1};
+    };
+    // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
+    // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
+    // cluster of mutual "junctions" out of one junction. Directions E, SE, S, SW, W, NW, N, NE.
+    std::vector<std::uint8_t> links(n, 0), degree(n, 0), used(n, 0);  // used: one bit per direction
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::uint32_t nb[8];
+        pts.ring(i, nb);
+        unsigned mask = 0;
+        for (int d = 0; d < 8; ++d) {
+            if (nb[d] == kNoPoint) continue;
+            if ((d & 1) && (nb[(d + 7) & 7] != kNoPoint || nb[(d + 1) & 7] != kNoPoint)) continue;
+            mask |= 1u << d;
+        }
+        links[i] = std::uint8_t(mask);
+        int k = 0;
+        for (; mask; mask &= mask - 1) ++k;
+        degree[i] = std::uint8_t(k);
+    }
+    auto free_link = [&](std::uint32_t i) {
+        for (int d = 0; d < 8; ++d)
+            if ((links[i] & ~used[i]) & (1u << d)) return d;
+        return -1;
+    };
+    // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
+    // no free link left, or the start again.
+    auto run = [&](std::uint32_t start, int d) {
+        Polyline line{point(start)};
+        std::uint32_t cur = start;
+        for (;;) {
+            std::uint32_t nb[8];
+            pts.ring(cur, nb);
+            used[cur] |= std::uint8_t(1u << d);
+            cur = nb[d];
+            used[cur] |= std::uint8_t(1u << ((d + 4) & 7));
+            line.push_back(point(cur));
+            if (cur == start || degree[cur] != 2) break;
+            d = free_link(cur);
+            if (d < 0) break;
+        }
+        out.push_back(std::move(line));
+    };
+
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (degree[i] == 2) continue;
+        if (degree[i] == 0) { out.push_back(Polyline{point(i)}); continue; }
+        for (int d; (d = free_link(i)) >= 0;) run(i, d);
+    }
+    // What is left are closed curves made of degree-2 points only.
+    for (std::uint32_t i = 0; i < n; ++i)
+        for (int d; (d = free_link(i)) >= 0;) run(i, d);
+    return out;
+}
+
+Status edge_polylines(const Image& im, const EdgePolylineParams& params, Grid<std::uint8_t>* edges,
+                      std::vector<Polyline>* polylines, CannyStats* stats) {
+    if (params.epsilon < 0 || params.epsilon != params.epsilon)
+        return Status::bad_input("polylines: epsilon must be >= 0");
+    Status st = detect_edges(im, params.canny, edges, stats);
+    if (!st) return st;
+    *polylines = simplify_polylines(trace_polylines(*edges), params.epsilon, params.min_points);
+    return Status::success();
+}
+
+}  // namespace erd

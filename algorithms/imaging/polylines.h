@@ -1,0 +1,42 @@
+// Polylines from an edge map (thesis 3.4.1 step 1.2), and the whole step 1.1-1.3 chain.
+//
+// Coordinates are LatticePoints in doubled coordinates, which are exactly the indices of the
+// half-pixel grid of algorithms/canny.h: entry (X, Y) of the edge map is LatticePoint{X, Y}.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/model.h"
+#include "kernel/status.h"
+
+namespace erd {
+
+using Polyline = std::vector<LatticePoint>;
+
+// Traces the set points of a thinned edge map (nonzero = edge) into polylines. Links join
+// 8-neighbours, except a diagonal pair that also shares a set 4-neighbour (the corner of a
+// staircase or of a T), so one junction is one point, not a cluster of mutual junctions. Points
+// with 1 or >= 3 links are nodes: every polyline runs from a node to a node through points with
+// exactly 2 links, so polylines meet only at their ends (split at junctions and
+// self-intersections). A closed curve without nodes becomes one polyline whose last point repeats
+// its first; so does a run that returns to its start node (a loop on a junction). Isolated points
+// give one-point polylines. Deterministic: nodes in row-major order, links in a fixed order
+// (E, SE, S, SW, W, NW, N, NE), loops after all node runs. Each link is used by one polyline.
+std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges);
+// The same for edge points as EdgeDetector::detect gives them, after pts.link_rows().
+std::vector<Polyline> trace_polylines(const SortedPoints& pts);
+
+// Steps 1.1 to 1.3 in one call: detect edges, trace, simplify with Douglas-Peucker (epsilon in
+// half-pixel grid units, algorithms/douglas_peucker.h), keep polylines that had at least
+// min_points points before simplification.
+struct EdgePolylineParams {
+    CannyParams canny;
+    double epsilon = 1.0;  // half-pixel grid units (= doubled-coordinate units)
+    int min_points = 5;    // the thesis's l
+};
+Status edge_polylines(const Image& im, const EdgePolylineParams& params, Grid<std::uint8_t>* edges,
+                      std::vector<Polyline>* polylines, CannyStats* stats = nullptr);
+
+}  // namespace erd

@@ -1,0 +1,149 @@
+#include "algorithms/methods/erd_mesh.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/douglas_peucker.h"
+
+namespace erd {
+
+namespace {
+
+// Step 1.1-1.3 for the parameter selection, caching what did not change: a detection with the
+// same (beta, r) as the last one is skipped (the simple test and the first loop iteration often
+// coincide), and so is a count with the same (l, eps) on the same detection.
+class StepOneCounter : public ConstraintPointCounter {
+public:
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit)
+        : detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule), eps_unit_(eps_unit) {}
+
+    void detect(double beta, double r) override {
+        if (have_edges_ && beta == beta_ && r == r_) return;
+        beta_ = beta;
+        r_ = r;
+        have_edges_ = true;
+        have_count_ = false;
+        // The previous detection's points and polylines are dead now: free them before the
+        // detector allocates, so they do not add to the peak.
+        edges_.clear();
+        std::vector<Polyline>().swap(traced_);
+        std::vector<Polyline>().swap(kept_);
+        CannyParams cp;
+        cp.beta = beta;
+        cp.r = r;
+        // Points, not a map: only the chosen detection's map is ever made (edges()).
+        Status st = detector_.detect(cp, &edges_);  // reuses the gradient pass while it can
+        if (!st.ok() && status_.ok()) status_ = st;
+        edges_.link_rows();
+        traced_ = trace_polylines(edges_);
+    }
+
+    std::size_t count(int l, double eps) override {
+        if (have_count_ && l == l_ && eps == eps_) return count_;
+        l_ = l;
+        eps_ = eps;
+        have_count_ = true;
+        kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
+        count_ = distinct_points(kept_);
+        return count_;
+    }
+
+    const Status& status() const { return status_; }
+    void release_detector() { detector_.release(); }
+    Grid<std::uint8_t> edges() const { return edge_map(edges_, map_w_, map_h_); }
+    std::vector<Polyline>& kept() { return kept_; }
+
+private:
+    // On the image, not a double copy of it: the ERD methods make their double phi only after
+    // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
+    EdgeDetector detector_;
+    int map_w_, map_h_;  // the half-pixel grid
+    LengthRule rule_;
+    double eps_unit_;
+    Status status_;
+    bool have_edges_ = false, have_count_ = false;
+    double beta_ = 0, r_ = 0, eps_ = 0;
+    int l_ = 0;
+    std::size_t count_ = 0;
+    SortedPoints edges_;  // of the last detection
+    std::vector<Polyline> traced_, kept_;
+};
+
+std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
+
+}  // namespace
+
+std::size_t distinct_points(const std::vector<Polyline>& polylines) {
+    std::vector<std::uint64_t> keys;
+    std::size_t total = 0;
+    for (const Polyline& pl : polylines) total += pl.size();
+    keys.reserve(total);
+    for (const Polyline& pl : polylines)
+        for (LatticePoint p : pl) keys.push_back(key_of(p));
+    std::sort(keys.begin(), keys.end());
+    return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped) {
+    // Points first (the kernel orders a batch along a Hilbert curve), then the segments. Nobody
+    // reads the batch's change report, so the kernel skips that bookkeeping.
+    std::vector<LatticePoint> pts;
+    for (const Polyline& pl : polylines) pts.insert(pts.end(), pl.begin(), pl.end());
+    std::vector<VertInd> ids;
+    Status st = cdt->insert_points(pts, &ids, false);
+    if (!st.ok()) return st;
+    std::size_t k = 0;
+    for (const Polyline& pl : polylines) {
+        for (std::size_t i = 0; i + 1 < pl.size(); ++i) {
+            ConstraintReport rep;
+            st = cdt->insert_constraint(ids[k + i], ids[k + i + 1], &rep);
+            if (!st.ok()) return st;
+            *dropped += rep.dropped_crossing;
+        }
+        k += pl.size();
+    }
+    return Status::success();
+}
+
+Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
+    StepOneCounter counter(image, options.length_rule, options.eps_unit);
+    out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
+                                    counter);
+    counter.release_detector();
+    if (!counter.status().ok()) return counter.status();
+    out->edges = counter.edges();
+    out->polylines = std::move(counter.kept());
+    out->constraint_points = out->params.constrained_points;
+
+    // Only for tiny N: keep whole polylines, longest first, while the mesh stays within N.
+    const std::size_t budget = options.target > 4 ? options.target - 4 : 0;
+    if (out->constraint_points > budget) {
+        std::vector<std::size_t> order(out->polylines.size());
+        std::iota(order.begin(), order.end(), std::size_t(0));
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return out->polylines[a].size() > out->polylines[b].size();
+        });
+        std::vector<Polyline> kept;
+        for (std::size_t i : order) {
+            kept.push_back(out->polylines[i]);
+            if (distinct_points(kept) > budget) {
+                kept.pop_back();
+                ++out->dropped_polylines;
+            }
+        }
+        out->polylines = std::move(kept);
+        out->constraint_points = distinct_points(out->polylines);
+    }
+
+    Status st = cdt->reset(2 * image.width - 2, 2 * image.height - 2);
+    if (!st.ok()) return st;
+    cdt->reserve(options.target + 4);
+    out->dropped_crossing = 0;
+    st = insert_polylines(out->polylines, cdt, &out->dropped_crossing);
+    if (!st.ok()) return st;
+    out->n0 = cdt->vertex_count();
+    return Status::success();
+}
+
+}  // namespace erd

@@ -1,0 +1,57 @@
+// Step 1 of the ERD framework (thesis 3.4.1): the initial mesh of ERDED and ERDGPI.
+//
+//   1.1 half-pixel edges (modified Canny + thinning, algorithms/canny.h) with beta, r;
+//   1.2 polylines (algorithms/polylines.h);
+//   1.3 Douglas-Peucker with epsilon, polylines shorter than l dropped;
+//   1.4 P = polyline vertices + the four corners, E = polyline segments, constrained DT.
+// beta, r, l, epsilon come from the automatic selection (algorithms/erd_params.h) unless given.
+// Constraint segments the kernel refuses (they would cross an earlier one) are counted.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/methods/erd_params.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/imaging/polylines.h"
+#include "kernel/cdt.h"
+#include "kernel/status.h"
+
+namespace erd {
+
+struct InitialMeshOptions {
+    ErdMethod method = ErdMethod::erdgpi;
+    std::size_t target = 0;  // N, the final mesh size (it steers the parameter selection)
+    ErdParamRequest request; // flags the user gave
+    // When l is counted (docs/DECISIONS.md "ERD model and methods" has the numbers).
+    LengthRule length_rule = LengthRule::before_simplification;
+    // Doubled-coordinate units per unit of epsilon: 2 = epsilon in pixels, 1 = in half pixels
+    // (docs/DECISIONS.md "ERD model and methods").
+    double eps_unit = 2.0;
+};
+
+struct InitialMesh {
+    ErdParams params;                  // the parameters used
+    Grid<std::uint8_t> edges;          // half-pixel edge map of the chosen parameters, (2W-1)x(2H-1)
+    std::vector<Polyline> polylines;   // simplified polylines that made it into the mesh
+    std::size_t constraint_points = 0; // distinct polyline points (before the kernel)
+    std::size_t dropped_crossing = 0;  // constraint pieces refused by the kernel (crossings)
+    std::size_t dropped_polylines = 0; // polylines left out because the mesh would exceed N
+    std::size_t n0 = 0;                // vertices of the initial mesh (corners included)
+};
+
+// Builds the initial mesh of image into cdt (reset first).
+// The mesh never has more than max(4, N) vertices: if the polylines hold more points than that
+// (tiny N), whole polylines are left out, longest kept first.
+Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
+                          Cdt* cdt, InitialMesh* out);
+
+// Inserts P and E of the given polylines (plus the corners, which reset() creates) into cdt,
+// which must hold only the four corners. Adds the refused constraint pieces to *dropped.
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped);
+
+// Distinct points of a set of polylines (they share end points at junctions).
+std::size_t distinct_points(const std::vector<Polyline>& polylines);
+
+}  // namespace erd

@@ -1,0 +1,78 @@
+#include "algorithms/methods/erd_params.h"
+
+namespace erd {
+
+namespace {
+
+struct BetaRow {
+    double upto;  // density in percent, row covers [previous upto, upto)
+    double erded;
+    double erdgpi;
+};
+
+constexpr BetaRow kBetaRows[] = {
+    {0.20, 0.0095, 0.0110}, {0.35, 0.0095, 0.0115}, {0.75, 0.0118, 0.0118}, {1.20, 0.0280, 0.0280},
+    {2.50, 0.0550, 0.0550}, {3.50, 0.0830, 0.0830}, {5.00, 0.0950, 0.0950},
+};
+
+}  // namespace
+
+double erd_beta_table(ErdMethod method, double density_percent) {
+    for (const BetaRow& row : kBetaRows)
+        if (density_percent < row.upto) return method == ErdMethod::erded ? row.erded : row.erdgpi;
+    const BetaRow& last = kBetaRows[sizeof kBetaRows / sizeof kBetaRows[0] - 1];
+    return method == ErdMethod::erded ? last.erded : last.erdgpi;
+}
+
+ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t n,
+                            const ErdParamRequest& req, ConstraintPointCounter& counter) {
+    ErdParams p;
+    p.r = req.r >= 0 ? req.r : 0.4;
+    const double pixels = double(width) * double(height);
+    const double density = pixels > 0 ? double(n) / pixels : 0.0;  // a fraction, not percent
+
+    if (req.simple >= 0) {
+        p.simple = req.simple == 0;
+    } else {
+        // The test runs with the thesis's fixed choices (and the user's r): an image whose
+        // initial mesh has fewer than 0.001 |half-pixel grid| constrained points is simple.
+        counter.detect(0.055, p.r);
+        p.simple_test_points = counter.count(5, 1.0);
+        const double grid = double(2 * std::int64_t(width) - 1) * double(2 * std::int64_t(height) - 1);
+        p.simple = double(p.simple_test_points) < 0.001 * grid;
+    }
+
+    if (p.simple) {
+        p.beta = 0.03;
+        p.l = 1;
+        p.eps = 1;
+    } else {
+        p.l = 5;
+        p.eps = density > 0.01 ? 1.0 : 2.0;
+        p.beta = erd_beta_table(method, density * 100.0);
+    }
+    if (req.beta >= 0) p.beta = req.beta;
+    if (req.l >= 0) p.l = req.l;
+    if (req.eps >= 0) p.eps = req.eps;
+
+    const double low = 0.35 * double(n);
+    const double high = 0.7 * double(n);
+    for (;;) {
+        counter.detect(p.beta, p.r);
+        ++p.loop_iterations;
+        std::size_t c = counter.count(p.l, p.eps);
+        if (double(c) < low && req.eps < 0 && p.eps != 1.0) {
+            p.eps = 1.0;
+            c = counter.count(p.l, p.eps);
+        }
+        p.constrained_points = c;
+        if (double(c) <= high) break;
+        const bool can_move = req.beta < 0 || req.l < 0;
+        if (!can_move || p.loop_iterations >= kErdParamMaxIterations) break;
+        if (req.beta < 0) p.beta *= 0.75;
+        if (req.l < 0) p.l *= 2;
+    }
+    return p;
+}
+
+}  // namespace erd

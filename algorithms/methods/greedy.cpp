@@ -1,0 +1,341 @@
+#include "algorithms/methods/greedy.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "algorithms/methods/heap.h"
+#include "kernel/raster_rows.h"
+
+namespace erd {
+
+const char* to_string(GreedyStop s) {
+    switch (s) {
+        case GreedyStop::target: return "target";
+        case GreedyStop::max_error: return "max_error";
+        case GreedyStop::psnr: return "psnr";
+        case GreedyStop::exhausted: return "exhausted";
+    }
+    return "?";
+}
+
+namespace {
+
+// Per-face bookkeeping: the face's squared-error sum over the pixels it owns and its candidate.
+struct FaceState {
+    double sum = 0.0;
+    double cand_error = -1.0;  // < 0: no admissible candidate
+    LatticePoint cand;
+};
+
+std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
+
+// The inner loops of the face scan, one span at a time: the value v steps by dv per pixel. Each
+// adds the squared errors to *sum and moves the candidate (*best, *bx) to the first pixel of
+// larger absolute error that is not banned; returns true when it moved.
+//
+// Rounded: the approximation as imgsyn makes it (algorithms/reconstruct.cpp), so errors are
+// integers and sums exact. Two ways to get it (see scan_exact and Refiner::rescan):
+//   exact: v is p of kernel/raster.h RoundedPlane, whose truncation IS the rounded value;
+//   clamp: v is the real plane, clamped to [0, maxval] and rounded half up as to_sample does.
+enum class Rounding { exact, clamp };
+
+template <Rounding R>
+inline std::int32_t rounded(double v, double maxval) {
+    if (R == Rounding::exact) return std::int32_t(v);
+    // Clamp above in double (also keeps the conversion in range), round by truncation, clamp
+    // below in integers: any v < 0.5 gives 0 as to_sample does (truncation stands in for
+    // std::floor, a libm call without SSE4.1; they agree for v + 0.5 >= 0). Cheaper than a
+    // double clamp, which GCC compiles into a 5-instruction blend.
+    const double c = v < maxval ? v : maxval;
+    const std::int32_t r = std::int32_t(c + 0.5);
+    return r < 0 ? 0 : r;
+}
+
+// Calls visit(x, v) for x = x0..x1 with the running value v, v + dv, v + dv + dv, ... (the
+// serial sum reconstruction steps too). Four pixels per trip; v is updated in place (no copies of
+// it are live, which saves a register copy per pixel with two-operand SSE).
+template <class Visit>
+inline void step_span(std::int32_t x0, std::int32_t x1, double v, double dv, Visit& visit) {
+    std::int32_t x = x0;
+    for (; x + 3 <= x1; x += 4) {
+        visit(x, v);
+        v += dv;
+        visit(x + 1, v);
+        v += dv;
+        visit(x + 2, v);
+        v += dv;
+        visit(x + 3, v);
+        v += dv;
+    }
+    for (; x <= x1; ++x, v += dv) visit(x, v);
+}
+
+// Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
+template <Rounding R>
+inline bool scan_rounded(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
+                         double v, double dv, double maxval, std::int64_t* sum, std::int64_t* best_sq,
+                         std::int32_t* bx) {
+    std::uint64_t acc = 0;
+    std::int64_t b = *best_sq;  // the candidate is compared by squared error: no abs
+    bool moved = false;
+    auto visit = [&](std::int32_t x, double vx) {
+        const std::uint32_t e = std::uint32_t(std::int32_t(samples[x]) - rounded<R>(vx, maxval));
+        const std::uint32_t e2 = e * e;
+        acc += e2;
+        if (std::int64_t(e2) > b && !banned[x]) {
+            b = e2;
+            *bx = x;
+            moved = true;
+        }
+    };
+    step_span(x0, x1, v, dv, visit);
+    *sum += std::int64_t(acc);
+    *best_sq = b;
+    return moved;
+}
+
+// Exact rounding of row j, columns x0..x1: p stepped from an exact start value over each piece
+// of at most plane.run pixels (kernel/raster.h has the error bound), truncated, no clamp (the
+// rounded plane of a face stays in [0, maxval] on the pixels it owns).
+inline bool scan_exact(const std::uint16_t* samples, const std::uint8_t* banned, std::int32_t j, std::int32_t x0,
+                       std::int32_t x1, const RoundedPlane& plane, std::int64_t* sum, std::int64_t* best_sq,
+                       std::int32_t* bx) {
+    bool moved = false;
+    plane.pieces(x0, x1, j, [&](std::int32_t first, std::int32_t last, double p) {
+        moved |= scan_rounded<Rounding::exact>(samples, banned, first, last, p, plane.dp, 0.0, sum, best_sq, bx);
+    });
+    return moved;
+}
+
+// Real-valued: errors against the plane itself. The candidate test |e| > best is screened by
+// e^2 >= best^2 (*best2 holds the rounded square of *best, or -1 while there is no candidate): the
+// rounded square is monotone in |e|, so every pixel that passes the exact test passes the screen,
+// and the screen costs nothing because e^2 is needed for the sum anyway. The sum is accumulated
+// pixel by pixel in scan order, as before, so it is the same double.
+inline bool scan_real(const std::uint16_t* samples, const double* as_double, const std::uint8_t* banned,
+                      std::int32_t x0, std::int32_t x1, double v, double dv, double* sum, double* best,
+                      double* best2, std::int32_t* bx) {
+    double acc = 0.0, b = *best, b2 = *best2;
+    bool moved = false;
+    auto visit = [&](std::int32_t x, double vx) {
+        const double e = as_double[samples[x]] - vx;
+        const double e2 = e * e;
+        acc += e2;
+        if (e2 >= b2 && std::fabs(e) > b && !banned[x]) {
+            b = std::fabs(e);
+            b2 = e2;
+            *bx = x;
+            moved = true;
+        }
+    };
+    step_span(x0, x1, v, dv, visit);
+    *sum += acc;
+    *best = b;
+    *best2 = b2;
+    return moved;
+}
+
+class Refiner {
+public:
+    Refiner(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options)
+        : cdt_(cdt), image_(image), model_(model), options_(options),
+          banned_(std::size_t(image.width) * std::size_t(image.height), 0),
+          domain_{cdt.max_x(), cdt.max_y()} {
+        peak_ = std::pow(2.0, image.bits()) - 1.0;
+        if (!options.round_values)
+            for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
+        track_max_ = options.max_error >= 0.0;
+        // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
+        std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
+        by_sum_.reserve(faces);
+        if (track_max_) by_max_.reserve(faces);
+        faces_.reserve(faces);
+        stamp_.reserve(faces);
+    }
+
+    Status run(GreedyStats* stats) {
+        for (LatticePoint p : cdt_.points()) ban(p);
+        grow();
+        for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) rescan(f);
+
+        GreedyStop stop;
+        std::vector<FaceInd> dirty;
+        const std::size_t start = cdt_.vertex_count();
+        const std::size_t todo = options_.target_vertices > start ? options_.target_vertices - start : 0;
+        const std::size_t report_every = std::max<std::size_t>(1, todo / 100);
+        for (;;) {
+            if (options_.progress && stats->insertions % report_every == 0)
+                options_.progress("greedy insertion", todo ? double(stats->insertions) / double(todo) : 1.0);
+            if (cdt_.vertex_count() >= options_.target_vertices) { stop = GreedyStop::target; break; }
+            if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
+            if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }
+            if (by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
+
+            const FaceInd f = by_sum_.top();
+            const LatticePoint p = faces_[f].cand;
+            if (!model_.admissible(cdt_, p)) {
+                ban(p);
+                ++stats->banned;
+                rescan(f);
+                continue;
+            }
+            const std::size_t before = cdt_.vertex_count();
+            VertInd v = noVertex;
+            Status st = cdt_.insert_point(p, &v, f);
+            if (!st) return st;
+            ban(p);
+            if (cdt_.vertex_count() == before) {  // already a vertex: cannot happen with p banned
+                rescan(f);
+                continue;
+            }
+            ++stats->insertions;
+            dirty.clear();
+            st = model_.on_vertex_inserted(cdt_, v, &dirty);
+            if (!st) return st;
+            grow();
+            ++generation_;
+            for (FaceInd c : cdt_.changes().created) rescan(c);
+            for (FaceInd d : dirty)
+                if (d < faces_.size() && stamp_[d] != generation_) rescan(d);
+        }
+        stats->stop = stop;
+        stats->total_squared_error = total_;
+        stats->max_error = 0.0;
+        for (const FaceState& fs : faces_) stats->max_error = std::max(stats->max_error, fs.cand_error);
+        stats->psnr = psnr();
+        return Status::success();
+    }
+
+private:
+    void ban(LatticePoint p) {
+        if ((p.x & 1) || (p.y & 1)) return;  // half-pixel points are never candidates anyway
+        banned_[std::size_t(p.y / 2) * std::size_t(image_.width) + std::size_t(p.x / 2)] = 1;
+    }
+
+    void grow() {
+        if (faces_.size() < cdt_.face_count()) {
+            faces_.resize(cdt_.face_count());
+            stamp_.resize(cdt_.face_count(), 0);
+        }
+    }
+
+    double current_max() const { return by_max_.empty() ? 0.0 : by_max_.top_key(); }
+
+    double psnr() const {
+        if (total_ <= 0.0) return std::numeric_limits<double>::infinity();
+        double mse = total_ / (double(image_.width) * double(image_.height));
+        return 10.0 * std::log10(peak_ * peak_ / mse);
+    }
+
+    // Scans the pixels face f owns against the model's plane: new sum and candidate.
+    void rescan(FaceInd f) {
+        stamp_[f] = generation_;
+        FaceState& fs = faces_[f];
+        total_ -= fs.sum;
+        const LatticePoint p[3] = {cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
+                                   cdt_.point(cdt_.face_vertex(f, 2))};
+        // Rounded scans of a face with integer corner values in [0, maxval] round exactly (as
+        // reconstruction does for such a face); the others step the model's plane.
+        std::int64_t z[3];
+        RoundedPlane exact;
+        const bool is_exact = options_.round_values && model_.integer_values(cdt_, f, z) &&
+                              exact.set(p[0], z[0], p[1], z[1], p[2], z[2], image_.maxval);
+        const SpanPlane plane = is_exact ? SpanPlane() : model_.face_plane(cdt_, f);
+        const double dv = 2.0 * plane.gx;
+        // Row j of the pixel lattice, columns lo..hi: the row's samples and ban flags, and the
+        // plane at its first pixel (with_value; the exact scan does not need it).
+        // Pixel (i, j) is doubled point (2i, 2j): the same values as
+        // plane.at(Lattice::pixels(), i, j) and step_x (which divide by the lattice's scale 1)
+        // without two divisions per row.
+        const std::uint16_t* const samples = image_.samples.data();
+        const std::uint8_t* const banned = banned_.data();
+        const std::size_t width = std::size_t(image_.width);
+        auto walk = [&](auto with_value, auto&& scan_row) {
+            OwnedRows rows(Lattice::pixels(), domain_, p[0], p[1], p[2]);
+            for (RowRun part; rows.next(&part);) {
+                for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                    std::int64_t lo64, hi64;
+                    run.columns(&lo64, &hi64);
+                    if (lo64 > hi64) continue;
+                    const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
+                    const std::size_t row = std::size_t(j) * width;
+                    if constexpr (decltype(with_value)::value)
+                        scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+                    else
+                        scan_row(samples + row, banned + row, j, lo, hi);
+                }
+            }
+        };
+        double sum = 0.0, best = -1.0;
+        std::int32_t bx = 0, by = 0;
+        if (options_.round_values) {
+            std::int64_t isum = 0, ibest_sq = -1;
+            if (is_exact) {
+                walk(std::false_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                            std::int32_t lo, std::int32_t hi) {
+                    if (scan_exact(srow, brow, j, lo, hi, exact, &isum, &ibest_sq, &bx)) by = j;
+                });
+            } else {
+                const double maxval = double(image_.maxval);
+                walk(std::true_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                           std::int32_t lo, std::int32_t hi, double v) {
+                    if (scan_rounded<Rounding::clamp>(srow, brow, lo, hi, v, dv, maxval, &isum, &ibest_sq, &bx)) by = j;
+                });
+            }
+            sum = double(isum);
+            best = ibest_sq < 0 ? -1.0 : std::sqrt(double(ibest_sq));  // exact: a perfect square
+        } else {
+            double best2 = -1.0;
+            walk(std::true_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                       std::int32_t lo, std::int32_t hi, double v) {
+                if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
+            });
+        }
+        fs.sum = sum;
+        total_ += sum;
+        if (best > 0.0) {
+            fs.cand_error = best;
+            fs.cand = LatticePoint{2 * bx, 2 * by};
+            by_sum_.set(f, sum, tie_of(fs.cand));
+            if (track_max_) by_max_.set(f, best, tie_of(fs.cand));
+        } else {
+            fs.cand_error = -1.0;
+            by_sum_.remove(f);
+            if (track_max_) by_max_.remove(f);
+        }
+    }
+
+    Cdt& cdt_;
+    const Image& image_;
+    GreedyModel& model_;
+    const GreedyOptions& options_;
+    std::vector<std::uint8_t> banned_;  // per pixel: vertex already, or refused by the model
+    // Sample value -> double, for the real-valued scan: a load instead of a conversion (which
+    // also needs a register cleared first).
+    std::vector<double> as_double_;
+    RasterDomain domain_;
+    std::vector<FaceState> faces_;
+    std::vector<std::uint32_t> stamp_;  // generation in which the face was last scanned
+    std::uint32_t generation_ = 1;
+    IndexedMaxHeap by_sum_;  // faces with a candidate, keyed on squared-error sum
+    IndexedMaxHeap by_max_;  // the same faces keyed on candidate error (only for --max-error)
+    bool track_max_ = false;
+    double total_ = 0.0;  // whole-image squared error (sum of the face sums)
+    double peak_ = 255.0;
+};
+
+}  // namespace
+
+Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options,
+                     GreedyStats* stats) {
+    *stats = GreedyStats();
+    if (cdt.max_x() != 2 * (image.width - 1) || cdt.max_y() != 2 * (image.height - 1))
+        return Status::failure("greedy_refine: triangulation and image sizes differ");
+    Refiner r(cdt, image, model, options);
+    return r.run(stats);
+}
+
+}  // namespace erd

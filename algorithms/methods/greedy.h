@@ -1,0 +1,129 @@
+// Greedy point insertion (thesis 3.2.2 and 3.4.3): ONE refinement loop for GPI (basic model)
+// and ERDGPI (ERD model). The loop owns the priority queue, the insertion and the stop rules;
+// the model says how a face is approximated (GreedyModel below).
+//
+// The loop, in the thesis's words: every face f keeps cand(f), the lattice point of Lambda it
+// owns with the largest absolute error, and the sum of squared errors over the points it owns;
+// faces sit in an indexed max-heap keyed on that sum. Each step pops the face with the largest
+// sum, inserts its candidate into the triangulation (that face as the location hint), lets the
+// model assign values to the new vertex, and re-scans only the faces the kernel reports as
+// created (plus any the model marks dirty); destroyed faces leave the heap. Every pixel is scanned
+// by exactly one face (kernel/raster.h ownership rule), so the face sums add up to the
+// whole-image squared error, which the loop keeps incrementally for the PSNR stop rule.
+//
+// Errors are measured at the pixel lattice Lambda (even doubled coordinates) by point evaluation
+// of the face's plane, also for the ERD model (NOTES.md: the reported PSNR of an ERD model is
+// the supersampled one; refinement may use point evaluation).
+//
+// Candidates: a lattice point that is already a vertex is never a candidate (inserting it would
+// change nothing), nor is a point the model has refused (GreedyModel::admissible). Among equal
+// errors the first point in scan order (top row first, then leftmost) wins. A face whose owned
+// points all have error 0, or that has no admissible point, leaves the heap. When the heap is
+// empty the loop stops early (e.g. a constant or planar image): GreedyStop::exhausted.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/model.h"
+#include "algorithms/methods/progress.h"
+#include "kernel/cdt.h"
+#include "kernel/raster.h"
+#include "kernel/status.h"
+
+namespace erd {
+
+// What the greedy loop needs from a mesh model. One instance lives for one refinement run; it may
+// keep its own per-vertex or per-wedge state (values, wedge values) keyed by kernel indices.
+//
+//   GPI (algorithms/gpi.cpp, BasicGreedyModel): the plane through the image samples at the
+//       face's three vertices; on_vertex_inserted does nothing (the value of a vertex is the
+//       sample at its pixel, read again in face_plane).
+//   ERDGPI (erdmodel helper): the plane through the face's three wedge values (the wedge of each
+//       corner in which the face lies, via cdt.wedge_id). When the inserted point lies on a
+//       constrained edge the kernel split that edge; on_vertex_inserted computes the new vertex's
+//       wedge values (two wedges) and may list faces whose planes changed although the kernel
+//       did not recreate them.
+class GreedyModel {
+public:
+    virtual ~GreedyModel() = default;
+
+    // The approximating plane on face f of the current triangulation (kernel/raster.h SpanPlane,
+    // the type reconstruction evaluates too, so both compute the same values). Called when a face
+    // is scanned (every face when the loop starts, then each face to re-scan after an insertion,
+    // always after on_vertex_inserted for that insertion) unless integer_values() answered.
+    // Must be deterministic.
+    virtual SpanPlane face_plane(const Cdt& cdt, FaceInd f) const = 0;
+
+    // Called once after each insertion that created the new vertex v (cdt.changes() describes
+    // the insertion and is still valid). Assign the vertex's value(s) here. Append to *dirty any
+    // face, not among cdt.changes() created faces, whose plane changed (may be left empty; the
+    // loop tolerates duplicates). An error status stops refinement and is returned by
+    // greedy_refine.
+    virtual Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>* dirty) = 0;
+
+    // Face f's corner values (in the order of cdt.face_vertex(f, 0..2)) when they are integers,
+    // as the basic model's image samples are: true and *z filled. Rounded scans
+    // (GreedyOptions::round_values) then round the plane exactly (kernel/raster.h RoundedPlane),
+    // as reconstruction does for such a model; otherwise (default) they step the face_plane()
+    // value along each span and round that, as reconstruction does for other values. Must agree
+    // with face_plane().
+    virtual bool integer_values(const Cdt& cdt, FaceInd f, std::int64_t z[3]) const {
+        (void)cdt;
+        (void)f;
+        (void)z;
+        return false;
+    }
+
+    // May the candidate point p (a pixel, even coordinates) be inserted? Asked when a face's
+    // candidate reaches the top of the heap. On false the loop bans p for the rest of the run
+    // (it is never a candidate again), re-scans that face and carries on. Default: always.
+    virtual bool admissible(const Cdt& cdt, LatticePoint p) const {
+        (void)cdt;
+        (void)p;
+        return true;
+    }
+};
+
+// Why refinement stopped (the first rule that held).
+enum class GreedyStop {
+    target,     // cdt.vertex_count() reached GreedyOptions::target_vertices
+    max_error,  // the largest absolute error over candidate points is <= max_error
+    psnr,       // the whole-image PSNR (point evaluation) is >= psnr
+    exhausted,  // no face has an admissible point with nonzero error (e.g. planar image)
+};
+
+const char* to_string(GreedyStop s);
+
+struct GreedyOptions {
+    std::size_t target_vertices = 0;  // stop when the triangulation has this many vertices
+    double max_error = -1.0;          // stop when max abs error <= max_error; negative: rule off
+    double psnr = 0.0;                // stop when PSNR >= psnr dB; <= 0: rule off
+    // Errors against the approximation rounded to the nearest integer and clamped to
+    // [0, maxval] (what imgsyn reconstructs; squared errors are integers and the running total
+    // exact) instead of the real-valued plane. docs/DECISIONS.md "Methods: ED and GPI" has the
+    // numbers that chose the default.
+    bool round_values = false;
+    // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
+    ProgressHook progress;
+};
+
+struct GreedyStats {
+    GreedyStop stop = GreedyStop::target;
+    std::size_t insertions = 0;       // points inserted by the loop
+    std::size_t banned = 0;           // candidates refused by GreedyModel::admissible
+    double total_squared_error = 0.0; // over all pixels, point evaluation, at the end
+    double max_error = 0.0;           // largest abs error over candidate points, at the end
+    double psnr = 0.0;                // from total_squared_error and the image's peak (inf if 0)
+};
+
+// Refines `cdt` (already holding the initial mesh: the four corners for GPI; corners, polyline
+// points and constraints for ERDGPI) by greedy point insertion until a stop rule holds.
+// `image` must match the triangulation's domain: cdt covers [0, 2W-2] x [0, 2H-2].
+// Fails with Code::runtime if the kernel or the model fails; the triangulation is then valid
+// but partly refined.
+Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options,
+                     GreedyStats* stats);
+
+}  // namespace erd

@@ -1,0 +1,277 @@
+#include "algorithms/model/erd_model.h"
+
+#include <cmath>
+#include <limits>
+
+#include "algorithms/imaging/bilinear.h"
+#include "algorithms/imaging/filters.h"
+#include "algorithms/imaging/mmsodd.h"
+
+namespace erd {
+
+void wedge_bisector(LatticePoint u1, LatticePoint u2, double* dx, double* dy) {
+    const double kTwoPi = 6.283185307179586476925286766559;
+    const double t1 = std::atan2(double(u1.y), double(u1.x));
+    const double t2 = std::atan2(double(u2.y), double(u2.x));
+    // Positive rotation in the doubled frame is increasing atan2 (orient2d > 0 <=> cross > 0).
+    double sweep = t2 - t1;
+    if (sweep <= 0) sweep += kTwoPi;
+    const double t = t1 + 0.5 * sweep;
+    *dx = std::cos(t);
+    *dy = std::sin(t);
+}
+
+ErdModel::ErdModel(const Image& image, const WedgeValueOptions& options) : phi_(image), options_(options) {}
+
+double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
+    const LatticePoint p = cdt.point(v);
+    EdgeInd last = w.first;
+    for (std::uint32_t i = 1; i < w.count; ++i) last = cdt.rot_next(last);
+    const LatticePoint a = cdt.point(cdt.dest(w.first));
+    const LatticePoint b = cdt.point(cdt.org(prev_edge(last)));
+    double dx = 0, dy = 0;
+    wedge_bisector({a.x - p.x, a.y - p.y}, {b.x - p.x, b.y - p.y}, &dx, &dy);
+    const double x = 0.5 * p.x, y = 0.5 * p.y;
+    const double max_x = phi_.width - 1, max_y = phi_.height - 1;
+    auto clamp = [](double t, double hi) { return t < 0 ? 0.0 : (t > hi ? hi : t); };
+    ++stats_.multi_wedges;
+    if (options_.rule == 0) {
+        const double t = options_.fixed_distance;
+        return bilinear(phi_, clamp(x + t * dx, max_x), clamp(y + t * dy, max_y));
+    }
+    const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / kWedgeAlphaStep));
+    double best = -1, bx = x, by = y;
+    int best_i = 0;
+    for (int i = 0; i <= steps; ++i) {
+        const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
+        const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
+        const double f = mmsodd_at(qx, qy);
+        if (f > best) {
+            best = f;
+            bx = qx;
+            by = qy;
+            best_i = i;
+        }
+    }
+    if (best_i == 0) ++stats_.alpha_first;
+    if (best_i == steps) ++stats_.alpha_last;
+    return bilinear(phi_, bx, by);
+}
+
+namespace {
+
+// h's taps of radius c spread over [-rad, rad] (zeros outside), indexed by n + rad.
+std::vector<double> padded_taps(const std::vector<double>& h, int rad) {
+    std::vector<double> out(std::size_t(2 * rad + 1), 0.0);
+    const int c = int(h.size() / 2);
+    for (int n = -c; n <= c; ++n) out[std::size_t(n + rad)] = h[std::size_t(n + c)];
+    return out;
+}
+
+}  // namespace
+
+void ErdModel::prepare_taps() {
+    std::vector<double> b = binomial_taps(options_.smoothing_order);
+    if (b.empty()) b = {1.0};
+    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
+    const int cb = int(b.size() / 2), cd = int(d2.size() / 2);
+    stencil_radius_ = cb > cd ? cb : cd;
+    taps_b_ = padded_taps(b, stencil_radius_);
+    taps_d1_ = padded_taps(d1, stencil_radius_);
+    taps_d2_ = padded_taps(d2, stencil_radius_);
+}
+
+double ErdModel::mmsodd_pixel(int x, int y) {
+    const std::size_t key = std::size_t(y) * std::size_t(phi_.width) + std::size_t(x);
+    const auto found = local_.find(key);
+    if (found != local_.end()) return found->second;
+    if (stencil_radius_ < 0) prepare_taps();
+    // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
+    // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
+    // +-0 may be added or left out (the taps padded with zeros to the stencil radius; stencil rows
+    // outside the image): every sum starts at +0 and adding +-0 never changes it, so the values
+    // are those of the whole-grid filters.
+    const int rad = stencil_radius_;
+    // Each stencil row is read once into stencil_ (zero outside the image) and the three filters
+    // read it there.
+    stencil_.resize(std::size_t(2 * rad + 1));
+    double* const f = stencil_.data() + rad;  // f[-n] = phi(x - n, v)
+    const bool cols_in = x - rad >= 0 && x + rad < phi_.width;
+    const double* const b = taps_b_.data() + rad;  // b[n] for n in [-rad, rad]
+    const double* const d1 = taps_d1_.data() + rad;
+    const double* const d2 = taps_d2_.data() + rad;
+    double fxx = 0, fyy = 0, fxy = 0;
+    for (int m = -rad; m <= rad; ++m) {
+        const int v = y - m;
+        if (v < 0 || v >= phi_.height) continue;  // a row of zeros
+        const std::uint16_t* row = &phi_.samples[std::size_t(v) * std::size_t(phi_.width)];
+        if (cols_in) {
+            for (int n = -rad; n <= rad; ++n) f[-n] = double(row[x - n]);
+        } else {
+            for (int n = -rad; n <= rad; ++n) {
+                const int u = x - n;
+                f[-n] = u >= 0 && u < phi_.width ? double(row[u]) : 0.0;
+            }
+        }
+        // The three x filters in one sweep over the padded taps (their zeros add +-0).
+        double rb = 0, rd1 = 0, rd2 = 0;
+        for (int n = -rad; n <= rad; ++n) {
+            const double sample = f[-n];
+            rb += b[n] * sample;
+            rd1 += d1[n] * sample;
+            rd2 += d2[n] * sample;
+        }
+        // Row m enters fxx through the y smoothing taps (with the x second derivative), fyy
+        // through the y second derivative (with x smoothing), fxy through the y first derivative.
+        if (b[m] != 0) fxx += b[m] * rd2;
+        if (d2[m] != 0) fyy += d2[m] * rb;
+        if (d1[m] != 0) fxy += d1[m] * rd1;
+    }
+    const double value = mmsodd_value(fxx, fyy, fxy);
+    local_.emplace(key, value);
+    return value;
+}
+
+double ErdModel::mmsodd_at(double x, double y) {
+    if (have_mmsodd_) return bilinear(mmsodd_, x, y);
+    // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
+    const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
+    const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));
+    const double fx = x - x0, fy = y - y0;
+    // Successive steps of a line search (0.05 px apart) mostly stay in one cell: keep its corners.
+    if (x0 != cell_x_ || y0 != cell_y_) {
+        cell_x_ = x0;
+        cell_y_ = y0;
+        cell_[0] = mmsodd_pixel(x0, y0);
+        cell_[1] = mmsodd_pixel(x0 + 1, y0);
+        cell_[2] = mmsodd_pixel(x0, y0 + 1);
+        cell_[3] = mmsodd_pixel(x0 + 1, y0 + 1);
+    }
+    const double top = (1.0 - fx) * cell_[0] + fx * cell_[1];
+    const double bottom = (1.0 - fx) * cell_[2] + fx * cell_[3];
+    return (1.0 - fy) * top + fy * bottom;
+}
+
+void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {
+    if (first_.size() <= v) {
+        first_.resize(std::size_t(v) + 1, 0);
+        count_.resize(std::size_t(v) + 1, 0);
+    }
+    first_[v] = std::uint32_t(entries_.size());
+    if (cdt.wedge_count(v) <= 1) {
+        const LatticePoint p = cdt.point(v);
+        entries_.push_back({kOnlyWedge, bilinear_doubled(phi_, p.x, p.y)});
+        count_[v] = 1;
+        return;
+    }
+    cdt.wedges(v, &scratch_);
+    for (const Wedge& w : scratch_) entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
+    count_[v] = std::uint32_t(scratch_.size());
+}
+
+void ErdModel::assign_all(const Cdt& cdt) {
+    const std::size_t n = cdt.vertex_count();
+    first_.assign(n, 0);
+    count_.assign(n, 0);
+    entries_.clear();
+    entries_.reserve(n + n / 4);
+    for (std::size_t v = 0; v < n; ++v) assign_vertex(cdt, VertInd(v));
+}
+
+double ErdModel::wedge_value(VertInd v, WedgeId id) const {
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    const Entry* e = &entries_[first_[v]];
+    if (count_[v] == 1) return e->value;
+    for (std::uint32_t i = 0; i < count_[v]; ++i)
+        if (e[i].id == id) return e[i].value;
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+std::uint32_t ErdModel::multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const {
+    // Cdt::wedge_id's walk: rotate negatively from the corner to the bounding constrained (or
+    // hull) edge. Its direction names the wedge; instead of reducing it by the gcd as wedge_id
+    // does (and counting v's wedges first), it is compared with each stored id's reduced
+    // direction: the same ray exactly when the cross product is 0 and the dot product positive.
+    EdgeInd b = e;
+    while (cdt.twin(b) != noEdge && !cdt.constrained(b)) b = cdt.rot_prev(b);
+    const LatticePoint p = cdt.point(v), q = cdt.point(cdt.dest(b));
+    const std::int64_t dx = std::int64_t(q.x) - p.x, dy = std::int64_t(q.y) - p.y;
+    for (std::uint32_t i = first_[v]; i < first_[v] + count_[v]; ++i) {
+        const WedgeId id = entries_[i].id;
+        const std::int64_t ex = std::int32_t(std::uint32_t(id >> 32)), ey = std::int32_t(std::uint32_t(id));
+        if (ex * dy - ey * dx == 0 && ex * dx + ey * dy > 0) return i;
+    }
+    return kNoEntry;
+}
+
+double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
+    const VertInd v = cdt.org(e);
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (count_[v] == 1) return entries_[first_[v]].value;
+    const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+    return i == kNoEntry ? std::numeric_limits<double>::quiet_NaN() : entries_[i].value;
+}
+
+std::uint32_t ErdModel::corner_entry(const Cdt& cdt, EdgeInd e) const {
+    const VertInd v = cdt.org(e);
+    if (count_[v] == 1) return first_[v];
+    const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+    return i == kNoEntry ? first_[v] : i;
+}
+
+double ErdModel::vertex_value(VertInd v) const {
+    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    double s = 0;
+    for (std::uint32_t i = 0; i < count_[v]; ++i) s += entries_[first_[v] + i].value;
+    return s / count_[v];
+}
+
+SpanPlane ErdModel::face_plane(const Cdt& cdt, FaceInd f) const {
+    const EdgeInd e = 3 * f;
+    SpanPlane plane;
+    plane.set(cdt.point(cdt.org(e)), corner_value(cdt, e), cdt.point(cdt.org(e + 1)), corner_value(cdt, e + 1),
+              cdt.point(cdt.org(e + 2)), corner_value(cdt, e + 2));
+    return plane;
+}
+
+double ErdModel::evaluate(const Cdt& cdt, LatticePoint p) const {
+    const Location loc = cdt.locate(p);
+    switch (loc.kind) {
+        case Location::Kind::on_vertex: return vertex_value(loc.vertex);
+        case Location::Kind::on_edge: {
+            const double z = face_plane(cdt, face_of(loc.edge)).at(p.x, p.y);
+            const EdgeInd t = cdt.twin(loc.edge);
+            if (!cdt.constrained(loc.edge) || t == noEdge) return z;
+            return 0.5 * (z + face_plane(cdt, face_of(t)).at(p.x, p.y));
+        }
+        case Location::Kind::in_face: return face_plane(cdt, loc.face).at(p.x, p.y);
+        case Location::Kind::outside: break;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+void ErdModel::to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const {
+    out->kind = ModelKind::erd;
+    out->width = width;
+    out->height = height;
+    out->maxval = maxval;
+    const std::size_t nv = cdt.vertex_count(), nf = cdt.face_count();
+    out->vertices.assign(cdt.points().begin(), cdt.points().end());
+    out->values.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) out->values[v] = vertex_value(VertInd(v));
+    out->faces.resize(nf);
+    out->corner_values.resize(nf);
+    for (std::size_t f = 0; f < nf; ++f) {
+        for (int i = 0; i < 3; ++i) {
+            const EdgeInd e = EdgeInd(3 * f + std::size_t(i));
+            out->faces[f][std::size_t(i)] = cdt.org(e);
+            out->corner_values[f][std::size_t(i)] = corner_value(cdt, e);
+        }
+    }
+    std::vector<std::array<VertInd, 2>> cons;
+    cdt.export_constraints(&cons);
+    out->constraints.resize(cons.size());
+    for (std::size_t i = 0; i < cons.size(); ++i) out->constraints[i] = {cons[i][0], cons[i][1]};
+}
+
+}  // namespace erd

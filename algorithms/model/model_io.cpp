@@ -1,0 +1,523 @@
+// Readers of .model, .erd and -t files (formats in model_io.h; writers in model_write.cpp).
+#include "algorithms/model/model_io.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/model_topology.h"
+#include "kernel/predicates.h"
+
+namespace erd {
+namespace {
+
+// Values further from zero than this are refused: no approximating function of a 16-bit image
+// needs them, and they keep every plane computation far from overflow.
+constexpr double kMaxAbsValue = 1e9;
+// Largest doubled coordinate of an accepted image.
+constexpr std::int64_t kMaxDoubled = 2 * std::int64_t(kMaxImageSide) - 2;
+
+std::string show(std::string_view tok) {
+    std::string s;
+    for (char ch : tok.substr(0, 24)) {
+        const unsigned char u = static_cast<unsigned char>(ch);
+        if (u >= 32 && u < 127) {
+            s += ch;
+        } else {
+            static const char hex[] = "0123456789abcdef";
+            s += "\\x";
+            s += hex[u >> 4];
+            s += hex[u & 15];
+        }
+    }
+    if (tok.size() > 24) s += "...";
+    return s;
+}
+
+// What a token should be, for messages: text, or a callable building it (only on error, so the
+// hot path builds no strings).
+std::string str(const char* s) { return s; }
+template <class F>
+std::string str(const F& f) {
+    return f();
+}
+
+// Whitespace-separated tokens with '#' comments; tracks line numbers for messages.
+class Tokens {
+public:
+    explicit Tokens(const std::string& text) : s_(text) {}
+
+    // The next token, or false at the end of the text.
+    bool next(std::string_view* tok) {
+        skip();
+        if (pos_ >= s_.size()) return false;
+        line_ = cur_line_;
+        const std::size_t b = pos_;
+        while (pos_ < s_.size() && !space(s_[pos_]) && s_[pos_] != '#') ++pos_;
+        *tok = std::string_view(s_).substr(b, pos_ - b);
+        return true;
+    }
+    bool at_end() {
+        skip();
+        return pos_ >= s_.size();
+    }
+    std::size_t remaining() {
+        skip();
+        return s_.size() - pos_;
+    }
+    int line() const { return line_; }
+    std::string where() const { return "line " + std::to_string(line_) + ": "; }
+
+    // Plain decimal digits, at most max_len of them (the common case, parsed without from_chars).
+    static bool digits(std::string_view t, std::size_t max_len, std::uint64_t* x) {
+        if (t.empty() || t.size() > max_len) return false;
+        std::uint64_t v = 0;
+        for (char c : t) {
+            if (c < '0' || c > '9') return false;
+            v = v * 10 + std::uint64_t(c - '0');
+        }
+        *x = v;
+        return true;
+    }
+
+    // Unsigned integer in [lo, hi].
+    template <class What>
+    Status uint(const What& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
+        std::uint64_t x = 0;
+        if (digits(t, 18, &x) && x >= lo && x <= hi) {
+            *v = x;
+            return Status::success();
+        }
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size())
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
+        if (r.ec == std::errc::result_out_of_range)
+            return Status::bad_input(where() + str(what) + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
+        if (x < lo || x > hi)
+            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
+                                     ".." + std::to_string(hi) + ")");
+        *v = x;
+        return Status::success();
+    }
+
+    // Signed integer (coordinates: a '-' gets "outside the image" rather than "junk").
+    template <class What>
+    Status sint(const What& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
+        std::uint64_t u = 0;
+        if (digits(t, 18, &u) && std::int64_t(u) >= lo && std::int64_t(u) <= hi) {
+            *v = std::int64_t(u);
+            return Status::success();
+        }
+        std::int64_t x = 0;
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size())
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
+        if (r.ec == std::errc::result_out_of_range)
+            return Status::bad_input(where() + str(what) + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
+        if (x < lo || x > hi)
+            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
+                                     ".." + std::to_string(hi) + ")");
+        *v = x;
+        return Status::success();
+    }
+
+    // A finite real of moderate size.
+    template <class What>
+    Status real(const What& what, double* v) {
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
+        std::uint64_t u = 0;
+        if (digits(t, 9, &u)) {  // below 1e9: exact, in range
+            *v = double(u);
+            return Status::success();
+        }
+        double x = 0.0;
+        const char* b = t.data();
+        if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
+        const auto r = std::from_chars(b, t.data() + t.size(), x);
+        if (t.empty() || r.ptr != t.data() + t.size() || r.ec == std::errc::invalid_argument)
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
+        if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
+            return Status::bad_input(where() + str(what) + " '" + show(t) + "' is not a finite number");
+        if (std::fabs(x) > kMaxAbsValue)
+            return Status::bad_input(where() + str(what) + " " + show(t) + " out of range (|value| <= 1e9)");
+        *v = x;
+        return Status::success();
+    }
+
+private:
+    static bool space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+    void skip() {
+        while (pos_ < s_.size()) {
+            const char c = s_[pos_];
+            if (c == '\n') {
+                ++cur_line_;
+                ++pos_;
+            } else if (space(c)) {
+                ++pos_;
+            } else if (c == '#') {
+                while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+            } else {
+                break;
+            }
+        }
+    }
+    const std::string& s_;
+    std::size_t pos_ = 0;
+    int cur_line_ = 1;
+    int line_ = 1;
+};
+
+// A count of records of at least min_bytes bytes each (separator included) must fit in the rest
+// of the text: refuses absurd counts before anything is allocated.
+template <class What>
+Status count(Tokens& tk, const What& what, std::uint64_t lo, std::uint64_t min_bytes, std::uint64_t* n) {
+    if (Status s = tk.uint(what, lo, std::uint64_t(1) << 40, n); !s) return s;
+    if (*n > 0 && *n * min_bytes > tk.remaining() + 1)
+        return Status::bad_input(tk.where() + str(what) + " " + std::to_string(*n) +
+                                 " is more than the rest of the file holds (the file ends early or the count is wrong)");
+    return Status::success();
+}
+
+std::string vname(std::size_t i) { return "vertex " + std::to_string(i); }
+std::string fname(std::size_t i) { return "face " + std::to_string(i); }
+
+// Faces: indices in range, three distinct vertices, nonzero area; orientation made positive
+// (with the ERD corner values, if any, swapped along).
+Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<std::array<std::uint32_t, 3>>* faces,
+                  std::vector<int>* lines) {
+    std::uint64_t nf = 0;
+    if (Status s = count(tk, "face count", 1, 6, &nf); !s) return s;
+    faces->resize(nf);
+    lines->resize(nf);
+    const std::uint64_t nv = pts.size();
+    for (std::uint64_t f = 0; f < nf; ++f) {
+        std::array<std::uint32_t, 3>& fc = (*faces)[f];
+        for (int k = 0; k < 3; ++k) {
+            std::uint64_t v = 0;
+            const auto what = [&] { return "vertex index " + std::to_string(k + 1) + " of " + fname(f); };
+            if (Status s = tk.uint(what, 0, std::uint64_t(1) << 40, &v); !s) return s;
+            if (v >= nv)
+                return Status::bad_input(tk.where() + fname(f) + ": vertex index " + std::to_string(v) + " out of range (" +
+                                         std::to_string(nv) + " vertices)");
+            fc[std::size_t(k)] = std::uint32_t(v);
+        }
+        (*lines)[f] = tk.line();
+        if (fc[0] == fc[1] || fc[1] == fc[2] || fc[0] == fc[2])
+            return Status::bad_input(tk.where() + fname(f) + " repeats a vertex");
+        const std::int64_t o = orient2d(pts[fc[0]], pts[fc[1]], pts[fc[2]]);
+        if (o == 0) return Status::bad_input(tk.where() + fname(f) + " is degenerate (its vertices are collinear)");
+        if (o < 0) std::swap(fc[1], fc[2]);
+    }
+    return Status::success();
+}
+
+// Distinct vertices; the domain [0, max] with its four corners as vertices; size limits.
+// `unit` converts doubled coordinates back to those of the file for messages (2 for .model).
+Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<int>& lines, bool need_even, int unit, int* w,
+                      int* h) {
+    const auto at = [unit](LatticePoint p) { return "(" + std::to_string(p.x / unit) + ", " + std::to_string(p.y / unit) + ")"; };
+    std::vector<std::uint32_t> order(pts.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return pts[a].y != pts[b].y ? pts[a].y < pts[b].y : pts[a].x != pts[b].x ? pts[a].x < pts[b].x : a < b;
+    });
+    for (std::size_t i = 1; i < order.size(); ++i)
+        if (pts[order[i]] == pts[order[i - 1]])
+            return Status::bad_input("line " + std::to_string(lines[order[i]]) + ": vertices " + std::to_string(order[i - 1]) +
+                                     " and " + std::to_string(order[i]) + " coincide at " + at(pts[order[i]]));
+    std::int32_t mx = 0, my = 0;
+    for (const LatticePoint& p : pts) {
+        mx = std::max(mx, p.x);
+        my = std::max(my, p.y);
+    }
+    if (need_even && (mx % 2 != 0 || my % 2 != 0))
+        return Status::bad_input("the largest coordinates (" + std::to_string(mx) + ", " + std::to_string(my) +
+                                 ") are not even: the domain [0, 2W-2] x [0, 2H-2] must end on a pixel");
+    const LatticePoint corners[4] = {{0, 0}, {mx, 0}, {0, my}, {mx, my}};
+    for (const LatticePoint& c : corners) {
+        const auto it = std::lower_bound(order.begin(), order.end(), c, [&](std::uint32_t a, LatticePoint p) {
+            return pts[a].y != p.y ? pts[a].y < p.y : pts[a].x < p.x;
+        });
+        if (it == order.end() || pts[*it] != c)
+            return Status::bad_input("corner " + at(c) + " of the image domain is not a vertex");
+    }
+    *w = mx / 2 + 1;
+    *h = my / 2 + 1;
+    if (std::int64_t(*w) * *h > kMaxImagePixels)
+        return Status::bad_input("image " + std::to_string(*w) + " x " + std::to_string(*h) + " is larger than the limit of " +
+                                 std::to_string(kMaxImagePixels) + " pixels");
+    return Status::success();
+}
+
+// Assigns the corner values of an ERD model from its wedge lines (see model_io.h).
+Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
+    const std::size_t nv = m->vertices.size(), nf = m->faces.size();
+    std::uint64_t nw = 0;
+    if (Status s = count(tk, "wedge count", 0, 6, &nw); !s) return s;
+    m->corner_values.assign(nf, {0.0, 0.0, 0.0});
+    std::vector<std::uint8_t> set(3 * nf, 0);
+    std::vector<std::uint8_t> listed(nv, 0);
+    for (std::uint64_t i = 0; i < nw; ++i) {
+        std::uint64_t v = 0, f = 0;
+        double z = 0.0;
+        if (Status s = tk.uint([&] { return "vertex index of wedge line " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &v); !s) return s;
+        if (v >= nv)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": vertex index " + std::to_string(v) +
+                                     " out of range (" + std::to_string(nv) + " vertices)");
+        if (Status s = tk.uint([&] { return "face index of wedge line " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &f); !s) return s;
+        if (f >= nf)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face index " + std::to_string(f) +
+                                     " out of range (" + std::to_string(nf) + " faces)");
+        if (Status s = tk.real([&] { return "wedge value of wedge line " + std::to_string(i); }, &z); !s) return s;
+        int k = -1;
+        for (int c = 0; c < 3; ++c)
+            if (m->faces[f][std::size_t(c)] == v) k = c;
+        if (k < 0)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face " + std::to_string(f) +
+                                     " is not incident on vertex " + std::to_string(v));
+        const std::size_t h = 3 * f + std::size_t(k);
+        if (set[h] && m->corner_values[f][std::size_t(k)] != z)
+            return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": conflicting values for vertex " +
+                                     std::to_string(v) + " in face " + std::to_string(f));
+        set[h] = 1;
+        listed[v] = 1;
+        m->corner_values[f][std::size_t(k)] = z;
+    }
+    if (!tk.at_end()) {
+        std::string_view t;
+        tk.next(&t);
+        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last wedge line (check the counts)");
+    }
+    std::vector<std::uint32_t> fan;
+    std::vector<int> known;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const std::uint32_t b = topo.corner_begin[v], e = topo.corner_begin[v + 1];
+        if (!listed[v]) {
+            for (std::uint32_t i = b; i < e; ++i) m->corner_values[topo.corners[i] / 3][topo.corners[i] % 3] = m->values[v];
+            continue;
+        }
+        bool complete = true;
+        for (std::uint32_t i = b; i < e; ++i) complete = complete && set[topo.corners[i]];
+        if (complete) continue;
+        // Propagate along the fan: a face takes the value of the nearest listed faces when both
+        // sides agree (or when only one side exists, at the open end of a border fan).
+        bool closed = false;
+        std::uint32_t missing = 0;
+        for (std::uint32_t i = b; i < e; ++i)
+            if (!set[topo.corners[i]]) missing = topo.corners[i] / 3;
+        const std::string undetermined = "the wedge of face " + std::to_string(missing) + " at vertex " + std::to_string(v) +
+                                         " is undetermined (give a wedge line for every face of a vertex with several wedges)";
+        if (!vertex_fan(topo, v, &fan, &closed)) return Status::bad_input(undetermined);
+        const int n = int(fan.size());
+        std::vector<double> val(std::size_t(n), 0.0);
+        for (int i = 0; i < n; ++i) val[std::size_t(i)] = m->corner_values[fan[std::size_t(i)] / 3][fan[std::size_t(i)] % 3];
+        for (int i = 0; i < n; ++i) {
+            const std::uint32_t c = fan[std::size_t(i)];
+            if (set[c]) continue;
+            int before = -1, after = -1;
+            for (int d = 1; d < n; ++d) {
+                const int j = i - d;
+                if (j < 0 && !closed) break;
+                const int jj = (j + n) % n;
+                if (set[fan[std::size_t(jj)]]) {
+                    before = jj;
+                    break;
+                }
+            }
+            for (int d = 1; d < n; ++d) {
+                const int j = i + d;
+                if (j >= n && !closed) break;
+                const int jj = j % n;
+                if (set[fan[std::size_t(jj)]]) {
+                    after = jj;
+                    break;
+                }
+            }
+            double z = 0.0;
+            if (before >= 0 && after >= 0 && val[std::size_t(before)] == val[std::size_t(after)]) z = val[std::size_t(before)];
+            else if (before >= 0 && after < 0) z = val[std::size_t(before)];
+            else if (after >= 0 && before < 0) z = val[std::size_t(after)];
+            else
+                return Status::bad_input("the wedge of face " + std::to_string(c / 3) + " at vertex " + std::to_string(v) +
+                                         " is undetermined (give a wedge line for every face of a vertex with several wedges)");
+            m->corner_values[c / 3][c % 3] = z;
+        }
+        for (int i = 0; i < n; ++i) set[fan[std::size_t(i)]] = 1;
+    }
+    // The vertex value of a vertex with wedge lines is the mean of its wedge values; the
+    // constraints are the edges across which values jump.
+    for (std::uint32_t v = 0; v < nv; ++v)
+        if (listed[v]) m->values[v] = vertex_wedges(*m, topo, v).mean;
+    m->constraints.clear();
+    for (std::uint32_t h = 0; h < topo.twin.size(); ++h)
+        if (topo.twin[h] != kNoHalfEdge && h < topo.twin[h] && is_discontinuity(*m, topo, h)) {
+            std::uint32_t a = m->faces[h / 3][h % 3], c = m->faces[h / 3][(h + 1) % 3];
+            if (a > c) std::swap(a, c);
+            m->constraints.push_back({a, c});
+        }
+    std::sort(m->constraints.begin(), m->constraints.end());
+    return Status::success();
+}
+
+}  // namespace
+
+ModelFileKind model_kind_from_name(const std::string& name) {
+    const auto ends = [&](const char* ext) {
+        const std::string e(ext);
+        if (name.size() < e.size()) return false;
+        for (std::size_t i = 0; i < e.size(); ++i) {
+            char c = name[name.size() - e.size() + i];
+            if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+            if (c != e[i]) return false;
+        }
+        return true;
+    };
+    if (ends(".model")) return ModelFileKind::basic;
+    if (ends(".erd")) return ModelFileKind::erd;
+    if (ends(".tri")) return ModelFileKind::triangulation;
+    return ModelFileKind::unknown;
+}
+
+Status read_model(const std::string& text, ModelFileKind kind, Model* out, ModelTopology* topo_out) {
+    if (kind == ModelFileKind::triangulation) return read_triangulation(text, out);
+    Tokens tk(text);
+    if (tk.at_end()) return Status::bad_input("empty file");
+    Model m;
+    std::uint64_t maxval = 0, nv = 0;
+    if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    m.maxval = std::uint32_t(maxval);
+    if (Status s = count(tk, "vertex count", 4, 6, &nv); !s) return s;
+    m.vertices.resize(nv);
+    m.values.resize(nv);
+    std::vector<int> vlines(nv);
+    for (std::uint64_t i = 0; i < nv; ++i) {
+        std::int64_t x = 0, y = 0;
+        if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, kMaxDoubled, &x); !s) return s;
+        if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, kMaxDoubled, &y); !s) return s;
+        if (Status s = tk.real([&] { return "value of " + vname(i); }, &m.values[i]); !s) return s;
+        m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
+        vlines[i] = tk.line();
+    }
+    std::vector<int> flines;
+    if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
+    if (kind == ModelFileKind::unknown) kind = tk.at_end() ? ModelFileKind::basic : ModelFileKind::erd;
+    if (kind == ModelFileKind::basic) {
+        m.kind = ModelKind::basic;
+        if (!tk.at_end()) {
+            std::string_view t;
+            tk.next(&t);
+            return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last face (check the counts)");
+        }
+        // Pixel coordinates in the file, doubled in the model.
+        for (std::size_t i = 0; i < nv; ++i) {
+            LatticePoint& p = m.vertices[i];
+            if (p.x > kMaxImageSide - 1 || p.y > kMaxImageSide - 1)
+                return Status::bad_input("line " + std::to_string(vlines[i]) + ": " + vname(i) + " (" + std::to_string(p.x) +
+                                         ", " + std::to_string(p.y) + ") outside the image (0.." +
+                                         std::to_string(kMaxImageSide - 1) + ")");
+            p = LatticePoint{2 * p.x, 2 * p.y};
+        }
+    } else {
+        m.kind = ModelKind::erd;
+    }
+    const bool erd = m.kind == ModelKind::erd;
+    if (Status s = check_vertices(m.vertices, vlines, erd, erd ? 1 : 2, &m.width, &m.height); !s) return s;
+    // Faces sharing a directed edge: the same triangle twice, or overlapping faces.
+    ModelTopology topo;
+    if (Status s = build_topology(m, &topo); !s) {
+        for (std::size_t f = 0; f < m.faces.size(); ++f)
+            for (std::size_t g = f + 1; g < m.faces.size() && s.message.find("faces " + std::to_string(f) + " and ") == 0; ++g) {
+                auto x = m.faces[f], y = m.faces[g];
+                std::sort(x.begin(), x.end());
+                std::sort(y.begin(), y.end());
+                if (x == y)
+                    return Status::bad_input("line " + std::to_string(flines[g]) + ": faces " + std::to_string(f) + " and " +
+                                             std::to_string(g) + " are the same triangle");
+            }
+        return Status::bad_input("not a triangulation of the image domain: " + s.message);
+    }
+    if (m.kind == ModelKind::erd)
+        if (Status s = apply_wedges(tk, topo, &m); !s) return s;
+    *out = std::move(m);
+    if (topo_out) *topo_out = std::move(topo);
+    return Status::success();
+}
+
+Status read_triangulation(const std::string& text, Model* out) {
+    Tokens tk(text);
+    if (tk.at_end()) return Status::bad_input("empty file");
+    std::string_view t;
+    tk.next(&t);
+    if (t != "erd-triangulation")
+        return Status::bad_input(tk.where() + "not an erd triangulation file (expected 'erd-triangulation 1', found '" + show(t) + "')");
+    std::uint64_t version = 0, w = 0, h = 0, nv = 0, nc = 0;
+    if (Status s = tk.uint("format version", 1, 1, &version); !s) return s;
+    if (Status s = tk.uint("width", 2, kMaxImageSide, &w); !s) return s;
+    if (Status s = tk.uint("height", 2, kMaxImageSide, &h); !s) return s;
+    if (std::int64_t(w * h) > kMaxImagePixels)
+        return Status::bad_input(tk.where() + "image " + std::to_string(w) + " x " + std::to_string(h) + " is larger than the limit of " +
+                                 std::to_string(kMaxImagePixels) + " pixels");
+    Model m;
+    m.width = int(w);
+    m.height = int(h);
+    if (Status s = count(tk, "vertex count", 4, 4, &nv); !s) return s;
+    m.vertices.resize(nv);
+    std::vector<int> vlines(nv);
+    for (std::uint64_t i = 0; i < nv; ++i) {
+        std::int64_t x = 0, y = 0;
+        if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, std::int64_t(2 * w - 2), &x); !s) return s;
+        if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, std::int64_t(2 * h - 2), &y); !s) return s;
+        m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
+        vlines[i] = tk.line();
+    }
+    std::vector<int> flines;
+    if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
+    int cw = 0, ch = 0;
+    if (Status s = check_vertices(m.vertices, vlines, true, 1, &cw, &ch); !s) return s;
+    if (cw != m.width || ch != m.height)
+        return Status::bad_input("the vertices span " + std::to_string(cw) + " x " + std::to_string(ch) + " pixels, not the " +
+                                 std::to_string(w) + " x " + std::to_string(h) + " of the header");
+    if (Status s = count(tk, "constraint count", 0, 4, &nc); !s) return s;
+    std::vector<std::uint64_t> edges;
+    edges.reserve(3 * m.faces.size());
+    for (const auto& f : m.faces)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = f[std::size_t(k)], b = f[std::size_t((k + 1) % 3)];
+            edges.push_back((std::min(a, b) << 32) | std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    m.constraints.resize(nc);
+    for (std::uint64_t i = 0; i < nc; ++i) {
+        std::uint64_t a = 0, b = 0;
+        if (Status s = tk.uint([&] { return "first vertex index of constraint " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &a); !s) return s;
+        if (Status s = tk.uint([&] { return "second vertex index of constraint " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &b); !s) return s;
+        if (a >= nv || b >= nv)
+            return Status::bad_input(tk.where() + "constraint " + std::to_string(i) + ": vertex index out of range (" +
+                                     std::to_string(nv) + " vertices)");
+        if (a > b) std::swap(a, b);
+        if (!std::binary_search(edges.begin(), edges.end(), (a << 32) | b))
+            return Status::bad_input(tk.where() + "constraint " + std::to_string(i) + " (" + std::to_string(a) + ", " +
+                                     std::to_string(b) + ") is not an edge of any face");
+        m.constraints[i] = {std::uint32_t(a), std::uint32_t(b)};
+    }
+    if (!tk.at_end()) {
+        tk.next(&t);
+        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last constraint (check the counts)");
+    }
+    std::sort(m.constraints.begin(), m.constraints.end());
+    m.kind = ModelKind::basic;
+    *out = std::move(m);
+    return Status::success();
+}
+
+}  // namespace erd

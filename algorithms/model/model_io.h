@@ -1,0 +1,62 @@
+// The model files: .model (thesis A.4.1), .erd (A.4.2) and the -t triangulation (NOTES.md).
+//
+// All three are whitespace-separated text, read leniently (any whitespace, '#' comments to the
+// end of the line) and written canonically (one record per line, '\n', values as integers when
+// integral, else the shortest decimal that reads back to the same double).
+//
+//   .model   maxval / NV / NV lines "x y value" (PIXEL coordinates) / NF / NF lines "i j k"
+//   .erd     maxval / NV / NV lines "X Y value" (DOUBLED coordinates) / NF / NF lines "i j k" /
+//            NW / NW lines "vertex face value" (wedge lines)
+//   -t       "erd-triangulation 1" / "W H" / NV / NV lines "X Y" (doubled) / NF / NF lines "i j k" /
+//            NC / NC lines "i j" (constrained edges)
+//
+// Faces are written with positive signed area (X1-X0)(Y2-Y0) - (X2-X0)(Y1-Y0) > 0; either
+// orientation is accepted on input and fixed. Model files carry maxval but not the image size:
+// W = max X / 2 + 1 and H = max Y / 2 + 1 over the vertices, and the four corners of
+// [0, 2W-2] x [0, 2H-2] must be vertices.
+//
+// Wedge lines. The writer lists, for every vertex with more than one wedge, one line per incident
+// face (the value of the wedge that face lies in), so the file alone fixes the reconstruction. The
+// reader also takes the thesis's one-line-per-wedge form: a face without a line gets the value of
+// the nearest listed faces around the vertex when those on both sides agree (or there is only one
+// side, at the open end of a border fan); otherwise it stops with "the wedge of face F at vertex
+// V is undetermined". For a vertex with wedge lines the value on its vertex line is ignored (thesis
+// A.4.2) and Model::values holds the mean of its wedge values; Model::constraints holds the edges
+// across which corner values jump (algorithms/model_topology.h).
+//
+// Every problem gives one Status (Code::input) whose message says what and where ("line 7: ...").
+// A model that passes the reader may still not be a triangulation of the image domain (overlaps,
+// holes): reconstruct() checks that.
+#pragma once
+#include <string>
+
+#include "algorithms/model/model.h"
+#include "kernel/status.h"
+
+namespace erd {
+
+struct ModelTopology;
+
+enum class ModelFileKind { unknown, basic, erd, triangulation };
+
+// The kind implied by a file name: ".model", ".erd", ".tri"; unknown otherwise (e.g. "-").
+ModelFileKind model_kind_from_name(const std::string& name);
+
+// Reads a .model or .erd text. With kind == unknown the content decides: a file that goes on
+// after its faces (the wedge count) is an .erd, otherwise a .model. *topo (may be null) receives
+// build_topology(*out), which the reader builds anyway, so reconstruct() need not build it again.
+Status read_model(const std::string& text, ModelFileKind kind, Model* out, ModelTopology* topo = nullptr);
+
+// Writes m as a .model (kind basic; every coordinate must be even) or an .erd (kind erd).
+Status write_model(const Model& m, std::string* out);
+
+// The -t triangulation: reads W, H, vertices, faces and constraints into *out (values and
+// corner values left empty, kind basic); every constraint must be an edge of a face.
+Status read_triangulation(const std::string& text, Model* out);
+Status write_triangulation(const Model& m, std::string* out);
+
+// A value as the writers print it: an integer when integral, else the shortest decimal that
+// reads back to the same double.
+std::string format_value(double v);
+
+}  // namespace erd

@@ -1,0 +1,243 @@
+// Writers of .model, .erd and -t files (formats in model_io.h; readers in model_io.cpp).
+//
+// Every record is assembled in a small stack buffer with the number formatters below and
+// appended to the output once: no temporary strings per number (the writer of a 1% bull .erd
+// used to spend ~46M instructions, most of them building and concatenating std::strings).
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/model_topology.h"
+#include "kernel/predicates.h"
+
+namespace erd {
+namespace {
+
+// Room for one record: three 20-digit integers or two integers and a value, with separators.
+constexpr std::size_t kRecordBytes = 96;
+// A value as put_value prints it is at most 24 characters ("-2.2250738585072014e-308").
+constexpr std::size_t kValueBytes = 32;
+
+// Decimal digits of v at p; returns the end. The same text as std::to_string.
+char* put_uint(char* p, std::uint64_t v) {
+    static const char kPairs[] =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+        "8081828384858687888990919293949596979899";
+    char tmp[20];
+    char* t = tmp + sizeof tmp;
+    while (v >= 100) {
+        const std::size_t k = std::size_t(v % 100) * 2;
+        v /= 100;
+        *--t = kPairs[k + 1];
+        *--t = kPairs[k];
+    }
+    if (v >= 10) {
+        *--t = kPairs[2 * v + 1];
+        *--t = kPairs[2 * v];
+    } else {
+        *--t = char('0' + v);
+    }
+    while (t < tmp + sizeof tmp) *p++ = *t++;  // at most 20 characters: no memcpy call
+    return p;
+}
+
+char* put_int(char* p, std::int64_t v) {
+    if (v < 0) {
+        *p++ = '-';
+        return put_uint(p, std::uint64_t(0) - std::uint64_t(v));
+    }
+    return put_uint(p, std::uint64_t(v));
+}
+
+// format_value's text at p (at least kValueBytes of room); returns the end. Integral values of
+// magnitude below 1e15 print as integers (so -0 prints as "0"); others, infinities and NaN
+// included, as std::to_chars prints them (the shortest decimal that reads back to the same
+// double). Below 1e15 the cast is exact, so double(i) == v says v == floor(v) without a libm
+// call; NaN fails the magnitude test.
+char* put_value(char* p, double v) {
+    if (std::fabs(v) < 1e15) {
+        const std::int64_t i = static_cast<std::int64_t>(v);
+        if (double(i) == v) return put_int(p, i);
+    }
+    return std::to_chars(p, p + kValueBytes, v).ptr;
+}
+
+// One output line at a time: each field is followed by a space, and end() turns the last space
+// into '\n' and appends the line (so a line has at least one field). A line holds at most
+// kRecordBytes: three integers, or two and a value, as the writers use it.
+class Lines {
+public:
+    explicit Lines(std::string* out) : out_(out) {}
+    Lines& num(std::uint64_t v) { return sep(put_uint(p_, v)); }
+    Lines& sint(std::int64_t v) { return sep(put_int(p_, v)); }
+    Lines& value(double v) { return sep(put_value(p_, v)); }
+    Lines& chars(const char* s, std::size_t n) {  // a field already formatted
+        for (std::size_t i = 0; i < n; ++i) *p_++ = s[i];
+        *p_++ = ' ';
+        return *this;
+    }
+    Lines& text(const char* s) {
+        while (*s) *p_++ = *s++;
+        *p_++ = ' ';
+        return *this;
+    }
+    void end() {
+        p_[-1] = '\n';  // the last separator
+        out_->append(buf_, std::size_t(p_ - buf_));
+        p_ = buf_;
+    }
+
+private:
+    Lines& sep(char* end) {
+        p_ = end;
+        *p_++ = ' ';
+        return *this;
+    }
+    std::string* out_;
+    char buf_[kRecordBytes];
+    char* p_ = buf_;
+};
+
+// Shared checks of the writers: indices, orientation, finite values.
+Status check_for_writing(const Model& m, bool values) {
+    const std::size_t nv = m.vertices.size();
+    if (values && m.values.size() != nv) return Status::failure("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices");
+    if (values && m.kind == ModelKind::erd && m.corner_values.size() != m.faces.size())
+        return Status::failure("ERD model has corner values for " + std::to_string(m.corner_values.size()) + " of " +
+                               std::to_string(m.faces.size()) + " faces");
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+        for (std::uint32_t v : m.faces[f])
+            if (v >= nv) return Status::failure("face " + std::to_string(f) + ": vertex index out of range");
+    if (values) {
+        for (double z : m.values)
+            if (!std::isfinite(z)) return Status::failure("model has a value that is not a finite number");
+        for (const auto& c : m.corner_values)
+            for (double z : c)
+                if (!std::isfinite(z)) return Status::failure("model has a wedge value that is not a finite number");
+    }
+    return Status::success();
+}
+
+void put_faces(const std::vector<std::array<std::uint32_t, 3>>& faces, Lines* line) {
+    line->num(faces.size()).end();
+    for (const auto& f : faces) line->num(f[0]).num(f[1]).num(f[2]).end();
+}
+
+// The wedge lines of an .erd: for every vertex whose corners do not all carry its vertex-line
+// value (every vertex with wedges of different values), one line per corner in half-edge order.
+// Wedges that share one value need none (the vertex line gives it back), which keeps
+// write(read(write(m))) stable. Only the corners of each vertex are needed, not the twins, so
+// they are bucketed here (the order build_topology gives them) rather than by build_topology.
+void put_wedge_lines(const Model& m, std::string* o) {
+    const std::size_t nv = m.vertices.size(), nh = 3 * m.faces.size();
+    std::vector<std::uint32_t> begin(nv + 1, 0), corners(nh);
+    for (const auto& f : m.faces)
+        for (std::uint32_t v : f) ++begin[v + 1];
+    for (std::size_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for (std::uint32_t h = 0; h < nh; ++h) corners[fill[m.faces[h / 3][h % 3]]++] = h;
+    std::string lines;
+    Lines line(&lines);
+    std::size_t nw = 0;
+    // A vertex's corners share its few wedge values: each distinct value is formatted once.
+    struct Formatted {
+        double value;
+        std::size_t length;
+        char text[kValueBytes];
+    };
+    std::vector<Formatted> seen;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const std::uint32_t b = begin[v], e = begin[v + 1];
+        bool odd = false;
+        for (std::uint32_t i = b; i < e && !odd; ++i) odd = corner_value(m, corners[i]) != m.values[v];
+        if (!odd) continue;
+        seen.clear();
+        for (std::uint32_t i = b; i < e; ++i) {
+            const std::uint32_t c = corners[i];
+            const double z = corner_value(m, c);
+            std::size_t k = 0;
+            while (k < seen.size() && seen[k].value != z) ++k;  // finite values: == is identity up to
+            if (k == seen.size()) {                              // the sign of 0, which prints "0" both ways
+                seen.emplace_back();
+                seen[k].value = z;
+                seen[k].length = std::size_t(put_value(seen[k].text, z) - seen[k].text);
+            }
+            line.num(v).num(c / 3).chars(seen[k].text, seen[k].length).end();
+        }
+        nw += e - b;
+    }
+    Lines(o).num(nw).end();
+    *o += lines;
+}
+
+}  // namespace
+
+std::string format_value(double v) {
+    char buf[kValueBytes];
+    return std::string(buf, put_value(buf, v));
+}
+
+Status write_model(const Model& m, std::string* out) {
+    if (Status s = check_for_writing(m, true); !s) return s;
+    const bool erd = m.kind == ModelKind::erd;
+    if (!erd)
+        for (const LatticePoint& p : m.vertices)
+            if (p.x % 2 != 0 || p.y % 2 != 0) return Status::failure("a basic model has a vertex off the pixel lattice");
+    std::string o;
+    o.reserve(m.vertices.size() * 28 + m.faces.size() * 18);
+    Lines line(&o);
+    line.num(m.maxval).end();
+    line.num(m.vertices.size()).end();
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+        const LatticePoint p = m.vertices[i];
+        line.sint(erd ? p.x : p.x / 2).sint(erd ? p.y : p.y / 2).value(m.values[i]).end();
+    }
+    // Positive orientation (corner values follow their vertices).
+    Model pos;
+    const Model* mm = &m;
+    bool flip = false;
+    for (const auto& f : m.faces) flip = flip || orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) < 0;
+    if (flip) {
+        pos = m;
+        for (std::size_t f = 0; f < pos.faces.size(); ++f)
+            if (orient2d(pos.vertices[pos.faces[f][0]], pos.vertices[pos.faces[f][1]], pos.vertices[pos.faces[f][2]]) < 0) {
+                std::swap(pos.faces[f][1], pos.faces[f][2]);
+                if (erd) std::swap(pos.corner_values[f][1], pos.corner_values[f][2]);
+            }
+        mm = &pos;
+    }
+    put_faces(mm->faces, &line);
+    if (erd) put_wedge_lines(*mm, &o);
+    *out = std::move(o);
+    return Status::success();
+}
+
+Status write_triangulation(const Model& m, std::string* out) {
+    if (Status s = check_for_writing(m, false); !s) return s;
+    std::string o;
+    Lines line(&o);
+    line.text("erd-triangulation").num(1).end();
+    line.sint(m.width).sint(m.height).end();
+    line.num(m.vertices.size()).end();
+    for (const LatticePoint& p : m.vertices) line.sint(p.x).sint(p.y).end();
+    std::vector<std::array<std::uint32_t, 3>> faces = m.faces;
+    for (auto& f : faces)
+        if (orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) < 0) std::swap(f[1], f[2]);
+    put_faces(faces, &line);
+    std::vector<std::array<std::uint32_t, 2>> cons = m.constraints;
+    for (auto& c : cons)
+        if (c[0] > c[1]) std::swap(c[0], c[1]);
+    std::sort(cons.begin(), cons.end());
+    line.num(cons.size()).end();
+    for (const auto& c : cons) line.num(c[0]).num(c[1]).end();
+    *out = std::move(o);
+    return Status::success();
+}
+
+}  // namespace erd

@@ -1,0 +1,172 @@
+// The public API (algorithms/erd.h): thin wrappers over the method registry, the reconstruction
+// and the metrics, plus the checks a caller-owned view needs before it is trusted.
+#include "api/erd.h"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/reconstruct.h"
+
+namespace erd::api {
+
+namespace {
+
+// Validates a caller's view and copies it into an Image. Every sample is checked against
+// maxval, because the methods index tables by sample value.
+Status copy_view(const ImageView& v, Image* out) {
+    if (v.width < 1 || v.height < 1 || v.width > kMaxImageSide || v.height > kMaxImageSide)
+        return Status::bad_input("image size " + std::to_string(v.width) + "x" + std::to_string(v.height) +
+                                 " outside 1.." + std::to_string(kMaxImageSide));
+    if (std::int64_t(v.width) * v.height > kMaxImagePixels)
+        return Status::bad_input("image has more than " + std::to_string(kMaxImagePixels) + " pixels");
+    if (v.maxval < 1 || v.maxval > 65535) return Status::bad_input("maxval " + std::to_string(v.maxval) + " outside 1..65535");
+    if (!v.samples) return Status::bad_input("image view has no samples");
+    const std::size_t stride = v.stride ? v.stride : std::size_t(v.width);
+    if (stride < std::size_t(v.width)) return Status::bad_input("image view stride is smaller than its width");
+    *out = Image(v.width, v.height, v.maxval);
+    for (int y = 0; y < v.height; ++y) {
+        const std::uint16_t* row = v.samples + std::size_t(y) * stride;
+        for (int x = 0; x < v.width; ++x) {
+            if (row[x] > v.maxval)
+                return Status::bad_input("sample " + std::to_string(row[x]) + " at (" + std::to_string(x) + "," +
+                                         std::to_string(y) + ") exceeds maxval " + std::to_string(v.maxval));
+        }
+        std::memcpy(&out->samples[std::size_t(y) * std::size_t(v.width)], row, std::size_t(v.width) * sizeof(std::uint16_t));
+    }
+    return Status::success();
+}
+
+}  // namespace
+
+ImageView view_of(const Image& image) {
+    ImageView v;
+    v.width = image.width;
+    v.height = image.height;
+    v.maxval = image.maxval;
+    v.samples = image.samples.data();
+    v.stride = std::size_t(image.width);
+    return v;
+}
+
+const char* method_name(Method m) {
+    switch (m) {
+    case Method::ed: return "ed";
+    case Method::gpi: return "gpi";
+    case Method::erded: return "erded";
+    case Method::erdgpi: return "erdgpi";
+    }
+    return "?";
+}
+
+Status method_from_name(const std::string& name, Method* out) {
+    for (Method m : {Method::ed, Method::gpi, Method::erded, Method::erdgpi}) {
+        if (name == method_name(m)) {
+            *out = m;
+            return Status::success();
+        }
+    }
+    return Status::bad_input("unknown method '" + name + "' (ed, gpi, erded, erdgpi)");
+}
+
+std::size_t memory_estimate(Method m, int width, int height, const Options& options) {
+    if (width < 1 || height < 1) return 0;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    std::int64_t n = target_points(options.generate, width, height);
+    if (n < 0) n = 0;
+    // Peak heap bytes measured (operator new high-water mark around generate(), the view's copy
+    // included) on the seven test images at 0.5% and 3%: ED 66 B/pixel whatever N; GPI 4 B/pixel
+    // + 186 B/vertex; ERDED and ERDGPI 108-116 B/pixel + 170-225 B/vertex (the edge detector's
+    // half-pixel planes dominate). The factors below keep >= 20% headroom over every measurement
+    // (docs/DECISIONS.md, Packaging); 64 KiB covers fixed costs on tiny images.
+    std::size_t per_pixel = 0, per_point = 0;
+    switch (m) {
+    case Method::ed: per_pixel = 80; per_point = 64; break;
+    case Method::gpi: per_pixel = 8; per_point = 256; break;
+    case Method::erded:
+    case Method::erdgpi: per_pixel = 136; per_point = 320; break;
+    }
+    return pixels * per_pixel + std::size_t(n) * per_point + (std::size_t(1) << 16);
+}
+
+Status generate(Method m, const ImageView& image, const Options& options, Model* model, GenerateInfo* info) {
+    if (!model) return Status::bad_input("generate: no model to fill");
+    if (options.max_memory) {
+        // The size checks of copy_view come first so the estimate never sees a nonsense size.
+        if (image.width >= 1 && image.height >= 1) {
+            std::size_t need = memory_estimate(m, image.width, image.height, options);
+            if (need > options.max_memory)
+                return Status::failure("meshing a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                       " image with " + method_name(m) + " needs about " + std::to_string(need) +
+                                       " bytes, more than max_memory " + std::to_string(options.max_memory));
+        }
+    }
+    const erd::Method* entry = find_method(method_name(m));
+    if (!entry) return Status::failure(std::string("method ") + method_name(m) + " is not in this build");
+
+    Image copy;
+    Status st = copy_view(image, &copy);
+    if (!st) return st;
+    GenerateResult result;
+    st = entry->run(copy, options.generate, &result);
+    if (!st) return st;
+    *model = std::move(result.model);
+    if (info) {
+        info->requested = result.requested;
+        info->achieved = result.achieved;
+        info->warning.clear();
+    }
+    if (result.achieved != result.requested && options.exact != ExactMode::ignore) {
+        std::string what = "target sampling density not achieved exactly (requested " + std::to_string(result.requested) +
+                           " but got " + std::to_string(result.achieved) + ")";
+        if (options.exact == ExactMode::fail) return Status::error(Code::density, what);
+        if (info) info->warning = what;
+    }
+    return Status::success();
+}
+
+Status reconstruct(const Model& model, bool supersample, Image* out) {
+    if (!out) return Status::bad_input("reconstruct: no image to fill");
+    return erd::reconstruct(model, supersample, out);
+}
+
+Status psnr(const ImageView& original, const ImageView& approx, double* db) {
+    if (!db) return Status::bad_input("psnr: no result to fill");
+    Image a, b;
+    Status st = copy_view(original, &a);
+    if (!st) return Status::bad_input("original: " + st.message);
+    st = copy_view(approx, &b);
+    if (!st) return Status::bad_input("approximation: " + st.message);
+    return erd::psnr(a, b, db);
+}
+
+Status triangulate(const Model& model, Cdt* cdt) {
+    if (!cdt) return Status::bad_input("triangulate: no triangulation to fill");
+    if (model.width < 1 || model.height < 1 || model.vertices.empty())
+        return Status::bad_input("triangulate: empty model");
+    const std::int32_t max_x = 2 * (model.width - 1), max_y = 2 * (model.height - 1);
+    if (max_x < 1 || max_y < 1) return Status::bad_input("triangulate: the model's rectangle has no area");
+    Status st = cdt->reset(max_x, max_y);
+    if (!st) return st;
+    for (LatticePoint p : model.vertices)
+        if (p.x < 0 || p.y < 0 || p.x > max_x || p.y > max_y)
+            return Status::bad_input("triangulate: vertex (" + std::to_string(p.x) + "," + std::to_string(p.y) +
+                                     ") outside the model's rectangle");
+    std::vector<VertInd> index;
+    st = cdt->insert_points(model.vertices, &index);
+    if (!st) return st;
+    for (const auto& c : model.constraints) {
+        if (c[0] >= index.size() || c[1] >= index.size())
+            return Status::bad_input("triangulate: constraint refers to vertex " + std::to_string(std::max(c[0], c[1])) +
+                                     " of " + std::to_string(index.size()));
+        st = cdt->insert_constraint(index[c[0]], index[c[1]]);
+        if (!st) return st;
+    }
+    return Status::success();
+}
+
+}  // namespace erd::api

@@ -1,0 +1,120 @@
+// The public C++ API of liberd: mesh an image, reconstruct an image from a mesh, measure PSNR.
+//
+// Installed as <prefix>/include/erd/algorithms/erd.h (also reachable as <erd/erd.h>), with the
+// kernel/ and algorithms/ headers it uses beside it; `pkg-config --cflags --libs erd` gives
+// -I<prefix>/include/erd and -lerd. C++17.
+//
+//     #include "api/erd.h"
+//     erd::api::ImageView view{width, height, 255, samples};   // samples: uint16_t[width*height]
+//     erd::api::Options opt;                                   // thesis defaults: erdgpi, 3%
+//     opt.generate.density = 1.0;                              // percent of the pixels
+//     erd::Model model;
+//     erd::Status st = erd::api::generate(erd::api::Method::erdgpi, view, opt, &model);
+//     if (!st) fprintf(stderr, "%s\n", st.message.c_str());
+//     erd::Image approx;
+//     st = erd::api::reconstruct(model, true, &approx);        // 4x4 supersampling
+//     double db = 0;
+//     st = erd::api::psnr(view, erd::api::view_of(approx), &db);
+//
+// Errors: every call returns an erd::Status (kernel/status.h): ok, or a code (input = bad
+// arguments or data, runtime = an internal limit, density = the exact vertex count was not
+// reached and Options::exact is ExactMode::fail) with a one-line message. Nothing throws, prints,
+// exits or touches files. Memory is allocated only through std::vector inside the calls;
+// built with -fno-exceptions a failed allocation aborts the process (docs/DECISIONS.md,
+// Packaging), so set Options::max_memory to refuse jobs that would not fit before they start.
+//
+// Threads: there is no global or static mutable state. Calls on different images run
+// concurrently on different threads without locking. One object (Model, Image, Cdt) must not
+// be used by two threads at once unless all of them only read it; note that Cdt::locate is
+// const but updates a walk cache, so even a shared Cdt needs one thread at a time.
+//
+// The triangulation alone: kernel/cdt.h (included below) is the constrained Delaunay
+// triangulation with exact integer predicates that the methods use; erd::Cdt is usable on its
+// own (reset, insert_point, insert_constraint, verify). triangulate() rebuilds the Cdt of a model.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/model.h"
+#include "algorithms/methods/options.h"
+#include "kernel/cdt.h"
+#include "kernel/status.h"
+
+namespace erd::api {
+
+// A read-only grayscale image owned by the caller: `height` rows of `width` samples, each in
+// [0, maxval], rows `stride` samples apart (0 means stride = width). Never retained by a call.
+struct ImageView {
+    int width = 0;
+    int height = 0;
+    std::uint32_t maxval = 255;  // 1 .. 65535
+    const std::uint16_t* samples = nullptr;
+    std::size_t stride = 0;
+};
+
+// A view of an erd::Image (valid while the image lives and is not resized).
+ImageView view_of(const Image& image);
+
+// The four methods of the thesis: ED and GPI make a basic model, ERDED and ERDGPI an ERD model.
+enum class Method { ed, gpi, erded, erdgpi };
+
+// "ed", "gpi", "erded", "erdgpi".
+const char* method_name(Method m);
+// The method of that name; Code::input for any other name.
+Status method_from_name(const std::string& name, Method* out);
+
+// What to do when the method cannot hit the requested vertex count exactly (thesis -x).
+enum class ExactMode {
+    fail = 0,    // return Code::density ("target sampling density not achieved exactly ...");
+                 // the model is still filled in
+    warn = 1,    // return ok; GenerateInfo::warning holds the same sentence
+    ignore = 2,  // return ok silently
+};
+
+struct Options {
+    // Target size and the thesis's parameters (algorithms/options.h), thesis defaults: density
+    // 3% of the pixels (-d wins over -n: set density_given or points), automatic ERD parameters.
+    GenerateOptions generate;
+    ExactMode exact = ExactMode::fail;
+    // Refuse (Code::runtime, before allocating) when memory_estimate() exceeds this many bytes.
+    // 0 = no limit.
+    std::size_t max_memory = 0;
+};
+
+// What a generate() call reports besides the model.
+struct GenerateInfo {
+    std::size_t requested = 0;  // N asked for
+    std::size_t achieved = 0;   // vertices in the model
+    std::string warning;        // ExactMode::warn: the one-line warning, else empty
+};
+
+// Upper estimate of the bytes a generate() call allocates at its peak for a width x height
+// image with this method and target (the model it returns included). See docs/DECISIONS.md,
+// Packaging, for how it was measured.
+std::size_t memory_estimate(Method m, int width, int height, const Options& options);
+
+// Meshes `image` with method `m`. *model receives the mesh (coordinates doubled, faces with
+// positive orientation; algorithms/model.h). The view is copied once into an erd::Image
+// (2 bytes per pixel) for the duration of the call. `info` may be null.
+Status generate(Method m, const ImageView& image, const Options& options, Model* model,
+                GenerateInfo* info = nullptr);
+
+// Rasterises a model into *out (model's width, height and maxval): point evaluation at every
+// pixel (the thesis's imgsyn), or with `supersample` the mean of 4x4 sub-samples per pixel
+// (imgsyn_aa). Values rounded to the nearest integer and clamped to [0, maxval].
+Status reconstruct(const Model& model, bool supersample, Image* out);
+
+// PSNR of `approx` against `original` in dB, peak 2^p - 1 with p the bits per sample of the
+// original; +infinity when the images are equal. Code::input when sizes or maxvals differ.
+Status psnr(const ImageView& original, const ImageView& approx, double* db);
+
+// Rebuilds the constrained Delaunay triangulation of a model (its vertices and constrained
+// edges) in *cdt. The triangulation depends only on the point and constraint sets, so its faces
+// are the model's faces as point triples; vertex numbers differ (the Cdt numbers the four
+// corners 0..3). Code::input for an empty model or one whose points or constraint indices lie
+// outside it.
+Status triangulate(const Model& model, Cdt* cdt);
+
+}  // namespace erd::api
