@@ -54,7 +54,8 @@ const std::vector<OptionSpec>& specs() {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft (later flags override)"},
+        {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
@@ -134,6 +135,14 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
         o->alpha_min = 1.0;
         o->alpha_max = 1.5;
         o->edge_zero_radius = 0;
+        o->edges = EdgeChoice::soft;
+    }
+    if (a.has("edges")) {
+        const std::string e = a.str("edges");
+        if (e == "hard" || e == "soft" || e == "auto")
+            o->edges = e == "hard" ? EdgeChoice::hard : e == "soft" ? EdgeChoice::soft : EdgeChoice::automatic;
+        else if (st->ok())
+            *st = Status::bad_input("--edges: '" + e + "' is not hard, soft or auto");
     }
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
@@ -259,13 +268,13 @@ int cmd_generate(int argc, char** argv) {
     const double write_seconds = seconds_since(t0);
 
     // The reported PSNR is that of the model's own reconstruction: imgsyn for a basic model,
-    // 4x4-supersampled imgsyn_aa for an ERD model (NOTES.md).
+    // 4x4-supersampled imgsyn_aa for a soft-edged ERD model (NOTES.md), imgsyn for a hard-edged one.
     bool have_psnr = false;
     double db = 0.0, psnr_seconds = 0.0;
     if (a.has("psnr-report")) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
-        st = reconstruct(res.model, res.model.kind == ModelKind::erd, &rec);
+        st = reconstruct(res.model, supersampled(res.model), &rec);
         if (!st) return fail_after_write(Status::failure("reconstruct: " + st.message));
         st = psnr(image, rec, &db);
         if (!st) return fail_after_write(st);

@@ -82,7 +82,7 @@ int cmd_render(int argc, char** argv) {
         {0, "vertices", nullptr, "draw the vertices as dots"},
         {0, "no-edges", nullptr, "draw no triangulation (just the background)"},
         {0, "over", "IMAGE", "draw over this image (the original)"},
-        {0, "over-reconstruction", nullptr, "draw over the model's own reconstruction (4x4 supersampled for .erd)"},
+        {0, "over-reconstruction", nullptr, "draw over the model's own reconstruction (4x4 supersampled for a soft-edged .erd)"},
         {0, "error", "ORIGINAL", "draw over the error map |ORIGINAL - reconstruction| (black 0 .. white >= --error-max)"},
         {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
         {'q', "quiet", nullptr, "no warnings"},
@@ -152,7 +152,7 @@ int cmd_render(int argc, char** argv) {
             bg = gray_to_rgb(im);
         } else {
             Image approx;
-            st = reconstruct(m, m.kind == ModelKind::erd, &approx);
+            st = reconstruct(m, supersampled(m), &approx);
             if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
             approx.maxval = im.maxval;
             st = error_map(im, approx, error_max, &bg);
@@ -161,7 +161,7 @@ int cmd_render(int argc, char** argv) {
         have_bg = true;
     } else if (args.has("over-reconstruction")) {
         Image approx;
-        st = reconstruct(m, m.kind == ModelKind::erd, &approx);
+        st = reconstruct(m, supersampled(m), &approx);
         if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
         bg = gray_to_rgb(approx);
         have_bg = true;

@@ -5,18 +5,23 @@
 
 #include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/edge_kind.h"
 
 namespace erd {
 
 namespace {
+
+// Douglas-Peucker tolerance on cracks, in multiples of the soft one (docs/DECISIONS.md "Hard edges").
+constexpr double kHardEpsilonScale = 2.0;
 
 // Step 1.1-1.3 for the parameter selection, caching what did not change: a detection with the
 // same (beta, r) as the last one is skipped (the simple test and the first loop iteration often
 // coincide), and so is a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    StepOneCounter(const Image& image, LengthRule rule, double eps_unit)
-        : detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule), eps_unit_(eps_unit) {}
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard)
+        : image_(image), detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule),
+          eps_unit_(eps_unit), hard_(hard) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -29,6 +34,11 @@ public:
         edges_.clear();
         std::vector<Polyline>().swap(traced_);
         std::vector<Polyline>().swap(kept_);
+        if (hard_) {
+            cracks_ = crack_edges(image_, beta, r);
+            traced_ = trace_polylines(cracks_);
+            return;
+        }
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
@@ -44,23 +54,28 @@ public:
         l_ = l;
         eps_ = eps;
         have_count_ = true;
-        kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
+        // Cracks: the side test bounds the simplification, so the tolerance can be wider.
+        kept_ = hard_ ? simplify_crack_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l)
+                      : simplify_polylines(traced_, eps * eps_unit_, l, rule_);
         count_ = distinct_points(kept_);
         return count_;
     }
 
     const Status& status() const { return status_; }
     void release_detector() { detector_.release(); }
-    Grid<std::uint8_t> edges() const { return edge_map(edges_, map_w_, map_h_); }
+    Grid<std::uint8_t> edges() const { return hard_ ? cracks_ : edge_map(edges_, map_w_, map_h_); }
     std::vector<Polyline>& kept() { return kept_; }
 
 private:
+    const Image& image_;
     // On the image, not a double copy of it: the ERD methods make their double phi only after
     // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
     EdgeDetector detector_;
     int map_w_, map_h_;  // the half-pixel grid
     LengthRule rule_;
     double eps_unit_;
+    bool hard_;
+    Grid<std::uint8_t> cracks_;  // hard edges: the last detection's crack map
     Status status_;
     bool have_edges_ = false, have_count_ = false;
     double beta_ = 0, r_ = 0, eps_ = 0;
@@ -107,7 +122,7 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 }
 
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(image, options.length_rule, options.eps_unit);
+    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges);
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     counter.release_detector();

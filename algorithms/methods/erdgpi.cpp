@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "algorithms/imaging/edge_kind.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/gpi.h"
 #include "algorithms/methods/methods.h"
@@ -58,6 +59,12 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.method = method;
     mo.target = n;
     mo.request = param_request(options);
+    const EdgeKindStats ek = measure_edge_kind(image);
+    mo.hard_edges = options.edges == EdgeChoice::hard || (options.edges == EdgeChoice::automatic && ek.is_hard());
+    result->model.edges = mo.hard_edges ? EdgeKind::hard : EdgeKind::soft;
+    result->notes.push_back(std::string("edges: ") + (mo.hard_edges ? "hard" : "soft") + " (" +
+                            (options.edges == EdgeChoice::automatic ? "measured" : "asked for") + "; hard steps " +
+                            real("%.3f", ek.hard_fraction()) + " of " + std::to_string(ek.hard + ek.soft) + ")");
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     result->stages.push_back({"initial mesh", seconds_since(t0)});

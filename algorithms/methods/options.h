@@ -14,6 +14,9 @@
 
 namespace erd {
 
+// --edges: what the ERD methods take the image's edges to be (algorithms/imaging/edge_kind.h).
+enum class EdgeChoice { automatic, soft, hard };
+
 struct GenerateOptions {
     // Target size. -d (percent) wins over -n, as in the thesis; with neither, density 3%.
     double density = 3.0;        // percent of W*H, counting every vertex
@@ -40,6 +43,7 @@ struct GenerateOptions {
                                  // refit of all wedge values after refinement; 0 = the thesis's values
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
+    EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft
     int edge_zero_radius = 1;    // ERDED: density zeroed within this many pixels (Chebyshev) of an
                                  // edge pixel (ours; the thesis's "edge pixels" is 0)
 

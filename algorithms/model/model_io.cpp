@@ -66,6 +66,12 @@ public:
         skip();
         return pos_ >= s_.size();
     }
+    // True when the next token is `word` (nothing is consumed).
+    bool peek_is(std::string_view word) {
+        skip();
+        return s_.compare(pos_, word.size(), word.data(), word.size()) == 0 &&
+               (pos_ + word.size() == s_.size() || space(s_[pos_ + word.size()]) || s_[pos_ + word.size()] == '#');
+    }
     std::size_t remaining() {
         skip();
         return s_.size() - pos_;
@@ -371,6 +377,29 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
 
 }  // namespace
 
+// The header block (model_io.h): "erd-header 1", then key lines, then "end". *edges_line receives
+// the line of the "edges" key (0 when absent).
+Status read_header(Tokens& tk, Model* m, int* edges_line) {
+    std::string_view t;
+    tk.next(&t);  // "erd-header"
+    std::uint64_t version = 0;
+    if (Status s = tk.uint("header version", 0, ~0ull >> 1, &version); !s) return s;
+    if (version != 1)
+        return Status::bad_input(tk.where() + "header version " + std::to_string(version) + " is not supported (this reader knows 1)");
+    *edges_line = 0;
+    for (;;) {
+        if (!tk.next(&t)) return Status::bad_input("file ends early: expected a header key or 'end'");
+        if (t == "end") return Status::success();
+        if (t != "edges") return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges)");
+        if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
+        *edges_line = tk.line();
+        if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
+        if (t != "hard" && t != "soft")
+            return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
+        m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
+    }
+}
+
 ModelFileKind model_kind_from_name(const std::string& name) {
     const auto ends = [&](const char* ext) {
         const std::string e(ext);
@@ -393,6 +422,9 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     Tokens tk(text);
     if (tk.at_end()) return Status::bad_input("empty file");
     Model m;
+    int edges_line = 0;
+    if (tk.peek_is("erd-header"))
+        if (Status s = read_header(tk, &m, &edges_line); !s) return s;
     std::uint64_t maxval = 0, nv = 0;
     if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
     m.maxval = std::uint32_t(maxval);
@@ -413,6 +445,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     if (kind == ModelFileKind::unknown) kind = tk.at_end() ? ModelFileKind::basic : ModelFileKind::erd;
     if (kind == ModelFileKind::basic) {
         m.kind = ModelKind::basic;
+        if (edges_line)
+            return Status::bad_input("line " + std::to_string(edges_line) + ": header key 'edges' is for .erd files only");
         if (!tk.at_end()) {
             std::string_view t;
             tk.next(&t);

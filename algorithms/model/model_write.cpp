@@ -192,6 +192,7 @@ Status write_model(const Model& m, std::string* out) {
     std::string o;
     o.reserve(m.vertices.size() * 28 + m.faces.size() * 18);
     Lines line(&o);
+    if (erd && m.edges == EdgeKind::hard) o += "erd-header 1\nedges hard\nend\n";
     line.num(m.maxval).end();
     line.num(m.vertices.size()).end();
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {
