@@ -19,9 +19,10 @@ constexpr double kHardEpsilonScale = 2.0;
 // coincide), and so is a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard)
+    // budget: the most constrained points the parameter selection accepts (0.7 N there).
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard, double budget)
         : image_(image), detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule),
-          eps_unit_(eps_unit), hard_(hard) {}
+          eps_unit_(eps_unit), hard_(hard), budget_(budget) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -54,9 +55,15 @@ public:
         l_ = l;
         eps_ = eps;
         have_count_ = true;
-        // Cracks: the side test bounds the simplification, so the tolerance can be wider.
-        kept_ = hard_ ? simplify_crack_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l)
-                      : simplify_polylines(traced_, eps * eps_unit_, l, rule_);
+        if (hard_) {
+            // Cracks: curves that keep every pixel on its side when they fit in the budget of the
+            // parameter selection, else plain Douglas-Peucker on the same cracks (fewer points;
+            // docs/DECISIONS.md "Hard edges" has the numbers).
+            kept_ = simplify_crack_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l);
+            if (double(distinct_points(kept_)) > budget_) kept_ = simplify_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l, rule_);
+        } else {
+            kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
+        }
         count_ = distinct_points(kept_);
         return count_;
     }
@@ -75,6 +82,7 @@ private:
     LengthRule rule_;
     double eps_unit_;
     bool hard_;
+    double budget_;
     Grid<std::uint8_t> cracks_;  // hard edges: the last detection's crack map
     Status status_;
     bool have_edges_ = false, have_count_ = false;
@@ -122,7 +130,7 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 }
 
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges);
+    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, 0.7 * double(options.target));
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     counter.release_detector();
