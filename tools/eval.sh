@@ -11,7 +11,8 @@
 # ERDED and ERDGPI run twice: "thesis method" (generate --thesis: the thesis's wedge values, line
 # search alpha in [1, 1.5], density zeroed on edge pixels only) for the reproduction targets, and
 # "erd default" (our least-squares wedge refit, alpha in [0.75, 1], edge radius 1 pixel).
-# Variant names: METHOD (erd default) and METHOD+thesis. tools/eval_startup.sh (Table 3.4) runs last.
+# Variant names: METHOD (erd default) and METHOD+thesis. tools/eval_startup.sh (Table 3.4) and
+# tools/eval_hard.sh (hard-edged pictures, issue 15) run last.
 set -u
 ERD=${1:-build/erd}
 IMAGES=${2:-../shared/images}
@@ -178,4 +179,6 @@ printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"
 echo "eval: wrote $RESULTS"
 # Table 3.4 (ERDED start-up modes): its own marked section, so it must run after the file is written.
 [[ -x tools/eval_startup.sh || -f tools/eval_startup.sh ]] && bash tools/eval_startup.sh "$ERD" "$IMAGES"
+# The hard-edged table (issue 15): its own marked section too.
+bash tools/eval_hard.sh "$ERD" "$IMAGES"
 grep -E "^(## |Met|Median)" "$RESULTS"

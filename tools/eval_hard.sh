@@ -4,9 +4,11 @@
 # --edges auto) on every `erd synth --kind` picture at 320 x 240 and densities 0.5, 1, 2, 3 %,
 # plus the edge kind that auto measured on each picture and on its blurred version (--blur 2).
 # Writes its own marked section of docs/RESULTS.md (run by tools/eval.sh after the main tables).
-# Usage: tools/eval_hard.sh ERD_BINARY
+# Usage: tools/eval_hard.sh ERD_BINARY [IMAGES_DIR]   (the photos there: the kind auto picks)
 set -u
 ERD=${1:-build/erd}
+IMAGES=${2:-../shared/images}
+[[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
 JOBS=${JOBS:-2}
 [[ $ERD == */* && $ERD != /* ]] && ERD=$PWD/$ERD
 cd "$(dirname "$0")/.."
@@ -85,6 +87,12 @@ trap 'rm -f "$section"' EXIT
     echo "| image | hard-edged picture | blurred picture |"
     echo "|---|:-:|:-:|"
     for k in $KINDS; do echo "| $k | $(kind_of "$OUT/$k.pgm" "$k") | $(kind_of "$OUT/$k.soft.pgm" "$k.soft") |"; done
+    echo
+    echo "And on the test images (IMAGES_DIR: photos, scans; a soft choice leaves erd's output unchanged):"
+    echo
+    echo "| image | edges |"
+    echo "|---|:-:|"
+    for f in "$IMAGES"/*.pgm; do [[ -f $f ]] && echo "| $(basename "$f" .pgm) | $(kind_of "$f" "photo.$(basename "$f" .pgm)") |"; done
     echo "<!-- /hard-edges -->"
 } >"$section"
 

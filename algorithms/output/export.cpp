@@ -75,12 +75,15 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     // Flipping y turns positive orientation in image coordinates into clockwise seen from +z;
     // writing corners 0, 2, 1 restores counter-clockwise (normals up).
     out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
+    // A hard-edged model says so (its pixels are the surface at their centres, not 4x4 means);
+    // soft-edged and basic exports stay as they were.
+    const std::string kind = erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "";
     if (options.format == MeshFormat::obj) {
-        out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + "\n");
+        out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         for (const auto& p : pos) append(out, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
         for (const auto& t : face_idx) append_face(out, "f %u %u %u\n", t[0] + 1, t[2] + 1, t[1] + 1);
     } else {
-        out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + "\n");
+        out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         out->append("element vertex " + std::to_string(pos.size()) + "\nproperty double x\nproperty double y\nproperty double z\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
         for (const auto& p : pos) append(out, "%.9g %.9g %.9g\n", p[0], p[1], p[2]);
