@@ -20,9 +20,9 @@ constexpr double kHardEpsilonScale = 2.0;
 class StepOneCounter : public ConstraintPointCounter {
 public:
     // budget: the most constrained points the parameter selection accepts (0.7 N there).
-    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard, double budget)
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard, bool fallback, double budget)
         : image_(image), detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule),
-          eps_unit_(eps_unit), hard_(hard), budget_(budget) {}
+          eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget) {}
 
     void detect(double beta, double r) override {
         if (have_edges_ && beta == beta_ && r == r_) return;
@@ -60,7 +60,7 @@ public:
             // parameter selection, else plain Douglas-Peucker on the same cracks (fewer points;
             // docs/DECISIONS.md "Hard edges" has the numbers).
             kept_ = simplify_crack_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l);
-            if (double(distinct_points(kept_)) > budget_) kept_ = simplify_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l, rule_);
+            if (fallback_ && double(distinct_points(kept_)) > budget_) kept_ = simplify_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l, rule_);
         } else {
             kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
         }
@@ -81,7 +81,7 @@ private:
     int map_w_, map_h_;  // the half-pixel grid
     LengthRule rule_;
     double eps_unit_;
-    bool hard_;
+    bool hard_, fallback_;
     double budget_;
     Grid<std::uint8_t> cracks_;  // hard edges: the last detection's crack map
     Status status_;
@@ -130,7 +130,8 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 }
 
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, 0.7 * double(options.target));
+    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
+                           0.7 * double(options.target));
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     counter.release_detector();

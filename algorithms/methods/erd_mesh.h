@@ -33,6 +33,10 @@ struct InitialMeshOptions {
     // Hard edges (algorithms/imaging/edge_kind.h): step 1.1 traces the cracks between pixels
     // instead of Canny's half-pixel maxima, and step 1.3 keeps every pixel on its side.
     bool hard_edges = false;
+    // Hard edges whose side-keeping curves hold more points than the selection accepts (0.7 N):
+    // true = plain Douglas-Peucker on the same cracks at that beta; false = keep the side test
+    // and let the selection shrink beta and grow l.
+    bool hard_fallback = true;
 };
 
 struct InitialMesh {

@@ -3,12 +3,15 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "algorithms/imaging/edge_kind.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/gpi.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/wedge_fit.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/reconstruct.h"
 
 namespace erd {
 
@@ -49,7 +52,7 @@ ErdParamRequest param_request(const GenerateOptions& options) {
 }
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
-                        InitialMesh* mesh, GenerateResult* result) {
+                        InitialMesh* mesh, GenerateResult* result, bool hard_fallback) {
     Status st = begin_generate(image, options, result);
     if (!st) return st;
     const std::size_t n = result->requested;
@@ -59,6 +62,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.method = method;
     mo.target = n;
     mo.request = param_request(options);
+    mo.hard_fallback = hard_fallback;
     const EdgeKindStats ek = measure_edge_kind(image);
     mo.hard_edges = options.edges == EdgeChoice::hard || (options.edges == EdgeChoice::automatic && ek.is_hard());
     result->model.edges = mo.hard_edges ? EdgeKind::hard : EdgeKind::soft;
@@ -86,10 +90,12 @@ void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateRes
                             std::to_string(model.stats().alpha_first) + ", at the far end: " + std::to_string(model.stats().alpha_last) + ")");
 }
 
-Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+namespace {
+
+Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
     Cdt cdt;
     InitialMesh mesh;
-    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result);
+    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result, hard_fallback);
     if (!st) return st;
     mesh.edges = Grid<std::uint8_t>();  // only ERDED reads the edge map again
     const std::int64_t n = std::int64_t(result->requested);
@@ -134,6 +140,30 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     result->notes.push_back(std::string("stop: ") + to_string(gs.stop));
     result->notes.push_back("insertions: " + std::to_string(gs.insertions));
     result->notes.push_back("psnr (point evaluation): " + real("%.4f", gs.psnr));
+    return Status::success();
+}
+
+}  // namespace
+
+// With hard edges the two treatments of curves too long for the budget (erd_mesh.h
+// hard_fallback) each win on some images (docs/DECISIONS.md "Hard edges"): both run, and the
+// model with the better point reconstruction is kept (the fallback on a tie).
+Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    Status st = erdgpi_once(image, options, true, result);
+    if (!st || result->model.edges != EdgeKind::hard) return st;
+    GenerateResult exact;
+    st = erdgpi_once(image, options, false, &exact);
+    if (!st) return st;
+    double db[2] = {0, 0};
+    const GenerateResult* r[2] = {result, &exact};
+    for (int i = 0; i < 2; ++i) {
+        Image rec;
+        if (!(st = reconstruct(r[i]->model, false, &rec)) || !(st = psnr(image, rec, &db[i]))) return st;
+    }
+    const std::string note = "hard curves: plain past the budget " + real("%.4f", db[0]) + " dB, side-keeping only " +
+                             real("%.4f", db[1]) + " dB";
+    if (db[1] > db[0]) *result = std::move(exact);
+    result->notes.push_back(note);
     return Status::success();
 }
 

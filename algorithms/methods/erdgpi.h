@@ -36,8 +36,9 @@ ErdParamRequest param_request(const GenerateOptions& options);
 struct InitialMesh;
 // The common start of ERDED and ERDGPI: checks the image and the target N (result->requested),
 // then builds the initial mesh (framework step 1), timed as the stage "initial mesh".
+// hard_fallback: InitialMeshOptions::hard_fallback.
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
-                        InitialMesh* mesh, GenerateResult* result);
+                        InitialMesh* mesh, GenerateResult* result, bool hard_fallback = true);
 // Appends the chosen parameters and initial-mesh facts to result->notes ("beta: 0.028", ...).
 void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateResult* result);
 
