@@ -77,13 +77,13 @@ std::string method_list() {
     return out;
 }
 
-// "unknown method 'X'. Did you mean 'Y'? Available: ..." as for an unknown subcommand.
+// "unknown method 'X'; available: ... Did you mean 'Y'?", as for an unknown subcommand.
 std::string unknown_method(const std::string& name) {
     std::size_t count = 0;
     const MethodInfo* m = methods(&count);
     std::vector<const char*> names;
     for (std::size_t i = 0; i < count; ++i) names.push_back(m[i].name);
-    return "unknown method '" + name + "'." + did_you_mean(name, names) + " Available: " + method_names();
+    return "unknown method '" + name + "'; available: " + method_names() + "." + did_you_mean(name, names);
 }
 
 std::string polylines_text(const std::vector<std::vector<LatticePoint>>& lines) {
