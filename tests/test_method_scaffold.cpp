@@ -2,7 +2,6 @@
 // exact-count rules and policy, the thesis preset, step 1 in one home, the typed statistics.
 #include <catch2/catch.hpp>
 
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,26 +13,9 @@
 #include "algorithms/methods/scaffold.h"
 #include "api/erd.h"
 #include "tests/erd_run.h"
+#include "tests/people_util.h"
 
 using namespace erd;
-
-namespace {
-
-// A ramp with a bright disc and a dark bar: step 1 finds edges, the greedy loop has work.
-Image disc_and_bar(int w, int h) {
-    Image im(w, h, 255);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            double v = 50 + 100.0 * x / (w - 1);
-            const double dx = x - 0.4 * w, dy = y - 0.5 * h;
-            if (dx * dx + dy * dy < 0.08 * w * h) v = 220;
-            if (y > 0.7 * h && y < 0.8 * h && x > 0.15 * w) v = 20;
-            im.at(x, y) = std::uint16_t(std::lround(v));
-        }
-    return im;
-}
-
-}  // namespace
 
 TEST_CASE("method registry: one row per method, read by the API and the thesis names", "[methods]") {
     std::size_t count = 0;
@@ -106,17 +88,17 @@ TEST_CASE("exact-count policy and the thesis preset live in the library", "[meth
 }
 
 TEST_CASE("step 1 has one home: the ERD initial mesh uses the polylines edge_polylines gives", "[methods]") {
-    const Image im = disc_and_bar(64, 48);
+    const Image im = people_test::wave_disc_image();  // 40 x 30 with a disc: step 1 finds its edge
     EdgePolylineParams p;  // library defaults: beta 0.055, r 0.4, l 5, epsilon one pixel
     EdgePolylineResult chain;
     REQUIRE(edge_polylines(im, p, &chain).ok());
     REQUIRE_FALSE(chain.polylines.empty());
-    CHECK(chain.edges.width == 127);
+    CHECK(chain.edges.width == 79);
     CHECK(chain.traced >= chain.polylines.size());
 
     InitialMeshOptions mo;
     mo.method = ErdMethod::erdgpi;
-    mo.target = 64 * 48;  // large: no polyline left out
+    mo.target = 40 * 30;  // large: no polyline left out
     mo.request.beta = p.canny.beta;
     mo.request.r = p.canny.r;
     mo.request.l = p.min_length;
@@ -133,7 +115,7 @@ TEST_CASE("step 1 has one home: the ERD initial mesh uses the polylines edge_pol
 }
 
 TEST_CASE("typed statistics: each method fills its stages, the printed lines come from them", "[methods]") {
-    const Image im = disc_and_bar(48, 36);
+    const Image im = people_test::wave_disc_image();
     GenerateOptions o;
     o.points = 120;
     for (const char* name : {"ed", "gpi", "erded", "erdgpi"}) {
