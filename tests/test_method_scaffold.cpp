@@ -142,6 +142,20 @@ TEST_CASE("typed statistics: each method fills its stages, the printed lines com
         }
         if (r.stats.has_greedy) CHECK(lines.back().rfind("psnr (point evaluation): ", 0) == 0);
     }
+    // The library API hands out the same typed fields.
+    GenerateResult direct;
+    REQUIRE(find_method("erdgpi")->run(im, o, &direct).ok());
+    api::Options ao;
+    ao.generate = o;
+    Model model;
+    api::GenerateInfo info;
+    REQUIRE(api::generate(api::Method::erdgpi, api::view_of(im), ao, &model, &info).ok());
+    REQUIRE(info.stats.has_erd);
+    CHECK(info.stats.erd.params.beta == direct.stats.erd.params.beta);
+    CHECK(info.stats.erd.params.l == direct.stats.erd.params.l);
+    CHECK(info.stats.greedy.insertions == direct.stats.greedy.insertions);
+    CHECK(result_lines(info.stats) == result_lines(direct.stats));
+    CHECK(info.stages.size() == direct.stages.size());
 }
 
 TEST_CASE("erd generate: an unknown --method gets a did-you-mean, exit 2", "[cli]") {
