@@ -27,11 +27,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     timer.lap("wedge values");
 
     ErdGreedyModel greedy(model);
-    GreedyOptions go;
-    go.target_vertices = std::size_t(n);
-    go.max_error = options.max_error;
-    go.psnr = options.psnr;
-    go.progress = options.progress;
+    GreedyOptions go = greedy_options(options, std::size_t(n));
     // Real-valued errors: the ERD model is judged by its supersampled reconstruction, which
     // rounding the point evaluation does not model (DECISIONS.md: +0.85 dB on bull at 0.125%).
     go.round_values = false;

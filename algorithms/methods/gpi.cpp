@@ -40,12 +40,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     timer.lap("triangulate corners");
 
     BasicGreedyModel model(image);
-    GreedyOptions go;
-    go.target_vertices = std::size_t(n);
-    go.max_error = options.max_error;
-    go.psnr = options.psnr;
-    go.round_values = options.round_values;
-    go.progress = options.progress;
+    const GreedyOptions go = greedy_options(options, std::size_t(n));
     result->stats.has_greedy = true;
     st = greedy_refine(cdt, image, model, go, &result->stats.greedy);
     if (!st) return st;

@@ -84,6 +84,16 @@ void finish_basic_method(const Cdt& cdt, const Image& image, StageTimer* timer, 
     timer->lap("model");
 }
 
+GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
+    GreedyOptions go;
+    go.target_vertices = n;
+    go.max_error = options.max_error;
+    go.psnr = options.psnr;
+    go.round_values = options.round_values;
+    go.progress = options.progress;
+    return go;
+}
+
 WedgeValueOptions wedge_options(const GenerateOptions& options) {
     WedgeValueOptions w;
     w.rule = options.wedge_rule == 0 ? 0 : 1;
@@ -94,13 +104,7 @@ WedgeValueOptions wedge_options(const GenerateOptions& options) {
 }
 
 ErdParamRequest param_request(const GenerateOptions& options) {
-    ErdParamRequest r;
-    r.beta = options.beta;
-    r.r = options.ratio;
-    r.l = options.min_length;
-    r.eps = options.epsilon;
-    r.simple = options.simple;
-    return r;
+    return ErdParamRequest{options.beta, options.ratio, options.min_length, options.epsilon, options.simple};
 }
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,

@@ -11,6 +11,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/erd_params.h"
+#include "algorithms/methods/greedy.h"
 #include "algorithms/methods/options.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/model.h"
@@ -42,6 +43,10 @@ Model basic_model(const Cdt& cdt, const Image& image);
 
 // The end of ED and GPI: the basic model of cdt into result (model, achieved), timed as "model".
 void finish_basic_method(const Cdt& cdt, const Image& image, StageTimer* timer, GenerateResult* result);
+
+// The greedy loop's options for GPI and ERDGPI: stop at n vertices or by --max-error / --psnr,
+// errors rounded as options.round_values says, the progress hook.
+GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n);
 
 // Wedge-value options from the generate options (-w, -s, the line-search range).
 WedgeValueOptions wedge_options(const GenerateOptions& options);
