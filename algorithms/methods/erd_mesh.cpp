@@ -3,94 +3,57 @@
 #include <algorithm>
 #include <numeric>
 
-#include "algorithms/imaging/canny.h"
-#include "algorithms/imaging/douglas_peucker.h"
-#include "algorithms/imaging/edge_kind.h"
+#include "algorithms/imaging/edge_polylines.h"
 
 namespace erd {
 
 namespace {
 
-// Douglas-Peucker tolerance on cracks, in multiples of the soft one (docs/DECISIONS.md "Hard edges").
-constexpr double kHardEpsilonScale = 2.0;
-
-// Step 1.1-1.3 for the parameter selection, caching what did not change: a detection with the
-// same (beta, r) as the last one is skipped (the simple test and the first loop iteration often
-// coincide), and so is a count with the same (l, eps) on the same detection.
+// Step 1.1-1.3 (algorithms/imaging/edge_polylines.h) as the parameter selection's counter. The
+// chain skips a detection with the same (beta, r) as the last one (the simple test and the first
+// loop iteration often coincide), and a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
     // budget: the most constrained points the parameter selection accepts (0.7 N there).
     StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard, bool fallback, double budget)
-        : image_(image), detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule),
-          eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget) {}
+        : chain_(image, hard), rule_(rule), eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget) {}
 
     void detect(double beta, double r) override {
-        if (have_edges_ && beta == beta_ && r == r_) return;
-        beta_ = beta;
-        r_ = r;
-        have_edges_ = true;
-        have_count_ = false;
-        // The previous detection's points and polylines are dead now: free them before the
-        // detector allocates, so they do not add to the peak.
-        edges_.clear();
-        std::vector<Polyline>().swap(traced_);
-        std::vector<Polyline>().swap(kept_);
-        if (hard_) {
-            cracks_ = crack_edges(image_, beta, r);
-            traced_ = trace_polylines(cracks_);
-            return;
-        }
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
-        // Points, not a map: only the chosen detection's map is ever made (edges()).
-        Status st = detector_.detect(cp, &edges_);  // reuses the gradient pass while it can
+        Status st = chain_.detect(cp);
         if (!st.ok() && status_.ok()) status_ = st;
-        edges_.link_rows();
-        traced_ = trace_polylines(edges_);
     }
 
     std::size_t count(int l, double eps) override {
-        if (have_count_ && l == l_ && eps == eps_) return count_;
-        l_ = l;
-        eps_ = eps;
-        have_count_ = true;
-        if (hard_) {
-            // Cracks: curves that keep every pixel on its side when they fit in the budget of the
-            // parameter selection, else plain Douglas-Peucker on the same cracks (fewer points;
-            // docs/DECISIONS.md "Hard edges" has the numbers).
-            kept_ = simplify_crack_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l);
-            if (fallback_ && double(distinct_points(kept_)) > budget_) kept_ = simplify_polylines(traced_, kHardEpsilonScale * eps * eps_unit_, l, rule_);
-        } else {
-            kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
+        const std::vector<Polyline>* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
+        // Hard edges: the side-keeping curves when they fit the budget, else plain Douglas-Peucker
+        // on the same cracks (docs/DECISIONS.md "Hard edges").
+        if (hard_ && fallback_ && double(distinct_points(*kept)) > budget_)
+            kept = &chain_.simplify(l, eps * eps_unit_, rule_, CrackRule::plain);
+        if (chain_.generation() != counted_) {
+            counted_ = chain_.generation();
+            count_ = distinct_points(*kept);
         }
-        count_ = distinct_points(kept_);
         return count_;
     }
 
     const Status& status() const { return status_; }
-    void release_detector() { detector_.release(); }
-    Grid<std::uint8_t> edges() const { return hard_ ? cracks_ : edge_map(edges_, map_w_, map_h_); }
-    std::vector<Polyline>& kept() { return kept_; }
+    void release_detector() { chain_.release_detector(); }
+    Grid<std::uint8_t> edges() const { return chain_.edge_map(); }
+    std::vector<Polyline>& kept() { return chain_.kept(); }
 
 private:
-    const Image& image_;
     // On the image, not a double copy of it: the ERD methods make their double phi only after
     // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
-    EdgeDetector detector_;
-    int map_w_, map_h_;  // the half-pixel grid
+    EdgePolylines chain_;
     LengthRule rule_;
     double eps_unit_;
     bool hard_, fallback_;
     double budget_;
-    Grid<std::uint8_t> cracks_;  // hard edges: the last detection's crack map
     Status status_;
-    bool have_edges_ = false, have_count_ = false;
-    double beta_ = 0, r_ = 0, eps_ = 0;
-    int l_ = 0;
-    std::size_t count_ = 0;
-    SortedPoints edges_;  // of the last detection
-    std::vector<Polyline> traced_, kept_;
+    std::size_t counted_ = 0, count_ = 0;  // distinct points of simplification number counted_
 };
 
 std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
