@@ -117,13 +117,7 @@ trap 'rm -f "$section"' EXIT
     echo "<!-- /hard-edges -->"
 } >"$section"
 
-if [[ -f $RESULTS ]] && grep -q '^<!-- hard-edges' "$RESULTS"; then
-    awk -v f="$section" '
-        /^<!-- hard-edges/ { while ((getline l < f) > 0) print l; skip = 1; next }
-        /^<!-- \/hard-edges -->/ { skip = 0; next }
-        !skip' "$RESULTS" >"$RESULTS.tmp" && mv "$RESULTS.tmp" "$RESULTS"
-else
-    { [[ -f $RESULTS ]] && echo; cat "$section"; } >>"$RESULTS"
-fi
+source tools/results_section.sh
+put_section hard-edges "$section" "$RESULTS"
 echo "eval_hard: wrote the hard-edges section of $RESULTS"
 grep -E '^ERDGPI after - GPI' "$RESULTS"

@@ -1,24 +1,16 @@
 #include "algorithms/imaging/drawings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include "algorithms/imaging/splitmix.h"
 
 namespace erd {
 
 namespace {
 
 using i64 = std::int64_t;
-
-struct SplitMix {  // as in synth.cpp: a fixed-seed 64-bit generator
-    std::uint64_t state;
-    std::uint64_t next() {
-        std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    i64 below(i64 n) { return i64((next() >> 11) % std::uint64_t(n)); }
-};
 
 struct Pt {
     i64 x, y;
