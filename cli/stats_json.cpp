@@ -41,6 +41,7 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
         s.l = p.l;
         s.epsilon = p.eps;
         s.simple = p.simple;
+        s.hard_edges = rs.erd.hard_edges;
         s.dropped_constraints = rs.erd.dropped_crossing;
     }
     if (rs.has_greedy) s.stop = to_string(rs.greedy.stop);
@@ -65,8 +66,8 @@ std::string stats_json(const GenerateStats& s) {
     j += kv("dropped_constraints", num(s.dropped_constraints)) + ",";
     if (s.has_params)
         j += kv("parameters", "{" + kv("beta", num(s.beta)) + "," + kv("r", num(s.r)) + "," + kv("l", std::to_string(s.l)) +
-                                  "," + kv("epsilon", num(s.epsilon)) + "," + kv("simple", s.simple ? "true" : "false") +
-                                  "}") + ",";
+                                  "," + kv("epsilon", num(s.epsilon)) + "," + kv("simple", s.simple ? "true" : "false") + "," +
+                                  kv("edges", s.hard_edges ? "\"hard\"" : "\"soft\"") + "}") + ",";
     else
         j += kv("parameters", "null") + ",";
     j += kv("stop", s.stop.empty() ? "null" : json_string(s.stop)) + ",";

@@ -208,7 +208,9 @@ TEST_CASE("hard edges: erd generate --edges, the header in the file, reconstruct
     TempDir t;
     REQUIRE(!t.path.empty());
     REQUIRE(run_erd("synth -q --kind drawing -W 160 -H 120 -o " + t.file("d.pgm")).status == 0);
-    REQUIRE(run_erd("generate -q --method erdgpi -i " + t.file("d.pgm") + " -d 1 -o " + t.file("auto.erd")).status == 0);
+    REQUIRE(run_erd("generate -q --method erdgpi -i " + t.file("d.pgm") + " -d 1 -o " + t.file("auto.erd") + " --stats " +
+                    t.file("s.json")).status == 0);
+    CHECK(slurp(t.file("s.json")).find(",\"edges\":\"hard\"}") != std::string::npos);
     CHECK(slurp(t.file("auto.erd")).rfind("erd-header 1\nedges hard\nend\n", 0) == 0);
     REQUIRE(run_erd("generate -q --method erdgpi --thesis -i " + t.file("d.pgm") + " -d 1 -o " + t.file("thesis.erd")).status == 0);
     CHECK(slurp(t.file("thesis.erd")).rfind("255\n", 0) == 0);
