@@ -87,10 +87,12 @@ Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height) {
     return occ;
 }
 
-Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+namespace {
+
+Status erded_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
     Cdt cdt;
     InitialMesh mesh;
-    Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result);
+    Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result, hard_fallback);
     if (!st) return st;
     const std::int64_t n = std::int64_t(result->requested);
     StageTimer timer(result);
@@ -139,6 +141,12 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     timer.lap("triangulation and wedge values");
     finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
     return Status::success();
+}
+
+}  // namespace
+
+Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    return run_erd_method(image, options, erded_once, result);
 }
 
 }  // namespace erd

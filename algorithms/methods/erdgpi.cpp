@@ -1,11 +1,7 @@
 #include "algorithms/methods/erdgpi.h"
 
-#include <utility>
-
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/scaffold.h"
-#include "algorithms/model/metrics.h"
-#include "algorithms/model/reconstruct.h"
 
 namespace erd {
 
@@ -50,24 +46,8 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
 
 }  // namespace
 
-// With hard edges the two treatments of crack curves too long for the budget (erd_mesh.h
-// hard_fallback) each win on some images (docs/DECISIONS.md "Hard edges"): both run, and the
-// model whose point reconstruction has the higher PSNR is kept (the fallback on a tie).
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    Status st = erdgpi_once(image, options, true, result);
-    if (!st || result->model.edges != EdgeKind::hard) return st;
-    GenerateResult exact;
-    if (!(st = erdgpi_once(image, options, false, &exact))) return st;
-    double db[2] = {0, 0};
-    const GenerateResult* r[2] = {result, &exact};
-    for (int i = 0; i < 2; ++i) {
-        Image rec;
-        if (!(st = reconstruct(r[i]->model, false, &rec)) || !(st = psnr(image, rec, &db[i]))) return st;
-    }
-    if (db[1] > db[0]) *result = std::move(exact);
-    result->stats.erd.plain_psnr = db[0];
-    result->stats.erd.exact_psnr = db[1];
-    return Status::success();
+    return run_erd_method(image, options, erdgpi_once, result);
 }
 
 }  // namespace erd

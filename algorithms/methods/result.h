@@ -60,7 +60,7 @@ struct ErdStepStats {
     bool hard_edges = false;            // the model's edges are hard (Model::edges)
     bool edges_measured = false;        // --edges auto decided it from these counts:
     std::size_t hard_steps = 0, soft_steps = 0;  // strong steps (algorithms/imaging/edge_kind.h)
-    // ERDGPI with hard edges runs both treatments of over-budget crack curves (erd_mesh.h
+    // ERDED and ERDGPI with hard edges runs both treatments of over-budget crack curves (erd_mesh.h
     // hard_fallback) and keeps the better: their point-reconstruction PSNRs (0: not run).
     double plain_psnr = 0, exact_psnr = 0;
 };

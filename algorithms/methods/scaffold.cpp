@@ -8,6 +8,8 @@
 
 #include "algorithms/imaging/edge_kind.h"
 #include "algorithms/methods/wedge_fit.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/reconstruct.h"
 
 namespace erd {
 
@@ -159,6 +161,23 @@ void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions
     s.alpha_last = model->stats().alpha_last;
     result->polylines = std::move(mesh->polylines);
     timer->lap("model");
+}
+
+Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
+    Status st = run(image, options, true, result);
+    if (!st || result->model.edges != EdgeKind::hard) return st;
+    GenerateResult exact;
+    if (!(st = run(image, options, false, &exact))) return st;
+    double db[2] = {0, 0};
+    const GenerateResult* r[2] = {result, &exact};
+    for (int i = 0; i < 2; ++i) {
+        Image rec;
+        if (!(st = reconstruct(r[i]->model, false, &rec)) || !(st = psnr(image, rec, &db[i]))) return st;
+    }
+    if (db[1] > db[0]) *result = std::move(exact);
+    result->stats.erd.plain_psnr = db[0];
+    result->stats.erd.exact_psnr = db[1];
+    return Status::success();
 }
 
 }  // namespace erd
