@@ -171,3 +171,31 @@ clean: clean-embedded
 .PHONY: clean-embedded
 clean-embedded:
 	rm -rf $(EMBEDDED_BUILD)
+
+# ---------------------------------------------------------------------------------------------
+# Python (issue 22): `make python` builds the extension python/erd/_erd*.so in place for PYTHON
+# with python/setup.py (the same build `pip install` runs), offline against Debian's
+# python3-pybind11 and python3-numpy (installed with apt when missing, with python3-pytest for
+# the tests), and puts python/ on PYTHON's path with a .pth file (what `pip install -e` does).
+# Objects go to $(BUILD)/python; only changed sources are recompiled.
+PYTHON     ?= /usr/bin/python3
+PY_DEBS    := python3-dev python3-pybind11 python3-numpy python3-pytest python3-setuptools python3-wheel python3-venv
+PY_PTH     := erd-checkout.pth
+
+.PHONY: python python-deps python-test
+python-deps: $(STB_HDR)
+	@$(PYTHON) -c "import pybind11, numpy, pytest, setuptools, wheel, venv" 2>/dev/null || { \
+	  echo "installing Debian packages $(PY_DEBS)" >&2; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null 2>&1 || \
+	  { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null; }; }
+	@$(PYTHON) -c "import pybind11, numpy, pytest" || { echo "python: pybind11, numpy or pytest missing for $(PYTHON)" >&2; exit 1; }
+
+python: python-deps
+	@cd python && ERD_BUILD_JOBS=2 $(PYTHON) setup.py -q build_ext --inplace --build-temp ../$(BUILD)/python
+	@site=$$($(PYTHON) -c "import site; print(site.getsitepackages()[0])") && mkdir -p "$$site" && \
+	  echo "$(CURDIR)/python" > "$$site/$(PY_PTH)" && \
+	  echo "python: built $$(cd python && ls erd/_erd*.so) for $(PYTHON) ($$($(PYTHON) -c 'import sys; print("Python", sys.version.split()[0])')); $$site/$(PY_PTH) -> $(CURDIR)/python"
+
+# pytest over python/tests with this checkout's extension first on the path.
+python-test: python $(BUILD)/erd
+	cd python && ERD_BIN=$(CURDIR)/$(BUILD)/erd ERD_IMAGES=$(abspath $(IMAGES)) PYTHONPATH=$(CURDIR)/python $(PYTHON) -m pytest -q tests

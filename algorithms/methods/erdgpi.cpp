@@ -52,7 +52,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     Status st = begin_generate(image, options, result);
     if (!st) return st;
     const std::size_t n = result->requested;
-    options.progress("initial mesh", 0.0);
+    if (options.progress.report_cancelled("initial mesh", 0.0)) return Status::failure(kCancelled);
     const auto t0 = std::chrono::steady_clock::now();
     InitialMeshOptions mo;
     mo.method = method;
@@ -88,7 +88,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     const std::int64_t n = std::int64_t(result->requested);
     auto t0 = std::chrono::steady_clock::now();
 
-    options.progress("wedge values", 0.0);
+    if (options.progress.report_cancelled("wedge values", 0.0)) return Status::failure(kCancelled);
     ErdModel model(image, wedge_options(options));
     model.assign_all(cdt);
     result->stages.push_back({"wedge values", seconds_since(t0)});

@@ -1,0 +1,30 @@
+// erd.Mesh: a model (algorithms/model/model.h) with the method that made it and its statistics,
+// seen from Python as numpy arrays; and the Status -> exception mapping every call shares.
+#pragma once
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "algorithms/model/model.h"
+#include "kernel/status.h"
+
+namespace erd::py {
+
+struct Mesh {
+    Model model;
+    std::string method;      // "" for a mesh read from a file
+    pybind11::dict stats;    // the --stats fields that describe the mesh
+};
+
+// Raises the exception for a failed Status: ValueError for bad input (Code::input and
+// Code::density), RuntimeError for the library's internal failures; `os_error` makes every
+// failure an OSError (file access). The message is the library's.
+[[noreturn]] void raise_status(const Status& st, bool os_error = false);
+
+// Defines erd.Mesh in module m.
+void bind_mesh(pybind11::module_& m);
+
+// The statistics of a mesh made by `method` ("" when read from a file), in --stats's key order.
+pybind11::dict mesh_stats(const std::string& method, const Model& model, std::size_t requested, std::size_t achieved);
+
+}  // namespace erd::py
