@@ -52,4 +52,5 @@ ext = Pybind11Extension(
     cxx_std=17,
 )
 
-setup(ext_modules=[ext], cmdclass={"build_ext": build_ext})
+setup(packages=["erd"], package_data={"erd": ["*.pyi", "py.typed"]}, ext_modules=[ext],
+      cmdclass={"build_ext": build_ext})

@@ -116,7 +116,8 @@ void bind_mesh(pyb::module_& m) {
         }, "F x 3 float64: the value of face i at its corner j (ERD model: the wedge value; basic: the vertex value).")
         .def_property_readonly("constrained_edges", [](const Mesh& s) {
             return table<std::int64_t>(s.model.constraints.size(), 2, [&](std::size_t i, std::size_t j) { return std::int64_t(s.model.constraints[i][j]); });
-        }, "E x 2 int64: vertex pairs (i < j) of the constrained edges (empty for a basic model).")
+        }, "E x 2 int64: vertex pairs (i < j) of the constrained edges (empty for a basic model). A mesh\n"
+           "loaded from an .erd has those across which the corner values jump (what the file records).")
         .def("reconstruct", &reconstruct, pyb::arg("supersample") = pyb::none(),
              "reconstruct(supersample=None) -> numpy.ndarray\n\n"
              "The image the mesh stands for, H x W, uint8 when maxval <= 255 else uint16. supersample=True\n"
