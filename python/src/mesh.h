@@ -12,8 +12,10 @@ namespace erd::py {
 
 struct Mesh {
     Model model;
-    std::string method;      // "" for a mesh read from a file
-    pybind11::dict stats;    // the --stats fields that describe the mesh
+    std::string method;              // "" for a mesh read from a file
+    std::size_t requested = 0;       // N asked for (the vertex count for a file)
+    std::size_t achieved = 0;
+    pybind11::object stats;          // the --stats fields, made on first use (None until then)
 };
 
 // Raises the exception for a failed Status: ValueError for bad input (Code::input and

@@ -44,7 +44,8 @@ Mesh generate(pyb::handle image, const std::string& method, double density, pyb:
     }
     interrupt.rethrow();
     mesh.method = method;
-    mesh.stats = mesh_stats(method, mesh.model, info.requested, info.achieved);
+    mesh.requested = info.requested;
+    mesh.achieved = info.achieved;
     if (st.code == Code::density) {
         pyb::object e = density_error(st.message);
         e.attr("mesh") = pyb::cast(std::move(mesh));
@@ -76,7 +77,7 @@ Mesh load(pyb::handle path) {
         st = read_model(text, kind, &mesh.model);
     }
     if (!st) raise_status(Status::bad_input(name + ": " + st.message));
-    mesh.stats = mesh_stats("", mesh.model, mesh.model.vertices.size(), mesh.model.vertices.size());
+    mesh.requested = mesh.achieved = mesh.model.vertices.size();
     return mesh;
 }
 
