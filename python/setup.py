@@ -21,7 +21,18 @@ if not os.path.exists("/usr/include/stb/stb_image.h"):
 
 
 def files(*patterns):
-    return sorted(p for pat in patterns for p in glob.glob(os.path.join(ROOT, pat)))
+    """Paths relative to this folder, as setuptools wants them in setup() arguments."""
+    return sorted(os.path.relpath(p, HERE) for pat in patterns for p in glob.glob(os.path.join(ROOT, pat)))
+
+
+class BuildExt(build_ext):
+    """Compiles from absolute paths, so objects land under the build folder (named after the
+    source's full path) and not beside the Makefile's objects through '..'."""
+
+    def build_extension(self, ext):
+        ext.sources = [os.path.join(HERE, s) for s in ext.sources]
+        ext.depends = [os.path.join(HERE, s) for s in ext.depends]
+        super().build_extension(ext)
 
 
 sources = files("kernel/*.cpp", "algorithms/*/*.cpp", "api/*.cpp", "cli/*.cpp",
@@ -53,4 +64,4 @@ ext = Pybind11Extension(
 )
 
 setup(packages=["erd"], package_data={"erd": ["*.pyi", "py.typed"]}, ext_modules=[ext],
-      cmdclass={"build_ext": build_ext})
+      cmdclass={"build_ext": BuildExt})

@@ -75,7 +75,7 @@ else
 fi
 
 stage
-echo "== python package (make python, pytest python/tests; counts each test)"
+echo "== python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
 if make -s python >"$log/python-build" 2>&1; then
     grep '^python: built' "$log/python-build" || true
     images_abs=$(cd "$IMAGES" 2>/dev/null && pwd)
@@ -89,6 +89,12 @@ if make -s python >"$log/python-build" 2>&1; then
     [[ $line =~ ([0-9]+)\ error ]] && f=$((f + BASH_REMATCH[1]))
     [[ $rc -ne 0 && $f -eq 0 ]] && f=1   # pytest crashed, collected nothing or could not start
     passed=$((passed + p)); failed=$((failed + f))
+    # pip install into a fresh venv made with --system-site-packages (reuses make python's objects).
+    if make -s python-venv-check >"$log/venv" 2>&1; then
+        grep '^python-venv-check' "$log/venv"; passed=$((passed + 1))
+    else
+        tail -20 "$log/venv"; echo "pip install into a venv failed"; failed=$((failed + 1))
+    fi
 else
     tail -20 "$log/python-build"; echo "python package build failed (pybind11, numpy or pytest missing?)"; failed=$((failed + 1))
 fi
