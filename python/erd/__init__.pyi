@@ -98,10 +98,11 @@ def psnr(a: ImageArray, b: ImageArray, maxval: Optional[int] = None) -> float:
 def edges(
     image: ImageArray,
     *,
-    beta: float = 0.095,
+    beta: float = 0.055,
     ratio: float = 0.4,
     tolerance: float = 1.0,
     min_length: int = 5,
+    length_after: bool = False,
     plain_canny: bool = False,
     maxval: Optional[int] = None,
 ) -> Edges:

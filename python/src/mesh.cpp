@@ -24,18 +24,22 @@ void raise_status(const Status& st, bool os_error) {
     throw pyb::value_error(st.message);
 }
 
-pyb::dict mesh_stats(const std::string& method, const Model& model, std::size_t requested, std::size_t achieved) {
+pyb::dict mesh_stats(const Mesh& mesh) {
     // The CLI's own collector, so the counts mean what --stats's do.
     GenerateResult r;
-    r.model = model;
-    r.requested = requested;
-    r.achieved = achieved;
-    Image shape(0, 0, model.maxval);
-    shape.width = model.width;
-    shape.height = model.height;
-    const cli::GenerateStats s = cli::collect_stats(method, shape, r);
+    r.model = mesh.model;
+    r.requested = mesh.requested;
+    r.achieved = mesh.achieved;
+    r.stats = mesh.run;
+    r.stages = mesh.stages;
+    Image shape;
+    shape.width = mesh.model.width;
+    shape.height = mesh.model.height;
+    shape.maxval = mesh.model.maxval;
+    const cli::GenerateStats s = cli::collect_stats(mesh.method, shape, r);
+    const pyb::object none = pyb::none();
     pyb::dict d;
-    d["method"] = method.empty() ? pyb::object(pyb::none()) : pyb::object(pyb::str(method));
+    d["method"] = mesh.method.empty() ? none : pyb::str(mesh.method);
     d["model"] = s.erd ? "erd" : "basic";
     d["image"] = pyb::dict(pyb::arg("width") = s.width, pyb::arg("height") = s.height, pyb::arg("maxval") = s.maxval);
     d["points"] = pyb::dict(pyb::arg("requested") = s.requested, pyb::arg("achieved") = s.achieved);
@@ -43,6 +47,14 @@ pyb::dict mesh_stats(const std::string& method, const Model& model, std::size_t 
     d["faces"] = s.faces;
     d["constrained_vertices"] = s.constrained_vertices;
     d["constrained_edges"] = s.constrained_edges;
+    d["dropped_constraints"] = s.dropped_constraints;
+    d["parameters"] = s.has_params ? pyb::object(pyb::dict(pyb::arg("beta") = s.beta, pyb::arg("r") = s.r, pyb::arg("l") = s.l,
+                                                           pyb::arg("epsilon") = s.epsilon, pyb::arg("simple") = s.simple))
+                                   : none;
+    d["stop"] = s.stop.empty() ? none : pyb::str(s.stop);
+    pyb::list stages;
+    for (const StageTime& t : s.stages) stages.append(pyb::dict(pyb::arg("name") = t.name, pyb::arg("seconds") = t.seconds));
+    d["stages"] = stages;
     return d;
 }
 
@@ -96,10 +108,12 @@ void bind_mesh(pyb::module_& m) {
         .def_property_readonly("maxval", [](const Mesh& s) { return s.model.maxval; }, "Largest sample value of the image.")
         .def_property_readonly("stats", [](Mesh& s) {
             // Counting the constrained edges builds the mesh's adjacency: 2-3% of a generate call.
-            if (!s.stats || s.stats.is_none()) s.stats = mesh_stats(s.method, s.model, s.requested, s.achieved);
+            if (!s.stats || s.stats.is_none()) s.stats = mesh_stats(s);
             return s.stats.attr("copy")();
         },
-                               "The `erd generate --stats` fields that describe the mesh, as a dict.")
+                               "The `erd generate --stats` fields as a dict: method, model, image, points, vertices, faces,\n"
+                               "constrained_vertices, constrained_edges, dropped_constraints, parameters (ERD: beta, r, l,\n"
+                               "epsilon, simple), stop (greedy methods), stages (name, seconds).")
         .def_property_readonly("vertices", [](const Mesh& s) {
             return table<double>(s.model.vertices.size(), 2, [&](std::size_t i, std::size_t j) {
                 const LatticePoint p = s.model.vertices[i];

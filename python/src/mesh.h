@@ -4,7 +4,9 @@
 #include <pybind11/pybind11.h>
 
 #include <string>
+#include <vector>
 
+#include "algorithms/methods/result.h"
 #include "algorithms/model/model.h"
 #include "kernel/status.h"
 
@@ -15,6 +17,8 @@ struct Mesh {
     std::string method;              // "" for a mesh read from a file
     std::size_t requested = 0;       // N asked for (the vertex count for a file)
     std::size_t achieved = 0;
+    RunStats run;                    // what generate's stages measured (empty for a file)
+    std::vector<StageTime> stages;
     pybind11::object stats;          // the --stats fields, made on first use (None until then)
 };
 
@@ -26,7 +30,8 @@ struct Mesh {
 // Defines erd.Mesh in module m.
 void bind_mesh(pybind11::module_& m);
 
-// The statistics of a mesh made by `method` ("" when read from a file), in --stats's key order.
-pybind11::dict mesh_stats(const std::string& method, const Model& model, std::size_t requested, std::size_t achieved);
+// The --stats fields of a mesh, in their order (a file's mesh: the counts; method, parameters,
+// stop and stages None or empty), without the erd program's own (total time, memory, PSNR).
+pybind11::dict mesh_stats(const Mesh& mesh);
 
 }  // namespace erd::py

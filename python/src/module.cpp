@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/imaging/polylines.h"
+#include "algorithms/imaging/edge_polylines.h"
 #include "algorithms/model/model_io.h"
 #include "api/erd.h"
 #include "cli/commands.h"
@@ -46,6 +46,8 @@ Mesh generate(pyb::handle image, const std::string& method, double density, pyb:
     mesh.method = method;
     mesh.requested = info.requested;
     mesh.achieved = info.achieved;
+    mesh.run = info.stats;
+    mesh.stages = std::move(info.stages);
     if (st.code == Code::density) {
         pyb::object e = density_error(st.message);
         e.attr("mesh") = pyb::cast(std::move(mesh));
@@ -100,39 +102,35 @@ struct Edges {
     double tau_high = 0, tau_low = 0;
 };
 
-Edges edges(pyb::handle image, double beta, double ratio, double tolerance, int min_length, bool plain_canny,
-            std::optional<long long> maxval) {
+Edges edges(pyb::handle image, double beta, double ratio, double tolerance, int min_length, bool length_after,
+            bool plain_canny, std::optional<long long> maxval) {
     const ImageArg img = image_arg(image, "image", maxval);
     EdgePolylineParams params;
     params.canny.beta = beta;
     params.canny.r = ratio;
     params.canny.modified = !plain_canny;
     params.epsilon = tolerance;
-    params.min_points = min_length;
-    if (!(beta > 0 && beta <= 1)) throw pyb::value_error("beta " + std::to_string(beta) + " is outside (0, 1]");
-    if (!(tolerance >= 0)) throw pyb::value_error("tolerance must be >= 0");
-    if (min_length < 0) throw pyb::value_error("min_length must be >= 0");
+    params.min_length = min_length;
+    if (length_after) params.length_rule = LengthRule::after_simplification;
     Image copy(img.view.width, img.view.height, img.view.maxval);
-    Grid<std::uint8_t> map;
-    std::vector<Polyline> lines;
-    CannyStats stats;
+    EdgePolylineResult chain;
     Status st;
     {
         pyb::gil_scoped_release unlocked;
         for (int y = 0; y < copy.height; ++y)
             for (int x = 0; x < copy.width; ++x) copy.at(x, y) = img.view.samples[std::size_t(y) * img.view.stride + std::size_t(x)];
-        st = edge_polylines(copy, params, &map, &lines, &stats);
+        st = edge_polylines(copy, params, &chain);
     }
     if (!st) raise_status(st);
     Edges e;
-    pyb::array_t<bool> m({std::size_t(map.height), std::size_t(map.width)});
+    pyb::array_t<bool> m({std::size_t(chain.edges.height), std::size_t(chain.edges.width)});
     bool* dst = m.mutable_data();
-    for (std::size_t i = 0; i < map.data.size(); ++i) dst[i] = map.data[i] != 0;
+    for (std::size_t i = 0; i < chain.edges.data.size(); ++i) dst[i] = chain.edges.data[i] != 0;
     e.map = m;
-    for (const Polyline& l : lines)
+    for (const Polyline& l : chain.polylines)
         e.polylines.push_back(table<double>(l.size(), 2, [&](std::size_t i, std::size_t j) { return 0.5 * double(j ? l[i].y : l[i].x); }));
-    e.tau_high = stats.tau_high;
-    e.tau_low = stats.tau_low;
+    e.tau_high = chain.stats.tau_high;
+    e.tau_low = chain.stats.tau_low;
     return e;
 }
 
@@ -190,12 +188,16 @@ PYBIND11_MODULE(_erd, m) {
         .def("__repr__", [](const Edges& e) {
             return "<erd.Edges " + std::to_string(e.polylines.size()) + " polylines, tau_high " + std::to_string(e.tau_high) + ">";
         });
-    m.def("edges", &edges, pyb::arg("image"), pyb::kw_only(), pyb::arg("beta") = 0.095, pyb::arg("ratio") = 0.4,
-          pyb::arg("tolerance") = 1.0, pyb::arg("min_length") = 5, pyb::arg("plain_canny") = false,
+    const erd::EdgePolylineParams defaults;  // the library's, as `erd edges` has them
+    m.def("edges", &edges, pyb::arg("image"), pyb::kw_only(), pyb::arg("beta") = defaults.canny.beta,
+          pyb::arg("ratio") = defaults.canny.r, pyb::arg("tolerance") = defaults.epsilon,
+          pyb::arg("min_length") = defaults.min_length, pyb::arg("length_after") = false, pyb::arg("plain_canny") = false,
           pyb::arg("maxval") = pyb::none(),
-          "edges(image, *, beta=0.095, ratio=0.4, tolerance=1.0, min_length=5, plain_canny=False, maxval=None) -> Edges\n\n"
+          "edges(image, *, beta=0.055, ratio=0.4, tolerance=1.0, min_length=5, length_after=False, plain_canny=False,\n"
+          "      maxval=None) -> Edges\n\n"
           "The first stage of ERDED and ERDGPI on its own, as `erd edges`: edges at half-pixel resolution\n"
-          "(modified Canny), traced into polylines and simplified (Douglas-Peucker tolerance in half pixels).");
+          "(modified Canny), traced into polylines and simplified (Douglas-Peucker tolerance in pixels;\n"
+          "min_length counted before simplification unless length_after). ValueError for parameters out of range.");
     m.def("_cli_main", &cli_main, pyb::arg("argv"),
           "_cli_main(argv) -> int: the erd program's main on argv (argv[0] = program name); returns the exit status.");
 }

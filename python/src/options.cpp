@@ -127,12 +127,7 @@ GenerateArgs generate_args(double density, pyb::handle points, const pyb::kwargs
     if (kwargs.contains("thesis")) {
         pyb::handle t = kwargs["thesis"];
         if (!pyb::isinstance<pyb::bool_>(t)) throw pyb::type_error("thesis must be True or False");
-        if (t.cast<bool>()) {
-            g.wedge_fit = 0;
-            g.alpha_min = 1.0;
-            g.alpha_max = 1.5;
-            g.edge_zero_radius = 0;
-        }
+        if (t.cast<bool>()) set_thesis_preset(&g);
     }
     for (const Spec& s : specs()) {
         if (!kwargs.contains(s.name)) continue;

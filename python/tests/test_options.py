@@ -76,6 +76,26 @@ def test_stats_are_the_cli_fields(small):
     assert s["image"] == {"width": 128, "height": 128, "maxval": 255}
     assert s["points"]["requested"] == s["points"]["achieved"] == s["vertices"]
     assert 0 < s["constrained_edges"] and 0 < s["constrained_vertices"] < s["vertices"]
+    assert set(s["parameters"]) == {"beta", "r", "l", "epsilon", "simple"} and s["stop"] == "target"
+    assert [t["name"] for t in s["stages"]][:2] == ["initial mesh", "wedge values"]
+    basic = erd.generate(small, "ed", density=2.0).stats
+    assert basic["parameters"] is None and basic["stop"] is None and basic["model"] == "basic"
+
+
+def test_stats_match_the_cli_json(erd_bin, images, tmp_path):
+    import json
+    import subprocess
+    from conftest import read_pgm
+    path = os.path.join(images, "house.pgm")
+    r = subprocess.run([erd_bin, "generate", "--method", "erdgpi", "-i", path, "-d", "1", "-o", str(tmp_path / "h.erd"),
+                        "-q", "--stats", str(tmp_path / "s.json")])
+    assert r.returncode == 0
+    cli = json.loads((tmp_path / "s.json").read_text())
+    ours = erd.generate(read_pgm(path)[0], "erdgpi", density=1.0).stats
+    for key in ("method", "model", "image", "points", "vertices", "faces", "constrained_vertices", "constrained_edges",
+                "dropped_constraints", "parameters", "stop"):
+        assert ours[key] == cli[key], key
+    assert [t["name"] for t in ours["stages"]] == [t["name"] for t in cli["stages"]][1:-1]  # less read and write
 
 
 def test_load_errors(tmp_path):
