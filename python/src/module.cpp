@@ -153,6 +153,9 @@ PYBIND11_MODULE(_erd, m) {
     namespace pyb = pybind11;
     using namespace erd::py;
     m.doc() = "erd: image -> triangle mesh with explicit edge discontinuities (the compiled part; use `import erd`).";
+    // The docstrings carry the Python signatures (pybind11's own would show C++ types: handle, kwargs).
+    pyb::options doc_options;
+    doc_options.disable_function_signatures();
     bind_mesh(m);
 
     density_error = pyb::reinterpret_steal<pyb::object>(
