@@ -104,7 +104,7 @@ fuzz: deps
 	@bash fuzz/run.sh $(FUZZ_SECONDS)
 
 clean:
-	rm -rf build build-asan build-fuzz out
+	rm -rf build build-asan build-fuzz out python/build python/erd.egg-info python/erd/_erd*.so
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
