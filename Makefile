@@ -45,6 +45,7 @@ help:
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
+	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 
 deps: $(CATCH_HDR) $(STB_HDR)
 $(CATCH_HDR) $(STB_HDR):
