@@ -126,7 +126,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         s.hard_edges = options.edges == EdgeChoice::hard;
     }
     result->model.edges = s.hard_edges ? EdgeKind::hard : EdgeKind::soft;
-    options.progress("initial mesh", 0.0);
+    if (options.progress.report_cancelled("initial mesh", 0.0)) return Status::failure(kCancelled);
     StageTimer timer(result);
     InitialMeshOptions mo;
     mo.method = method;
