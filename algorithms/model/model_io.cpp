@@ -1,4 +1,4 @@
-// Readers of .model, .erd and -t files (formats in model_io.h; writers in model_write.cpp).
+// Readers of .model, .erd, -t and -p files (formats in model_io.h; writers in model_write.cpp).
 #include "algorithms/model/model_io.h"
 
 #include <algorithm>
@@ -517,6 +517,38 @@ Status read_triangulation(const std::string& text, Model* out) {
     std::sort(m.constraints.begin(), m.constraints.end());
     m.kind = ModelKind::basic;
     *out = std::move(m);
+    return Status::success();
+}
+
+Status read_polylines(const std::string& text, std::vector<std::vector<LatticePoint>>* out) {
+    Tokens tk(text);
+    if (tk.at_end()) return Status::bad_input("empty file");
+    std::string_view t;
+    tk.next(&t);
+    if (t != "erd-polylines")
+        return Status::bad_input(tk.where() + "not an erd polylines file (expected 'erd-polylines 1', found '" + show(t) + "')");
+    std::uint64_t version = 0, np = 0;
+    if (Status s = tk.uint("format version", 1, 1, &version); !s) return s;
+    if (Status s = count(tk, "polyline count", 0, 2, &np); !s) return s;
+    std::vector<std::vector<LatticePoint>> lines(np);
+    for (std::uint64_t i = 0; i < np; ++i) {
+        const auto name = [i] { return "polyline " + std::to_string(i); };
+        std::uint64_t n = 0;
+        if (Status s = count(tk, [&] { return "point count of " + name(); }, 0, 4, &n); !s) return s;
+        lines[i].resize(n);
+        for (std::uint64_t k = 0; k < n; ++k) {
+            std::int64_t x = 0, y = 0;
+            const auto point = [&] { return "point " + std::to_string(k) + " of " + name(); };
+            if (Status s = tk.sint([&] { return "x coordinate of " + point(); }, 0, kMaxDoubled, &x); !s) return s;
+            if (Status s = tk.sint([&] { return "y coordinate of " + point(); }, 0, kMaxDoubled, &y); !s) return s;
+            lines[i][k] = LatticePoint{std::int32_t(x), std::int32_t(y)};
+        }
+    }
+    if (!tk.at_end()) {
+        tk.next(&t);
+        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last polyline (check the counts)");
+    }
+    *out = std::move(lines);
     return Status::success();
 }
 
