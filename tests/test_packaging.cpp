@@ -84,7 +84,7 @@ bool same_model(const erd::Model& a, const erd::Model& b) {
 
 TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[packaging]") {
     // erd_ed and erd_gpi run the thesis's method: erd generate --thesis (lead, 02:37).
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     struct Case { const char* alias; const char* thesis_args; const char* erd_args; const char* ext; };
     const Case cases[] = {
@@ -124,7 +124,7 @@ TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[pac
 }
 
 TEST_CASE("imgsyn and imgsyn_aa: model on stdin, plain PGM on stdout, as erd reconstruct", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     REQUIRE(d.run("ywb -i img.pnm -d 3 -o lena.model").status == 0);
     REQUIRE(d.run("erd_gpi -i img.pnm -d 3 -o lena.erd").status == 0);
@@ -164,7 +164,7 @@ TEST_CASE("imgsyn and imgsyn_aa: model on stdin, plain PGM on stdout, as erd rec
 }
 
 TEST_CASE("Cal_PSNR prints what erd psnr prints", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     REQUIRE(d.run("erd_gpi -i img.pnm -d 3 -o m.erd").status == 0);
     REQUIRE(d.run("imgsyn_aa < m.erd > rec.pnm").status == 0);
@@ -187,7 +187,7 @@ TEST_CASE("Cal_PSNR prints what erd psnr prints", "[packaging]") {
 }
 
 TEST_CASE("thesis exit modes -x 0/1/2 through gpi: exit 3 and the exact lines", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     // A constant image: greedy insertion has nothing to refine, so 20 points cannot be reached.
     erd::Image flat(16, 16, 255);
@@ -208,7 +208,7 @@ TEST_CASE("thesis exit modes -x 0/1/2 through gpi: exit 3 and the exact lines", 
 }
 
 TEST_CASE("thesis programs take exactly the thesis's flags", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     struct Bad { const char* cmd; const char* fragment; };
     const Bad bad[] = {
@@ -459,21 +459,15 @@ int main() {
 }  // namespace
 
 TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it, make uninstall", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     const std::string root = source_tree();
-    if (root.empty()) {
-        WARN("source tree not found (run from the repository or set ERD_SRC): skipped");
-        return;
-    }
+    if (!have_input(!root.empty(), "source tree not found (run from the repository or set ERD_SRC)")) return;
     // BUILD spelled as the Makefile spells it after normalising (relative to the tree when inside
     // it), so the -o names below match its targets and nothing is rebuilt with other flags.
     std::string build = absolute(dirname_of(erd_bin()));
     if (build.compare(0, root.size() + 1, root + "/") == 0) build = build.substr(root.size() + 1);
     // (a build dir that is the tree itself stays absolute, as the Makefile leaves it)
-    if (!exists((build[0] == '/' ? build : root + "/" + build) + "/liberd.a")) {
-        WARN(build + "/liberd.a missing: skipped");
-        return;
-    }
+    if (!have_input(exists((build[0] == '/' ? build : root + "/" + build) + "/liberd.a"), build + "/liberd.a missing")) return;
     TempDir dest;
     const std::string prefix = "/opt/erd";
     // -o: install what the build dir holds; never rebuild someone's objects from here.
@@ -546,12 +540,9 @@ TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it,
 }
 
 TEST_CASE("erd(1) names every subcommand, every generate option and all seven thesis programs", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     const std::string root = source_tree();
-    if (root.empty()) {
-        WARN("source tree not found (run from the repository or set ERD_SRC): skipped");
-        return;
-    }
+    if (!have_input(!root.empty(), "source tree not found (run from the repository or set ERD_SRC)")) return;
     // roff writes "-" as "\-"; undo that to search the text.
     std::string man = slurp(root + "/docs/erd.1");
     std::string text;

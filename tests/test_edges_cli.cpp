@@ -13,7 +13,7 @@
 using namespace erd_test;
 
 TEST_CASE("erd edges writes the half-pixel edge map and the polylines", "[imaging]") {
-    if (!binary_available()) { WARN("erd binary not found; set ERD_BIN"); return; }
+    if (!need_binary()) return;
     TempDir dir;
     // 20x12, a vertical step between x = 9 and x = 10.
     erd::Image im(20, 12, 255);
