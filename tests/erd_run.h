@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -105,6 +106,21 @@ inline RunResult run_shell(const std::string& cmd) {
     r.err = slurp(io.file("err"));
     return r;
 }
+
+// Runs `sh -c "cd DIR && CMD"`, capturing stdout and stderr.
+inline RunResult run_in(const std::string& dir, const std::string& cmd) {
+    // Braces so the command's own redirections (imgsyn < m > out.pnm) win over the capture.
+    return run_shell("cd " + sh_quote(dir) + " && { " + cmd + " ; }");
+}
+
+// The path with symbolic links and dots resolved (p itself when it does not exist).
+inline std::string absolute(const std::string& p) {
+    char buf[PATH_MAX];
+    return ::realpath(p.c_str(), buf) ? std::string(buf) : p;
+}
+
+// The thesis's seven program names (Appendix A.5), which the erd binary answers to.
+inline const char* const kAliases[] = {"ywb", "gpi", "erd_ed", "erd_gpi", "imgsyn", "imgsyn_aa", "Cal_PSNR"};
 
 // Runs `sh -c "PREFIX ERD ARGS"`; args are passed to the shell as written (quote paths with sh_quote).
 inline RunResult run_erd(const std::string& args, const std::string& prefix = "") {

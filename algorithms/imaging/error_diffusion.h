@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
-#include "algorithms/model/model.h"
+#include "kernel/lattice.h"
 #include "kernel/status.h"
 
 namespace erd {
