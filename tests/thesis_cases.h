@@ -58,7 +58,7 @@ void for_each_thesis_case(std::vector<const char*> method_names, Run run) {
     GenerateOptions o;
     o.density = c.density;
     o.density_given = true;
-    const Method* m = find_method(name);
+    const MethodInfo* m = find_method(name);
     REQUIRE(m != nullptr);
     GenerateResult r;
     REQUIRE(m->run(im, o, &r).ok());
