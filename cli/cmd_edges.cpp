@@ -77,19 +77,12 @@ const CommandLine kEdges = {
         {0, "length-after", nullptr, "count -l on the simplified polyline instead"},
         {0, "plain-canny", nullptr, "plain Canny (no junction repair of Ding and Goshtasby)"},
     },
-    "no warnings or statistics",
-    1,
-    1,
-    "expected one IMAGE",
+    "no warnings or statistics", 1, 1, "expected one IMAGE",
 };
 
 }  // namespace
 
-int cmd_edges(int argc, char** argv) {
-    Invocation run = start_command(kEdges, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_edges(const Args& args, const Reporter& rep) {
     if (!args.has("output")) return rep.usage("missing -o EDGES");
 
     Status st;
@@ -147,5 +140,7 @@ int cmd_edges(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_edges(int argc, char** argv) { return run_command(kEdges, argc, argv, run_edges); }
 
 }  // namespace erd::cli

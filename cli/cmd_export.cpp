@@ -23,17 +23,10 @@ const CommandLine kExport = {
         {0, "format", "obj|ply", "output format when the file name does not say (default: from the name)"},
         {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
     },
-    "no warnings",
-    1,
-    1,
-    "expected one MODEL",
+    "no warnings", 1, 1, "expected one MODEL",
 };
 
-int cmd_export(int argc, char** argv) {
-    Invocation run = start_command(kExport, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_export(const Args& args, const Reporter& rep) {
     if (!args.has("output")) return rep.usage("-o OUT.obj or OUT.ply is required");
     const std::string in = args.positional()[0], out = args.str("output");
 
@@ -60,5 +53,7 @@ int cmd_export(int argc, char** argv) {
     if (!st) return rep.fail(st);
     return 0;
 }
+
+int cmd_export(int argc, char** argv) { return run_command(kExport, argc, argv, run_export); }
 
 }  // namespace erd::cli

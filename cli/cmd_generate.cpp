@@ -65,10 +65,7 @@ const CommandLine kGenerate = {
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
     },
-    "no progress or timing lines",
-    0,
-    0,
-    nullptr,
+    "no progress or timing lines", 0, 0, nullptr,
     methods_help,
 };
 
@@ -139,12 +136,8 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
 
 }  // namespace
 
-int cmd_generate(int argc, char** argv) {
+static int run_generate(const Args& a, const Reporter& rep) {
     const auto t_start = std::chrono::steady_clock::now();
-    Invocation run = start_command(kGenerate, argc, argv);
-    if (run.done()) return run.status;
-    const Args& a = run.args;
-    const Reporter& rep = run.rep;
     if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")");
     const MethodInfo* method = find_method(a.str("method"));
     if (!method) return rep.usage(unknown_method(a.str("method")));
@@ -248,7 +241,7 @@ int cmd_generate(int argc, char** argv) {
     const double write_seconds = seconds_since(t0);
 
     // The reported PSNR is that of the model's own reconstruction: imgsyn for a basic model,
-    // 4x4-supersampled imgsyn_aa for an ERD model (NOTES.md).
+    // 4x4-supersampled imgsyn_aa for an ERD model (../shared/spec/NOTES.md).
     bool have_psnr = false;
     double db = 0.0, psnr_seconds = 0.0;
     if (a.has("psnr-report")) {
@@ -280,5 +273,7 @@ int cmd_generate(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_generate(int argc, char** argv) { return run_command(kGenerate, argc, argv, run_generate); }
 
 }  // namespace erd::cli

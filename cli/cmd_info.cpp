@@ -27,17 +27,10 @@ const CommandLine kInfo = {
     {
         {0, "json", nullptr, "one JSON object on stdout"},
     },
-    "no warnings",
-    1,
-    1,
-    "expected one IMAGE",
+    "no warnings", 1, 1, "expected one IMAGE",
 };
 
-int cmd_info(int argc, char** argv) {
-    Invocation run = start_command(kInfo, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_info(const Args& args, const Reporter& rep) {
     const std::string path = args.positional()[0];
 
     Image im;
@@ -67,5 +60,7 @@ int cmd_info(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_info(int argc, char** argv) { return run_command(kInfo, argc, argv, run_info); }
 
 }  // namespace erd::cli

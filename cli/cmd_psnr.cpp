@@ -20,17 +20,10 @@ const CommandLine kPsnr = {
     {
         {0, "json", nullptr, "{\"mse\":..,\"peak\":..,\"psnr\":..} on stdout (psnr null when identical)"},
     },
-    "no warnings",
-    2,
-    2,
-    "expected ORIGINAL and APPROX",
+    "no warnings", 2, 2, "expected ORIGINAL and APPROX",
 };
 
-int cmd_psnr(int argc, char** argv) {
-    Invocation run = start_command(kPsnr, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_psnr(const Args& args, const Reporter& rep) {
     const std::string& a = args.positional()[0];
     const std::string& b = args.positional()[1];
     if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin");
@@ -57,5 +50,7 @@ int cmd_psnr(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_psnr(int argc, char** argv) { return run_command(kPsnr, argc, argv, run_psnr); }
 
 }  // namespace erd::cli

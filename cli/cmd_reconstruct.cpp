@@ -26,17 +26,10 @@ const CommandLine kReconstruct = {
         {0, "no-aa", nullptr, "point evaluation at the pixels also for an .erd (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2), as the thesis's imgsyn did"},
     },
-    "no warnings",
-    0,
-    1,
-    "expected at most one MODEL",
+    "no warnings", 0, 1, "expected at most one MODEL",
 };
 
-int cmd_reconstruct(int argc, char** argv) {
-    Invocation run = start_command(kReconstruct, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_reconstruct(const Args& args, const Reporter& rep) {
     const std::string in = args.positional().empty() ? "-" : args.positional()[0];
     const std::string out = args.str("output", "-");
     Status st = refuse_overwrite(out, {in});
@@ -55,5 +48,7 @@ int cmd_reconstruct(int argc, char** argv) {
     if (!(st = write_image(out, im, wo))) return rep.fail(st);
     return 0;
 }
+
+int cmd_reconstruct(int argc, char** argv) { return run_command(kReconstruct, argc, argv, run_reconstruct); }
 
 }  // namespace erd::cli

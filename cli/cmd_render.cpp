@@ -90,17 +90,10 @@ const CommandLine kRender = {
         {0, "error", "ORIGINAL", "draw over the error map |ORIGINAL - reconstruction| (black 0 .. white >= --error-max)"},
         {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
     },
-    "no warnings",
-    1,
-    1,
-    "expected one MODEL",
+    "no warnings", 1, 1, "expected one MODEL",
 };
 
-int cmd_render(int argc, char** argv) {
-    Invocation run = start_command(kRender, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_render(const Args& args, const Reporter& rep) {
     if (!args.has("output")) return rep.usage("-o OUT.svg or OUT.png is required");
     const std::string in = args.positional()[0], out = args.str("output");
     std::string format;
@@ -189,5 +182,7 @@ int cmd_render(int argc, char** argv) {
     if (!st) return rep.fail(st);
     return 0;
 }
+
+int cmd_render(int argc, char** argv) { return run_command(kRender, argc, argv, run_render); }
 
 }  // namespace erd::cli

@@ -27,11 +27,7 @@ const CommandLine kSynth = {
     "no messages",
 };
 
-int cmd_synth(int argc, char** argv) {
-    Invocation run = start_command(kSynth, argc, argv);
-    if (run.done()) return run.status;
-    const Args& args = run.args;
-    const Reporter& rep = run.rep;
+static int run_synth(const Args& args, const Reporter& rep) {
     if (!args.has("output")) return rep.usage("missing -o FILE");
 
     Status st;
@@ -53,5 +49,7 @@ int cmd_synth(int argc, char** argv) {
                              std::to_string(im.maxval) + ")");
     return 0;
 }
+
+int cmd_synth(int argc, char** argv) { return run_command(kSynth, argc, argv, run_synth); }
 
 }  // namespace erd::cli

@@ -31,4 +31,9 @@ Invocation start_command(const CommandLine& cl, int argc, char** argv) {
     return run;
 }
 
+int run_command(const CommandLine& cl, int argc, char** argv, CommandBody body) {
+    const Invocation run = start_command(cl, argc, argv);
+    return run.done() ? run.status : body(run.args, run.rep);
+}
+
 }  // namespace erd::cli

@@ -1,7 +1,10 @@
 // The start every subcommand shares: its option table, usage line and help text in one
 // CommandLine, and start_command(), which parses argv against it, prints the help for -h/--help,
 // reports a usage error (exit 2) for a bad option or a wrong number of positionals, and sets
-// -q/--quiet on the Reporter. The subcommand then only reads its options.
+// -q/--quiet on the Reporter. run_command() does that and hands the parsed options to the
+// subcommand's body, which only reads them:
+//
+//     int cmd_info(int argc, char** argv) { return run_command(kInfo, argc, argv, run_info); }
 #pragma once
 #include <string>
 #include <vector>
@@ -38,5 +41,9 @@ struct Invocation {
 // Prints the help on stdout for -h/--help (status 0); a bad option or positional count is a
 // usage error on stderr (status 2). Otherwise status stays -1 and the subcommand goes on.
 Invocation start_command(const CommandLine& cl, int argc, char** argv);
+
+// start_command(), then body(args, reporter) unless the run is over; returns the exit status.
+using CommandBody = int (*)(const Args& args, const Reporter& rep);
+int run_command(const CommandLine& cl, int argc, char** argv, CommandBody body);
 
 }  // namespace erd::cli

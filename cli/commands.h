@@ -25,7 +25,4 @@ int cmd_export(int argc, char** argv);
 // The thesis's seven programs (Appendix A.5), reached through argv[0] (issue: packaging).
 int thesis_alias(const char* name, int argc, char** argv, bool* handled);
 
-// The static table (cli/main.cpp).
-const Command* commands(int* count);
-
 }  // namespace erd::cli

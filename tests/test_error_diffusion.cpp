@@ -12,8 +12,11 @@
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/mmsodd.h"
+#include "tests/test_grid_util.h"
 
 using namespace erd;
+using erd_test::Lcg;
+using erd_test::make_grid;
 
 namespace {
 
@@ -34,20 +37,6 @@ Grid<double> random_grid(int w, int h, std::uint64_t seed, double scale, bool in
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-template <class F>
-Grid<double> make_grid(int w, int h, F f) {
-    Grid<double> g(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) g(x, y) = f(double(x), double(y));
-    return g;
-}
-
-// A deterministic pseudo-random sequence (LCG), for synthetic densities.
-struct Lcg {
-    std::uint32_t s;
-    double next() { s = s * 1664525u + 1013904223u; return double(s >> 8) / double(1u << 24); }
-};
 
 }  // namespace
 
@@ -243,13 +232,4 @@ TEST_CASE("error diffusion: density, mask, pass counts, bad input", "[imaging]")
     CHECK(r.points.empty());
     REQUIRE(select_points(Grid<double>(5, 5, 0.0), 3, DiffusionParams(), &r).ok());
     CHECK_FALSE(r.exact);
-    // Edge pixels of a half-pixel map.
-    Grid<std::uint8_t> hp(5, 3, 0);
-    hp(2, 2) = 1;
-    hp(3, 0) = 1;  // between pixels: not a pixel
-    const Grid<std::uint8_t> px = edge_pixels(hp);
-    REQUIRE(px.width == 3);
-    REQUIRE(px.height == 2);
-    CHECK(px(1, 1) == 1);
-    CHECK(std::count(px.data.begin(), px.data.end(), 1) == 1);
 }

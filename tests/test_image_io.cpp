@@ -82,7 +82,7 @@ std::string be16s(std::vector<std::uint16_t> v) {
     return s;
 }
 
-// ---- INPUTS.md PGM cases 1-12: bytes and the fragment the one-line message must contain
+// ---- ../shared/spec/INPUTS.md PGM cases 1-12: bytes and the fragment the one-line message must contain
 struct Bad {
     const char* id;
     std::string bytes;

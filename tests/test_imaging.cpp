@@ -14,18 +14,13 @@
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/polylines.h"
 #include "algorithms/imaging/thinning.h"
+#include "tests/test_grid_util.h"
 
 using namespace erd;
+using erd_test::Lcg;
+using erd_test::make_grid;
 
 namespace {
-
-template <class F>
-Grid<double> make_grid(int w, int h, F f) {
-    Grid<double> g(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) g(x, y) = f(double(x), double(y));
-    return g;
-}
 
 Grid<std::uint8_t> make_map(const std::vector<const char*>& rows) {
     Grid<std::uint8_t> m(int(std::string(rows[0]).size()), int(rows.size()), 0);
@@ -65,12 +60,6 @@ std::vector<int> components(const Grid<std::uint8_t>& m) {
     }
     return lab;
 }
-
-// A deterministic pseudo-random sequence (LCG), for synthetic test images.
-struct Lcg {
-    std::uint32_t s;
-    double next() { s = s * 1664525u + 1013904223u; return double(s >> 8) / double(1u << 24); }
-};
 
 }  // namespace
 

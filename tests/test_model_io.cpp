@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/edge_polylines.h"
 #include "algorithms/imaging/polylines.h"
 #include "algorithms/imaging/synth.h"
 #include "algorithms/model/model_io.h"
@@ -323,10 +324,10 @@ TEST_CASE("model_io: polylines files (-p) round-trip", "[model_io]") {
     REQUIRE(erd::synth(sp, &im).ok());
     erd::EdgePolylineParams params;
     params.canny.beta = 0.2;
-    params.min_points = 2;
-    erd::Grid<std::uint8_t> edges;
-    std::vector<erd::Polyline> lines;
-    REQUIRE(erd::edge_polylines(im, params, &edges, &lines).ok());
+    params.min_length = 2;
+    erd::EdgePolylineResult step1;
+    REQUIRE(erd::edge_polylines(im, params, &step1).ok());
+    std::vector<erd::Polyline> lines = step1.polylines;
     REQUIRE(lines.size() > 10);
     lines.push_back({});                                    // an empty polyline
     lines.push_back({{4, 4}});                              // one point
