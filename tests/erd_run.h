@@ -21,10 +21,11 @@
 
 namespace erd_test {
 
-// Absolute, so tests may run it from another folder.
-inline std::string erd_bin() {
-    const char* b = std::getenv("ERD_BIN");
-    std::string bin = b && *b ? b : "build/erd";
+// $VAR, else fallback, made absolute against the current folder (so tests may run it from
+// another folder).
+inline std::string path_from_env(const char* var, const char* fallback) {
+    const char* b = std::getenv(var);
+    std::string bin = b && *b ? b : fallback;
     if (!bin.empty() && bin[0] != '/') {
         char* cwd = ::getcwd(nullptr, 0);
         if (cwd) bin = std::string(cwd) + "/" + bin;
@@ -32,6 +33,8 @@ inline std::string erd_bin() {
     }
     return bin;
 }
+
+inline std::string erd_bin() { return path_from_env("ERD_BIN", "build/erd"); }
 
 // Single-quotes s for /bin/sh.
 inline std::string sh_quote(const std::string& s) {

@@ -278,13 +278,7 @@ TEST_CASE("determinism: every method gives the same bytes on every run and at -O
     if (!erd_test::need_binary()) return;
     TempDir t;
     REQUIRE(run_in(t, "synth -W 40 -H 32 --seed 5 -o in.pgm").status == 0);
-    const char* o0env = std::getenv("ERD_BIN_O0");
-    std::string o0 = o0env && *o0env ? o0env : "build-o0/erd";
-    if (!o0.empty() && o0[0] != '/') {
-        char* cwd = ::getcwd(nullptr, 0);
-        if (cwd) o0 = std::string(cwd) + "/" + o0;
-        std::free(cwd);
-    }
+    const std::string o0 = erd_test::path_from_env("ERD_BIN_O0", "build-o0/erd");
     const bool have_o0 = exists(o0);
     if (!have_o0) WARN("no -O0 binary at " << o0 << " (tests/run_all.sh builds it): comparing runs only");
     for (const char* m : {"ed", "gpi", "erded", "erdgpi"}) {
