@@ -20,6 +20,7 @@
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
+#include "cli/outputs.h"
 #include "cli/progress.h"
 #include "cli/report.h"
 #include "cli/stats_json.h"
@@ -181,18 +182,9 @@ int cmd_generate(int argc, char** argv) {
     if (!tri.empty()) outs.push_back(tri);
     if (!poly.empty()) outs.push_back(poly);
     if (!stats_out.empty()) outs.push_back(stats_out);
-    int to_stdout = 0;
-    for (std::size_t i = 0; i < outs.size(); ++i) {
-        if (outs[i].empty()) return rep.usage("empty output file name", kUsage);
-        if (outs[i] == "-") ++to_stdout;
-        st = refuse_overwrite(outs[i], {in});
-        if (!st) return rep.fail(st);
-        for (std::size_t j = 0; j < i; ++j) {
-            st = outs[i] == "-" ? Status::success() : refuse_overwrite(outs[i], {outs[j]});
-            if (!st) return rep.fail(Status::bad_input(outs[i] + ": named for two outputs"));
-        }
-    }
-    if (to_stdout > 1) return rep.usage("only one output can go to stdout", kUsage);
+    Outputs outputs;
+    st = outputs.check(outs, {in});
+    if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message, kUsage) : rep.fail(st);
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
@@ -226,35 +218,24 @@ int cmd_generate(int argc, char** argv) {
         if (exit_mode == 0) return int(Code::density);
     }
 
-    // A later output failing removes the files this run already wrote, so a failed run leaves
-    // nothing behind (robustness, issue 7); stdout cannot be taken back.
-    std::vector<std::string> written;
-    auto fail_after_write = [&](const Status& bad) {
-        for (const std::string& w : written) std::remove(w.c_str());
-        return rep.fail(bad);
-    };
-    auto wrote = [&](const std::string& path) {
-        if (path != "-") written.push_back(path);
-    };
+    // Every output is staged (a temporary beside its target) and committed together at the end,
+    // so a failure anywhere leaves every old file as it was (cli/outputs.h).
     t0 = std::chrono::steady_clock::now();
     std::string bytes;
     st = write_model(res.model, &bytes);
     if (!st) return rep.fail(st);
-    st = write_file_atomic(out, bytes);
+    st = outputs.stage(out, bytes);
     if (!st) return rep.fail(st);
-    wrote(out);
     if (!tri.empty()) {
         std::string tri_bytes;
         st = write_triangulation(res.model, &tri_bytes);
-        if (!st) return fail_after_write(st);
-        st = write_file_atomic(tri, tri_bytes);
-        if (!st) return fail_after_write(st);
-        wrote(tri);
+        if (!st) return rep.fail(st);
+        st = outputs.stage(tri, tri_bytes);
+        if (!st) return rep.fail(st);
     }
     if (!poly.empty()) {
-        st = write_file_atomic(poly, polylines_text(res.polylines));
-        if (!st) return fail_after_write(st);
-        wrote(poly);
+        st = outputs.stage(poly, polylines_text(res.polylines));
+        if (!st) return rep.fail(st);
     }
     const double write_seconds = seconds_since(t0);
 
@@ -266,9 +247,9 @@ int cmd_generate(int argc, char** argv) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
         st = reconstruct(res.model, res.model.kind == ModelKind::erd, &rec);
-        if (!st) return fail_after_write(Status::failure("reconstruct: " + st.message));
+        if (!st) return rep.fail(Status::failure("reconstruct: " + st.message));
         st = psnr(image, rec, &db);
-        if (!st) return fail_after_write(st);
+        if (!st) return rep.fail(st);
         have_psnr = true;
         psnr_seconds = seconds_since(t0);
         // Asked for explicitly, so printed under -q too (stderr: stdout may carry the model).
@@ -286,9 +267,11 @@ int cmd_generate(int argc, char** argv) {
         }
         gs.total_seconds = seconds_since(t_start);
         gs.peak_memory_bytes = peak_memory_bytes();
-        st = write_file_atomic(stats_out, stats_json(gs));
-        if (!st) return fail_after_write(st);
+        st = outputs.stage(stats_out, stats_json(gs));
+        if (!st) return rep.fail(st);
     }
+    st = outputs.commit();
+    if (!st) return rep.fail(st);
     return 0;
 }
 
