@@ -105,17 +105,14 @@ std::string real_text(double v) {
 void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st) {
     const double big = 1e300;
     if (a.has("density")) {
-        o->density = a.real("density", 3.0, -big, big, st);
+        o->density = a.real("density", 3.0, 0.0, 100.0, st, true);
         o->density_given = true;
-        if (st->ok() && !(o->density > 0.0))
-            *st = Status::bad_input("--density: " + a.str("density") + " is not a positive percentage");
     }
     if (a.has("points")) o->points = a.integer("points", 0, 1, (1LL << 40), st);
     *exit_mode = int(a.integer("exit-mode", 0, 0, 2, st));
     if (a.has("max-error")) o->max_error = a.real("max-error", -1.0, 0.0, big, st);
     if (a.has("psnr")) {
-        o->psnr = a.real("psnr", 0.0, -big, big, st);
-        if (st->ok() && !(o->psnr > 0.0)) *st = Status::bad_input("--psnr: " + a.str("psnr") + " is not a positive dB value");
+        o->psnr = a.real("psnr", 0.0, 0.0, 1000.0, st, true);
     }
     o->min_length = int(a.integer("min-length", -1, 1, 1 << 20, st));
     if (a.has("beta")) o->beta = a.real("beta", -1.0, 1e-9, 1.0, st);
@@ -125,7 +122,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     o->wedge_rule = int(a.integer("wedge-rule", 1, 0, 1, st));
     o->wedge_order = int(a.integer("wedge-order", 5, 1, 31, st));
     if (st->ok() && o->wedge_order % 2 == 0)
-        *st = Status::bad_input("--wedge-order: " + a.str("wedge-order") + " is not an odd filter order");
+        *st = Status::bad_input("--wedge-order: " + escape_name(a.str("wedge-order")) + " is not an odd filter order (allowed: 1, 3, ..., 31)");
     o->startup = int(a.integer("startup", 0, 0, 2, st));
     if (a.has("simple")) o->simple = int(a.integer("simple", -1, 0, 1 << 30, st));
     if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));

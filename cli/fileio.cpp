@@ -39,7 +39,13 @@ static Status read_fd(int fd, bool regular, const std::string& name, std::string
         bytes->append(buf, std::size_t(n));
         if (framed && total == UINT64_MAX) {
             if (Status s = framer(*bytes, &total); !s) return Status::bad_input(escape_name(name) + ": " + s.message);
-            if (total < bytes->size()) total = bytes->size();
+            if (total < bytes->size()) {
+                // The content ended inside this read: the rest is data after it.
+                for (std::size_t k = std::size_t(total); k < bytes->size() && more && !*more; ++k)
+                    *more = !std::isspace(static_cast<unsigned char>((*bytes)[k]));
+                bytes->resize(std::size_t(total));
+                if (more && *more) return Status::success();
+            }
             if (total != UINT64_MAX && total <= max_bytes) bytes->reserve(std::size_t(total));
         }
     }

@@ -18,9 +18,9 @@ constexpr std::size_t kMaxStreamHeader = 65536;
 // samples counted as they arrive); a PNG ends with its IEND chunk; anything else is already bad.
 Framer image_framer(const ImageLimits& limits);
 
-// Model and triangulation text: stops at the first byte that no such file can hold (NUL, or a
-// first token that is neither a number nor "erd-triangulation").
-Framer model_framer();
+// Model (.model, .erd) or triangulation text: stops at a NUL byte, or when the text read so far
+// already holds an error other than "the file ends early" (checked at 4 KiB, 16 KiB, ...).
+Framer model_framer(bool triangulation);
 
 // A palette PNG whose PLTE chunk has fewer entries than its bit depth can index: stb would take
 // the colour of a larger index from uninitialised memory. Sets *short_palette and writes to

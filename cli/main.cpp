@@ -11,6 +11,7 @@
 #endif
 
 #include "cli/commands.h"
+#include "cli/report.h"
 
 #ifndef ERD_VERSION
 #define ERD_VERSION "0.1.0"
@@ -71,7 +72,7 @@ static int cmd_help(int argc, char** argv) {
     if (argc < 2) { list_commands(stdout); return 0; }
     const Command* c = find_command(argv[1]);
     if (!c || c->run == cmd_help) {
-        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", argv[1]); return 2; }
+        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", escape_name(argv[1]).c_str()); return 2; }
         list_commands(stdout);
         return 0;
     }
@@ -81,7 +82,7 @@ static int cmd_help(int argc, char** argv) {
 }
 
 static int unknown(const char* name) {
-    std::fprintf(stderr, "erd: '%s' is not a subcommand.", name);
+    std::fprintf(stderr, "erd: '%s' is not a subcommand.", escape_name(name).c_str());
     int best = 1 << 30;
     const char* guess = nullptr;
     for (const auto& c : kCommands) {

@@ -146,7 +146,7 @@ struct FileId {
     bool regular = false;
     dev_t dev = 0;
     ino_t ino = 0;
-    std::string key;  // a name that does not exist: its folder's real path + its name
+    std::string key;  // its folder's real path + its name (for a name that does not exist yet)
 };
 
 FileId id_of_fd(int fd) {
@@ -170,7 +170,6 @@ FileId id_of_path(const std::string& path) {
         id.regular = S_ISREG(st.st_mode);
         id.dev = st.st_dev;
         id.ino = st.st_ino;
-        return id;
     }
     std::string dir, base;
     split(normalise(path), &dir, &base);
@@ -183,9 +182,8 @@ FileId id_of_path(const std::string& path) {
 // Two names of one file that writing the output would destroy: the same regular file, or the
 // same name not yet created. A special file may be read and written (/dev/null).
 bool same_file(const FileId& a, const FileId& b) {
-    if (a.exists != b.exists) return false;
-    if (a.exists) return a.regular && b.regular && a.dev == b.dev && a.ino == b.ino;
-    return a.key == b.key;
+    if (a.exists && b.exists) return a.regular && b.regular && a.dev == b.dev && a.ino == b.ino;
+    return a.key == b.key;  // a name not (yet) there: the same folder and name
 }
 
 }  // namespace
@@ -230,6 +228,7 @@ Status Outputs::check(const std::vector<std::string>& outputs, const std::vector
 
 Status Outputs::stage(const std::string& path, const std::string& bytes) {
     if (path.empty()) return Status::bad_input("empty output file name");
+    install_handlers();
     Staged s;
     s.path = path;
     if (path == "-") {
