@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -186,6 +187,42 @@ bool same_file(const FileId& a, const FileId& b) {
     return a.key == b.key;  // a name not (yet) there: the same folder and name
 }
 
+// One temporary's way onto its target, prepared before the fork so the child only makes
+// system calls.
+struct Move {
+    int dirfd = -1, fd = -1;
+    std::string base;      // the target's name in dirfd
+    std::string named;     // a named temporary: renamed onto base
+    std::string proc;      // an O_TMPFILE: its /proc/self/fd path, linked in ...
+    std::string link_tmp;  // ... under this name first when it replaces a file (or base exists)
+    bool replace = false;
+};
+
+bool link_fd(const Move& m, const std::string& name) {
+    if (::linkat(AT_FDCWD, m.proc.c_str(), m.dirfd, name.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
+    // No /proc: AT_EMPTY_PATH (needs CAP_DAC_READ_SEARCH).
+    return errno == ENOENT && ::linkat(m.fd, "", m.dirfd, name.c_str(), AT_EMPTY_PATH) == 0;
+}
+
+// Moves every temporary onto its target, in order; the errno of the first failure, or 0.
+int move_all(const std::vector<Move>& moves) {
+    for (const Move& m : moves) {
+        if (!m.named.empty()) {
+            if (::renameat(m.dirfd, m.named.c_str(), m.dirfd, m.base.c_str()) != 0) return errno;
+            continue;
+        }
+        if (!m.replace && link_fd(m, m.base)) continue;
+        if (!m.replace && errno != EEXIST) return errno;
+        if (!link_fd(m, m.link_tmp)) return errno;
+        if (::renameat(m.dirfd, m.link_tmp.c_str(), m.dirfd, m.base.c_str()) != 0) {
+            const int err = errno;
+            ::unlinkat(m.dirfd, m.link_tmp.c_str(), 0);
+            return err;
+        }
+    }
+    return 0;
+}
+
 }  // namespace
 
 Status Outputs::check(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) const {
@@ -265,8 +302,11 @@ Status Outputs::stage(const std::string& path, const std::string& bytes) {
         return Status::failure(os_error(path, err));
     };
 #ifdef O_TMPFILE
-    t.fd = ::openat(t.dirfd, ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
-    const bool unsupported = t.fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL);
+    // ERD_NO_TMPFILE=1 takes the named path as on a file system without O_TMPFILE (tests).
+    const char* no_tmpfile = std::getenv("ERD_NO_TMPFILE");
+    const bool forced = no_tmpfile && std::strcmp(no_tmpfile, "1") == 0;
+    if (!forced) t.fd = ::openat(t.dirfd, ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    const bool unsupported = forced || (t.fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL));
 #else
     const bool unsupported = true;
 #endif
@@ -328,52 +368,61 @@ Status Outputs::commit() {
             return Status::failure(os_error(name, err));
         }
     }
-    // Then every temporary onto its target, with the handled signals held so the run is not
-    // cut between two renames (they are delivered afterwards).
+    // Then every temporary onto its target, in a child process with the handled signals held:
+    // a SIGKILL of erd between a linkat and its rename (or between two renames) would leave a
+    // name behind, but the child, which nothing but a KILL of the whole process group reaches,
+    // finishes them. Without fork (no memory for one) the same runs here.
+    std::vector<Move> moves;
+    for (Staged& s : staged_) {
+        if (s.special) continue;
+        Move m;
+        m.dirfd = s.dirfd;
+        m.fd = s.fd;
+        m.base = s.base;
+        m.named = s.tmp;
+        if (s.tmp.empty()) {
+            m.proc = "/proc/self/fd/" + std::to_string(s.fd);
+            m.link_tmp = temp_name();
+            s.slot = claim_slot(s.dirfd, m.link_tmp);
+            s.tmp = m.link_tmp;  // removed by discard() unless committed
+            m.replace = s.existed;
+        }
+        moves.push_back(std::move(m));
+    }
     sigset_t held, old;
     sigemptyset(&held);
     for (int sig : kSignals) sigaddset(&held, sig);
     ::sigprocmask(SIG_BLOCK, &held, &old);
+    int err = 0;
+    // Only a move through a name needs the child (a new file is linked in by one system call).
+    bool through_name = false;
+    for (const Move& m : moves) through_name = through_name || m.replace || !m.named.empty();
+    const pid_t pid = through_name ? ::fork() : -1;
+    if (pid == 0) ::_exit(move_all(moves));
+    if (pid < 0) {
+        err = move_all(moves);
+    } else {
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        err = WIFEXITED(status) ? WEXITSTATUS(status) : EIO;
+    }
+    // Which targets are ours now: the ones whose inode is that of our temporary.
     Status result = Status::success();
     for (Staged& s : staged_) {
-        if (s.special || !result) continue;
-        int err = 0;
-        if (s.tmp.empty()) {
-            // O_TMPFILE: a new name is linked in at once; an old file is replaced through a
-            // short-lived name (linkat cannot replace), registered for the signal handler.
-            const std::string proc = "/proc/self/fd/" + std::to_string(s.fd);
-            auto link_as = [&](const std::string& name) {
-                if (::linkat(AT_FDCWD, proc.c_str(), s.dirfd, name.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
-                if (errno == ENOENT && ::linkat(s.fd, "", s.dirfd, name.c_str(), AT_EMPTY_PATH) == 0) return true;
-                return false;
-            };
-            bool done = !s.existed && link_as(s.base);
-            if (!done && (s.existed || errno == EEXIST)) {
-                for (int attempt = 0; attempt < 100 && !done; ++attempt) {
-                    s.tmp = temp_name();
-                    s.slot = claim_slot(s.dirfd, s.tmp);
-                    if (s.slot < 0) { errno = EMFILE; break; }
-                    if (link_as(s.tmp)) {
-                        done = true;
-                    } else {
-                        err = errno;
-                        release_slot(&s.slot);
-                        s.tmp.clear();
-                        errno = err;
-                        if (err != EEXIST) break;
-                    }
-                }
-                if (done && ::renameat(s.dirfd, s.tmp.c_str(), s.dirfd, s.base.c_str()) != 0) done = false;
-            }
-            if (!done) err = errno;
-        } else if (::renameat(s.dirfd, s.tmp.c_str(), s.dirfd, s.base.c_str()) != 0) {
-            err = errno;
-        }
-        if (err != 0) {
-            result = Status::failure(os_error(s.path, err));
+        if (s.special) continue;
+        struct stat mine, there;
+        const bool moved = ::fstat(s.fd, &mine) == 0 && ::fstatat(s.dirfd, s.base.c_str(), &there, 0) == 0 &&
+                           mine.st_dev == there.st_dev && mine.st_ino == there.st_ino;
+        if (!moved) {
+            if (result) result = Status::failure(os_error(s.path, err ? err : EIO));
             continue;  // discard() removes its temporary
         }
-        s.tmp.clear();  // it is the target now
+        // Committed: the temporary's name (if any) is the target's now, or gone.
+        if (!s.tmp.empty() && ::fstatat(s.dirfd, s.tmp.c_str(), &there, AT_SYMLINK_NOFOLLOW) == 0 &&
+            there.st_ino == mine.st_ino)
+            ::unlinkat(s.dirfd, s.tmp.c_str(), 0);  // linked, the rename not done: cannot happen
+        s.tmp.clear();
         release_slot(&s.slot);
         (void)::fsync(s.dirfd);  // the new name durable; nothing visible is lost if this fails
     }

@@ -18,8 +18,10 @@
 // Signals: INT, TERM, HUP, QUIT and PIPE remove any named temporary before the process dies
 // (the handler only unlinks fixed buffers, async-signal-safe); SIGXFSZ is ignored so a file-size
 // limit is an ordinary write error. An unnamed temporary cannot outlive the process, KILL
-// included. The only names ever created are the short ones above, so they fit NAME_MAX
-// whatever the output name.
+// included; replacing an old file links it under a short-lived name and renames that over the
+// target (linkat cannot replace), with the signals above held. The only names ever created are
+// the short ones above, so they fit NAME_MAX whatever the output name. ERD_NO_TMPFILE=1 in the
+// environment takes the named path everywhere (for the tests of it).
 #pragma once
 #include <string>
 #include <vector>
