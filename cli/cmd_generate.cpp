@@ -16,10 +16,12 @@
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
+#include "api/erd.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
+#include "cli/memory_cap.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
 #include "cli/report.h"
@@ -32,7 +34,7 @@ namespace {
 
 const char* const kUsage =
     "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--thesis] [--stats FILE] [--psnr-report] [-q]";
+    "[--max-error E] [--psnr P] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]";
 
 const std::vector<OptionSpec>& specs() {
     static const std::vector<OptionSpec> s = {
@@ -61,6 +63,7 @@ const std::vector<OptionSpec>& specs() {
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
+        {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
@@ -166,6 +169,10 @@ int cmd_generate(int argc, char** argv) {
     parse_options(a, &opt, &exit_mode, &st);
     if (!st) return rep.usage(st.message, kUsage);
 
+    std::size_t max_memory = 0;
+    const bool have_cap = a.has("max-memory");
+    if (have_cap && !(st = parse_memory_size(a.str("max-memory"), &max_memory))) return rep.usage(st.message, kUsage);
+
     const std::string in = a.str("input"), out = a.str("output");
     const std::string tri = a.str("triangulation"), poly = a.str("polylines"), stats_out = a.str("stats");
     if (a.has("triangulation") && tri.empty()) return rep.usage("empty -t file name", kUsage);
@@ -191,6 +198,19 @@ int cmd_generate(int argc, char** argv) {
     std::int64_t n = target_points(opt, image.width, image.height);
     st = check_target(n, image.width, image.height);
     if (!st) return rep.fail(Status::bad_input(in + ": " + st.message));
+
+    // Refused up front when the estimated peak does not fit (cli/memory_cap.h).
+    api::Method api_method;
+    if (api::method_from_name(method->name, &api_method)) {
+        api::Options api_opt;
+        api_opt.generate = opt;
+        const std::size_t need = api::memory_estimate(api_method, image.width, image.height, api_opt);
+        const std::size_t cap = have_cap ? max_memory : available_memory();
+        st = check_memory(need, cap, have_cap,
+                          escape_name(in) + ": meshing " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                              " with " + method->name + " at " + std::to_string(n) + " points");
+        if (!st) return rep.fail(st);
+    }
 
     Progress progress("generate", Progress::should_show(a.has("progress"), rep.quiet()));
     opt.progress = progress.hook();
