@@ -436,7 +436,6 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     }
     std::vector<int> flines;
     if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
-    if (Status s = check_all_used(m.vertices, m.faces, vlines, 1); !s) return s;
     if (kind == ModelFileKind::unknown) kind = tk.at_end() ? ModelFileKind::basic : ModelFileKind::erd;
     if (kind == ModelFileKind::basic) {
         m.kind = ModelKind::basic;
@@ -473,6 +472,7 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
             }
         return Status::bad_input("not a triangulation of the image domain: " + s.message);
     }
+    if (Status s = check_all_used(m.vertices, m.faces, vlines, erd ? 1 : 2); !s) return s;
     if (m.kind == ModelKind::erd)
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
     *out = std::move(m);
@@ -510,7 +510,6 @@ Status read_triangulation(const std::string& text, Model* out) {
     }
     std::vector<int> flines;
     if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
-    if (Status s = check_all_used(m.vertices, m.faces, vlines, 1); !s) return s;
     int cw = 0, ch = 0;
     if (Status s = check_vertices(m.vertices, vlines, true, 1, &cw, &ch); !s) return s;
     if (cw != m.width || ch != m.height)
@@ -543,6 +542,7 @@ Status read_triangulation(const std::string& text, Model* out) {
         tk.next(&t);
         return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last constraint (check the counts)");
     }
+    if (Status s = check_all_used(m.vertices, m.faces, vlines, 1); !s) return s;
     std::sort(m.constraints.begin(), m.constraints.end());
     m.kind = ModelKind::basic;
     *out = std::move(m);
