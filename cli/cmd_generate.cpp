@@ -204,7 +204,8 @@ int cmd_generate(int argc, char** argv) {
     if (api::method_from_name(method->name, &api_method)) {
         api::Options api_opt;
         api_opt.generate = opt;
-        const std::size_t need = api::memory_estimate(api_method, image.width, image.height, api_opt);
+        // The library's estimate plus the process itself (binary, stdio, buffers): 2 MiB.
+        const std::size_t need = api::memory_estimate(api_method, image.width, image.height, api_opt) + (std::size_t(2) << 20);
         const std::size_t cap = have_cap ? max_memory : available_memory();
         st = check_memory(need, cap, have_cap,
                           escape_name(in) + ": meshing " + std::to_string(image.width) + " x " + std::to_string(image.height) +
