@@ -334,4 +334,7 @@ case_ "N 2^63" 2 generate -q -m ed -i in.pgm -o o.model -n 9223372036854775808
 case_ "synth width 1e9" 2 synth -W 1000000000 -H 4 -o s.pgm
 case_ "render scale 1e400" 2 render good.model -o r.svg --scale 1e400
 case_ "usage error (render): one usage line" 2 render good.model
+case_ "--max-memory below the estimate" 1 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1M
+case_ "--max-memory not a size" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1e9
+case_ "--max-memory too large" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 99999999T
 exit $bad
