@@ -75,15 +75,16 @@ std::string one_line(const std::string& s) {
 }  // namespace
 
 std::string escape_name(const std::string& name) { return escaped(name, true); }
+std::string escape_message(const std::string& message) { return escaped(message, false); }
 
 int Reporter::fail(const Status& st) const {
     if (st.ok()) return 0;
-    std::fprintf(stderr, "erd %s: %s\n", sub_.c_str(), escaped(st.message, false).c_str());
+    std::fprintf(stderr, "erd %s: %s\n", sub_.c_str(), escape_message(st.message).c_str());
     return st.exit_code();
 }
 
 int Reporter::usage(const std::string& message, const std::string& usage_line) const {
-    std::fprintf(stderr, "erd %s: %s\nusage: %s\n", sub_.c_str(), escaped(message, false).c_str(),
+    std::fprintf(stderr, "erd %s: %s\nusage: %s\n", sub_.c_str(), escape_message(message).c_str(),
                  one_line(usage_line).c_str());
     return 2;
 }
@@ -94,14 +95,14 @@ void Reporter::warn(const std::string& message) const {
     while (i < message.size()) {
         std::string::size_type j = message.find('\n', i);
         if (j == std::string::npos) j = message.size();
-        std::fprintf(stderr, "erd %s: warning: %s\n", sub_.c_str(), escaped(message.substr(i, j - i), false).c_str());
+        std::fprintf(stderr, "erd %s: warning: %s\n", sub_.c_str(), escape_message(message.substr(i, j - i)).c_str());
         i = j + 1;
     }
 }
 
 void Reporter::note(const std::string& message) const {
     if (quiet_ || message.empty()) return;
-    std::fprintf(stderr, "erd %s: %s\n", sub_.c_str(), escaped(message, false).c_str());
+    std::fprintf(stderr, "erd %s: %s\n", sub_.c_str(), escape_message(message).c_str());
 }
 
 std::string json_string(const std::string& s) {

@@ -37,6 +37,8 @@ private:
 // Every message that names a file uses it; Reporter applies the same to whole messages (without
 // doubling backslashes), so whatever it prints is one line per message.
 std::string escape_name(const std::string& name);
+// The same for a whole message (backslashes kept as they are): one printable line.
+std::string escape_message(const std::string& message);
 
 // A JSON string literal (quotes included) with the escapes JSON requires, for --json outputs.
 std::string json_string(const std::string& s);
