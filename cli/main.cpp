@@ -11,6 +11,7 @@
 #endif
 
 #include "cli/commands.h"
+#include "cli/outputs.h"
 #include "cli/report.h"
 #include "cli/suggest.h"
 
@@ -129,6 +130,7 @@ int erd::cli::run(int argc, char** argv) {
 #ifndef ERD_CLI_NO_MAIN
 int main(int argc, char** argv) {
     tune_allocator();
+    erd::cli::install_output_signal_handlers();
     return erd::cli::run(argc, argv);
 }
 #endif

@@ -39,10 +39,9 @@ extern "C" void remove_temporaries_and_die(int sig) {
     ::raise(sig);  // delivered when the handler returns: the usual death by this signal
 }
 
-void install_handlers() {
-    static bool installed = false;
-    if (installed) return;
-    installed = true;
+}  // namespace
+
+void install_output_signal_handlers() {
     for (int sig : kSignals) {
         struct sigaction old {};
         if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN) continue;  // nohup stays
@@ -55,9 +54,10 @@ void install_handlers() {
     ::signal(SIGXFSZ, SIG_IGN);
 }
 
+namespace {
+
 // Registers a temporary name before it is created; -1 when every slot is taken.
 int claim_slot(int dirfd, const std::string& name) {
-    install_handlers();
     if (name.size() >= sizeof g_slots[0].name) return -1;
     for (int k = 0; k < kSlots; ++k) {
         if (g_slots[k].used) continue;
@@ -265,7 +265,6 @@ Status Outputs::check(const std::vector<std::string>& outputs, const std::vector
 
 Status Outputs::stage(const std::string& path, const std::string& bytes) {
     if (path.empty()) return Status::bad_input("empty output file name");
-    install_handlers();
     Staged s;
     s.path = path;
     if (path == "-") {

@@ -15,7 +15,7 @@
 // in place, first in commit(), and are never unlinked. A symbolic link is followed: its target
 // is replaced in the target's folder and the link stays; a link to nothing is refused.
 //
-// Signals: INT, TERM, HUP, QUIT and PIPE remove any named temporary before the process dies
+// Signals (install_output_signal_handlers, below): INT, TERM, HUP, QUIT and PIPE remove any named temporary before the process dies
 // (the handler only unlinks fixed buffers, async-signal-safe); SIGXFSZ is ignored so a file-size
 // limit is an ordinary write error. An unnamed temporary cannot outlive the process, KILL
 // included; replacing an old file links it under a short-lived name and renames that over the
@@ -69,5 +69,10 @@ private:
     };
     std::vector<Staged> staged_;
 };
+
+// Installs the handlers described above (INT, TERM, HUP, QUIT, PIPE remove named temporaries;
+// SIGXFSZ ignored); a signal the process ignores stays ignored (nohup). The erd program calls it
+// first thing; a library user (the Python module, the tests) keeps its own signal handling.
+void install_output_signal_handlers();
 
 }  // namespace erd::cli
