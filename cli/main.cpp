@@ -11,6 +11,8 @@
 #endif
 
 #include "cli/commands.h"
+#include "cli/outputs.h"
+#include "cli/report.h"
 #include "cli/suggest.h"
 
 #ifndef ERD_VERSION
@@ -50,7 +52,7 @@ static int cmd_help(int argc, char** argv) {
     if (argc < 2) { list_commands(stdout); return 0; }
     const Command* c = find_command(argv[1]);
     if (!c || c->run == cmd_help) {
-        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", argv[1]); return 2; }
+        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", escape_name(argv[1]).c_str()); return 2; }
         list_commands(stdout);
         return 0;
     }
@@ -62,7 +64,8 @@ static int cmd_help(int argc, char** argv) {
 static int unknown(const char* name) {
     std::vector<const char*> names;
     for (const auto& c : kCommands) names.push_back(c.name);
-    std::fprintf(stderr, "erd: '%s' is not a subcommand.%s See 'erd help'.\n", name, did_you_mean(name, names).c_str());
+    std::fprintf(stderr, "erd: '%s' is not a subcommand.%s See 'erd help'.\n", escape_name(name).c_str(),
+                 did_you_mean(name, names).c_str());
     return 2;
 }
 
@@ -122,6 +125,7 @@ int erd::cli::run(int argc, char** argv) {
 #ifndef ERD_CLI_NO_MAIN
 int main(int argc, char** argv) {
     tune_allocator();
+    erd::cli::install_output_signal_handlers();
     return erd::cli::run(argc, argv);
 }
 #endif
