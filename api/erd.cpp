@@ -1,4 +1,4 @@
-// The public API (algorithms/erd.h): thin wrappers over the method registry, the reconstruction
+// The public API (api/erd.h): thin wrappers over the method registry, the reconstruction
 // and the metrics, plus the checks a caller-owned view needs before it is trusted.
 #include "api/erd.h"
 
@@ -82,7 +82,7 @@ std::size_t memory_estimate(Method m, int width, int height, const Options& opti
     // included) on the seven test images at 0.5% and 3%: ED 66 B/pixel whatever N; GPI 4 B/pixel
     // + 186 B/vertex; ERDED and ERDGPI 108-116 B/pixel + 170-225 B/vertex (the edge detector's
     // half-pixel planes dominate). The factors below keep >= 20% headroom over every measurement
-    // (docs/DECISIONS.md, Packaging); 64 KiB covers fixed costs on tiny images.
+    // (docs/DECISIONS.md, "Memory"); 64 KiB covers fixed costs on tiny images.
     std::size_t per_pixel = 0, per_point = 0;
     switch (m) {
     case Method::ed: per_pixel = 80; per_point = 64; break;

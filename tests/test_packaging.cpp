@@ -1,6 +1,6 @@
 // Packaging: the thesis's seven command names (run through symlinks named as the thesis has
 // them, compared with the erd subcommands), `make install` + pkg-config against the installed
-// copy, and the public API (algorithms/erd.h): validation, exit modes, the kernel, threads.
+// copy, and the public API (api/erd.h): validation, exit modes, the kernel, threads.
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>

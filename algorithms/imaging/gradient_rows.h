@@ -1,4 +1,4 @@
-// The gradient of edge detection's step 1 (algorithms/canny.h), streamed row by row, and the
+// The gradient of edge detection's step 1 (canny.h), streamed row by row, and the
 // rows of phi_bar it is computed from. Internal to canny.cpp (its streaming pass, its sampled
 // bound, canny_gradient); kept apart so that canny.cpp holds the detection itself.
 #pragma once

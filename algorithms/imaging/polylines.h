@@ -1,7 +1,7 @@
 // Polylines from an edge map (thesis 3.4.1 step 1.2), and the whole step 1.1-1.3 chain.
 //
 // Coordinates are LatticePoints in doubled coordinates, which are exactly the indices of the
-// half-pixel grid of algorithms/canny.h: entry (X, Y) of the edge map is LatticePoint{X, Y}.
+// half-pixel grid of canny.h: entry (X, Y) of the edge map is LatticePoint{X, Y}.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -29,7 +29,7 @@ std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges);
 std::vector<Polyline> trace_polylines(const SortedPoints& pts);
 
 // Steps 1.1 to 1.3 in one call: detect edges, trace, simplify with Douglas-Peucker (epsilon in
-// half-pixel grid units, algorithms/douglas_peucker.h), keep polylines that had at least
+// half-pixel grid units, algorithms/imaging/douglas_peucker.h), keep polylines that had at least
 // min_points points before simplification.
 struct EdgePolylineParams {
     CannyParams canny;
