@@ -26,7 +26,7 @@ inline void weighted_sum_any(const float* const* in, const float* t, int m, floa
     }
 }
 
-// The same with m = sizeof...(K) known, so rows and taps stay in registers (a third faster).
+// The same with m = sizeof...(K) known, so rows and taps stay in registers.
 template <std::size_t... K>
 inline void weighted_sum_fixed(const float* const* in, const float* t, float* __restrict out, int n, std::index_sequence<K...>) {
     const float* const p[] = {in[K]...};
