@@ -19,7 +19,7 @@ enum class ImageFormat { unknown, pgm_plain, pgm_raw, png };
 // "PGM (P2, plain)", "PGM (P5, raw)", "PNG", "unknown".
 const char* format_name(ImageFormat f);
 
-// Size limits, checked before any allocation. Defaults are those of algorithms/image.h
+// Size limits, checked before any allocation. Defaults are those of algorithms/imaging/image.h
 // (predicate exactness bounds the side, memory bounds the pixel count); the fuzzers lower them.
 struct ImageLimits {
     int max_side = kMaxImageSide;

@@ -86,10 +86,10 @@ namespace {
 // glibc serves blocks above a dynamic threshold (128 KiB at first) with fresh mmaps and unmaps
 // them on free, so every whole-image array the pipeline allocates again after freeing one (the
 // edge detector's planes between detections, the greedy and refit arrays after them) is paid
-// for again in page faults, ~2 us each on this machine. A fixed threshold above the largest of
-// them takes them from the heap, where freed blocks are reused as they are: bull ERDGPI 1%
-// 14.0k -> 10.3k minor faults, ~13 ms less system time, peak RSS +0.5 MB. (Keeping the freed top
-// of the heap as well, M_TRIM_THRESHOLD, saves 0.9k faults more but costs 1 MB more RSS.)
+// for again in page faults. A fixed threshold above the largest of them takes them from the
+// heap, where freed blocks are reused as they are: fewer faults for a little more peak RSS
+// (docs/DECISIONS.md "Memory"). Keeping the freed top of the heap as well (M_TRIM_THRESHOLD)
+// saves few more faults for more RSS, so it is left alone.
 //
 // Not under Valgrind: its tools run glibc's allocator in a brk segment of a few MB, and heap
 // growth beyond it fails (std::bad_alloc on lena). Valgrind always preloads its vgpreload_*
