@@ -25,7 +25,7 @@
 // side, at the open end of a border fan); otherwise it stops with "the wedge of face F at vertex
 // V is undetermined". For a vertex with wedge lines the value on its vertex line is ignored (thesis
 // A.4.2) and Model::values holds the mean of its wedge values; Model::constraints holds the edges
-// across which corner values jump (algorithms/model_topology.h).
+// across which corner values jump (algorithms/model/model_topology.h).
 //
 // Header block (optional; a file without it is exactly the thesis's format). An extended file
 // starts with the line "erd-header 1", then one "key value..." line per key, then the line
