@@ -70,6 +70,44 @@ struct Pt {
     double u, v;
 };
 
+// The paint of a face with corners p (user units) and values z (8-bit levels) in one channel:
+// one colour when flat, else a gradient on the channel's template "_" (written to *defs the first
+// time those end points occur). Colour will call it once per channel, each with its own template.
+std::string plane_paint(const Pt p[3], const double z[3], std::unordered_map<std::string, std::string>* gradients,
+                        std::string* defs) {
+    const double zmin = std::min({z[0], z[1], z[2]}), zmax = std::max({z[0], z[1], z[2]});
+    if (zmax - zmin < kFlatRange || zmax <= 0 || zmin >= 255)
+        return gray_hex(int(std::clamp(std::floor((z[0] + z[1] + z[2]) / 3 + 0.5), 0.0, 255.0)));
+    // The plane z = zc + g.(p - c) through the corners, c the centroid; its 0 and 255
+    // points along g are the gradient's ends.
+    double du1 = p[1].u - p[0].u, dv1 = p[1].v - p[0].v, du2 = p[2].u - p[0].u, dv2 = p[2].v - p[0].v;
+    double dz1 = z[1] - z[0], dz2 = z[2] - z[0], det = du1 * dv2 - du2 * dv1;
+    double gu = (dz1 * dv2 - dz2 * dv1) / det, gv = (du1 * dz2 - du2 * dz1) / det, g2 = gu * gu + gv * gv;
+    double cu = (p[0].u + p[1].u + p[2].u) / 3, cv = (p[0].v + p[1].v + p[2].v) / 3, zc = (z[0] + z[1] + z[2]) / 3;
+    double e[4] = {cu - zc / g2 * gu, cv - zc / g2 * gv, cu + (255 - zc) / g2 * gu, cv + (255 - zc) / g2 * gv};
+    std::string s[4];
+    for (int decimals = 0; decimals <= 9; ++decimals) {
+        double r[4];
+        for (int k = 0; k < 4; ++k) {
+            s[k] = short_num(e[k], decimals);
+            r[k] = std::strtod(s[k].c_str(), nullptr);
+        }
+        bool close = true;
+        for (int k = 0; k < 3; ++k)
+            close = close && std::fabs(painted(r[0], r[1], r[2], r[3], p[k].u, p[k].v) - std::clamp(z[k], 0.0, 255.0)) <=
+                                 kGradientTolerance;
+        if (close) break;
+    }
+    std::string key = s[0] + " " + s[1] + " " + s[2] + " " + s[3];
+    auto it = gradients->find(key);
+    if (it == gradients->end()) {
+        it = gradients->emplace(key, gradient_id(gradients->size())).first;
+        *defs += "<linearGradient id=\"" + it->second + "\" xlink:href=\"#_\" x1=\"" + s[0] + "\" y1=\"" + s[1] + "\" x2=\"" +
+                 s[2] + "\" y2=\"" + s[3] + "\"/>\n";
+    }
+    return "url(#" + it->second + ")";
+}
+
 }  // namespace
 
 Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string* out) {
@@ -131,40 +169,7 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
         double top = std::min({q[0].v, q[1].v, q[2].v}), bottom = std::max({q[0].v, q[1].v, q[2].v});
         if (hi <= vx0 || lo >= vx1 || bottom <= vy0 || top >= vy1) continue;
 
-        std::string paint;
-        const double zmin = std::min({z[0], z[1], z[2]}), zmax = std::max({z[0], z[1], z[2]});
-        if (zmax - zmin < kFlatRange || zmax <= 0 || zmin >= 255) {
-            paint = gray_hex(int(std::clamp(std::floor((z[0] + z[1] + z[2]) / 3 + 0.5), 0.0, 255.0)));
-        } else {
-            // The plane z = zc + g.(p - c) through the corners, c the centroid; its 0 and 255
-            // points along g are the gradient's ends.
-            double du1 = p[1].u - p[0].u, dv1 = p[1].v - p[0].v, du2 = p[2].u - p[0].u, dv2 = p[2].v - p[0].v;
-            double dz1 = z[1] - z[0], dz2 = z[2] - z[0], det = du1 * dv2 - du2 * dv1;
-            double gu = (dz1 * dv2 - dz2 * dv1) / det, gv = (du1 * dz2 - du2 * dz1) / det, g2 = gu * gu + gv * gv;
-            double cu = (p[0].u + p[1].u + p[2].u) / 3, cv = (p[0].v + p[1].v + p[2].v) / 3, zc = (z[0] + z[1] + z[2]) / 3;
-            double e[4] = {cu - zc / g2 * gu, cv - zc / g2 * gv, cu + (255 - zc) / g2 * gu, cv + (255 - zc) / g2 * gv};
-            std::string s[4];
-            for (int decimals = 0; decimals <= 9; ++decimals) {
-                double r[4];
-                for (int k = 0; k < 4; ++k) {
-                    s[k] = short_num(e[k], decimals);
-                    r[k] = std::strtod(s[k].c_str(), nullptr);
-                }
-                bool close = true;
-                for (int k = 0; k < 3; ++k)
-                    close = close && std::fabs(painted(r[0], r[1], r[2], r[3], p[k].u, p[k].v) - std::clamp(z[k], 0.0, 255.0)) <=
-                                         kGradientTolerance;
-                if (close) break;
-            }
-            std::string key = s[0] + " " + s[1] + " " + s[2] + " " + s[3];
-            auto it = gradients.find(key);
-            if (it == gradients.end()) {
-                it = gradients.emplace(key, gradient_id(gradients.size())).first;
-                t += "<linearGradient id=\"" + it->second + "\" xlink:href=\"#_\" x1=\"" + s[0] + "\" y1=\"" + s[1] +
-                     "\" x2=\"" + s[2] + "\" y2=\"" + s[3] + "\"/>\n";
-            }
-            paint = "url(#" + it->second + ")";
-        }
+        const std::string paint = plane_paint(p, z, &gradients, &t);
         t += "<path fill=\"" + paint + "\"";
         t += " d=\"M";
         for (int k = 0; k < 3; ++k) t += (k ? " " : "") + short_num(q[k].u, 1) + " " + short_num(q[k].v, 1);
