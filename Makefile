@@ -44,6 +44,7 @@ help:
 	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
+	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten); make serve: on 127.0.0.1:8000"
 	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
 
 deps: $(CATCH_HDR) $(STB_HDR)
@@ -171,3 +172,22 @@ clean: clean-embedded
 .PHONY: clean-embedded
 clean-embedded:
 	rm -rf $(EMBEDDED_BUILD)
+
+# erd in a web page (web/): erd compiled to WebAssembly with Debian's emscripten (installed with
+# apt when missing), served on 127.0.0.1 by `make serve`.
+WEB_PORT ?= 8000
+WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_error,_erd_model_text,_erd_vector_svg,_erd_mesh_svg,_erd_reconstruction,_erd_psnr,_erd_vertices
+.PHONY: web serve
+web: web/build/erd.js
+/usr/bin/em++:
+	@echo "installing Debian package emscripten" >&2
+	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q emscripten >/dev/null 2>&1 || \
+	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q emscripten >/dev/null; }
+web/build/erd.js: /usr/bin/em++ $(LIB_SRC) web/erd_wasm.cpp $(wildcard kernel/*.h algorithms/*/*.h api/*.h)
+	@mkdir -p $(@D)
+	NODE_PATH=/usr/share/nodejs em++ -O2 -std=c++17 -I. -DNDEBUG $(LIB_SRC) web/erd_wasm.cpp -o $@ \
+	  -sMODULARIZE=1 -sEXPORT_NAME=createErd -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=worker \
+	  -sEXPORTED_FUNCTIONS=$(WEB_EXPORTS) -sEXPORTED_RUNTIME_METHODS=ccall,UTF8ToString
+serve: web
+	@echo "erd in the browser: http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
+	python3 -m http.server $(WEB_PORT) --bind 127.0.0.1 --directory web

@@ -96,6 +96,17 @@ else
 fi
 
 stage
+echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's"
+tests/web_test.sh "$IMAGES" >"$log/web" 2>&1
+rc=$?
+cat "$log/web"
+case $rc in
+    0) passed=$((passed + 1)) ;;
+    77) echo "SKIPPED: the browser test of web/ did not run (see the SKIP line)"; skipped=$((skipped + 1)) ;;
+    *) failed=$((failed + 1)) ;;
+esac
+
+stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
