@@ -114,29 +114,27 @@ echo "== vector SVG in real renderers (chromium headless, rsvg-convert): PSNR wi
 for pkg in chromium:chromium rsvg-convert:librsvg2-bin; do
     command -v "${pkg%%:*}" >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${pkg#*:}" >/dev/null 2>&1 || true
 done
-if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm ]]; then
-    tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm" >"$log/vector" 2>&1
-    rc=$?
-    cat "$log/vector"
+# Runs one browser stage (a script whose exit 77 means "skipped") and counts it once.
+browser_stage() {
+    local name=$1; shift
+    "$@" >"$log/$name" 2>&1
+    local rc=$?
+    cat "$log/$name"
     case $rc in
         0) passed=$((passed + 1)) ;;
-        77) echo "SKIPPED: no SVG renderer (chromium, rsvg-convert) installed or installable"; skipped=$((skipped + 1)) ;;
+        77) echo "SKIPPED: the $name stage did not run (see the SKIP line)"; skipped=$((skipped + 1)) ;;
         *) failed=$((failed + 1)) ;;
     esac
+}
+if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm ]]; then
+    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm"
 else
     echo "SKIPPED: $IMAGES/bull.pgm or lena.pgm missing"; skipped=$((skipped + 1))
 fi
 
 stage
 echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's"
-tests/web_test.sh "$IMAGES" >"$log/web" 2>&1
-rc=$?
-cat "$log/web"
-case $rc in
-    0) passed=$((passed + 1)) ;;
-    77) echo "SKIPPED: the browser test of web/ did not run (see the SKIP line)"; skipped=$((skipped + 1)) ;;
-    *) failed=$((failed + 1)) ;;
-esac
+browser_stage web tests/web_test.sh "$IMAGES"
 
 stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"
