@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/model/float_chars.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/predicates.h"
 
@@ -149,7 +150,7 @@ public:
         double x = 0.0;
         const char* b = t.data();
         if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
-        const auto r = std::from_chars(b, t.data() + t.size(), x);
+        const auto r = read_double(b, t.data() + t.size(), &x);
         if (t.empty() || r.ptr != t.data() + t.size() || r.ec == std::errc::invalid_argument)
             return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
         if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
