@@ -12,6 +12,11 @@ namespace erd {
 
 namespace {
 
+inline bool abl_renorm() {
+    static const bool on = [] { const char* v = std::getenv("ABL_RENORM"); return v && *v == '1'; }();
+    return on;
+}
+
 // Four lanes of the diffusion as one value. Written as plain loops over four floats, which the
 // compiler turns into single SSE instructions at the x86-64 baseline. Passed by value and kept
 // in locals, the carried error of every lane stays in a register across a row (as 16-float
@@ -114,6 +119,17 @@ template <int G, int Dir, bool Masked>
             if (Masked) out[g] = out[g] * allowed;
             any = max(any, out[g]);
             const Quad e = v - out[g];
+            if (abl_renorm() && w > 1 && (k == 0 || k == w - 1)) {
+                if (k == 0) {
+                    store(cell + 4 * g, e_prev[g] * (1.0f / 16.0f) + e * (5.0f / 13.0f));
+                    e_prev[g] = e * (16.0f / 13.0f);
+                } else {
+                    store(behind + 4 * g, load(behind + 4 * g) + e * (3.0f / 8.0f));
+                    store(cell + 4 * g, e_prev[g] * (1.0f / 16.0f) + e * (5.0f / 8.0f));
+                    e_prev[g] = e;
+                }
+                continue;
+            }
             store(behind + 4 * g, load(behind + 4 * g) + e * (3.0f / 16.0f));
             store(cell + 4 * g, e_prev[g] * (1.0f / 16.0f) + e * (5.0f / 16.0f));
             e_prev[g] = e;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 
 namespace erd {
 
@@ -58,6 +59,12 @@ Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<doubl
             src[std::size_t(k)] = r >= 0 && r < h ? hrow(r) : zeros.data();
         }
         weighted_rows(src.data(), b.data(), span, srow(j), int(ew));
+        if (std::getenv("ABL_TWOPASS") && *std::getenv("ABL_TWOPASS") == '1') {
+            double* sr = srow(j);
+            if (j < 0 || j >= h) std::fill(sr, sr + ew, 0.0);
+            sr[0] = 0.0;
+            sr[ew - 1] = 0.0;
+        }
         const int y = j - 1;
         if (y < 0) continue;
         // S rows y-1, y, y+1 are complete; index x + 1 holds sample x.

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "algorithms/methods/ablation.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/gpi.h"
 #include "algorithms/methods/methods.h"
@@ -102,7 +103,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     go.progress = options.progress;
     // Real-valued errors: the ERD model is judged by its supersampled reconstruction, which
     // rounding the point evaluation does not model (DECISIONS.md: +0.85 dB on bull at 0.125%).
-    go.round_values = false;
+    go.round_values = abl("ABL_ROUND", 0) != 0;
     GreedyStats gs;
     if (cdt.vertex_count() < std::size_t(n)) {
         st = greedy_refine(cdt, image, greedy, go, &gs);

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "algorithms/methods/heap.h"
+#include "algorithms/methods/ablation.h"
 #include "kernel/raster_rows.h"
 
 namespace erd {
@@ -148,6 +149,8 @@ public:
         if (!options.round_values)
             for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
         track_max_ = options.max_error >= 0.0;
+        aa_ = !options.round_values && abl("ABL_AA", 0) != 0;
+        if (aa_) sub_.assign(std::size_t(16) * std::size_t(image.width) * std::size_t(image.height), 0.0f);
         // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
         std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
         by_sum_.reserve(faces);
@@ -159,6 +162,8 @@ public:
     Status run(GreedyStats* stats) {
         for (LatticePoint p : cdt_.points()) ban(p);
         grow();
+        if (aa_)
+            for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) rescan(f);
 
         GreedyStop stop;
@@ -197,7 +202,19 @@ public:
             if (!st) return st;
             grow();
             ++generation_;
-            for (FaceInd c : cdt_.changes().created) rescan(c);
+            if (aa_) {
+                for (FaceInd c : cdt_.changes().created) paint(c);
+                for (FaceInd c : cdt_.changes().created) rescan(c);
+                for (FaceInd c : cdt_.changes().created)
+                    for (int k = 0; k < 3; ++k) {
+                        const VertInd u = cdt_.face_vertex(c, k);
+                        cdt_.corners_around(u, &around_);
+                        for (EdgeInd e : around_)
+                            if (stamp_[face_of(e)] != generation_) rescan(face_of(e));
+                    }
+            } else {
+                for (FaceInd c : cdt_.changes().created) rescan(c);
+            }
             for (FaceInd d : dirty)
                 if (d < faces_.size() && stamp_[d] != generation_) rescan(d);
         }
@@ -228,6 +245,40 @@ private:
         if (total_ <= 0.0) return std::numeric_limits<double>::infinity();
         double mse = total_ / (double(image_.width) * double(image_.height));
         return 10.0 * std::log10(peak_ * peak_ / mse);
+    }
+
+    // Ablation: the 4x4 sub-samples face f owns, from its plane.
+    void paint(FaceInd f) {
+        const LatticePoint p0 = cdt_.point(cdt_.face_vertex(f, 0)), p1 = cdt_.point(cdt_.face_vertex(f, 1)),
+                           p2 = cdt_.point(cdt_.face_vertex(f, 2));
+        const Lattice lat = Lattice::supersample();
+        scan_triangle(lat, domain_, p0, p1, p2, &spans_);
+        const SpanPlane plane = model_.face_plane(cdt_, f);
+        const double dv = plane.step_x(lat);
+        const std::size_t sw = 4 * std::size_t(image_.width);
+        for (const Span& sp : spans_) {
+            double v = plane.at(lat, sp.x_begin, sp.y);
+            float* row = &sub_[std::size_t(sp.y) * sw];
+            for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, v += dv) row[i] = float(v);
+        }
+    }
+    double aa_value(std::int32_t x, std::int32_t y) const {
+        const std::size_t sw = 4 * std::size_t(image_.width);
+        double s = 0;
+        int n = 0;
+        for (int l = 0; l < 4; ++l) {
+            if ((y == 0 && l < 2) || (y == image_.height - 1 && l >= 2)) continue;
+            const float* row = &sub_[std::size_t(4 * y + l) * sw + std::size_t(4 * x)];
+            for (int k = 0; k < 4; ++k) {
+                if ((x == 0 && k < 2) || (x == image_.width - 1 && k >= 2)) continue;
+                s += row[k];
+                ++n;
+            }
+        }
+        const double m = s / n;
+        if (!aa_round_) return m;
+        const double c = m < 0 ? 0 : (m > image_.maxval ? image_.maxval : m);
+        return std::floor(c + 0.5);
     }
 
     // Scans the pixels face f owns against the model's plane: new sum and candidate.
@@ -287,6 +338,19 @@ private:
             }
             sum = double(isum);
             best = ibest_sq < 0 ? -1.0 : std::sqrt(double(ibest_sq));  // exact: a perfect square
+        } else if (aa_) {
+            walk(std::false_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                        std::int32_t lo, std::int32_t hi) {
+                for (std::int32_t x = lo; x <= hi; ++x) {
+                    const double e = double(srow[x]) - aa_value(x, j);
+                    sum += e * e;
+                    if (std::fabs(e) > best && !brow[x]) {
+                        best = std::fabs(e);
+                        bx = x;
+                        by = j;
+                    }
+                }
+            });
         } else {
             double best2 = -1.0;
             walk(std::true_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
@@ -323,6 +387,11 @@ private:
     IndexedMaxHeap by_sum_;  // faces with a candidate, keyed on squared-error sum
     IndexedMaxHeap by_max_;  // the same faces keyed on candidate error (only for --max-error)
     bool track_max_ = false;
+    bool aa_ = false;
+    bool aa_round_ = abl("ABL_AAROUND", 0) != 0;
+    std::vector<float> sub_;
+    std::vector<Span> spans_;
+    std::vector<EdgeInd> around_;
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
 };

@@ -6,6 +6,7 @@
 #include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/mmsodd.h"
+#include "algorithms/methods/ablation.h"
 
 namespace erd {
 
@@ -39,14 +40,16 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
         const double t = options_.fixed_distance;
         return bilinear(phi_, clamp(x + t * dx, max_x), clamp(y + t * dy, max_y));
     }
-    const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / kWedgeAlphaStep));
+    const double astep = abl("ABL_ASTEP", kWedgeAlphaStep);
+    const bool alast = abl("ABL_ALAST", 0) != 0;
+    const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / astep));
     double best = -1, bx = x, by = y;
     int best_i = 0;
     for (int i = 0; i <= steps; ++i) {
-        const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
+        const double alpha = options_.alpha_min + astep * i;
         const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
         const double f = mmsodd_at(qx, qy);
-        if (f > best) {
+        if (f > best || (alast && f == best)) {
             best = f;
             bx = qx;
             by = qy;
