@@ -519,28 +519,32 @@ TEST_CASE("corner values found by direction match wedge_value(v, wedge_id(e)) on
 
 namespace {
 
-// The order-k MMSODD at every pixel, written as plainly as possible: each filter over its own
-// taps, every sample bounds-checked (zero outside), sums in increasing tap order.
+// The order-k MMSODD at every pixel, written as plainly as possible: the smoothing pass over
+// its own taps with every sample bounds-checked (zero outside), S zero outside the image, then
+// the derivative taps on S.
 Grid<double> reference_mmsodd(const Image& im, int order) {
     std::vector<double> b = binomial_taps(order);
     if (b.empty()) b = {1.0};
-    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
+    const int c = int(b.size() / 2);
     auto phi = [&](int x, int y) { return x >= 0 && y >= 0 && x < im.width && y < im.height ? double(im.at(x, y)) : 0.0; };
-    // sum over m of ty[m] * (sum over n of tx[n] * phi(x - n, y - m))
-    auto separable = [&](const std::vector<double>& tx, const std::vector<double>& ty, int x, int y) {
-        const int cx = int(tx.size() / 2), cy = int(ty.size() / 2);
+    auto S = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= im.width || y >= im.height) return 0.0;
         double outer = 0;
-        for (int m = -cy; m <= cy; ++m) {
+        for (int m = -c; m <= c; ++m) {
             double inner = 0;
-            for (int n = -cx; n <= cx; ++n) inner += tx[std::size_t(n + cx)] * phi(x - n, y - m);
-            outer += ty[std::size_t(m + cy)] * inner;
+            for (int n = -c; n <= c; ++n) inner += b[std::size_t(n + c)] * phi(x - n, y - m);
+            outer += b[std::size_t(m + c)] * inner;
         }
         return outer;
     };
     Grid<double> g(im.width, im.height);
     for (int y = 0; y < im.height; ++y)
-        for (int x = 0; x < im.width; ++x)
-            g(x, y) = mmsodd_value(separable(d2, b, x, y), separable(b, d2, x, y), separable(d1, d1, x, y));
+        for (int x = 0; x < im.width; ++x) {
+            const double fxx = S(x + 1, y) - 2.0 * S(x, y) + S(x - 1, y);
+            const double fyy = S(x, y + 1) - 2.0 * S(x, y) + S(x, y - 1);
+            const double fxy = 0.25 * (S(x + 1, y + 1) - S(x - 1, y + 1) - S(x + 1, y - 1) + S(x - 1, y - 1));
+            g(x, y) = mmsodd_value(fxx, fyy, fxy);
+        }
     return g;
 }
 

@@ -5,7 +5,6 @@
 
 #include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/douglas_peucker.h"
-#include "algorithms/methods/ablation.h"
 
 namespace erd {
 
@@ -33,10 +32,6 @@ public:
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
-        cp.modified = abl("ABL_PLAIN", 0) == 0;
-        cp.max_link = int(abl("ABL_MAXLINK", 6));
-        cp.thin = abl("ABL_NOTHIN", 0) == 0;
-        if (abl("ABL_ZEROBORDER", 0) != 0) cp.border = Border::zero;
         // Points, not a map: only the chosen detection's map is ever made (edges()).
         Status st = detector_.detect(cp, &edges_);  // reuses the gradient pass while it can
         if (!st.ok() && status_.ok()) status_ = st;
@@ -112,8 +107,7 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 }
 
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(image, abl("ABL_LENAFTER", 0) != 0 ? LengthRule::after_simplification : options.length_rule,
-                           abl("ABL_EPSUNIT", options.eps_unit));
+    StepOneCounter counter(image, options.length_rule, options.eps_unit);
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     counter.release_detector();

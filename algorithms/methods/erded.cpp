@@ -5,9 +5,7 @@
 #include <cstdlib>
 #include <numeric>
 #include <string>
-#include <cstdio>
 
-#include "algorithms/methods/ablation.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/methods/erdgpi.h"
@@ -151,13 +149,8 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
         d5 = mmsodd(image, 5);
-        Grid<double> density = ed_density(d5, abl("ABL_GAMMA", 0.5));
-        Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
-        if (abl("ABL_EDGEPOINT", 0) != 0) {
-            on_edge = Grid<std::uint8_t>(image.width, image.height, 0);
-            for (int y = 0; y < image.height; ++y)
-                for (int x = 0; x < image.width; ++x) on_edge(x, y) = mesh.edges(2 * x, 2 * y);
-        }
+        Grid<double> density = ed_density(d5, 0.5);
+        const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
         // Only the edge pixels are visited (the map is mostly empty); the zeros written do not
         // depend on the order.
@@ -167,10 +160,6 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
             for (int v = std::max(0, y - rad); v <= std::min(image.height - 1, y + rad); ++v)
                 for (int u = u0; u <= u1; ++u) density(u, v) = 0.0;
         });
-        if (abl("ABL_DUMP", 0) != 0) {
-            for (int y : {50, 150, 250, 350, 760})
-                for (int x : {0, 1, 2, 3, 4, 6, 10, 500, image.width - 1}) fprintf(stderr, "dens %d %d d5=%g sig=%g\n", x, y, d5(x, y), density(x, y));
-        }
         DiffusionParams dp;
         dp.startup = options.startup == 1 ? Startup::force : options.startup == 2 ? Startup::none : Startup::mirror;
         dp.forbidden = &occupied;

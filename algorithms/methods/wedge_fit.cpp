@@ -1,5 +1,4 @@
 #include "algorithms/methods/wedge_fit.h"
-#include "algorithms/methods/ablation.h"
 
 #include <cmath>
 #include <cstdint>
@@ -116,19 +115,6 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
     for (const FaceSystem& fs : faces)
         for (int j = 0; j < 3; ++j) scale[fs.entry[j]] += fs.g[j == 0 ? 0 : j == 1 ? 3 : 5];
     for (double& c : scale) c = c > 1e-12 ? 1.0 / std::sqrt(c) : 0.0;
-    {
-        const int mask = int(abl("ABL_FITMASK", 0));  // 1: multi-wedge only, 2: single only
-        if (mask) {
-            std::vector<std::uint8_t> multi(n, 0);
-            for (FaceInd f = 0; f < cdt.face_count(); ++f)
-                for (int j = 0; j < 3; ++j) {
-                    const EdgeInd e = EdgeInd(3 * f + j);
-                    if (model->wedge_count(cdt.org(e)) > 1) multi[model->corner_entry(cdt, e)] = 1;
-                }
-            for (std::size_t i = 0; i < n; ++i)
-                if ((mask == 1 && !multi[i]) || (mask == 2 && multi[i])) scale[i] = 0.0;
-        }
-    }
 
     std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(n);
     for (std::size_t i = 0; i < n; ++i) x[i] = model->entry_value(i);

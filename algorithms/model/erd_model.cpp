@@ -6,7 +6,6 @@
 #include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/mmsodd.h"
-#include "algorithms/methods/ablation.h"
 
 namespace erd {
 
@@ -40,16 +39,14 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
         const double t = options_.fixed_distance;
         return bilinear(phi_, clamp(x + t * dx, max_x), clamp(y + t * dy, max_y));
     }
-    const double astep = abl("ABL_ASTEP", kWedgeAlphaStep);
-    const bool alast = abl("ABL_ALAST", 0) != 0;
-    const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / astep));
+    const int steps = int(std::lround((options_.alpha_max - options_.alpha_min) / kWedgeAlphaStep));
     double best = -1, bx = x, by = y;
     int best_i = 0;
     for (int i = 0; i <= steps; ++i) {
-        const double alpha = options_.alpha_min + astep * i;
+        const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
         const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
         const double f = mmsodd_at(qx, qy);
-        if (f > best || (alast && f == best)) {
+        if (f > best) {
             best = f;
             bx = qx;
             by = qy;
@@ -61,27 +58,29 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     return bilinear(phi_, bx, by);
 }
 
-namespace {
-
-// h's taps of radius c spread over [-rad, rad] (zeros outside), indexed by n + rad.
-std::vector<double> padded_taps(const std::vector<double>& h, int rad) {
-    std::vector<double> out(std::size_t(2 * rad + 1), 0.0);
-    const int c = int(h.size() / 2);
-    for (int n = -c; n <= c; ++n) out[std::size_t(n + rad)] = h[std::size_t(n + c)];
-    return out;
+void ErdModel::prepare_taps() {
+    taps_b_ = binomial_taps(options_.smoothing_order);
+    if (taps_b_.empty()) taps_b_ = {1.0};
+    stencil_radius_ = int(taps_b_.size() / 2);
 }
 
-}  // namespace
-
-void ErdModel::prepare_taps() {
-    std::vector<double> b = binomial_taps(options_.smoothing_order);
-    if (b.empty()) b = {1.0};
-    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
-    const int cb = int(b.size() / 2), cd = int(d2.size() / 2);
-    stencil_radius_ = cb > cd ? cb : cd;
-    taps_b_ = padded_taps(b, stencil_radius_);
-    taps_d1_ = padded_taps(d1, stencil_radius_);
-    taps_d2_ = padded_taps(d2, stencil_radius_);
+double ErdModel::smoothed_pixel(int u, int v) const {
+    // S(u, v) of algorithms/mmsodd.h: the binomial in x, then in y, zero outside the image.
+    if (u < 0 || v < 0 || u >= phi_.width || v >= phi_.height) return 0.0;
+    const int c = stencil_radius_;
+    double s = 0;
+    for (int m = -c; m <= c; ++m) {
+        const int y = v - m;
+        if (y < 0 || y >= phi_.height) continue;  // a row of zeros
+        const std::uint16_t* row = &phi_.samples[std::size_t(y) * std::size_t(phi_.width)];
+        double r = 0;
+        for (int n = -c; n <= c; ++n) {
+            const int x = u - n;
+            if (x >= 0 && x < phi_.width) r += taps_b_[std::size_t(n + c)] * double(row[x]);
+        }
+        s += taps_b_[std::size_t(m + c)] * r;
+    }
+    return s;
 }
 
 double ErdModel::mmsodd_pixel(int x, int y) {
@@ -89,47 +88,16 @@ double ErdModel::mmsodd_pixel(int x, int y) {
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
     if (stencil_radius_ < 0) prepare_taps();
-    // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
-    // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
-    // +-0 may be added or left out (the taps padded with zeros to the stencil radius; stencil rows
-    // outside the image): every sum starts at +0 and adding +-0 never changes it, so the values
-    // are those of the whole-grid filters.
-    const int rad = stencil_radius_;
-    // Each stencil row is read once into stencil_ (zero outside the image) and the three filters
-    // read it there.
-    stencil_.resize(std::size_t(2 * rad + 1));
-    double* const f = stencil_.data() + rad;  // f[-n] = phi(x - n, v)
-    const bool cols_in = x - rad >= 0 && x + rad < phi_.width;
-    const double* const b = taps_b_.data() + rad;  // b[n] for n in [-rad, rad]
-    const double* const d1 = taps_d1_.data() + rad;
-    const double* const d2 = taps_d2_.data() + rad;
-    double fxx = 0, fyy = 0, fxy = 0;
-    for (int m = -rad; m <= rad; ++m) {
-        const int v = y - m;
-        if (v < 0 || v >= phi_.height) continue;  // a row of zeros
-        const std::uint16_t* row = &phi_.samples[std::size_t(v) * std::size_t(phi_.width)];
-        if (cols_in) {
-            for (int n = -rad; n <= rad; ++n) f[-n] = double(row[x - n]);
-        } else {
-            for (int n = -rad; n <= rad; ++n) {
-                const int u = x - n;
-                f[-n] = u >= 0 && u < phi_.width ? double(row[u]) : 0.0;
-            }
-        }
-        // The three x filters in one sweep over the padded taps (their zeros add +-0).
-        double rb = 0, rd1 = 0, rd2 = 0;
-        for (int n = -rad; n <= rad; ++n) {
-            const double sample = f[-n];
-            rb += b[n] * sample;
-            rd1 += d1[n] * sample;
-            rd2 += d2[n] * sample;
-        }
-        // Row m enters fxx through the y smoothing taps (with the x second derivative), fyy
-        // through the y second derivative (with x smoothing), fxy through the y first derivative.
-        if (b[m] != 0) fxx += b[m] * rd2;
-        if (d2[m] != 0) fyy += d2[m] * rb;
-        if (d1[m] != 0) fxy += d1[m] * rd1;
-    }
+    // The two passes of algorithms/mmsodd.h at one pixel: S on the 3 x 3 neighbourhood, then the
+    // derivative taps, in the same expressions as the whole-grid sweep. Integer samples and dyadic
+    // taps make every value exact, so the order of the additions does not matter: the values are
+    // those of the grid bit for bit.
+    double S[3][3];
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) S[j][i] = smoothed_pixel(x + i - 1, y + j - 1);
+    const double fxx = (S[1][2] + S[1][0]) - 2.0 * S[1][1];
+    const double fyy = (S[2][1] + S[0][1]) - 2.0 * S[1][1];
+    const double fxy = 0.25 * ((S[2][2] - S[2][0]) - (S[0][2] - S[0][0]));
     const double value = mmsodd_value(fxx, fyy, fxy);
     local_.emplace(key, value);
     return value;

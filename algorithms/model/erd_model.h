@@ -125,12 +125,9 @@ private:
     // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
     std::unordered_map<std::size_t, double> local_;
     void prepare_taps();
-    // The filters of mmsodd_pixel, along x and y: smoothing b and the derivatives
-    // d1 = [1/2 0 -1/2] * b and d2 = [1 -2 1] * b, each spread over [-stencil_radius_,
-    // stencil_radius_] (zeros where a filter is shorter), indexed by n + stencil_radius_.
-    int stencil_radius_ = -1;  // < 0 until the first use
-    std::vector<double> taps_b_, taps_d1_, taps_d2_;
-    std::vector<double> stencil_;  // one row of the pixel's filter stencil
+    double smoothed_pixel(int u, int v) const;  // S of algorithms/mmsodd.h at pixel (u, v)
+    int stencil_radius_ = -1;  // radius of taps_b_ (the binomial); < 0 until the first use
+    std::vector<double> taps_b_;
     int cell_x_ = -1, cell_y_ = -1;  // the last bilinear cell mmsodd_at read, and its corners
     double cell_[4] = {0, 0, 0, 0};
     std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
