@@ -45,7 +45,7 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     for (int i = 0; i <= steps; ++i) {
         const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
         const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
-        const double f = mmsodd_at(qx, qy);
+        const double f = mmsodd_near(qx, qy);
         if (f > best) {
             best = f;
             bx = qx;
@@ -103,24 +103,12 @@ double ErdModel::mmsodd_pixel(int x, int y) {
     return value;
 }
 
-double ErdModel::mmsodd_at(double x, double y) {
-    if (have_mmsodd_) return bilinear(mmsodd_, x, y);
-    // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
-    const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
-    const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    // Successive steps of a line search (0.05 px apart) mostly stay in one cell: keep its corners.
-    if (x0 != cell_x_ || y0 != cell_y_) {
-        cell_x_ = x0;
-        cell_y_ = y0;
-        cell_[0] = mmsodd_pixel(x0, y0);
-        cell_[1] = mmsodd_pixel(x0 + 1, y0);
-        cell_[2] = mmsodd_pixel(x0, y0 + 1);
-        cell_[3] = mmsodd_pixel(x0 + 1, y0 + 1);
-    }
-    const double top = (1.0 - fx) * cell_[0] + fx * cell_[1];
-    const double bottom = (1.0 - fx) * cell_[2] + fx * cell_[3];
-    return (1.0 - fy) * top + fy * bottom;
+double ErdModel::mmsodd_near(double x, double y) {
+    // f is the MMSODD of phi, defined on the pixel lattice (thesis 3.2.1, eq. 3.1); a point of
+    // the line search reads it at the nearest pixel (halves up: x, y >= 0).
+    const int px = int(x + 0.5), py = int(y + 0.5);
+    if (have_mmsodd_) return mmsodd_(px, py);
+    return mmsodd_pixel(px, py);
 }
 
 void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {
