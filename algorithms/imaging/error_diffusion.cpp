@@ -328,9 +328,18 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
             width = std::min(0.25, 2.0 * spread);
         }
         if (center > 0) {
+            // Sampled within the bracket where it is narrower than the window: near the exact
+            // count the bands of rho that give it can be far narrower than the window (bull-like
+            // densities are smooth, a random one at K = 4 gives a band 0.16% wide).
+            double w_lo = center * (1.0 - width), w_hi = center * (1.0 + width);
+            if (have_lo && have_hi && lo < hi) {
+                w_lo = std::max(w_lo, lo);
+                w_hi = std::min(w_hi, hi);
+                if (!(w_lo < w_hi)) { w_lo = lo; w_hi = hi; }
+            }
             for (int l = 0; l < kLanes; ++l, ++j) {
                 const double g = double(j) * golden - std::floor(double(j) * golden);
-                trials[l] = center * (1.0 + width * (2.0 * g - 1.0));
+                trials[l] = w_lo + (w_hi - w_lo) * g;
             }
             continue;
         }
