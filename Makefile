@@ -45,6 +45,7 @@ help:
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
+	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 
 deps: $(CATCH_HDR) $(STB_HDR)
 $(CATCH_HDR) $(STB_HDR):
@@ -104,7 +105,7 @@ fuzz: deps
 	@bash fuzz/run.sh $(FUZZ_SECONDS)
 
 clean:
-	rm -rf build build-asan build-fuzz out
+	rm -rf build build-asan build-fuzz out python/build python/erd.egg-info python/erd/_erd*.so
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
@@ -171,3 +172,41 @@ clean: clean-embedded
 .PHONY: clean-embedded
 clean-embedded:
 	rm -rf $(EMBEDDED_BUILD)
+
+# ---------------------------------------------------------------------------------------------
+# Python (issue 22): `make python` builds the extension python/erd/_erd*.so in place for PYTHON
+# with python/setup.py (the same build `pip install` runs), offline against Debian's
+# python3-pybind11 and python3-numpy (installed with apt when missing, with python3-pytest for
+# the tests), and puts python/ on PYTHON's path with a .pth file (what `pip install -e` does).
+# Objects go to python/build/, where `pip install .` finds them too; only changed sources are
+# recompiled. `make python-venv-check`: that pip install into a fresh venv, then import and run it.
+PYTHON     ?= /usr/bin/python3
+PY_DEBS    := python3-dev python3-pybind11 python3-numpy python3-pytest python3-setuptools python3-wheel python3-venv
+PY_PTH     := erd-checkout.pth
+
+.PHONY: python python-deps python-test python-venv-check
+python-deps: $(STB_HDR)
+	@$(PYTHON) -c "import pybind11, numpy, pytest, setuptools, wheel, venv" 2>/dev/null || { \
+	  echo "installing Debian packages $(PY_DEBS)" >&2; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null 2>&1 || \
+	  { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null; }; }
+	@$(PYTHON) -c "import pybind11, numpy, pytest" || { echo "python: pybind11, numpy or pytest missing for $(PYTHON)" >&2; exit 1; }
+
+python: python-deps
+	@cd python && ERD_BUILD_JOBS=2 $(PYTHON) setup.py -q build_ext --inplace
+	@site=$$($(PYTHON) -c "import site; print(site.getsitepackages()[0])") && mkdir -p "$$site" && \
+	  echo "$(CURDIR)/python" > "$$site/$(PY_PTH)" && \
+	  echo "python: built $$(cd python && ls erd/_erd*.so) for $(PYTHON) ($$($(PYTHON) -c 'import sys; print("Python", sys.version.split()[0])')); $$site/$(PY_PTH) -> $(CURDIR)/python"
+
+# pytest over python/tests with this checkout's extension first on the path.
+python-test: python $(BUILD)/erd
+	cd python && ERD_BIN=$(CURDIR)/$(BUILD)/erd ERD_IMAGES=$(abspath $(IMAGES)) PYTHONPATH=$(CURDIR)/python $(PYTHON) -m pytest -q tests
+
+PY_VENV    ?= $(BUILD)/venv
+python-venv-check: python
+	@rm -rf $(PY_VENV) && $(PYTHON) -m venv --system-site-packages $(PY_VENV)
+	@cd python && ../$(PY_VENV)/bin/pip install -q --no-build-isolation --no-index . >../$(PY_VENV)/pip.log 2>&1 || { tail -20 ../$(PY_VENV)/pip.log; exit 1; }
+	@cd / && $(CURDIR)/$(PY_VENV)/bin/python -c "import erd, numpy; assert erd.__file__.startswith('$(CURDIR)/$(PY_VENV)/'), erd.__file__; \
+	  m = erd.generate(numpy.arange(4096, dtype=numpy.uint16).reshape(64, 64), 'erdgpi', density=2, maxval=4095, exit_mode=2); \
+	  print('python-venv-check: pip-installed', erd.__file__, m)" && $(CURDIR)/$(PY_VENV)/bin/python -m erd --version
+

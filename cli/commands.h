@@ -28,4 +28,8 @@ int thesis_alias(const char* name, int argc, char** argv, bool* handled);
 // The static table (cli/main.cpp).
 const Command* commands(int* count);
 
+// The whole program without main's process setup: argv[0] picks a thesis alias, argv[1] the
+// subcommand; returns the exit status (cli/main.cpp).
+int run(int argc, char** argv);
+
 }  // namespace erd::cli

@@ -75,5 +75,30 @@ else
 fi
 
 stage
+echo "== python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
+if make -s python >"$log/python-build" 2>&1; then
+    grep '^python: built' "$log/python-build" || true
+    images_abs=$(cd "$IMAGES" 2>/dev/null && pwd)
+    (cd python && ERD_BIN=$PWD/../build/erd ERD_IMAGES=$images_abs PYTHONPATH=$PWD \
+        /usr/bin/python3 -m pytest -q -p no:cacheprovider tests) >"$log/pytest" 2>&1
+    rc=$?
+    tail -3 "$log/pytest"
+    line=$(tail -1 "$log/pytest"); p=0; f=0   # "1 failed, 54 passed in 9.1s", "2 errors in ..."
+    [[ $line =~ ([0-9]+)\ passed ]] && p=${BASH_REMATCH[1]}
+    [[ $line =~ ([0-9]+)\ failed ]] && f=${BASH_REMATCH[1]}
+    [[ $line =~ ([0-9]+)\ error ]] && f=$((f + BASH_REMATCH[1]))
+    [[ $rc -ne 0 && $f -eq 0 ]] && f=1   # pytest crashed, collected nothing or could not start
+    passed=$((passed + p)); failed=$((failed + f))
+    # pip install into a fresh venv made with --system-site-packages (reuses make python's objects).
+    if make -s python-venv-check >"$log/venv" 2>&1; then
+        grep '^python-venv-check' "$log/venv"; passed=$((passed + 1))
+    else
+        tail -20 "$log/venv"; echo "pip install into a venv failed"; failed=$((failed + 1))
+    fi
+else
+    tail -20 "$log/python-build"; echo "python package build failed (pybind11, numpy or pytest missing?)"; failed=$((failed + 1))
+fi
+
+stage
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
