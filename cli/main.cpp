@@ -33,11 +33,6 @@ static const Command kCommands[] = {
     {"help", "list subcommands, or show one's help", cmd_help},
 };
 
-const Command* commands(int* count) {
-    *count = int(sizeof kCommands / sizeof kCommands[0]);
-    return kCommands;
-}
-
 static const Command* find_command(const char* name) {
     for (const auto& c : kCommands)
         if (std::strcmp(c.name, name) == 0) return &c;

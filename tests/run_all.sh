@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# `make test`: the unit tests, the same tests under ASan+UBSan, and a short run of every fuzz
-# target. Counts test cases (a fuzz target counts as one) and ends with "N passed, M failed".
+# `make test`: the layer check, the unit tests, the same tests under ASan+UBSan, and a short run
+# of every fuzz target. Counts test cases (a fuzz target and the layer check count as one each)
+# and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
+# (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
+unset ERD_ALLOW_SKIP ERD_REGENERATE
 cd "$(dirname "$0")/.."
 IMAGES=${IMAGES:-../shared/images}
 passed=0
@@ -28,9 +31,13 @@ count_catch() {
 
 stage_start=$SECONDS
 stage() { echo "   ($(( SECONDS - stage_start )) s)"; stage_start=$SECONDS; }
+echo "== layer check (tools/check_layers.sh, counts as one test)"
+if bash tools/check_layers.sh; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+
+stage
 echo "== build"
 if ! make -s -j2 build/erd build/erd_tests; then
-    echo "build failed"; echo "0 passed, 1 failed"; exit 1
+    echo "build failed"; echo "$passed passed, $((failed + 1)) failed"; exit 1
 fi
 
 # An -O0 build of the binary only (no tests): tests/test_robustness.cpp compares its generate

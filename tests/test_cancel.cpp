@@ -6,7 +6,7 @@
 #include <string>
 
 #include "api/erd.h"
-#include "tests/people_util.h"
+#include "tests/output_util.h"
 
 using namespace erd;
 
@@ -31,7 +31,7 @@ ProgressHook counting_hook(Counter* c) {
 }  // namespace
 
 TEST_CASE("a progress hook's cancel stops the methods with 'cancelled'", "[cancel]") {
-    const Image image = people_test::wave_disc_image();
+    const Image image = output_test::wave_disc_image();
     const api::ImageView view = api::view_of(image);
     for (api::Method m : {api::Method::gpi, api::Method::erded, api::Method::erdgpi}) {
         INFO(api::method_name(m));

@@ -11,8 +11,9 @@
 namespace erd {
 
 // Largest accepted image. The side bound keeps doubled lattice coordinates (at most 2*side-2)
-// far inside the exactness bound of kernel/predicates.h; the pixel bound caps memory
-// (about 64 bytes per pixel for the whole pipeline: 2^26 pixels ~ 4 GiB worst case).
+// far inside the exactness bound of kernel/predicates.h; the pixel bound caps memory (the
+// methods' peak heap per pixel is in their registry rows, algorithms/methods/methods.cpp: up to
+// ~110 bytes per pixel for ERDED and ERDGPI, so 2^26 pixels ~ 7 GiB worst case).
 constexpr int kMaxImageSide = 32768;
 constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 26;
 
@@ -44,7 +45,7 @@ struct Image {
     std::uint16_t at(int x, int y) const { return samples[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
     std::size_t pixels() const { return samples.size(); }
 
-    // Bits per sample: ceil(log2(maxval + 1)); PSNR peaks at 2^bits - 1 (NOTES.md).
+    // Bits per sample: ceil(log2(maxval + 1)); PSNR peaks at 2^bits - 1 (../shared/spec/NOTES.md).
     int bits() const {
         int b = 0;
         while ((std::uint32_t(1) << b) - 1 < maxval) ++b;

@@ -12,8 +12,8 @@
 // whole-image squared error, which the loop keeps incrementally for the PSNR stop rule.
 //
 // Errors are measured at the pixel lattice Lambda (even doubled coordinates) by point evaluation
-// of the face's plane (NOTES.md: refinement may use point evaluation), or against the
-// supersampled reconstruction (GreedyOptions::supersampled, the thesis's ERDGPI).
+// of the face's plane (../shared/spec/NOTES.md: refinement may use point evaluation), or against
+// the supersampled reconstruction (GreedyOptions::supersampled, the thesis's ERDGPI).
 //
 // Candidates: a lattice point that is already a vertex is never a candidate (inserting it would
 // change nothing), nor is a point the model has refused (GreedyModel::admissible). Among equal
@@ -93,9 +93,9 @@ struct GreedyOptions {
     double psnr = 0.0;                // stop when PSNR >= psnr dB; <= 0: rule off
     // Errors against the approximation rounded to the nearest integer and clamped to
     // [0, maxval] (what imgsyn reconstructs; squared errors are integers and the running total
-    // exact) instead of the real-valued plane. docs/DECISIONS.md "Methods: ED and GPI" has the
-    // numbers that chose the default.
-    bool round_values = false;
+    // exact) instead of the real-valued plane. The default is GenerateOptions::round_values's
+    // (docs/DECISIONS.md "Methods: ED and GPI" has the numbers that chose it); ERDGPI turns it off.
+    bool round_values = true;
     // Errors against the 4x4-supersampled approximation, rounded and clamped as reconstruction
     // writes it (imgsyn_aa; sub-samples outside the domain clamped onto its border), instead of
     // point evaluation: the thesis's ERDGPI "maintains the image approximation" of its model,
