@@ -88,7 +88,7 @@ double ErdModel::mmsodd_pixel(int x, int y) {
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
     if (stencil_radius_ < 0) prepare_taps();
-    // The two passes of algorithms/mmsodd.h at one pixel: S on the 3 x 3 neighbourhood, then the
+    // The two passes of algorithms/imaging/mmsodd.h at one pixel: S on the 3 x 3 neighbourhood, then the
     // derivative taps, in the same expressions as the whole-grid sweep. Integer samples and dyadic
     // taps make every value exact, so the order of the additions does not matter: the values are
     // those of the grid bit for bit.
