@@ -59,12 +59,13 @@ const CommandLine kGenerate = {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
         {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
+        {0, "aa-errors", "0|1", "ERDGPI: refinement errors against the 4x4-supersampled approximation (default 0; thesis 1)"},
         {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
@@ -141,6 +142,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
                                 real_text(o->alpha_min));
     if (a.has("edge-zero-radius"))
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
+    if (a.has("aa-errors")) o->supersampled_errors = a.integer("aa-errors", 0, 0, 1, st) == 1;
 }
 
 }  // namespace

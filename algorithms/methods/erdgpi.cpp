@@ -33,6 +33,7 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
     // Real-valued errors: the ERD model is judged by its supersampled reconstruction, which
     // rounding the point evaluation does not model (DECISIONS.md: +0.85 dB on bull at 0.125%).
     go.round_values = false;
+    go.supersampled = options.supersampled_errors;
     result->stats.has_greedy = true;
     if (cdt.vertex_count() < std::size_t(n)) {
         st = greedy_refine(cdt, image, greedy, go, &result->stats.greedy);

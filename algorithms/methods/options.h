@@ -47,6 +47,8 @@ struct GenerateOptions {
     EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft
     int edge_zero_radius = 1;    // ERDED: density zeroed within this many pixels (Chebyshev) of an
                                  // edge pixel (ours; the thesis's "edge pixels" is 0)
+    bool supersampled_errors = false;  // ERDGPI: refinement errors against the 4x4-supersampled
+                                 // approximation (the thesis's, --thesis); false: point evaluation
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages
 };

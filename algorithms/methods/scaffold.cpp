@@ -50,6 +50,7 @@ void set_thesis_preset(GenerateOptions* o) {
     o->alpha_max = 1.5;
     o->edge_zero_radius = 0;
     o->edges = EdgeChoice::soft;
+    o->supersampled_errors = true;
 }
 
 GenerateOptions thesis_options() {
