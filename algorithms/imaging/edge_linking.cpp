@@ -47,15 +47,16 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     const std::size_t n = sp->size();
     std::vector<std::uint8_t>& flag = sp->flag;
     std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
-    // dist and from are read only at labelled points: set for the sources below, and for a
-    // reached point when it is reached, so neither is initialised.
+    // dist and back are read only at labelled points: set for the sources below, and for a
+    // reached point when it is reached, so neither is initialised. back[j] is the direction
+    // (point_rings.h order) from j to the point it was reached from: a byte instead of an index.
     std::unique_ptr<std::uint8_t[]> dist(new std::uint8_t[n]);
-    std::unique_ptr<std::uint32_t[]> from(new std::uint32_t[n]);
-    std::vector<std::uint32_t> queue(sp->mains);
-    for (const std::uint32_t i : queue) {
-        dist[i] = 0;
-        from[i] = kNoPoint;
-    }
+    std::unique_ptr<std::uint8_t[]> back(new std::uint8_t[n]);
+    // The queue is the mains themselves, followed by the secondary points as they are reached
+    // (cut off again after the search).
+    std::vector<std::uint32_t>& queue = sp->mains;
+    const std::size_t sources = queue.size();
+    for (const std::uint32_t i : queue) dist[i] = 0;
     struct Meeting { std::uint64_t key; std::uint32_t p, q; };
     std::vector<Meeting> meetings;
     const std::uint8_t limit = std::uint8_t(max_link);
@@ -65,14 +66,15 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         const std::uint8_t di = dist[i];
         std::uint32_t nb[8];
         sp->ring(i, nb);
-        for (const std::uint32_t j : nb) {
+        for (int d = 0; d < 8; ++d) {
+            const std::uint32_t j = nb[d];
             if (j == kNoPoint) continue;
             const std::uint32_t lj = label[j];
             if (lj == 0) {
                 if (di < limit && (flag[j] & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
                     dist[j] = std::uint8_t(di + 1);
-                    from[j] = i;
+                    back[j] = std::uint8_t((d + 4) & 7);
                     queue.push_back(j);
                 }
             } else if (lj != li && std::uint32_t(di) + dist[j] <= limit) {
@@ -81,16 +83,20 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
             }
         }
     }
+    queue.resize(sources);
     // One link per pair of components: the first found, i.e. (nearly) the shortest.
     std::size_t added = 0;
     std::stable_sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& c) { return a.key < c.key; });
     for (std::size_t k = 0; k < meetings.size(); ++k) {
         if (k > 0 && meetings[k].key == meetings[k - 1].key) continue;
         for (std::uint32_t i : {meetings[k].p, meetings[k].q})
-            for (; i != kNoPoint && !(flag[i] & kMain); i = from[i]) {
+            while (!(flag[i] & kMain)) {  // a reached point: its chain ends at a main point
                 flag[i] |= kMain;
                 sp->mains.push_back(i);
                 ++added;
+                std::uint32_t nb[8];
+                sp->ring(i, nb);
+                i = nb[back[i]];
             }
     }
 
@@ -101,8 +107,8 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     // to a different main component. Only strong points can be climbed to: the climb starts at
     // g >= tau_low and only rises.
     std::vector<std::uint32_t> path;
-    for (const std::uint32_t end : queue) {
-        if (dist[end] != 0 || !(flag[end] & kMain)) continue;
+    for (std::size_t s = 0; s < sources; ++s) {
+        const std::uint32_t end = sp->mains[s];  // the climbs below append to mains
         int neighbours = 0;
         std::uint32_t nb[8];
         sp->ring(end, nb);
