@@ -94,9 +94,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
                 flag[i] |= kMain;
                 sp->mains.push_back(i);
                 ++added;
-                std::uint32_t nb[8];
-                sp->ring(i, nb);
-                i = nb[back[i]];
+                i = sp->points->neighbour(i, back[i]);
             }
     }
 

@@ -62,6 +62,18 @@ struct SortedPoints {
         row(p - s - 1, &nb[5], &nb[6], &nb[7]);
     }
 
+    // The neighbour of point i in direction d, which must be in the set (bit d of mask(i)).
+    std::uint32_t neighbour(std::uint32_t i, int d) const {
+        if (d == 0) return i + 1;
+        if (d == 4) return i - 1;
+        const std::size_t p = at[i], s = std::size_t(stride);
+        const std::size_t left = d < 4 ? p + s - 1 : p - s - 1;
+        const unsigned b = bits3(left);
+        // Down row (d = 3, 2, 1) and up row (d = 5, 6, 7): cell `left + c` with c = 0, 1, 2.
+        const unsigned c = d < 4 ? unsigned(3 - d) : unsigned(d - 5);
+        return rank(left) + popcount64(b & ((1u << c) - 1u));
+    }
+
     void clear() {
         std::vector<std::uint32_t>().swap(at);
         std::vector<std::uint64_t>().swap(bits_);
