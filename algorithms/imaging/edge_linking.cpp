@@ -60,6 +60,12 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     struct Meeting { std::uint64_t key; std::uint32_t p, q; };
     std::vector<Meeting> meetings;
     const std::uint8_t limit = std::uint8_t(max_link);
+    // Every main point is taken from the queue before any reached point, and claims each free
+    // secondary neighbour; so with limit >= 2 a point reached at distance `limit` is next to no
+    // main point of another component and could only meet one (a meeting needs the two
+    // distances to sum to at most limit): it would find no meeting and reach nothing further,
+    // and is not labelled at all. This outermost shell is the largest.
+    const std::uint8_t reach = limit >= 2 ? std::uint8_t(limit - 1) : limit;
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const std::uint32_t i = queue[head];
         const std::uint32_t li = label[i];
@@ -71,7 +77,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
             if (j == kNoPoint) continue;
             const std::uint32_t lj = label[j];
             if (lj == 0) {
-                if (di < limit && (flag[j] & (kSecondary | kMain)) == kSecondary) {
+                if (di < reach && (flag[j] & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
                     dist[j] = std::uint8_t(di + 1);
                     back[j] = std::uint8_t((d + 4) & 7);
