@@ -57,7 +57,8 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     std::vector<std::uint32_t>& queue = sp->mains;
     const std::size_t sources = queue.size();
     for (const std::uint32_t i : queue) dist[i] = 0;
-    struct Meeting { std::uint64_t key; std::uint32_t p, q; };
+    // p has the smaller label; the pair's key is the two labels (read back when sorting).
+    struct Meeting { std::uint32_t p, q; };
     std::vector<Meeting> meetings;
     const std::uint8_t limit = std::uint8_t(max_link);
     // Every main point is taken from the queue before any reached point, and claims each free
@@ -84,17 +85,18 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
                     queue.push_back(j);
                 }
             } else if (lj != li && std::uint32_t(di) + dist[j] <= limit) {
-                if (li < lj) meetings.push_back({(std::uint64_t(li) << 32) | lj, i, j});
-                else meetings.push_back({(std::uint64_t(lj) << 32) | li, j, i});
+                if (li < lj) meetings.push_back({i, j});
+                else meetings.push_back({j, i});
             }
         }
     }
     queue.resize(sources);
     // One link per pair of components: the first found, i.e. (nearly) the shortest.
     std::size_t added = 0;
-    std::stable_sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& c) { return a.key < c.key; });
+    auto key = [&](const Meeting& m) { return (std::uint64_t(label[m.p]) << 32) | label[m.q]; };
+    std::stable_sort(meetings.begin(), meetings.end(), [&](const Meeting& a, const Meeting& c) { return key(a) < key(c); });
     for (std::size_t k = 0; k < meetings.size(); ++k) {
-        if (k > 0 && meetings[k].key == meetings[k - 1].key) continue;
+        if (k > 0 && key(meetings[k]) == key(meetings[k - 1])) continue;
         for (std::uint32_t i : {meetings[k].p, meetings[k].q})
             while (!(flag[i] & kMain)) {  // a reached point: its chain ends at a main point
                 flag[i] |= kMain;
