@@ -30,7 +30,7 @@ namespace {
 
 const char* const kUsage =
     "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--thesis] [--stats FILE] [--psnr-report] [-q]";
+    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--stats FILE] [--psnr-report] [-q]";
 
 const std::vector<OptionSpec>& specs() {
     static const std::vector<OptionSpec> s = {
@@ -44,6 +44,7 @@ const std::vector<OptionSpec>& specs() {
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
         {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E"},
         {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
+        {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
         {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
         {'r', "ratio", "R", "ERD: tau_low / tau_high (default automatic: 0.4)"},
@@ -112,6 +113,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("points")) o->points = a.integer("points", 0, 1, (1LL << 40), st);
     *exit_mode = int(a.integer("exit-mode", 0, 0, 2, st));
     if (a.has("max-error")) o->max_error = a.real("max-error", -1.0, 0.0, big, st);
+    if (a.has("triangles")) o->triangles = a.integer("triangles", 0, 1, (1LL << 40), st);
     if (a.has("psnr")) {
         o->psnr = a.real("psnr", 0.0, -big, big, st);
         if (st->ok() && !(o->psnr > 0.0)) *st = Status::bad_input("--psnr: " + a.str("psnr") + " is not a positive dB value");

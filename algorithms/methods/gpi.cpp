@@ -74,6 +74,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     go.target_vertices = std::size_t(n);
     go.max_error = options.max_error;
     go.psnr = options.psnr;
+    go.max_triangles = options.triangles > 0 ? std::size_t(options.triangles) : 0;
     go.round_values = options.round_values;
     go.progress = options.progress;
     GreedyStats gs;
