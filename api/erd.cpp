@@ -1,4 +1,4 @@
-// The public API (algorithms/erd.h): thin wrappers over the method registry, the reconstruction
+// The public API (api/erd.h): thin wrappers over the method registry, the reconstruction
 // and the metrics, plus the checks a caller-owned view needs before it is trusted.
 #include "api/erd.h"
 
@@ -53,44 +53,50 @@ ImageView view_of(const Image& image) {
     return v;
 }
 
+namespace {
+
+// The registry row of m, or nullptr for a value outside the enum.
+const MethodInfo* entry_of(Method m) {
+    std::size_t count = 0;
+    const MethodInfo* table = methods(&count);
+    const std::size_t i = std::size_t(m);
+    return i < count ? &table[i] : nullptr;
+}
+
+}  // namespace
+
 const char* method_name(Method m) {
-    switch (m) {
-    case Method::ed: return "ed";
-    case Method::gpi: return "gpi";
-    case Method::erded: return "erded";
-    case Method::erdgpi: return "erdgpi";
-    }
-    return "?";
+    const MethodInfo* e = entry_of(m);
+    return e ? e->name : "?";
 }
 
 Status method_from_name(const std::string& name, Method* out) {
-    for (Method m : {Method::ed, Method::gpi, Method::erded, Method::erdgpi}) {
-        if (name == method_name(m)) {
-            *out = m;
+    std::size_t count = 0;
+    const MethodInfo* table = methods(&count);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (name == table[i].name) {
+            *out = Method(i);
             return Status::success();
         }
     }
-    return Status::bad_input("unknown method '" + name + "' (ed, gpi, erded, erdgpi)");
+    return Status::bad_input("unknown method '" + name + "' (" + method_names() + ")");
+}
+
+Options thesis_options() {
+    Options o;
+    o.generate = erd::thesis_options();
+    o.exact = ExactMode::fail;
+    return o;
 }
 
 std::size_t memory_estimate(Method m, int width, int height, const Options& options) {
-    if (width < 1 || height < 1) return 0;
+    const MethodInfo* e = entry_of(m);
+    if (!e || width < 1 || height < 1) return 0;
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     std::int64_t n = target_points(options.generate, width, height);
     if (n < 0) n = 0;
-    // Peak heap bytes measured (operator new high-water mark around generate(), the view's copy
-    // included) on the seven test images at 0.5% and 3%: ED 66 B/pixel whatever N; GPI 4 B/pixel
-    // + 186 B/vertex; ERDED and ERDGPI 108-116 B/pixel + 170-225 B/vertex (the edge detector's
-    // half-pixel planes dominate). The factors below keep >= 20% headroom over every measurement
-    // (docs/DECISIONS.md, Packaging); 64 KiB covers fixed costs on tiny images.
-    std::size_t per_pixel = 0, per_point = 0;
-    switch (m) {
-    case Method::ed: per_pixel = 80; per_point = 64; break;
-    case Method::gpi: per_pixel = 8; per_point = 256; break;
-    case Method::erded:
-    case Method::erdgpi: per_pixel = 136; per_point = 320; break;
-    }
-    return pixels * per_pixel + std::size_t(n) * per_point + (std::size_t(1) << 16);
+    // The registry's factors (measured, with headroom); 64 KiB covers fixed costs on tiny images.
+    return pixels * e->bytes_per_pixel + std::size_t(n) * e->bytes_per_point + (std::size_t(1) << 16);
 }
 
 Status generate(Method m, const ImageView& image, const Options& options, Model* model, GenerateInfo* info) {
@@ -105,8 +111,8 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
                                        " bytes, more than max_memory " + std::to_string(options.max_memory));
         }
     }
-    const erd::Method* entry = find_method(method_name(m));
-    if (!entry) return Status::failure(std::string("method ") + method_name(m) + " is not in this build");
+    const MethodInfo* entry = entry_of(m);
+    if (!entry) return Status::bad_input("generate: no such method");
 
     Image copy;
     Status st = copy_view(image, &copy);
@@ -115,18 +121,16 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
     st = entry->run(copy, options.generate, &result);
     if (!st) return st;
     *model = std::move(result.model);
+    std::string warning;
+    st = check_exact_count(result.requested, result.achieved, options.exact, &warning);
     if (info) {
         info->requested = result.requested;
         info->achieved = result.achieved;
-        info->warning.clear();
+        info->warning = warning;
+        info->stats = result.stats;
+        info->stages = std::move(result.stages);
     }
-    if (result.achieved != result.requested && options.exact != ExactMode::ignore) {
-        std::string what = "target sampling density not achieved exactly (requested " + std::to_string(result.requested) +
-                           " but got " + std::to_string(result.achieved) + ")";
-        if (options.exact == ExactMode::fail) return Status::error(Code::density, what);
-        if (info) info->warning = what;
-    }
-    return Status::success();
+    return st;
 }
 
 Status reconstruct(const Model& model, bool supersample, Image* out) {

@@ -10,6 +10,7 @@
 //     opt.generate.density = 1.0;                              // percent of the pixels
 //     erd::Model model;
 //     erd::Status st = erd::api::generate(erd::api::Method::erdgpi, view, opt, &model);
+//     // erd::api::thesis_options() instead: the thesis's method exactly
 //     if (!st) fprintf(stderr, "%s\n", st.message.c_str());
 //     erd::Image approx;
 //     st = erd::api::reconstruct(model, true, &approx);        // 4x4 supersampling
@@ -35,6 +36,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
@@ -58,6 +60,8 @@ struct ImageView {
 ImageView view_of(const Image& image);
 
 // The four methods of the thesis: ED and GPI make a basic model, ERDED and ERDGPI an ERD model.
+// The values are the rows of the method registry (algorithms/methods/methods.h), in its order;
+// the names, model kinds and memory factors are read from there.
 enum class Method { ed, gpi, erded, erdgpi };
 
 // "ed", "gpi", "erded", "erdgpi".
@@ -65,13 +69,10 @@ const char* method_name(Method m);
 // The method of that name; Code::input for any other name.
 Status method_from_name(const std::string& name, Method* out);
 
-// What to do when the method cannot hit the requested vertex count exactly (thesis -x).
-enum class ExactMode {
-    fail = 0,    // return Code::density ("target sampling density not achieved exactly ...");
-                 // the model is still filled in
-    warn = 1,    // return ok; GenerateInfo::warning holds the same sentence
-    ignore = 2,  // return ok silently
-};
+// What to do when the method cannot hit the requested vertex count exactly (thesis -x):
+// fail (Code::density; the model is still filled in), warn (ok; GenerateInfo::warning holds the
+// sentence) or ignore. The policy itself is erd::check_exact_count (algorithms/methods/options.h).
+using ExactMode = erd::ExactMode;
 
 struct Options {
     // Target size and the thesis's parameters (algorithms/options.h), thesis defaults: density
@@ -83,11 +84,19 @@ struct Options {
     std::size_t max_memory = 0;
 };
 
+// The thesis's method exactly, in one call: erd::thesis_options() (the thesis's wedge values,
+// no refit, the thesis's ERDED edge rule; what --thesis and erd_ed/erd_gpi run) and the thesis's
+// exit mode 0 (ExactMode::fail). Set generate.density or points as usual.
+Options thesis_options();
+
 // What a generate() call reports besides the model.
 struct GenerateInfo {
     std::size_t requested = 0;  // N asked for
     std::size_t achieved = 0;   // vertices in the model
     std::string warning;        // ExactMode::warn: the one-line warning, else empty
+    RunStats stats;             // what the stages measured (algorithms/methods/result.h): the
+                                // ERD parameters chosen, greedy and diffusion counts, the refit
+    std::vector<StageTime> stages;  // wall time per stage
 };
 
 // Upper estimate of the bytes a generate() call allocates at its peak for a width x height

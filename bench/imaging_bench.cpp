@@ -21,7 +21,7 @@
 #include "algorithms/imaging/douglas_peucker.h"
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
-#include "algorithms/imaging/polylines.h"
+#include "algorithms/imaging/edge_polylines.h"
 
 using namespace erd;
 
@@ -78,17 +78,17 @@ int main(int argc, char** argv) {
         EdgePolylineParams p;
         p.canny.beta = 0.028;
         p.canny.r = 0.4;
-        p.epsilon = 2;
-        p.min_points = 5;
+        p.epsilon = 1;  // pixel
+        p.min_length = 5;
         std::vector<double> t;
-        Grid<std::uint8_t> edges;
-        std::vector<Polyline> lines;
-        CannyStats st;
+        EdgePolylineResult out;
         for (int i = 0; i < runs; ++i) {
             const double t0 = cpu_ms();
-            if (!edge_polylines(im, p, &edges, &lines, &st)) return 1;
+            if (!edge_polylines(im, p, &out)) return 1;
             t.push_back(cpu_ms() - t0);
         }
+        const std::vector<Polyline>& lines = out.polylines;
+        const CannyStats& st = out.stats;
         std::size_t pts = 0;
         for (const Polyline& l : lines) pts += l.size();
         std::printf("%-34s cpu %7.1f ms (median of %d)  target %3d ms %-4s  %zu edge points, %zu polylines, %zu vertices\n",

@@ -6,9 +6,7 @@
 #include <vector>
 
 #include "algorithms/imaging/bilinear.h"
-#include "algorithms/imaging/canny.h"
-#include "algorithms/imaging/douglas_peucker.h"
-#include "algorithms/imaging/polylines.h"
+#include "algorithms/imaging/edge_polylines.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
@@ -81,9 +79,9 @@ int cmd_edges(int argc, char** argv) {
         {'p', "polylines", "FILE", "simplified polylines, format erd-polylines 1 (doubled coordinates)"},
         {0, "draw-polylines", "FILE", "picture of the simplified polylines (half-pixel grid, black on white)"},
         {0, "over-image", nullptr, "draw the polylines over a lightened copy of the image"},
-        {'b', "beta", "X", "fraction of half-pixel grid points at or above tau_high (default 0.095)"},
+        {'b', "beta", "X", "fraction of half-pixel grid points at or above tau_high (default 0.055)"},
         {'r', "ratio", "X", "tau_low = r * tau_high (default 0.4)"},
-        {'e', "tolerance", "X", "Douglas-Peucker tolerance in half-pixel units; 2 = one pixel (default 1)"},
+        {'e', "tolerance", "X", "Douglas-Peucker tolerance in pixels, as erd generate -e (default 1)"},
         {'l', "min-length", "N", "drop polylines traced with fewer than N points (default 5)"},
         {0, "length-after", nullptr, "count -l on the simplified polyline instead"},
         {0, "plain-canny", nullptr, "plain Canny (no junction repair of Ding and Goshtasby)"},
@@ -105,14 +103,15 @@ int cmd_edges(int argc, char** argv) {
     if (args.positional().size() != 1) return rep.fail(Status::bad_input("expected one IMAGE (see erd edges --help)"));
     if (!args.has("output")) return rep.fail(Status::bad_input("missing -o EDGES (see erd edges --help)"));
 
+    // The library's defaults (algorithms/imaging/edge_polylines.h), as erd generate starts from.
     EdgePolylineParams params;
-    params.canny.beta = args.real("beta", 0.095, 1e-9, 1.0, &st);
-    if (st) params.canny.r = args.real("ratio", 0.4, 0.0, 1.0, &st);
-    if (st) params.epsilon = args.real("tolerance", 1.0, 0.0, 1e6, &st);
-    if (st) params.min_points = int(args.integer("min-length", 5, 0, 1000000000, &st));
+    params.canny.beta = args.real("beta", params.canny.beta, 1e-9, 1.0, &st);
+    if (st) params.canny.r = args.real("ratio", params.canny.r, 0.0, 1.0, &st);
+    if (st) params.epsilon = args.real("tolerance", params.epsilon, 0.0, 1e6, &st);
+    if (st) params.min_length = int(args.integer("min-length", params.min_length, 0, 1000000000, &st));
     if (!st) return rep.fail(st);
     params.canny.modified = !args.has("plain-canny");
-    const LengthRule rule = args.has("length-after") ? LengthRule::after_simplification : LengthRule::before_simplification;
+    if (args.has("length-after")) params.length_rule = LengthRule::after_simplification;
 
     const std::string in = args.positional()[0];
     std::vector<std::string> outs = {args.str("output")};
@@ -126,16 +125,16 @@ int cmd_edges(int argc, char** argv) {
     if (!(st = read_image(in, &im, &warning))) return rep.fail(st);
     rep.warn(warning);
 
-    Grid<std::uint8_t> edges;
-    CannyStats stats;
-    if (!(st = detect_edges(im, params.canny, &edges, &stats))) return rep.fail(st);
-    const std::vector<Polyline> traced = trace_polylines(edges);
-    const std::vector<Polyline> lines = simplify_polylines(traced, params.epsilon, params.min_points, rule);
+    EdgePolylineResult chain;
+    if (!(st = edge_polylines(im, params, &chain))) return rep.fail(st);
+    const Grid<std::uint8_t>& edges = chain.edges;
+    const CannyStats& stats = chain.stats;
+    const std::vector<Polyline>& lines = chain.polylines;
     std::size_t points = 0;
     for (const Polyline& l : lines) points += l.size();
     rep.note("tau_high " + std::to_string(stats.tau_high) + ", tau_low " + std::to_string(stats.tau_low) + ", " +
              std::to_string(stats.edge_points) + " edge points (" + std::to_string(stats.added_points) +
-             " added at junctions), " + std::to_string(traced.size()) + " traced polylines, " +
+             " added at junctions), " + std::to_string(chain.traced) + " traced polylines, " +
              std::to_string(lines.size()) + " kept with " + std::to_string(points) + " vertices");
 
     // A later output failing removes the earlier ones, so a failed run leaves nothing (issue 7).

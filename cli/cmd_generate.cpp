@@ -1,4 +1,4 @@
-// erd generate: mesh an image with one of the registered methods (algorithms/methods.h) and write
+// erd generate: mesh an image with one of the registered methods (algorithms/methods/methods.h) and write
 // the model (.model for the basic model, .erd for the ERD model), optionally the triangulation
 // (-t) and the polylines (-p). The thesis's ywb, gpi, erd_ed and erd_gpi in one subcommand.
 //
@@ -23,6 +23,7 @@
 #include "cli/progress.h"
 #include "cli/report.h"
 #include "cli/stats_json.h"
+#include "cli/suggest.h"
 
 namespace erd::cli {
 
@@ -71,18 +72,19 @@ const std::vector<OptionSpec>& specs() {
 
 std::string method_list() {
     std::size_t count = 0;
-    const Method* m = methods(&count);
+    const MethodInfo* m = methods(&count);
     std::string out;
     for (std::size_t i = 0; i < count; ++i) out += std::string("  ") + m[i].name + "\t" + m[i].summary + "\n";
     return out;
 }
 
-std::string method_names() {
+// "unknown method 'X'; available: ... Did you mean 'Y'?", as for an unknown subcommand.
+std::string unknown_method(const std::string& name) {
     std::size_t count = 0;
-    const Method* m = methods(&count);
-    std::string out;
-    for (std::size_t i = 0; i < count; ++i) out += (i ? ", " : "") + std::string(m[i].name);
-    return out;
+    const MethodInfo* m = methods(&count);
+    std::vector<const char*> names;
+    for (std::size_t i = 0; i < count; ++i) names.push_back(m[i].name);
+    return "unknown method '" + name + "'; available: " + method_names() + "." + did_you_mean(name, names);
 }
 
 std::string polylines_text(const std::vector<std::vector<LatticePoint>>& lines) {
@@ -131,12 +133,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("simple")) o->simple = int(a.integer("simple", -1, 0, 1 << 30, st));
     if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));
     // --thesis first, so an explicit flag beside it still wins.
-    if (a.has("thesis")) {
-        o->wedge_fit = 0;
-        o->alpha_min = 1.0;
-        o->alpha_max = 1.5;
-        o->edge_zero_radius = 0;
-    }
+    if (a.has("thesis")) set_thesis_preset(o);
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
     if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
@@ -163,9 +160,8 @@ int cmd_generate(int argc, char** argv) {
     rep.set_quiet(a.has("quiet"));
     if (!a.positional().empty()) return rep.usage("unexpected argument '" + a.positional()[0] + "'", kUsage);
     if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")", kUsage);
-    const Method* method = find_method(a.str("method"));
-    if (!method)
-        return rep.usage("unknown method '" + a.str("method") + "'; available: " + method_names(), kUsage);
+    const MethodInfo* method = find_method(a.str("method"));
+    if (!method) return rep.usage(unknown_method(a.str("method")), kUsage);
     if (!a.has("input")) return rep.usage("-i IMAGE is required", kUsage);
     if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)", kUsage);
 
@@ -220,13 +216,15 @@ int cmd_generate(int argc, char** argv) {
         std::snprintf(buf, sizeof buf, "%-22s %9.3f ms", s.name.c_str(), s.seconds * 1e3);
         rep.note(buf);
     }
-    for (const std::string& s : res.notes) rep.note(s);
+    for (const std::string& s : result_lines(res.stats)) rep.note(s);
 
-    if (res.achieved != res.requested && exit_mode != 2) {
-        std::fprintf(stderr, "%s: target sampling density not achieved exactly (requested %zu but got %zu)\n",
-                     exit_mode == 0 ? "ERROR" : "WARNING", res.requested, res.achieved);
-        if (exit_mode == 0) return int(Code::density);
+    std::string exact_warning;
+    st = check_exact_count(res.requested, res.achieved, ExactMode(exit_mode), &exact_warning);
+    if (!st) {
+        std::fprintf(stderr, "ERROR: %s\n", st.message.c_str());
+        return int(Code::density);
     }
+    if (!exact_warning.empty()) std::fprintf(stderr, "WARNING: %s\n", exact_warning.c_str());
 
     // A later output failing removes the files this run already wrote, so a failed run leaves
     // nothing behind (robustness, issue 7); stdout cannot be taken back.

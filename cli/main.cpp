@@ -1,16 +1,17 @@
 // erd: one program, a static table of subcommands, and the thesis's command names via argv[0].
 #include <cerrno>
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
 #include "cli/commands.h"
+#include "cli/suggest.h"
 
 #ifndef ERD_VERSION
 #define ERD_VERSION "0.1.0"
@@ -21,7 +22,7 @@ namespace erd::cli {
 static int cmd_help(int argc, char** argv);
 
 static const Command kCommands[] = {
-    {"generate", "mesh an image: --method ed|gpi|erded|erdgpi", cmd_generate},
+    {"generate", "mesh an image with one of the methods (erd help generate lists them)", cmd_generate},
     {"reconstruct", "rasterise a .model or .erd back into an image", cmd_reconstruct},
     {"psnr", "PSNR of an approximation against the original", cmd_psnr},
     {"edges", "half-pixel edge map and polylines of an image", cmd_edges},
@@ -41,23 +42,6 @@ static const Command* find_command(const char* name) {
     for (const auto& c : kCommands)
         if (std::strcmp(c.name, name) == 0) return &c;
     return nullptr;
-}
-
-// Levenshtein distance, for "did you mean".
-static int distance(const std::string& a, const std::string& b) {
-    std::string::size_type n = b.size();
-    std::basic_string<int> row(n + 1, 0);
-    for (std::string::size_type j = 0; j <= n; ++j) row[j] = int(j);
-    for (char ca : a) {
-        int diag = row[0];
-        row[0] += 1;
-        for (std::string::size_type j = 1; j <= n; ++j) {
-            int up = row[j];
-            row[j] = std::min(std::min(row[j] + 1, row[j - 1] + 1), diag + (ca == b[j - 1] ? 0 : 1));
-            diag = up;
-        }
-    }
-    return row[n];
 }
 
 static void list_commands(FILE* out) {
@@ -81,15 +65,9 @@ static int cmd_help(int argc, char** argv) {
 }
 
 static int unknown(const char* name) {
-    std::fprintf(stderr, "erd: '%s' is not a subcommand.", name);
-    int best = 1 << 30;
-    const char* guess = nullptr;
-    for (const auto& c : kCommands) {
-        int d = distance(name, c.name);
-        if (d < best) { best = d; guess = c.name; }
-    }
-    if (guess && best <= 3) std::fprintf(stderr, " Did you mean '%s'?", guess);
-    std::fprintf(stderr, " See 'erd help'.\n");
+    std::vector<const char*> names;
+    for (const auto& c : kCommands) names.push_back(c.name);
+    std::fprintf(stderr, "erd: '%s' is not a subcommand.%s See 'erd help'.\n", name, did_you_mean(name, names).c_str());
     return 2;
 }
 

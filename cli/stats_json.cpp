@@ -3,34 +3,11 @@
 #include <sys/resource.h>
 
 #include <cmath>
-#include <cstdlib>
 
 #include "algorithms/model/model_topology.h"
 #include "cli/report.h"
 
 namespace erd::cli {
-
-// The methods report their chosen parameters, stop rule and drops as "key: value" notes (the
-// lines `erd generate` prints); read the ones the JSON carries.
-static void fill_from_notes(const std::vector<std::string>& notes, GenerateStats* s) {
-    int params = 0;
-    for (const std::string& n : notes) {
-        std::size_t colon = n.find(": ");
-        if (colon == std::string::npos) continue;
-        const std::string key = n.substr(0, colon), value = n.substr(colon + 2);
-        char* end = nullptr;
-        double v = std::strtod(value.c_str(), &end);
-        bool numeric = end != value.c_str() && *end == '\0';
-        if (key == "beta" && numeric) { s->beta = v; ++params; }
-        else if (key == "r" && numeric) { s->r = v; ++params; }
-        else if (key == "l" && numeric) { s->l = int(v); ++params; }
-        else if ((key == "eps" || key == "epsilon") && numeric) { s->epsilon = v; ++params; }
-        else if (key == "simple") { s->simple = value == "yes" || value == "true" || value == "1"; ++params; }
-        else if (key == "stop") s->stop = value;
-        else if (key.find("dropped") != std::string::npos && numeric) s->dropped_constraints += std::size_t(v);
-    }
-    s->has_params = params == 5;
-}
 
 GenerateStats collect_stats(const std::string& method, const Image& image, const GenerateResult& result) {
     GenerateStats s;
@@ -55,7 +32,18 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
         }
         for (bool t : touched) s.constrained_vertices += t ? 1 : 0;
     }
-    fill_from_notes(result.notes, &s);
+    const RunStats& rs = result.stats;
+    if (rs.has_erd) {
+        const ErdParams& p = rs.erd.params;
+        s.has_params = true;
+        s.beta = p.beta;
+        s.r = p.r;
+        s.l = p.l;
+        s.epsilon = p.eps;
+        s.simple = p.simple;
+        s.dropped_constraints = rs.erd.dropped_crossing;
+    }
+    if (rs.has_greedy) s.stop = to_string(rs.greedy.stop);
     return s;
 }
 

@@ -22,7 +22,7 @@ struct GenerateStats {
     std::size_t requested = 0, achieved = 0;
     std::size_t vertices = 0, faces = 0;
     std::size_t constrained_vertices = 0, constrained_edges = 0;
-    std::size_t dropped_constraints = 0;
+    std::size_t dropped_constraints = 0;  // constraint pieces refused as crossings (ERD step 1)
     bool has_params = false;  // ERD methods: the step-1 parameters used
     double beta = 0, r = 0, epsilon = 0;
     int l = 0;
@@ -37,8 +37,8 @@ struct GenerateStats {
 
 // Fills the counts from the result's model (constrained edges: the model's list, or where an ERD
 // model's corner values differ across an edge; constrained vertices: endpoints of those) and the
-// rest from the result: parameters (beta, r, l, eps, simple: all five or none), the stop rule and
-// dropped constraints from the result's "key: value" notes. The caller adds its own stages,
+// rest from the result's typed statistics: the ERD parameters (beta, r, l, eps, simple), the
+// greedy stop rule, the constraint pieces the kernel refused. The caller adds its own stages,
 // total time, memory and PSNR.
 GenerateStats collect_stats(const std::string& method, const Image& image, const GenerateResult& result);
 

@@ -1,5 +1,6 @@
 // The thesis's seven programs (Appendix A.5) as names of the one `erd` binary: main() passes the
-// basename of argv[0] here first.
+// basename of argv[0] here first. The four mesh generators are read from the method registry
+// (algorithms/methods/methods.h: program name and flag letters); the other three are listed here.
 //
 // Each program checks its arguments against exactly the thesis's flag list (single letters, each
 // with a value; no long forms, no positionals), then hands a translated argv to the erd
@@ -26,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/methods/methods.h"
 #include "cli/commands.h"
 
 namespace erd::cli {
@@ -39,19 +41,36 @@ struct Program {
     Kind kind;
     const char* method;  // generate only
     const char* flags;   // the thesis's option letters, each taking a value
-    const char* usage;
+    std::string usage;   // after the name (and for generate, after kMeshUsage)
 };
 
 constexpr const char* kMeshUsage = " [-i inputFile] [-d sampleDensity] [-n num] [-o outputFile] [-t triangulationFile]"
                                    " [-p polylineFile] [-x exitMode]";
 
-const Program kPrograms[] = {
-    {"ywb", Kind::generate, "ed", "idnotpx", ""},
-    {"gpi", Kind::generate, "gpi", "idnotpx", ""},
-    {"erd_ed", Kind::generate, "erded", "idnotpxlbrefwsBS",
-     " [-l minLength] [-b beta] [-r ratio] [-e tolerance] [-f controlFlag] [-w dFlag] [-s ksize] [-B startUp] [-S isSimple]"},
-    {"erd_gpi", Kind::generate, "erdgpi", "idnotpxlbrewsS",
-     " [-l minLength] [-b beta] [-r ratio] [-e tolerance] [-w dFlag] [-s ksize] [-S isSimple]"},
+// The thesis's names of the values of the ERD flags, for the usage line.
+std::string flag_usage(char f) {
+    switch (f) {
+    case 'l': return " [-l minLength]";
+    case 'b': return " [-b beta]";
+    case 'r': return " [-r ratio]";
+    case 'e': return " [-e tolerance]";
+    case 'f': return " [-f controlFlag]";
+    case 'w': return " [-w dFlag]";
+    case 's': return " [-s ksize]";
+    case 'B': return " [-B startUp]";
+    case 'S': return " [-S isSimple]";
+    }
+    return "";  // the common flags are in kMeshUsage
+}
+
+// The program of a registered method (methods.h: thesis program name and flags).
+Program mesh_program(const MethodInfo& m) {
+    Program p{m.thesis_program, Kind::generate, m.name, m.thesis_flags, ""};
+    for (const char* f = m.thesis_flags; *f; ++f) p.usage += flag_usage(*f);
+    return p;
+}
+
+const Program kOtherPrograms[] = {
     {"imgsyn", Kind::reconstruct_point, nullptr, "", " < model > image.pnm"},
     {"imgsyn_aa", Kind::reconstruct_aa, nullptr, "", " < model.erd > image.pnm"},
     {"Cal_PSNR", Kind::psnr, nullptr, "", " original_image reconstructed_image"},
@@ -59,7 +78,7 @@ const Program kPrograms[] = {
 
 int usage(const Program& p, const std::string& message) {
     if (!message.empty()) std::fprintf(stderr, "%s: %s\n", p.name, message.c_str());
-    std::fprintf(stderr, "usage: %s%s%s\n", p.name, p.kind == Kind::generate ? kMeshUsage : "", p.usage);
+    std::fprintf(stderr, "usage: %s%s%s\n", p.name, p.kind == Kind::generate ? kMeshUsage : "", p.usage.c_str());
     return 2;
 }
 
@@ -113,7 +132,8 @@ int run_generate(const Program& p, int argc, char** argv) {
     std::vector<std::string> out = {"generate", "--method", p.method, "-q"};
     // erd_ed and erd_gpi are the thesis's method, not erd's improved defaults (wedge refit, line
     // search range, ERDED edge radius): --thesis sets the thesis's values.
-    if (std::strcmp(p.method, "erded") == 0 || std::strcmp(p.method, "erdgpi") == 0) out.push_back("--thesis");
+    const MethodInfo* m = find_method(p.method);
+    if (m && m->model == ModelKind::erd) out.push_back("--thesis");
     if (!given[int('i')]) out.insert(out.end(), {"-i", "-"});
     if (!given[int('o')]) out.insert(out.end(), {"-o", "-"});
     for (const char* f = p.flags; *f; ++f) {
@@ -157,7 +177,15 @@ int run_program(const Program& p, int argc, char** argv) {
 }  // namespace
 
 int thesis_alias(const char* name, int argc, char** argv, bool* handled) {
-    for (const auto& p : kPrograms) {
+    std::size_t count = 0;
+    const MethodInfo* table = methods(&count);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (table[i].thesis_program && std::strcmp(name, table[i].thesis_program) == 0) {
+            *handled = true;
+            return run_program(mesh_program(table[i]), argc, argv);
+        }
+    }
+    for (const auto& p : kOtherPrograms) {
         if (std::strcmp(name, p.name) == 0) {
             *handled = true;
             return run_program(p, argc, argv);

@@ -109,8 +109,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::uint32_t hi = in.byte();
     image.maxval = 1 + ((hi << 8) | in.byte()) % 65535;
     std::size_t count = 0;
-    const Method* table = methods(&count);
-    const Method& method = table[in.byte() % count];
+    const MethodInfo* table = methods(&count);
+    const MethodInfo& method = table[in.byte() % count];
 
     GenerateOptions o;
     const std::int64_t pixels = std::int64_t(image.width) * image.height;

@@ -15,6 +15,7 @@
 #include "algorithms/methods/gpi.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/methods/scaffold.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
@@ -122,7 +123,7 @@ TEST_CASE("registry finds ed and gpi by name", "[basic]") {
     REQUIRE(find_method("gpi") != nullptr);
     CHECK(find_method("nonesuch") == nullptr);
     std::size_t n = 0;
-    const Method* m = methods(&n);
+    const MethodInfo* m = methods(&n);
     REQUIRE(n >= 2);
     CHECK(std::string(m[0].name) == "ed");
 }
@@ -236,7 +237,7 @@ TEST_CASE("GPI: --psnr and --max-error stop rules", "[basic]") {
 TEST_CASE("GPI and ED are deterministic", "[basic]") {
     Image im = synthetic(37, 23, 5);
     for (const char* name : {"gpi", "ed"}) {
-        const Method* m = find_method(name);
+        const MethodInfo* m = find_method(name);
         REQUIRE(m);
         GenerateResult a, b;
         REQUIRE(m->run(im, with_points(60), &a).ok());

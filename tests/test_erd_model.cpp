@@ -380,17 +380,14 @@ TEST_CASE("wedge_fit 0 keeps the thesis's values; the refit lowers the pixel err
     CHECK(with.model.faces == without.model.faces);
     CHECK(with.model.corner_values != without.model.corner_values);
     check_model(with.model);
-    // The note reports the squared pixel error before and after the refit.
-    bool found = false;
-    for (const std::string& n : with.notes) {
-        double before = 0, after = 0;
-        int it = 0;
-        if (std::sscanf(n.c_str(), "wedge refit: %d iterations, sse %lf -> %lf", &it, &before, &after) == 3) {
-            found = true;
-            CHECK(after < 0.9 * before);
-        }
-    }
-    CHECK(found);
+    // The result reports the squared pixel error before and after the refit; the printed line too.
+    REQUIRE(with.stats.has_wedge_fit);
+    CHECK_FALSE(without.stats.has_wedge_fit);
+    CHECK(with.stats.wedge_fit.iterations > 0);
+    CHECK(with.stats.wedge_fit.sse_after < 0.9 * with.stats.wedge_fit.sse_before);
+    const std::vector<std::string> lines = result_lines(with.stats);
+    REQUIRE_FALSE(lines.empty());
+    CHECK(lines[0].rfind("wedge refit: ", 0) == 0);
 }
 
 TEST_CASE(".erd and -t round trip of ERD models", "[erd]") {

@@ -198,8 +198,15 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
     r.achieved = 4;
     r.stages = {{"edges", 0.25}, {"greedy \"insertion\"", 1.5}};
     Image im(50, 50, 255);
-    r.notes = {"beta: 0.055", "r: 0.4", "l: 5", "eps: 1", "simple: no", "dropped crossing constraints: 3",
-               "stop: target", "insertions: 1"};
+    r.stats.has_erd = true;
+    r.stats.erd.params.beta = 0.055;
+    r.stats.erd.params.r = 0.4;
+    r.stats.erd.params.l = 5;
+    r.stats.erd.params.eps = 1;
+    r.stats.erd.params.simple = false;
+    r.stats.erd.dropped_crossing = 3;
+    r.stats.has_greedy = true;
+    r.stats.greedy.insertions = 1;
     cli::GenerateStats s = cli::collect_stats("erdgpi", im, r);
     CHECK(s.constrained_edges == 1);
     CHECK(s.constrained_vertices == 2);
@@ -239,7 +246,7 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
 
     // A basic model without --psnr-report: null parameters, no psnr key.
     r.model = diagonal_basic();
-    r.notes.clear();
+    r.stats = erd::RunStats();
     s = cli::collect_stats("gpi", im, r);
     j = parse_json(cli::stats_json(s));
     CHECK(j["model"].s == "basic");
@@ -251,7 +258,7 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
 
 TEST_CASE("wedge copies of a generated ERD model: one value each, as many as vertex_wedges, same after a round trip",
           "[people]") {
-    const erd::Method* method = erd::find_method("erdgpi");
+    const erd::MethodInfo* method = erd::find_method("erdgpi");
     if (!method) {
         WARN("erdgpi not registered in this build");
         return;

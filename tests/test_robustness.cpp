@@ -88,7 +88,7 @@ void prepare(const TempDir& t) {
 
 TEST_CASE("1x1 and 1xN images get the same 'too small' error for every method and N", "[robust]") {
     std::size_t count = 0;
-    const erd::Method* table = erd::methods(&count);
+    const erd::MethodInfo* table = erd::methods(&count);
     for (auto wh : {std::pair<int, int>{1, 1}, {1, 6}, {6, 1}, {1, 24}}) {
         const erd::Image im = make_image(wh.first, wh.second, 255, ramp);
         for (std::size_t k = 0; k < count; ++k)
@@ -118,7 +118,7 @@ TEST_CASE("degenerate images through every method at the smallest and largest N"
         {"1-bit checker", make_image(7, 5, 1, checker)},
     };
     std::size_t count = 0;
-    const erd::Method* table = erd::methods(&count);
+    const erd::MethodInfo* table = erd::methods(&count);
     for (const Degenerate& d : cases) {
         const std::int64_t pixels = std::int64_t(d.image.width) * d.image.height;
         for (std::size_t k = 0; k < count; ++k)
@@ -146,7 +146,7 @@ TEST_CASE("degenerate images through every method at the smallest and largest N"
 
 TEST_CASE("constant images: every method reproduces them exactly (all errors zero)", "[robust]") {
     std::size_t count = 0;
-    const erd::Method* table = erd::methods(&count);
+    const erd::MethodInfo* table = erd::methods(&count);
     for (const erd::Image& im : {make_image(9, 7, 255, mid), make_image(9, 7, 65535, zero), make_image(9, 7, 65535, full)})
         for (std::size_t k = 0; k < count; ++k) {
             erd::GenerateOptions o;

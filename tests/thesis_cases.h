@@ -42,7 +42,7 @@ void for_each_thesis_case(std::initializer_list<const char*> method_names, Run r
             INFO(c.first << " " << d << "%");
             for (const char* name : method_names) {
                 INFO(name);
-                const Method* m = find_method(name);
+                const MethodInfo* m = find_method(name);
                 REQUIRE(m != nullptr);
                 GenerateResult r;
                 REQUIRE(m->run(im, o, &r).ok());

@@ -2,7 +2,6 @@
 
 #include <cstddef>
 
-#include "algorithms/imaging/douglas_peucker.h"
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/set_points.h"
 
@@ -77,16 +76,6 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
     for (std::uint32_t i = 0; i < n; ++i)
         for (int d; (d = free_link(i)) >= 0;) run(i, d);
     return out;
-}
-
-Status edge_polylines(const Image& im, const EdgePolylineParams& params, Grid<std::uint8_t>* edges,
-                      std::vector<Polyline>* polylines, CannyStats* stats) {
-    if (params.epsilon < 0 || params.epsilon != params.epsilon)
-        return Status::bad_input("polylines: epsilon must be >= 0");
-    Status st = detect_edges(im, params.canny, edges, stats);
-    if (!st) return st;
-    *polylines = simplify_polylines(trace_polylines(*edges), params.epsilon, params.min_points);
-    return Status::success();
 }
 
 }  // namespace erd

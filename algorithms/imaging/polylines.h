@@ -1,4 +1,5 @@
-// Polylines from an edge map (thesis 3.4.1 step 1.2), and the whole step 1.1-1.3 chain.
+// Polylines from an edge map (thesis 3.4.1 step 1.2); the whole step 1.1-1.3 chain is in
+// algorithms/imaging/edge_polylines.h.
 //
 // Coordinates are LatticePoints in doubled coordinates, which are exactly the indices of the
 // half-pixel grid of algorithms/canny.h: entry (X, Y) of the edge map is LatticePoint{X, Y}.
@@ -27,16 +28,5 @@ using Polyline = std::vector<LatticePoint>;
 std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges);
 // The same for edge points as EdgeDetector::detect gives them, after pts.link_rows().
 std::vector<Polyline> trace_polylines(const SortedPoints& pts);
-
-// Steps 1.1 to 1.3 in one call: detect edges, trace, simplify with Douglas-Peucker (epsilon in
-// half-pixel grid units, algorithms/douglas_peucker.h), keep polylines that had at least
-// min_points points before simplification.
-struct EdgePolylineParams {
-    CannyParams canny;
-    double epsilon = 1.0;  // half-pixel grid units (= doubled-coordinate units)
-    int min_points = 5;    // the thesis's l
-};
-Status edge_polylines(const Image& im, const EdgePolylineParams& params, Grid<std::uint8_t>* edges,
-                      std::vector<Polyline>* polylines, CannyStats* stats = nullptr);
 
 }  // namespace erd

@@ -13,7 +13,7 @@
 
 namespace erd {
 
-// Registry entry "ed" (algorithms/methods.h contract).
+// Registry entry "ed" (algorithms/methods/methods.h contract).
 Status generate_ed(const Image& image, const GenerateOptions& options, GenerateResult* result);
 
 }  // namespace erd

@@ -3,71 +3,49 @@
 #include <algorithm>
 #include <numeric>
 
-#include "algorithms/imaging/canny.h"
-#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/edge_polylines.h"
 
 namespace erd {
 
 namespace {
 
-// Step 1.1-1.3 for the parameter selection, caching what did not change: a detection with the
-// same (beta, r) as the last one is skipped (the simple test and the first loop iteration often
-// coincide), and so is a count with the same (l, eps) on the same detection.
+// Step 1.1-1.3 (algorithms/imaging/edge_polylines.h) as the parameter selection's counter. The
+// chain skips a detection with the same (beta, r) as the last one (the simple test and the first
+// loop iteration often coincide), and a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    StepOneCounter(const Image& image, LengthRule rule, double eps_unit)
-        : detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1), rule_(rule), eps_unit_(eps_unit) {}
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit) : chain_(image), rule_(rule), eps_unit_(eps_unit) {}
 
     void detect(double beta, double r) override {
-        if (have_edges_ && beta == beta_ && r == r_) return;
-        beta_ = beta;
-        r_ = r;
-        have_edges_ = true;
-        have_count_ = false;
-        // The previous detection's points and polylines are dead now: free them before the
-        // detector allocates, so they do not add to the peak.
-        edges_.clear();
-        std::vector<Polyline>().swap(traced_);
-        std::vector<Polyline>().swap(kept_);
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
-        // Points, not a map: only the chosen detection's map is ever made (edges()).
-        Status st = detector_.detect(cp, &edges_);  // reuses the gradient pass while it can
+        Status st = chain_.detect(cp);
         if (!st.ok() && status_.ok()) status_ = st;
-        edges_.link_rows();
-        traced_ = trace_polylines(edges_);
     }
 
     std::size_t count(int l, double eps) override {
-        if (have_count_ && l == l_ && eps == eps_) return count_;
-        l_ = l;
-        eps_ = eps;
-        have_count_ = true;
-        kept_ = simplify_polylines(traced_, eps * eps_unit_, l, rule_);
-        count_ = distinct_points(kept_);
+        const std::vector<Polyline>& kept = chain_.simplify(l, eps * eps_unit_, rule_);
+        if (chain_.generation() != counted_) {
+            counted_ = chain_.generation();
+            count_ = distinct_points(kept);
+        }
         return count_;
     }
 
     const Status& status() const { return status_; }
-    void release_detector() { detector_.release(); }
-    Grid<std::uint8_t> edges() const { return edge_map(edges_, map_w_, map_h_); }
-    std::vector<Polyline>& kept() { return kept_; }
+    void release_detector() { chain_.release_detector(); }
+    Grid<std::uint8_t> edges() const { return chain_.edge_map(); }
+    std::vector<Polyline>& kept() { return chain_.kept(); }
 
 private:
     // On the image, not a double copy of it: the ERD methods make their double phi only after
     // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
-    EdgeDetector detector_;
-    int map_w_, map_h_;  // the half-pixel grid
+    EdgePolylines chain_;
     LengthRule rule_;
     double eps_unit_;
     Status status_;
-    bool have_edges_ = false, have_count_ = false;
-    double beta_ = 0, r_ = 0, eps_ = 0;
-    int l_ = 0;
-    std::size_t count_ = 0;
-    SortedPoints edges_;  // of the last detection
-    std::vector<Polyline> traced_, kept_;
+    std::size_t counted_ = 0, count_ = 0;  // distinct points of simplification number counted_
 };
 
 std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }

@@ -1,8 +1,7 @@
 // Step 1 of the ERD framework (thesis 3.4.1): the initial mesh of ERDED and ERDGPI.
 //
-//   1.1 half-pixel edges (modified Canny + thinning, algorithms/canny.h) with beta, r;
-//   1.2 polylines (algorithms/polylines.h);
-//   1.3 Douglas-Peucker with epsilon, polylines shorter than l dropped;
+//   1.1-1.3 half-pixel edges with beta, r; polylines; Douglas-Peucker with epsilon, polylines
+//       shorter than l dropped (the chain of algorithms/imaging/edge_polylines.h);
 //   1.4 P = polyline vertices + the four corners, E = polyline segments, constrained DT.
 // beta, r, l, epsilon come from the automatic selection (algorithms/erd_params.h) unless given.
 // Constraint segments the kernel refuses (they would cross an earlier one) are counted.
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/edge_polylines.h"
 #include "algorithms/methods/erd_params.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/polylines.h"
@@ -28,7 +28,7 @@ struct InitialMeshOptions {
     LengthRule length_rule = LengthRule::before_simplification;
     // Doubled-coordinate units per unit of epsilon: 2 = epsilon in pixels, 1 = in half pixels
     // (docs/DECISIONS.md "ERD model and methods").
-    double eps_unit = 2.0;
+    double eps_unit = kEpsilonUnitsPerPixel;
 };
 
 struct InitialMesh {

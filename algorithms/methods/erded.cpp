@@ -1,20 +1,16 @@
 #include "algorithms/methods/erded.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
-#include <numeric>
 #include <string>
 
-#include "algorithms/methods/erd_mesh.h"
-#include "algorithms/model/erd_model.h"
-#include "algorithms/methods/erdgpi.h"
 #include "algorithms/imaging/error_diffusion.h"
-#include "algorithms/methods/gpi.h"
-#include "algorithms/methods/methods.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/imaging/set_points.h"
-#include "algorithms/methods/wedge_fit.h"
+#include "algorithms/methods/erd_mesh.h"
+#include "algorithms/methods/exact_count.h"
+#include "algorithms/methods/scaffold.h"
+#include "algorithms/model/erd_model.h"
 
 namespace erd {
 
@@ -59,44 +55,6 @@ std::vector<LatticePoint> random_points(const Grid<std::uint8_t>& occupied, std:
     return pts;
 }
 
-// Brings the diffusion's nearest pass to exactly k points: adds the densest unchosen usable
-// pixels, or drops the least dense chosen ones (ties: row-major order). Returns the change.
-std::size_t adjust_count(const Grid<double>& density, const Grid<std::uint8_t>& occupied, std::size_t k,
-                         std::vector<LatticePoint>* pts) {
-    const int w = density.width;
-    auto index = [w](LatticePoint p) { return std::size_t(p.y / 2) * std::size_t(w) + std::size_t(p.x / 2); };
-    std::size_t changed = 0;
-    if (pts->size() > k) {
-        std::vector<std::size_t> order(pts->size());
-        std::iota(order.begin(), order.end(), std::size_t(0));
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return density.data[index((*pts)[a])] < density.data[index((*pts)[b])];
-        });
-        std::vector<std::uint8_t> drop(pts->size(), 0);
-        changed = pts->size() - k;
-        for (std::size_t i = 0; i < changed; ++i) drop[order[i]] = 1;
-        std::vector<LatticePoint> kept;
-        for (std::size_t i = 0; i < pts->size(); ++i)
-            if (!drop[i]) kept.push_back((*pts)[i]);
-        *pts = std::move(kept);
-    } else if (pts->size() < k) {
-        std::vector<std::uint8_t> taken(density.size(), 0);
-        for (LatticePoint p : *pts) taken[index(p)] = 1;
-        std::vector<std::uint32_t> cand;
-        for (std::size_t i = 0; i < density.size(); ++i)
-            if (!taken[i] && !occupied.data[i]) cand.push_back(std::uint32_t(i));
-        const std::size_t need = std::min(k - pts->size(), cand.size());
-        std::partial_sort(cand.begin(), cand.begin() + std::ptrdiff_t(need), cand.end(),
-                          [&](std::uint32_t a, std::uint32_t b) {
-                              return density.data[a] > density.data[b] || (density.data[a] == density.data[b] && a < b);
-                          });
-        for (std::size_t i = 0; i < need; ++i)
-            pts->push_back({std::int32_t(2 * (cand[i] % std::uint32_t(w))), std::int32_t(2 * (cand[i] / std::uint32_t(w)))});
-        changed = need;
-    }
-    return changed;
-}
-
 }  // namespace
 
 Grid<std::uint8_t> edge_cells(const Grid<std::uint8_t>& edges, int width, int height) {
@@ -135,14 +93,12 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result);
     if (!st) return st;
     const std::int64_t n = std::int64_t(result->requested);
-    auto t0 = std::chrono::steady_clock::now();
+    StageTimer timer(result);
 
     options.progress("sample selection", 0.0);
     const std::size_t k = cdt.vertex_count() < std::size_t(n) ? std::size_t(n) - cdt.vertex_count() : 0;
     const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
     std::vector<LatticePoint> pts;
-    std::size_t adjusted = 0;
-    int passes = 0;
     const WedgeValueOptions wo = wedge_options(options);
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
@@ -166,34 +122,21 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
         DiffusionResult dr;
         st = select_points(density, k, dp, &dr);
         if (!st) return st;
-        passes = dr.passes;
         pts = std::move(dr.points);
-        if (!dr.exact) adjusted = adjust_count(density, occupied, k, &pts);
+        result->stats.has_diffusion = true;
+        result->stats.diffusion.rho = dr.rho;
+        result->stats.diffusion.passes = dr.passes;
+        if (!dr.exact) result->stats.diffusion.adjusted = adjust_to_exact(density, occupied, k, &pts);
     }
-    result->stages.push_back({"sample selection", seconds_since(t0)});
+    timer.lap("sample selection");
 
-    t0 = std::chrono::steady_clock::now();
     std::vector<VertInd> ids;
     st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it
     if (!st) return st;
     ErdModel model(image, wo);
     model.assign_all(cdt);
-    result->stages.push_back({"triangulation and wedge values", seconds_since(t0)});
-
-    t0 = std::chrono::steady_clock::now();
-    if (options.wedge_fit > 0) {
-        WedgeFitStats fs;
-        fit_wedge_values(cdt, image, options.wedge_fit, &model, &fs);
-        result->stages.push_back({"wedge refit", seconds_since(t0)});
-        t0 = std::chrono::steady_clock::now();
-    }
-    model.to_model(cdt, image.width, image.height, image.maxval, &result->model);
-    result->achieved = result->model.size();
-    add_param_notes(mesh, model, result);
-    result->polylines = std::move(mesh.polylines);
-    result->stages.push_back({"model", seconds_since(t0)});
-    result->notes.push_back("error-diffusion passes: " + std::to_string(passes));
-    result->notes.push_back("points added/removed to reach N exactly: " + std::to_string(adjusted));
+    timer.lap("triangulation and wedge values");
+    finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
     return Status::success();
 }
 

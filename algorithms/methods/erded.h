@@ -31,7 +31,7 @@ Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height);
 // edge map: the pixels "on an edge" whose density ERDED sets to zero.
 Grid<std::uint8_t> edge_cells(const Grid<std::uint8_t>& half_pixel_edges, int width, int height);
 
-// Registry entry "erded" (algorithms/methods.h contract).
+// Registry entry "erded" (algorithms/methods/methods.h contract).
 Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result);
 
 }  // namespace erd

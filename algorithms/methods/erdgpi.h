@@ -9,7 +9,6 @@
 // new vertex's two wedges get values by the line search; other vertices keep theirs.
 #pragma once
 #include "algorithms/model/erd_model.h"
-#include "algorithms/methods/erd_params.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/options.h"
@@ -28,20 +27,7 @@ private:
     ErdModel& model_;
 };
 
-// Helpers shared by the two ERD methods (ERDED uses them too).
-// Wedge-value options from the generate options (-w, -s).
-WedgeValueOptions wedge_options(const GenerateOptions& options);
-// Parameter flags (-b -r -l -e -S) as a request for the automatic selection.
-ErdParamRequest param_request(const GenerateOptions& options);
-struct InitialMesh;
-// The common start of ERDED and ERDGPI: checks the image and the target N (result->requested),
-// then builds the initial mesh (framework step 1), timed as the stage "initial mesh".
-Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
-                        InitialMesh* mesh, GenerateResult* result);
-// Appends the chosen parameters and initial-mesh facts to result->notes ("beta: 0.028", ...).
-void add_param_notes(const InitialMesh& mesh, const ErdModel& model, GenerateResult* result);
-
-// Registry entry "erdgpi" (algorithms/methods.h contract). Stops at N vertices, or earlier by
+// Registry entry "erdgpi" (algorithms/methods/methods.h contract). Stops at N vertices, or earlier by
 // --max-error / --psnr, or when no pixel has nonzero error.
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result);
 

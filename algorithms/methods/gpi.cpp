@@ -1,22 +1,8 @@
 #include "algorithms/methods/gpi.h"
 
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-
-#include "algorithms/methods/methods.h"
+#include "algorithms/methods/scaffold.h"
 
 namespace erd {
-
-namespace {
-
-std::string format_real(const char* fmt, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, fmt, v);
-    return buf;
-}
-
-}  // namespace
 
 double BasicGreedyModel::sample_at(LatticePoint p) const { return double(image_.at(p.x / 2, p.y / 2)); }
 
@@ -41,55 +27,26 @@ Status BasicGreedyModel::on_vertex_inserted(const Cdt&, VertInd, std::vector<Fac
     return Status::success();  // values are read from the image in face_plane
 }
 
-Model basic_model(const Cdt& cdt, const Image& image) {
-    Model m;
-    m.kind = ModelKind::basic;
-    m.width = image.width;
-    m.height = image.height;
-    m.maxval = image.maxval;
-    m.vertices = cdt.points();
-    m.values.reserve(m.vertices.size());
-    for (LatticePoint p : m.vertices) m.values.push_back(double(image.at(p.x / 2, p.y / 2)));
-    std::vector<std::array<VertInd, 3>> faces;
-    cdt.export_faces(&faces);
-    m.faces.assign(faces.begin(), faces.end());
-    return m;
-}
-
 Status generate_gpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    Status st = begin_generate(image, options, result);
+    Status st = begin_method(image, options, result);
     if (!st) return st;
     const std::int64_t n = std::int64_t(result->requested);
 
-    auto t0 = std::chrono::steady_clock::now();
+    StageTimer timer(result);
     Cdt cdt;
     st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
     if (!st) return st;
     cdt.reserve(std::size_t(n));
-    result->stages.push_back({"triangulate corners", seconds_since(t0)});
+    timer.lap("triangulate corners");
 
-    t0 = std::chrono::steady_clock::now();
     BasicGreedyModel model(image);
-    GreedyOptions go;
-    go.target_vertices = std::size_t(n);
-    go.max_error = options.max_error;
-    go.psnr = options.psnr;
-    go.max_triangles = options.triangles > 0 ? std::size_t(options.triangles) : 0;
-    go.round_values = options.round_values;
-    go.progress = options.progress;
-    GreedyStats gs;
-    st = greedy_refine(cdt, image, model, go, &gs);
+    const GreedyOptions go = greedy_options(options, std::size_t(n));
+    result->stats.has_greedy = true;
+    st = greedy_refine(cdt, image, model, go, &result->stats.greedy);
     if (!st) return st;
-    result->stages.push_back({"greedy insertion", seconds_since(t0)});
+    timer.lap("greedy insertion");
 
-    t0 = std::chrono::steady_clock::now();
-    result->model = basic_model(cdt, image);
-    result->achieved = result->model.size();
-    result->stages.push_back({"model", seconds_since(t0)});
-    result->notes.push_back(std::string("stop: ") + to_string(gs.stop));
-    result->notes.push_back("insertions: " + std::to_string(gs.insertions));
-    result->notes.push_back("max abs error: " + format_real("%.4g", gs.max_error));
-    result->notes.push_back("psnr (point evaluation): " + format_real("%.4f", gs.psnr));
+    finish_basic_method(cdt, image, &timer, result);
     return Status::success();
 }
 

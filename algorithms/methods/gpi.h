@@ -27,10 +27,7 @@ private:
     const Image& image_;
 };
 
-// The basic model of a triangulation whose vertices are pixels: vertex values are the samples.
-Model basic_model(const Cdt& cdt, const Image& image);
-
-// Registry entry "gpi" (algorithms/methods.h contract). Stops at N vertices, or earlier by
+// Registry entry "gpi" (algorithms/methods/methods.h contract). Stops at N vertices, or earlier by
 // --max-error / --psnr, or when no point has nonzero error (achieved < requested then).
 Status generate_gpi(const Image& image, const GenerateOptions& options, GenerateResult* result);
 

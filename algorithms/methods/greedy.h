@@ -28,6 +28,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
 #include "algorithms/methods/progress.h"
+#include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
 #include "kernel/raster.h"
 #include "kernel/status.h"
@@ -86,17 +87,6 @@ public:
     }
 };
 
-// Why refinement stopped (the first rule that held).
-enum class GreedyStop {
-    target,     // cdt.vertex_count() reached GreedyOptions::target_vertices
-    max_error,  // the largest absolute error over candidate points is <= max_error
-    psnr,       // the whole-image PSNR (point evaluation) is >= psnr
-    triangles,  // the triangulation has >= max_triangles triangles
-    exhausted,  // no face has an admissible point with nonzero error (e.g. planar image)
-};
-
-const char* to_string(GreedyStop s);
-
 struct GreedyOptions {
     std::size_t target_vertices = 0;  // stop when the triangulation has this many vertices
     double max_error = -1.0;          // stop when max abs error <= max_error; negative: rule off
@@ -111,15 +101,6 @@ struct GreedyOptions {
     bool round_values = false;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
-};
-
-struct GreedyStats {
-    GreedyStop stop = GreedyStop::target;
-    std::size_t insertions = 0;       // points inserted by the loop
-    std::size_t banned = 0;           // candidates refused by GreedyModel::admissible
-    double total_squared_error = 0.0; // over all pixels, point evaluation, at the end
-    double max_error = 0.0;           // largest abs error over candidate points, at the end
-    double psnr = 0.0;                // from total_squared_error and the image's peak (inf if 0)
 };
 
 // Refines `cdt` (already holding the initial mesh: the four corners for GPI; corners, polyline

@@ -1,8 +1,7 @@
-// GenerateOptions and GenerateResult: what `erd generate` hands to a mesh-generation method and
-// what it gets back. One struct serves the four methods of the thesis; each method reads the
-// fields it uses. Defaults are the thesis's (Appendix A.5.1); the CLI only parses flags into it.
+// GenerateOptions: what `erd generate` hands to a mesh-generation method (algorithms/methods/
+// result.h has what it gets back). One struct serves the four methods of the thesis; each method
+// reads the fields it uses. Defaults are the thesis's (Appendix A.5.1); the CLI only parses flags into it.
 #pragma once
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -11,6 +10,8 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
 #include "algorithms/methods/progress.h"
+#include "algorithms/methods/result.h"
+#include "kernel/status.h"
 
 namespace erd {
 
@@ -48,28 +49,30 @@ struct GenerateOptions {
 };
 
 // N for an image of width x height under these options: round(D*W*H/100) when -d was given or
-// -n was not, else -n. No clamping: callers check 4 <= N <= W*H.
+// -n was not, else -n. No clamping: check_target checks 4 <= N <= W*H.
 std::int64_t target_points(const GenerateOptions& o, int width, int height);
 
-// Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.
-struct StageTime {
-    std::string name;
-    double seconds = 0.0;
+// Checks the image and N: W, H >= 2 (else "too small", whatever N), then 4 <= N <= W*H (the four
+// corners are always vertices).
+Status check_target(std::int64_t n, int width, int height);
+
+// What to do when a method cannot hit the requested vertex count exactly (the thesis's -x).
+enum class ExactMode {
+    fail = 0,    // Code::density ("target sampling density not achieved exactly ..."); the model
+                 // is still filled in
+    warn = 1,    // ok, with the same sentence as a warning
+    ignore = 2,  // ok, silently
 };
 
-struct GenerateResult {
-    Model model;                                          // the mesh (basic or erd)
-    std::vector<std::vector<LatticePoint>> polylines;     // ERD step 1 output, for -p (empty for ED/GPI)
-    std::size_t requested = 0;                            // N asked for
-    std::size_t achieved = 0;                             // vertices in the model
-    std::vector<StageTime> stages;                        // in order
-    std::vector<std::string> notes;                       // one-line facts for -v style output
-                                                          // ("stop: psnr", "beta 0.055", ...)
-};
+// The exact-count policy: ok when achieved == requested or mode is ignore; Code::density with
+// the sentence under fail; under warn ok with the sentence in *warning (cleared otherwise).
+Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode mode, std::string* warning);
 
-// Seconds elapsed since t0, for StageTime entries.
-inline double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+// The thesis's method exactly, as erd_ed and erd_gpi run it (--thesis): the options beyond the
+// thesis (wedge refit, the line-search range, the ERDED edge radius) set to the thesis's values.
+// Other fields stay as they are in *o.
+void set_thesis_preset(GenerateOptions* o);
+// GenerateOptions() with the thesis preset.
+GenerateOptions thesis_options();
 
 }  // namespace erd

@@ -13,15 +13,10 @@
 
 #include "algorithms/model/erd_model.h"
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
 
 namespace erd {
-
-struct WedgeFitStats {
-    int iterations = 0;
-    double sse_before = 0;  // squared error over all pixels, point evaluation
-    double sse_after = 0;
-};
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats);

@@ -1,0 +1,76 @@
+// Step 1.1-1.3 of the ERD framework (thesis 3.4.1) in one place: half-pixel edges (modified
+// Canny, algorithms/imaging/canny.h), polylines (polylines.h), Douglas-Peucker simplification
+// with the short polylines dropped (douglas_peucker.h). The ERD methods' initial mesh
+// (algorithms/methods/erd_mesh.cpp), `erd edges` and the benchmark all run this chain.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/imaging/point_rings.h"
+#include "algorithms/imaging/polylines.h"
+#include "kernel/status.h"
+
+namespace erd {
+
+// The parameters of the chain; the defaults are the library's (those the ERD methods start from
+// when the image is not simple: beta 0.055, r 0.4, l 5, epsilon one pixel).
+struct EdgePolylineParams {
+    CannyParams canny;
+    double epsilon = 1.0;  // Douglas-Peucker tolerance in pixels (erd generate -e); >= 0
+    int min_length = 5;    // the thesis's l: polylines with fewer points are dropped
+    LengthRule length_rule = LengthRule::before_simplification;  // when l is counted
+};
+
+// Doubled-coordinate units (half-pixel grid steps) per pixel of epsilon.
+constexpr double kEpsilonUnitsPerPixel = 2.0;
+
+// The chain on one image, step by step, keeping what a later call can reuse: a detection with
+// the same beta, r and Canny variant as the last one is skipped (the gradient pass is reused by
+// the detector when it covers the new parameters), and so is a simplification with the same l
+// and tolerance on the same detection (the ERD parameter selection repeats both).
+class EdgePolylines {
+public:
+    explicit EdgePolylines(const Image& image);
+    // Steps 1.1 and 1.2: edges with these parameters, traced into polylines.
+    Status detect(const CannyParams& canny);
+    // Step 1.3 on the last detection: epsilon in doubled-coordinate units (pixels times
+    // kEpsilonUnitsPerPixel). Returns the kept polylines.
+    const std::vector<Polyline>& simplify(int min_length, double epsilon_units, LengthRule rule);
+
+    const CannyStats& stats() const { return stats_; }          // of the last detection
+    const std::vector<Polyline>& traced() const { return traced_; }
+    std::vector<Polyline>& kept() { return kept_; }             // of the last simplification
+    Grid<std::uint8_t> edge_map() const;                        // (2W-1) x (2H-1), 1 = edge
+    void release_detector() { detector_.release(); }
+    // Incremented by every simplification actually run, so callers can cache what they derive.
+    std::size_t generation() const { return generation_; }
+
+private:
+    EdgeDetector detector_;
+    int map_w_, map_h_;  // the half-pixel grid
+    bool have_edges_ = false, have_kept_ = false;
+    CannyParams canny_;
+    int l_ = 0;
+    double eps_ = 0;
+    LengthRule rule_ = LengthRule::before_simplification;
+    std::size_t generation_ = 0;
+    CannyStats stats_;
+    SortedPoints edges_;  // of the last detection
+    std::vector<Polyline> traced_, kept_;
+};
+
+// The whole chain in one call. Code::input for a negative or NaN epsilon or Canny parameters out
+// of range.
+struct EdgePolylineResult {
+    Grid<std::uint8_t> edges;          // the half-pixel edge map
+    std::size_t traced = 0;            // polylines before simplification
+    std::vector<Polyline> polylines;   // simplified, short ones dropped
+    CannyStats stats;
+};
+Status edge_polylines(const Image& image, const EdgePolylineParams& params, EdgePolylineResult* out);
+
+}  // namespace erd

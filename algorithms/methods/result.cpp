@@ -1,0 +1,53 @@
+#include "algorithms/methods/result.h"
+
+#include <cstdio>
+
+namespace erd {
+
+namespace {
+
+std::string real(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> result_lines(const RunStats& r) {
+    std::vector<std::string> out;
+    if (r.has_wedge_fit)
+        out.push_back("wedge refit: " + std::to_string(r.wedge_fit.iterations) + " iterations, sse " +
+                      real("%.6g", r.wedge_fit.sse_before) + " -> " + real("%.6g", r.wedge_fit.sse_after));
+    if (r.has_erd) {
+        const ErdStepStats& s = r.erd;
+        const ErdParams& p = s.params;
+        out.push_back("beta: " + real("%.6g", p.beta));
+        out.push_back("r: " + real("%.6g", p.r));
+        out.push_back("l: " + std::to_string(p.l));
+        out.push_back("eps: " + real("%.6g", p.eps));
+        out.push_back(std::string("simple: ") + (p.simple ? "yes" : "no"));
+        out.push_back("parameter loop iterations: " + std::to_string(p.loop_iterations));
+        out.push_back("polylines: " + std::to_string(s.polylines));
+        out.push_back("initial mesh vertices: " + std::to_string(s.initial_vertices));
+        out.push_back("dropped crossing constraints: " + std::to_string(s.dropped_crossing));
+        if (s.dropped_polylines > 0)
+            out.push_back("dropped polylines (N too small for them): " + std::to_string(s.dropped_polylines));
+        out.push_back("multi-wedge values: " + std::to_string(s.multi_wedges) + " (line-search maximum at alpha_min: " +
+                      std::to_string(s.alpha_first) + ", at alpha_max: " + std::to_string(s.alpha_last) + ")");
+    }
+    if (r.has_diffusion) {
+        out.push_back("threshold rho " + real("%.6g", r.diffusion.rho) + " after " + std::to_string(r.diffusion.passes) +
+                      " diffusion passes");
+        out.push_back("points added/removed to reach N exactly: " + std::to_string(r.diffusion.adjusted));
+    }
+    if (r.has_greedy) {
+        out.push_back(std::string("stop: ") + to_string(r.greedy.stop));
+        out.push_back("insertions: " + std::to_string(r.greedy.insertions));
+        out.push_back("max abs error: " + real("%.4g", r.greedy.max_error));
+        out.push_back("psnr (point evaluation): " + real("%.4f", r.greedy.psnr));
+    }
+    return out;
+}
+
+}  // namespace erd

@@ -1,0 +1,99 @@
+// GenerateResult: what a mesh-generation method gives back. Besides the model it carries, as
+// typed fields, what each stage measured (the ERD parameters chosen, the greedy loop's
+// statistics, the wedge refit, the error diffusion); result_lines() turns them into the lines
+// `erd generate` prints, and --stats JSON and the library API read the same fields.
+#pragma once
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "algorithms/methods/erd_params.h"
+#include "algorithms/model/model.h"
+
+namespace erd {
+
+// Why greedy refinement stopped (the first rule that held).
+enum class GreedyStop {
+    target,     // cdt.vertex_count() reached GreedyOptions::target_vertices
+    max_error,  // the largest absolute error over candidate points is <= max_error
+    psnr,       // the whole-image PSNR (point evaluation) is >= psnr
+    triangles,  // the triangulation has >= max_triangles triangles
+    exhausted,  // no face has an admissible point with nonzero error (e.g. planar image)
+};
+
+const char* to_string(GreedyStop s);
+
+// The greedy loop of GPI and ERDGPI (algorithms/methods/greedy.h).
+struct GreedyStats {
+    GreedyStop stop = GreedyStop::target;
+    std::size_t insertions = 0;       // points inserted by the loop
+    std::size_t banned = 0;           // candidates refused by GreedyModel::admissible
+    double total_squared_error = 0.0; // over all pixels, point evaluation, at the end
+    double max_error = 0.0;           // largest abs error over candidate points, at the end
+    double psnr = 0.0;                // from total_squared_error and the image's peak (inf if 0)
+};
+
+// The least-squares refit of the wedge values (algorithms/methods/wedge_fit.h).
+struct WedgeFitStats {
+    int iterations = 0;
+    double sse_before = 0;  // squared error over all pixels, point evaluation
+    double sse_after = 0;
+};
+
+// The error diffusion of ED and ERDED.
+struct DiffusionStats {
+    double rho = 0;             // threshold of the pass used
+    int passes = 0;             // diffusion passes run (threshold search and exact-count retries)
+    std::size_t adjusted = 0;   // points added or removed afterwards to reach N exactly
+};
+
+// Step 1 of the ERD framework and the wedge values of step 2 (ERDED, ERDGPI).
+struct ErdStepStats {
+    ErdParams params;                   // beta, r, l, eps, simple as used, and the loop's count
+    std::size_t polylines = 0;          // simplified polylines in the initial mesh
+    std::size_t initial_vertices = 0;   // N0, corners included
+    std::size_t dropped_crossing = 0;   // constraint pieces the kernel refused (crossings)
+    std::size_t dropped_polylines = 0;  // polylines left out so the mesh stays within N
+    std::size_t multi_wedges = 0;       // wedge values found by the line search
+    std::size_t alpha_first = 0;        // ... whose maximum was at the near end of the range
+    std::size_t alpha_last = 0;         // ... at the far end
+};
+
+// Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.
+struct StageTime {
+    std::string name;
+    double seconds = 0.0;
+};
+
+// What the stages of a run measured; each has_ flag says whether the method ran that stage.
+struct RunStats {
+    bool has_erd = false;  // ERDED, ERDGPI
+    ErdStepStats erd;
+    bool has_diffusion = false;  // ED, ERDED with error-diffusion selection
+    DiffusionStats diffusion;
+    bool has_greedy = false;  // GPI, ERDGPI
+    GreedyStats greedy;
+    bool has_wedge_fit = false;  // ERD with wedge_fit > 0
+    WedgeFitStats wedge_fit;
+};
+
+struct GenerateResult {
+    Model model;                                          // the mesh (basic or erd)
+    std::vector<std::vector<LatticePoint>> polylines;     // ERD step 1 output, for -p (empty for ED/GPI)
+    std::size_t requested = 0;                            // N asked for
+    std::size_t achieved = 0;                             // vertices in the model
+    std::vector<StageTime> stages;                        // in order
+    RunStats stats;
+};
+
+// The measured facts as one-line texts ("beta: 0.055", "stop: target", ...), in a fixed order:
+// wedge refit, ERD step 1 and wedge values, error diffusion, greedy loop.
+std::vector<std::string> result_lines(const RunStats& stats);
+
+// Seconds elapsed since t0, for StageTime entries.
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace erd

@@ -1,0 +1,150 @@
+#include "algorithms/methods/scaffold.h"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algorithms/methods/wedge_fit.h"
+
+namespace erd {
+
+std::int64_t target_points(const GenerateOptions& o, int width, int height) {
+    if (o.points > 0 && !o.density_given) return o.points;
+    // D is a percentage; round half away from zero (7864 for 3% of 512 x 512 = 7864.32).
+    return std::int64_t(std::llround(o.density * double(width) * double(height) / 100.0));
+}
+
+Status check_target(std::int64_t n, int width, int height) {
+    std::int64_t pixels = std::int64_t(width) * std::int64_t(height);
+    // Size first, so a 1x1 or 1xN image always gets the same "too small" line whatever N is.
+    if (width < 2 || height < 2)
+        return Status::bad_input("image is " + std::to_string(width) + "x" + std::to_string(height) +
+                                 "; meshing needs at least 2x2 pixels");
+    if (n < 4)
+        return Status::bad_input("target of " + std::to_string(n) +
+                                 " points is below 4 (the four corners are always vertices)");
+    if (n > pixels)
+        return Status::bad_input("target of " + std::to_string(n) + " points exceeds the " +
+                                 std::to_string(pixels) + " pixels of the image");
+    return Status::success();
+}
+
+Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode mode, std::string* warning) {
+    if (warning) warning->clear();
+    if (achieved == requested || mode == ExactMode::ignore) return Status::success();
+    std::string what = "target sampling density not achieved exactly (requested " + std::to_string(requested) +
+                       " but got " + std::to_string(achieved) + ")";
+    if (mode == ExactMode::fail) return Status::error(Code::density, what);
+    if (warning) *warning = std::move(what);
+    return Status::success();
+}
+
+void set_thesis_preset(GenerateOptions* o) {
+    o->wedge_fit = 0;
+    o->alpha_min = 1.0;
+    o->alpha_max = 1.5;
+    o->edge_zero_radius = 0;
+}
+
+GenerateOptions thesis_options() {
+    GenerateOptions o;
+    set_thesis_preset(&o);
+    return o;
+}
+
+Status begin_method(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    *result = GenerateResult();
+    const std::int64_t n = target_points(options, image.width, image.height);
+    Status st = check_target(n, image.width, image.height);
+    if (!st) return st;
+    result->requested = std::size_t(n);
+    return Status::success();
+}
+
+Model basic_model(const Cdt& cdt, const Image& image) {
+    Model m;
+    m.kind = ModelKind::basic;
+    m.width = image.width;
+    m.height = image.height;
+    m.maxval = image.maxval;
+    m.vertices = cdt.points();
+    m.values.reserve(m.vertices.size());
+    for (LatticePoint p : m.vertices) m.values.push_back(double(image.at(p.x / 2, p.y / 2)));
+    std::vector<std::array<VertInd, 3>> faces;
+    cdt.export_faces(&faces);
+    m.faces.assign(faces.begin(), faces.end());
+    return m;
+}
+
+void finish_basic_method(const Cdt& cdt, const Image& image, StageTimer* timer, GenerateResult* result) {
+    result->model = basic_model(cdt, image);
+    result->achieved = result->model.size();
+    timer->lap("model");
+}
+
+GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
+    GreedyOptions go;
+    go.target_vertices = n;
+    go.max_error = options.max_error;
+    go.psnr = options.psnr;
+    go.max_triangles = options.triangles > 0 ? std::size_t(options.triangles) : 0;
+    go.round_values = options.round_values;
+    go.progress = options.progress;
+    return go;
+}
+
+WedgeValueOptions wedge_options(const GenerateOptions& options) {
+    WedgeValueOptions w;
+    w.rule = options.wedge_rule == 0 ? 0 : 1;
+    w.smoothing_order = options.wedge_order;
+    w.alpha_min = options.alpha_min;
+    w.alpha_max = options.alpha_max;
+    return w;
+}
+
+ErdParamRequest param_request(const GenerateOptions& options) {
+    return ErdParamRequest{options.beta, options.ratio, options.min_length, options.epsilon, options.simple};
+}
+
+Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
+                        InitialMesh* mesh, GenerateResult* result) {
+    Status st = begin_method(image, options, result);
+    if (!st) return st;
+    options.progress("initial mesh", 0.0);
+    StageTimer timer(result);
+    InitialMeshOptions mo;
+    mo.method = method;
+    mo.target = result->requested;
+    mo.request = param_request(options);
+    st = build_initial_mesh(image, mo, cdt, mesh);
+    if (!st) return st;
+    timer.lap("initial mesh");
+    return Status::success();
+}
+
+void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdModel* model, StageTimer* timer, GenerateResult* result) {
+    if (options.wedge_fit > 0) {
+        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
+        result->stats.has_wedge_fit = true;
+        timer->lap("wedge refit");
+    }
+    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    result->achieved = result->model.size();
+    result->stats.has_erd = true;
+    ErdStepStats& s = result->stats.erd;
+    s.params = mesh->params;
+    s.polylines = mesh->polylines.size();
+    s.initial_vertices = mesh->n0;
+    s.dropped_crossing = mesh->dropped_crossing;
+    s.dropped_polylines = mesh->dropped_polylines;
+    s.multi_wedges = model->stats().multi_wedges;
+    s.alpha_first = model->stats().alpha_first;
+    s.alpha_last = model->stats().alpha_last;
+    result->polylines = std::move(mesh->polylines);
+    timer->lap("model");
+}
+
+}  // namespace erd

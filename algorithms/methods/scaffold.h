@@ -1,0 +1,68 @@
+// The method scaffold: the steps every mesh-generation method shares, so that each method file
+// (ed, gpi, erded, erdgpi) holds only its own steps and includes no other method's header.
+//
+//   basic model (ED, GPI):   begin_method ... finish_basic_method
+//   ERD model (ERDED, ERDGPI): begin_erd_method (N, step 1: the initial mesh) ... finish_erd_method
+//                            (wedge refit, the model, the step-1 facts, the polylines)
+// Stages are timed with a StageTimer into GenerateResult::stages.
+#pragma once
+#include <chrono>
+
+#include "algorithms/imaging/image.h"
+#include "algorithms/methods/erd_mesh.h"
+#include "algorithms/methods/erd_params.h"
+#include "algorithms/methods/greedy.h"
+#include "algorithms/methods/options.h"
+#include "algorithms/model/erd_model.h"
+#include "algorithms/model/model.h"
+#include "kernel/cdt.h"
+#include "kernel/status.h"
+
+namespace erd {
+
+// Times consecutive stages: lap(name) records the time since the last lap (or construction).
+class StageTimer {
+public:
+    explicit StageTimer(GenerateResult* result) : result_(result), t0_(std::chrono::steady_clock::now()) {}
+    void lap(const char* name) {
+        result_->stages.push_back({name, seconds_since(t0_)});
+        t0_ = std::chrono::steady_clock::now();
+    }
+
+private:
+    GenerateResult* result_;
+    std::chrono::steady_clock::time_point t0_;
+};
+
+// The common start of every method: clears *result, computes N from the options, checks the image
+// and N (check_target) and records N in result->requested.
+Status begin_method(const Image& image, const GenerateOptions& options, GenerateResult* result);
+
+// The basic model of a triangulation whose vertices are pixels: vertex values are the samples.
+Model basic_model(const Cdt& cdt, const Image& image);
+
+// The end of ED and GPI: the basic model of cdt into result (model, achieved), timed as "model".
+void finish_basic_method(const Cdt& cdt, const Image& image, StageTimer* timer, GenerateResult* result);
+
+// The greedy loop's options for GPI and ERDGPI: stop at n vertices or by --max-error / --psnr,
+// errors rounded as options.round_values says, the progress hook.
+GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n);
+
+// Wedge-value options from the generate options (-w, -s, the line-search range).
+WedgeValueOptions wedge_options(const GenerateOptions& options);
+
+// Parameter flags (-b -r -l -e -S) as a request for the automatic selection.
+ErdParamRequest param_request(const GenerateOptions& options);
+
+// The common start of ERDED and ERDGPI: begin_method, then the initial mesh (framework step 1)
+// into *cdt and *mesh, timed as the stage "initial mesh".
+Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
+                        InitialMesh* mesh, GenerateResult* result);
+
+// The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the
+// least-squares refit (options.wedge_fit > 0, stage "wedge refit"), the ERD model into result,
+// the step-1 facts and the wedge-value counts, the polylines (moved out of *mesh); stage "model".
+void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdModel* model, StageTimer* timer, GenerateResult* result);
+
+}  // namespace erd
