@@ -15,14 +15,14 @@ namespace {
 // detector's half-pixel planes dominate). The factors keep >= 20% headroom over every
 // measurement (docs/DECISIONS.md, Packaging).
 const MethodInfo kMethods[] = {
-    {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", ModelKind::basic, "ywb", "idnotpx", 80, 64,
+    {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", ModelKind::basic, "ywb", "idnotpx", 32, 64,
      generate_ed},
     {"gpi", "greedy point insertion (thesis 3.2.2, gpi), basic model", ModelKind::basic, "gpi", "idnotpx", 8, 256,
      generate_gpi},
     {"erded", "ERD model, error-diffusion refinement (thesis 3.4.2, erd_ed)", ModelKind::erd, "erd_ed",
-     "idnotpxlbrefwsBS", 136, 320, generate_erded},
+     "idnotpxlbrefwsBS", 88, 320, generate_erded},
     {"erdgpi", "ERD model, greedy point insertion (thesis 3.4.3, erd_gpi)", ModelKind::erd, "erd_gpi",
-     "idnotpxlbrewsS", 136, 320, generate_erdgpi},
+     "idnotpxlbrewsS", 88, 320, generate_erdgpi},
 };
 
 }  // namespace
