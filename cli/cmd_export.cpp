@@ -1,4 +1,4 @@
-// erd export MODEL -o OUT.obj|OUT.ply [--zscale Z]: a mesh model as a height field for 3-D tools.
+// erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]: a mesh model as a height field for 3-D tools.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -16,13 +16,14 @@ namespace erd::cli {
 int cmd_export(int argc, char** argv) {
     Reporter rep("export");
     static const std::vector<OptionSpec> specs = {
-        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront) or FILE.ply (ASCII PLY); \"-\" = stdout with --format"},
-        {0, "format", "obj|ply", "output format when the file name does not say (default: from the name)"},
+        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront), FILE.ply (ASCII PLY) or FILE.stl (binary STL); \"-\" = stdout with --format"},
+        {0, "format", "obj|ply|stl", "output format when the file name does not say (default: from the name)"},
         {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
+        {'b', "base", "H", "STL: a solid with walls and a bottom, the surface lifted by H (basic models)"},
         {'q', "quiet", nullptr, "no warnings"},
         {'h', "help", nullptr, "show this help"},
     };
-    const char* usage = "erd export MODEL -o OUT.obj|OUT.ply [--zscale Z]";
+    const char* usage = "erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]";
     Args args;
     Status st = args.parse(argc, argv, 1, specs);
     if (!st) return rep.usage(st.message, usage);
@@ -41,11 +42,17 @@ int cmd_export(int argc, char** argv) {
 
     ExportOptions opt;
     std::string format;
-    if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message, usage);
-    opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
+    const bool stl = args.str("format") == "stl" || (args.str("format").empty() && has_extension(out, ".stl"));
+    if (stl) opt.format = MeshFormat::stl;
+    else if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message + " (or .stl)", usage);
+    else opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
     opt.zscale = args.real("zscale", 0, 0, 1e12, &st);
     if (!st) return rep.usage(st.message, usage);
     if (args.has("zscale") && !(opt.zscale > 0)) return rep.usage("--zscale must be greater than 0", usage);
+    opt.base = args.real("base", 0, 0, 1e12, &st);
+    if (!st) return rep.usage(st.message, usage);
+    if (args.has("base") && !(opt.base > 0)) return rep.usage("--base must be greater than 0", usage);
+    if (args.has("base") && !stl) return rep.usage("--base applies to STL output", usage);
 
     st = refuse_overwrite(out, {in});
     if (!st) return rep.fail(st);
