@@ -11,10 +11,11 @@
 namespace erd {
 
 // Largest accepted image. The side bound keeps doubled lattice coordinates (at most 2*side-2)
-// far inside the exactness bound of kernel/predicates.h; the pixel bound caps memory
-// (about 64 bytes per pixel for the whole pipeline: 2^26 pixels ~ 4 GiB worst case).
+// far inside the exactness bound of kernel/predicates.h; the pixel bound admits 16384 x 16384
+// (issue 18) and keeps the half-pixel plane of edge detection under 2^32 cells (point_rings.h).
+// Memory is the caller's to cap (api memory_estimate: up to ~90 bytes per pixel for ERD).
 constexpr int kMaxImageSide = 32768;
-constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 26;
+constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
 
 template <class T>
 struct Grid {

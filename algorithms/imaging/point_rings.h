@@ -18,7 +18,7 @@ struct SortedPoints {
     // Plane index of each point, strictly increasing; rows `stride` apart, with a frame of at
     // least one empty column and one empty row, so that index +-1 never reaches a point of
     // another row and index - stride - 1 is never negative. Grids here stay below 2^32 cells
-    // (kMaxImagePixels: a half-pixel plane has under 2^29).
+    // (kMaxImagePixels: a half-pixel plane has under 2^31).
     std::vector<std::uint32_t> at;
     std::ptrdiff_t stride = 0;
 
