@@ -33,18 +33,35 @@ TEST_OBJ  := $(TEST_SRC:%.cpp=$(BUILD)/%.o) $(BUILD)/third_party/catch_main.o
 CATCH_HDR := /usr/include/catch2/catch.hpp
 STB_HDR   := /usr/include/stb/stb_image.h
 
-.PHONY: all deps test unit run bench eval fuzz asan clean help docs-images
+# Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
+.PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate
 all: $(BUILD)/erd
 
 help:
-	@echo "make            build build/erd and build/liberd.a"
+	@echo "make, make all  build build/erd and build/liberd.a"
 	@echo "make run        mesh an image with the best method, reconstruct it, print PSNR (out/)"
-	@echo "make test       unit tests, the same under ASan+UBSan, fuzz smoke runs; ends 'N passed, M failed'"
+	@echo "make test       layer check, unit tests, the same under ASan+UBSan, fuzz smoke runs, embedded build;"
+	@echo "                ends 'N passed, M failed'"
+	@echo "make unit       the unit tests only (ERD_BIN, ERD_IMAGES from the environment override)"
+	@echo "make asan       the ASan+UBSan build in build-asan/ (clang++)"
+	@echo "make embedded   the library at -Os -fno-exceptions -fno-rtti and docs/examples/embedded.cpp"
 	@echo "make bench      speed and memory benchmarks (medians)"
 	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
+	@echo "make regenerate rewrite the docs the tests generate (docs/HOSTILE.md, docs/hostile_images.md)"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
+	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
+	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
+	@echo "make python-test  the Python package's pytest suite"
+	@echo "make python-venv-check  pip install into a fresh venv, import and run it"
+	@echo "make install    bin/erd, lib/liberd.a, the public headers, erd.pc, erd(1) under PREFIX (DESTDIR=)"
+	@echo "make install-aliases  also the thesis's program names (ywb gpi erd_ed ...) as links to erd"
+	@echo "make uninstall  remove what install and install-aliases put there"
+	@echo "make public-headers  list the headers make install installs"
+	@echo "make clean      remove build, build-asan, build-fuzz, build-embedded, out, the Python build"
+	@echo "make clean-embedded  remove build-embedded only"
+	@echo "make help       this list"
 
 deps: $(CATCH_HDR) $(STB_HDR)
 $(CATCH_HDR) $(STB_HDR):
@@ -81,8 +98,17 @@ $(BUILD)/%.o: %.cpp
 test: deps
 	@bash tests/run_all.sh
 
+# ERD_BIN and ERD_IMAGES given in the environment win (`ERD_BIN=/nonexistent make unit` fails:
+# a missing binary or image is a failure unless ERD_ALLOW_SKIP=1, tests/erd_run.h).
+ERD_BIN    ?= $(BUILD)/erd
+ERD_IMAGES ?= $(IMAGES)
 unit: $(BUILD)/erd $(BUILD)/erd_tests
-	ERD_BIN=$(BUILD)/erd ERD_IMAGES=$(IMAGES) $(BUILD)/erd_tests
+	ERD_BIN=$(ERD_BIN) ERD_IMAGES=$(ERD_IMAGES) $(BUILD)/erd_tests
+
+# The one switch for the docs the tests generate: ERD_REGENERATE=1 makes the [generated] tests
+# rewrite their file instead of comparing it.
+regenerate: $(BUILD)/erd $(BUILD)/erd_tests
+	ERD_REGENERATE=1 ERD_BIN=$(BUILD)/erd ERD_IMAGES=$(IMAGES) $(BUILD)/erd_tests "[generated]"
 
 asan:
 	$(MAKE) BUILD=build-asan CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
@@ -104,19 +130,20 @@ fuzz: deps
 	@bash fuzz/run.sh $(FUZZ_SECONDS)
 
 clean:
-	rm -rf build build-asan build-fuzz out
+	rm -rf build build-asan build-fuzz out python/build python/erd.egg-info python/erd/_erd*.so
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
 # ---------------------------------------------------------------------------------------------
 # Packaging (issue 9): install/uninstall, pkg-config, the -Os -fno-exceptions -fno-rtti build.
 #
-# `make install PREFIX=/usr/local DESTDIR=` installs bin/erd plus the thesis's seven command
-# names as symlinks to it, lib/liberd.a, the library headers under include/erd/ (kernel/ and
-# algorithms/ keep their names, so the headers' own "kernel/x.h" includes resolve with
-# -I$(includedir)/erd, which erd.pc supplies), include/erd/erd.h (forwards to api/erd.h),
-# lib/pkgconfig/erd.pc and share/man/man1/erd.1 (with a ".so" page per thesis name). It installs
-# what $(BUILD) already holds.
+# `make install PREFIX=/usr/local DESTDIR=` installs bin/erd, lib/liberd.a, the public headers
+# under include/erd/ (api/erd.h and the kernel/ and algorithms/ headers it includes, with their
+# source-tree paths, so their own "kernel/x.h" includes resolve with -I$(includedir)/erd, which
+# erd.pc supplies), include/erd/erd.h (forwards to api/erd.h), lib/pkgconfig/erd.pc and
+# share/man/man1/erd.1. It installs what $(BUILD) already holds. `make install-aliases` adds the
+# thesis's seven program names (generic names such as gpi: opt-in) as links to erd, with a ".so"
+# man page each.
 PREFIX     ?= /usr/local
 DESTDIR    ?=
 BINDIR     ?= $(PREFIX)/bin
@@ -125,18 +152,20 @@ INCLUDEDIR ?= $(PREFIX)/include
 MANDIR     ?= $(PREFIX)/share/man
 ERD_ALIASES := ywb gpi erd_ed erd_gpi imgsyn imgsyn_aa Cal_PSNR
 ERD_PC_VERSION ?= 0.1.0
+# The public headers: api/erd.h and every header it includes, directly or not, as the compiler
+# finds them (so the list follows api/erd.h). `make public-headers` prints it.
+PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h)))
 
-.PHONY: install uninstall embedded
+.PHONY: install install-aliases uninstall public-headers embedded
+public-headers:
+	@printf '%s\n' $(PUBLIC_HDR)
+
 install: $(BUILD)/erd $(BUILD)/liberd.a
-	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(MANDIR)/man1 \
-	  $(DESTDIR)$(INCLUDEDIR)/erd/kernel $(DESTDIR)$(INCLUDEDIR)/erd/api \
-	  $(addprefix $(DESTDIR)$(INCLUDEDIR)/erd/algorithms/,imaging model methods output)
+	@test -n "$(PUBLIC_HDR)" || { echo "make install: $(CXX) -MM api/erd.h found no headers" >&2; exit 1; }
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(INCLUDEDIR)/erd
 	install -m 755 $(BUILD)/erd $(DESTDIR)$(BINDIR)/erd
-	for a in $(ERD_ALIASES); do ln -sf erd $(DESTDIR)$(BINDIR)/$$a; done
 	install -m 644 $(BUILD)/liberd.a $(DESTDIR)$(LIBDIR)/liberd.a
-	install -m 644 $(wildcard kernel/*.h) $(DESTDIR)$(INCLUDEDIR)/erd/kernel/
-	for d in imaging model methods output; do install -m 644 algorithms/$$d/*.h $(DESTDIR)$(INCLUDEDIR)/erd/algorithms/$$d/; done
-	install -m 644 api/*.h $(DESTDIR)$(INCLUDEDIR)/erd/api/
+	for h in $(PUBLIC_HDR); do install -D -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/erd/$$h || exit 1; done
 	printf '%s\n' '// erd public API: see api/erd.h. Compile with `pkg-config --cflags erd`.' \
 	  '#pragma once' '#include "api/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
 	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
@@ -144,6 +173,9 @@ install: $(BUILD)/erd $(BUILD)/liberd.a
 	  'Version: $(ERD_PC_VERSION)' 'Cflags: -I$${includedir}/erd -I$${includedir}' 'Libs: -L$${libdir} -lerd' \
 	  > $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc
 	install -m 644 docs/erd.1 $(DESTDIR)$(MANDIR)/man1/erd.1
+
+install-aliases: install
+	for a in $(ERD_ALIASES); do ln -sf erd $(DESTDIR)$(BINDIR)/$$a; done
 	for a in $(ERD_ALIASES); do echo '.so man1/erd.1' > $(DESTDIR)$(MANDIR)/man1/$$a.1; done
 
 uninstall:
@@ -171,3 +203,41 @@ clean: clean-embedded
 .PHONY: clean-embedded
 clean-embedded:
 	rm -rf $(EMBEDDED_BUILD)
+
+# ---------------------------------------------------------------------------------------------
+# Python (issue 22): `make python` builds the extension python/erd/_erd*.so in place for PYTHON
+# with python/setup.py (the same build `pip install` runs), offline against Debian's
+# python3-pybind11 and python3-numpy (installed with apt when missing, with python3-pytest for
+# the tests), and puts python/ on PYTHON's path with a .pth file (what `pip install -e` does).
+# Objects go to python/build/, where `pip install .` finds them too; only changed sources are
+# recompiled. `make python-venv-check`: that pip install into a fresh venv, then import and run it.
+PYTHON     ?= /usr/bin/python3
+PY_DEBS    := python3-dev python3-pybind11 python3-numpy python3-pytest python3-setuptools python3-wheel python3-venv
+PY_PTH     := erd-checkout.pth
+
+.PHONY: python python-deps python-test python-venv-check
+python-deps: $(STB_HDR)
+	@$(PYTHON) -c "import pybind11, numpy, pytest, setuptools, wheel, venv" 2>/dev/null || { \
+	  echo "installing Debian packages $(PY_DEBS)" >&2; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null 2>&1 || \
+	  { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null; }; }
+	@$(PYTHON) -c "import pybind11, numpy, pytest" || { echo "python: pybind11, numpy or pytest missing for $(PYTHON)" >&2; exit 1; }
+
+python: python-deps
+	@cd python && ERD_BUILD_JOBS=2 $(PYTHON) setup.py -q build_ext --inplace
+	@site=$$($(PYTHON) -c "import site; print(site.getsitepackages()[0])") && mkdir -p "$$site" && \
+	  echo "$(CURDIR)/python" > "$$site/$(PY_PTH)" && \
+	  echo "python: built $$(cd python && ls erd/_erd*.so) for $(PYTHON) ($$($(PYTHON) -c 'import sys; print("Python", sys.version.split()[0])')); $$site/$(PY_PTH) -> $(CURDIR)/python"
+
+# pytest over python/tests with this checkout's extension first on the path.
+python-test: python $(BUILD)/erd
+	cd python && ERD_BIN=$(CURDIR)/$(BUILD)/erd ERD_IMAGES=$(abspath $(IMAGES)) PYTHONPATH=$(CURDIR)/python $(PYTHON) -m pytest -q tests
+
+PY_VENV    ?= $(BUILD)/venv
+python-venv-check: python
+	@rm -rf $(PY_VENV) && $(PYTHON) -m venv --system-site-packages $(PY_VENV)
+	@cd python && ../$(PY_VENV)/bin/pip install -q --no-build-isolation --no-index . >../$(PY_VENV)/pip.log 2>&1 || { tail -20 ../$(PY_VENV)/pip.log; exit 1; }
+	@cd / && $(CURDIR)/$(PY_VENV)/bin/python -c "import erd, numpy; assert erd.__file__.startswith('$(CURDIR)/$(PY_VENV)/'), erd.__file__; \
+	  m = erd.generate(numpy.arange(4096, dtype=numpy.uint16).reshape(64, 64), 'erdgpi', density=2, maxval=4095, exit_mode=2); \
+	  print('python-venv-check: pip-installed', erd.__file__, m)" && $(CURDIR)/$(PY_VENV)/bin/python -m erd --version
+

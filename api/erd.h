@@ -1,8 +1,8 @@
 // The public C++ API of liberd: mesh an image, reconstruct an image from a mesh, measure PSNR.
 //
-// Installed as <prefix>/include/erd/algorithms/erd.h (also reachable as <erd/erd.h>), with the
-// kernel/ and algorithms/ headers it uses beside it; `pkg-config --cflags --libs erd` gives
-// -I<prefix>/include/erd and -lerd. C++17.
+// Installed as <prefix>/include/erd/api/erd.h (also reachable as <erd/erd.h>), with the kernel/
+// and algorithms/ headers it includes beside it and no others (`make public-headers` lists them);
+// `pkg-config --cflags --libs erd` gives -I<prefix>/include/erd and -lerd. C++17.
 //
 //     #include "api/erd.h"
 //     erd::api::ImageView view{width, height, 255, samples};   // samples: uint16_t[width*height]

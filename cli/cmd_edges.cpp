@@ -7,26 +7,15 @@
 
 #include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/edge_polylines.h"
-#include "cli/args.h"
+#include "algorithms/model/model_io.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
-#include "cli/report.h"
 
 namespace erd::cli {
 
 namespace {
-
-// "erd-polylines 1" / NP / one line "n X1 Y1 ... Xn Yn" per polyline (NOTES.md).
-std::string polylines_text(const std::vector<Polyline>& lines) {
-    std::string out = "erd-polylines 1\n" + std::to_string(lines.size()) + "\n";
-    for (const Polyline& l : lines) {
-        out += std::to_string(l.size());
-        for (LatticePoint p : l) out += " " + std::to_string(p.x) + " " + std::to_string(p.y);
-        out += "\n";
-    }
-    return out;
-}
 
 // Edge map as an 8-bit image: 255 = edge, 0 = background.
 Image edge_image(const Grid<std::uint8_t>& edges) {
@@ -70,11 +59,13 @@ Image polyline_image(const Image& src, const std::vector<Polyline>& lines, bool 
     return im;
 }
 
-}  // namespace
-
-int cmd_edges(int argc, char** argv) {
-    Reporter rep("edges");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kEdges = {
+    "edges",
+    "erd edges IMAGE -o EDGES [-p POLYLINES] [--draw-polylines FILE] [-b beta -r r -e eps -l len]",
+    "Locates edges at half-pixel resolution (modified Canny on the bilinear interpolant,\n"
+    "thesis 3.4.1 step 1.1), traces them into polylines and simplifies them (steps 1.2, 1.3).\n"
+    "Statistics go to stderr.",
+    {
         {'o', "output", "FILE", "edge map, (2W-1) x (2H-1), 255 = edge (.png -> PNG, else PGM)"},
         {'p', "polylines", "FILE", "simplified polylines, format erd-polylines 1 (doubled coordinates)"},
         {0, "draw-polylines", "FILE", "picture of the simplified polylines (half-pixel grid, black on white)"},
@@ -85,31 +76,23 @@ int cmd_edges(int argc, char** argv) {
         {'l', "min-length", "N", "drop polylines traced with fewer than N points (default 5)"},
         {0, "length-after", nullptr, "count -l on the simplified polyline instead"},
         {0, "plain-canny", nullptr, "plain Canny (no junction repair of Ding and Goshtasby)"},
-        {'q', "quiet", nullptr, "no warnings or statistics"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage = "erd edges IMAGE -o EDGES [-p POLYLINES] [--draw-polylines FILE] [-b beta -r r -e eps -l len]";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.fail(st);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\nLocates edges at half-pixel resolution (modified Canny on the bilinear interpolant,\n"
-                    "thesis 3.4.1 step 1.1), traces them into polylines and simplifies them (steps 1.2, 1.3).\n"
-                    "Statistics go to stderr.\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (args.positional().size() != 1) return rep.fail(Status::bad_input("expected one IMAGE (see erd edges --help)"));
-    if (!args.has("output")) return rep.fail(Status::bad_input("missing -o EDGES (see erd edges --help)"));
+    },
+    "no warnings or statistics", 1, 1, "expected one IMAGE",
+};
 
+}  // namespace
+
+static int run_edges(const Args& args, const Reporter& rep) {
+    if (!args.has("output")) return rep.usage("missing -o EDGES");
+
+    Status st;
     // The library's defaults (algorithms/imaging/edge_polylines.h), as erd generate starts from.
     EdgePolylineParams params;
     params.canny.beta = args.real("beta", params.canny.beta, 1e-9, 1.0, &st);
     if (st) params.canny.r = args.real("ratio", params.canny.r, 0.0, 1.0, &st);
     if (st) params.epsilon = args.real("tolerance", params.epsilon, 0.0, 1e6, &st);
     if (st) params.min_length = int(args.integer("min-length", params.min_length, 0, 1000000000, &st));
-    if (!st) return rep.fail(st);
+    if (!st) return rep.usage(st.message);
     params.canny.modified = !args.has("plain-canny");
     if (args.has("length-after")) params.length_rule = LengthRule::after_simplification;
 
@@ -143,9 +126,13 @@ int cmd_edges(int argc, char** argv) {
             if (outs[i] != "-") std::remove(outs[i].c_str());
     };
     if (!(st = write_image(args.str("output"), edge_image(edges)))) return rep.fail(st);
-    if (args.has("polylines") && !(st = write_file_atomic(args.str("polylines"), polylines_text(lines)))) {
-        undo(1);
-        return rep.fail(st);
+    if (args.has("polylines")) {
+        std::string text;
+        write_polylines(lines, &text);
+        if (!(st = write_file_atomic(args.str("polylines"), text))) {
+            undo(1);
+            return rep.fail(st);
+        }
     }
     if (args.has("draw-polylines") && !(st = write_image(args.str("draw-polylines"), polyline_image(im, lines, args.has("over-image"))))) {
         undo(outs.size() - 1);
@@ -153,5 +140,7 @@ int cmd_edges(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_edges(int argc, char** argv) { return run_command(kEdges, argc, argv, run_edges); }
 
 }  // namespace erd::cli

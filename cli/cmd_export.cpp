@@ -4,55 +4,47 @@
 #include <vector>
 
 #include "algorithms/output/export.h"
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/model_file.h"
 #include "cli/output_format.h"
-#include "cli/report.h"
 
 namespace erd::cli {
 
-int cmd_export(int argc, char** argv) {
-    Reporter rep("export");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kExport = {
+    "export",
+    "erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]",
+    "Writes a .model or .erd mesh as a surface: x, y in pixels with y up (y = H-1 - row), z = value * Z,\n"
+    "faces counter-clockwise seen from above. For an ERD model every wedge becomes its own vertex copy,\n"
+    "so the surface is cut open along the constrained edges (the model's discontinuities).",
+    {
         {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront), FILE.ply (ASCII PLY) or FILE.stl (binary STL); \"-\" = stdout with --format"},
         {0, "format", "obj|ply|stl", "output format when the file name does not say (default: from the name)"},
         {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
         {'b', "base", "H", "STL: a solid with walls and a bottom, the surface lifted by H (basic models)"},
-        {'q', "quiet", nullptr, "no warnings"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage = "erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\n"
-                    "Writes a .model or .erd mesh as a surface: x, y in pixels with y up (y = H-1 - row), z = value * Z,\n"
-                    "faces counter-clockwise seen from above. For an ERD model every wedge becomes its own vertex copy,\n"
-                    "so the surface is cut open along the constrained edges (the model's discontinuities).\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (args.positional().size() != 1) return rep.usage("expected one MODEL", usage);
-    if (!args.has("output")) return rep.usage("-o OUT.obj or OUT.ply is required", usage);
+    },
+    "no warnings", 1, 1, "expected one MODEL",
+};
+
+static int run_export(const Args& args, const Reporter& rep) {
+    if (!args.has("output")) return rep.usage("-o OUT.obj or OUT.ply is required");
     const std::string in = args.positional()[0], out = args.str("output");
 
     ExportOptions opt;
     std::string format;
+    Status st;
     const bool stl = args.str("format") == "stl" || (args.str("format").empty() && has_extension(out, ".stl"));
     if (stl) opt.format = MeshFormat::stl;
-    else if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message + " (or .stl)", usage);
+    else if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message + " (or .stl)");
     else opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
     opt.zscale = args.real("zscale", 0, 0, 1e12, &st);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("zscale") && !(opt.zscale > 0)) return rep.usage("--zscale must be greater than 0", usage);
+    if (!st) return rep.usage(st.message);
+    if (args.has("zscale") && !(opt.zscale > 0)) return rep.usage("--zscale must be greater than 0");
     opt.base = args.real("base", 0, 0, 1e12, &st);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("base") && !(opt.base > 0)) return rep.usage("--base must be greater than 0", usage);
-    if (args.has("base") && !stl) return rep.usage("--base applies to STL output", usage);
+    if (!st) return rep.usage(st.message);
+    if (args.has("base") && !(opt.base > 0)) return rep.usage("--base must be greater than 0");
+    if (args.has("base") && !stl) return rep.usage("--base applies to STL output");
 
     st = refuse_overwrite(out, {in});
     if (!st) return rep.fail(st);
@@ -68,5 +60,7 @@ int cmd_export(int argc, char** argv) {
     if (!st) return rep.fail(st);
     return 0;
 }
+
+int cmd_export(int argc, char** argv) { return run_command(kExport, argc, argv, run_export); }
 
 }  // namespace erd::cli

@@ -16,12 +16,11 @@
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/progress.h"
-#include "cli/report.h"
 #include "cli/stats_json.h"
 #include "cli/suggest.h"
 
@@ -29,12 +28,14 @@ namespace erd::cli {
 
 namespace {
 
-const char* const kUsage =
-    "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--stats FILE] [--psnr-report] [-q]";
+std::string methods_help();
 
-const std::vector<OptionSpec>& specs() {
-    static const std::vector<OptionSpec> s = {
+const CommandLine kGenerate = {
+    "generate",
+    "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
+    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--stats FILE] [--psnr-report] [-q]",
+    "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
+    {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
         {'i', "input", "FILE", "input image, PGM or PNG (- = stdin)"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
@@ -64,11 +65,10 @@ const std::vector<OptionSpec>& specs() {
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
-        {'q', "quiet", nullptr, "no progress or timing lines"},
-        {'h', "help", nullptr, "this help"},
-    };
-    return s;
-}
+    },
+    "no progress or timing lines", 0, 0, nullptr,
+    methods_help,
+};
 
 std::string method_list() {
     std::size_t count = 0;
@@ -87,15 +87,7 @@ std::string unknown_method(const std::string& name) {
     return "unknown method '" + name + "'; available: " + method_names() + "." + did_you_mean(name, names);
 }
 
-std::string polylines_text(const std::vector<std::vector<LatticePoint>>& lines) {
-    std::string s = "erd-polylines 1\n" + std::to_string(lines.size()) + "\n";
-    for (const auto& line : lines) {
-        s += std::to_string(line.size());
-        for (LatticePoint p : line) s += " " + std::to_string(p.x) + " " + std::to_string(p.y);
-        s += "\n";
-    }
-    return s;
-}
+std::string methods_help() { return "\nMethods:\n" + method_list(); }
 
 std::string real_text(double v) {
     char buf[32];
@@ -146,42 +138,32 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
 
 }  // namespace
 
-int cmd_generate(int argc, char** argv) {
+static int run_generate(const Args& a, const Reporter& rep) {
     const auto t_start = std::chrono::steady_clock::now();
-    Reporter rep("generate");
-    Args a;
-    Status st = a.parse(argc, argv, 1, specs());
-    if (!st) return rep.usage(st.message, kUsage);
-    if (a.has("help")) {
-        std::printf("usage: %s\n\nMesh an image. N = round(D*W*H/100) with -d (default 3%%), or -n N.\n\n%s\nMethods:\n%s",
-                    kUsage, describe(specs()).c_str(), method_list().c_str());
-        return 0;
-    }
-    rep.set_quiet(a.has("quiet"));
-    if (!a.positional().empty()) return rep.usage("unexpected argument '" + a.positional()[0] + "'", kUsage);
-    if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")", kUsage);
+    if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")");
     const MethodInfo* method = find_method(a.str("method"));
-    if (!method) return rep.usage(unknown_method(a.str("method")), kUsage);
-    if (!a.has("input")) return rep.usage("-i IMAGE is required", kUsage);
-    if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)", kUsage);
+    if (!method) return rep.usage(unknown_method(a.str("method")));
+    if (!a.has("input")) return rep.usage("-i IMAGE is required");
+    if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)");
 
     GenerateOptions opt;
     int exit_mode = 0;
+    Status st;
     parse_options(a, &opt, &exit_mode, &st);
-    if (!st) return rep.usage(st.message, kUsage);
+    if (!st) return rep.usage(st.message);
 
     const std::string in = a.str("input"), out = a.str("output");
     const std::string tri = a.str("triangulation"), poly = a.str("polylines"), stats_out = a.str("stats");
-    if (a.has("triangulation") && tri.empty()) return rep.usage("empty -t file name", kUsage);
-    if (a.has("polylines") && poly.empty()) return rep.usage("empty -p file name", kUsage);
-    if (a.has("stats") && stats_out.empty()) return rep.usage("empty --stats file name", kUsage);
+    if (a.has("triangulation") && tri.empty()) return rep.usage("empty -t file name");
+    if (a.has("polylines") && poly.empty()) return rep.usage("empty -p file name");
+    if (a.has("stats") && stats_out.empty()) return rep.usage("empty --stats file name");
     std::vector<std::string> outs = {out};
     if (!tri.empty()) outs.push_back(tri);
     if (!poly.empty()) outs.push_back(poly);
     if (!stats_out.empty()) outs.push_back(stats_out);
     int to_stdout = 0;
     for (std::size_t i = 0; i < outs.size(); ++i) {
-        if (outs[i].empty()) return rep.usage("empty output file name", kUsage);
+        if (outs[i].empty()) return rep.usage("empty output file name");
         if (outs[i] == "-") ++to_stdout;
         st = refuse_overwrite(outs[i], {in});
         if (!st) return rep.fail(st);
@@ -190,7 +172,7 @@ int cmd_generate(int argc, char** argv) {
             if (!st) return rep.fail(Status::bad_input(outs[i] + ": named for two outputs"));
         }
     }
-    if (to_stdout > 1) return rep.usage("only one output can go to stdout", kUsage);
+    if (to_stdout > 1) return rep.usage("only one output can go to stdout");
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
@@ -252,14 +234,16 @@ int cmd_generate(int argc, char** argv) {
         wrote(tri);
     }
     if (!poly.empty()) {
-        st = write_file_atomic(poly, polylines_text(res.polylines));
+        std::string poly_bytes;
+        write_polylines(res.polylines, &poly_bytes);
+        st = write_file_atomic(poly, poly_bytes);
         if (!st) return fail_after_write(st);
         wrote(poly);
     }
     const double write_seconds = seconds_since(t0);
 
     // The reported PSNR is that of the model's own reconstruction: imgsyn for a basic model,
-    // 4x4-supersampled imgsyn_aa for an ERD model (NOTES.md).
+    // 4x4-supersampled imgsyn_aa for an ERD model (../shared/spec/NOTES.md).
     bool have_psnr = false;
     double db = 0.0, psnr_seconds = 0.0;
     if (a.has("psnr-report")) {
@@ -291,5 +275,7 @@ int cmd_generate(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_generate(int argc, char** argv) { return run_command(kGenerate, argc, argv, run_generate); }
 
 }  // namespace erd::cli

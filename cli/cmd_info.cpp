@@ -3,10 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
-#include "cli/report.h"
 
 namespace erd::cli {
 
@@ -20,31 +19,24 @@ static const char* format_key(ImageFormat f) {
     return "unknown";
 }
 
-int cmd_info(int argc, char** argv) {
-    Reporter rep("info");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kInfo = {
+    "info",
+    "erd info IMAGE [--json]",
+    "Prints the size, maxval, bits per sample, format and sample range of a PGM (P2, P5)\n"
+    "or PNG file (\"-\" reads stdin). The format is recognised from the content, not the name.",
+    {
         {0, "json", nullptr, "one JSON object on stdout"},
-        {'q', "quiet", nullptr, "no warnings"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage = "erd info IMAGE [--json]";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\nPrints the size, maxval, bits per sample, format and sample range of a PGM (P2, P5)\n"
-                    "or PNG file (\"-\" reads stdin). The format is recognised from the content, not the name.\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (args.positional().size() != 1) return rep.usage("expected one IMAGE", usage);
+    },
+    "no warnings", 1, 1, "expected one IMAGE",
+};
+
+static int run_info(const Args& args, const Reporter& rep) {
     const std::string path = args.positional()[0];
 
     Image im;
     std::string warning;
     ImageFormat fmt = ImageFormat::unknown;
-    st = read_image(path, &im, &warning, &fmt);
+    Status st = read_image(path, &im, &warning, &fmt);
     if (!st) return rep.fail(st);
     rep.warn(warning);
 
@@ -68,5 +60,7 @@ int cmd_info(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_info(int argc, char** argv) { return run_command(kInfo, argc, argv, run_info); }
 
 }  // namespace erd::cli

@@ -5,39 +5,32 @@
 #include <vector>
 
 #include "algorithms/model/metrics.h"
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
-#include "cli/report.h"
 
 namespace erd::cli {
 
-int cmd_psnr(int argc, char** argv) {
-    Reporter rep("psnr");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kPsnr = {
+    "psnr",
+    "erd psnr ORIGINAL APPROX [--json]",
+    "Prints the PSNR of APPROX against ORIGINAL in dB with 4 decimals (\"inf\" when they are\n"
+    "identical). Peak = 2^p - 1 with p = ceil(log2(maxval + 1)) of the original; PSNR =\n"
+    "10 log10(peak^2 / MSE). Both images must have the same size and maxval.",
+    {
         {0, "json", nullptr, "{\"mse\":..,\"peak\":..,\"psnr\":..} on stdout (psnr null when identical)"},
-        {'q', "quiet", nullptr, "no warnings"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage = "erd psnr ORIGINAL APPROX [--json]";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\nPrints the PSNR of APPROX against ORIGINAL in dB with 4 decimals (\"inf\" when they are\n"
-                    "identical). Peak = 2^p - 1 with p = ceil(log2(maxval + 1)) of the original; PSNR =\n"
-                    "10 log10(peak^2 / MSE). Both images must have the same size and maxval.\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (args.positional().size() != 2) return rep.usage("expected ORIGINAL and APPROX", usage);
+    },
+    "no warnings", 2, 2, "expected ORIGINAL and APPROX",
+};
+
+static int run_psnr(const Args& args, const Reporter& rep) {
     const std::string& a = args.positional()[0];
     const std::string& b = args.positional()[1];
-    if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin", usage);
+    if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin");
 
     Image orig, approx;
     std::string warning;
+    Status st;
     if (!(st = read_image(a, &orig, &warning))) return rep.fail(st);
     rep.warn(warning);
     if (!(st = read_image(b, &approx, &warning))) return rep.fail(st);
@@ -57,5 +50,7 @@ int cmd_psnr(int argc, char** argv) {
     }
     return 0;
 }
+
+int cmd_psnr(int argc, char** argv) { return run_command(kPsnr, argc, argv, run_psnr); }
 
 }  // namespace erd::cli

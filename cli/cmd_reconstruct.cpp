@@ -5,42 +5,35 @@
 
 #include "algorithms/model/model.h"
 #include "algorithms/model/reconstruct.h"
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/model_file.h"
-#include "cli/report.h"
 
 namespace erd::cli {
 
-int cmd_reconstruct(int argc, char** argv) {
-    Reporter rep("reconstruct");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kReconstruct = {
+    "reconstruct",
+    "erd reconstruct [MODEL] [-o OUT] [--no-aa] [--plain]",
+    "Rasterises a mesh model back into an image. MODEL is a .model (basic model: point\n"
+    "evaluation at every pixel, the thesis's imgsyn) or an .erd (ERD model: 4x4 supersampling,\n"
+    "imgsyn_aa, unless --no-aa); read from stdin when omitted or \"-\" (the kind is then told\n"
+    "from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
+    "over the vertices).",
+    {
         {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), else PGM"},
         {0, "no-aa", nullptr, "point evaluation at the pixels also for an .erd (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2), as the thesis's imgsyn did"},
-        {'q', "quiet", nullptr, "no warnings"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage = "erd reconstruct [MODEL] [-o OUT] [--no-aa] [--plain]";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\nRasterises a mesh model back into an image. MODEL is a .model (basic model: point\n"
-                    "evaluation at every pixel, the thesis's imgsyn) or an .erd (ERD model: 4x4 supersampling,\n"
-                    "imgsyn_aa, unless --no-aa); read from stdin when omitted or \"-\" (the kind is then told\n"
-                    "from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
-                    "over the vertices).\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (args.positional().size() > 1) return rep.usage("expected at most one MODEL", usage);
+    },
+    "no warnings", 0, 1, "expected at most one MODEL",
+};
+
+static int run_reconstruct(const Args& args, const Reporter& rep) {
     const std::string in = args.positional().empty() ? "-" : args.positional()[0];
     const std::string out = args.str("output", "-");
-    if (!(st = refuse_overwrite(out, {in}))) return rep.fail(st);
+    Status st = refuse_overwrite(out, {in});
+    if (!st) return rep.fail(st);
 
     Model model;
     ModelTopology topo;
@@ -55,5 +48,7 @@ int cmd_reconstruct(int argc, char** argv) {
     if (!(st = write_image(out, im, wo))) return rep.fail(st);
     return 0;
 }
+
+int cmd_reconstruct(int argc, char** argv) { return run_command(kReconstruct, argc, argv, run_reconstruct); }
 
 }  // namespace erd::cli

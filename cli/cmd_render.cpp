@@ -8,13 +8,12 @@
 
 #include "algorithms/model/reconstruct.h"
 #include "algorithms/output/render.h"
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/model_file.h"
 #include "cli/output_format.h"
-#include "cli/report.h"
 #include "third_party/stb_glue.h"
 
 namespace erd::cli {
@@ -72,9 +71,14 @@ static bool parse_crop(const std::string& s, RenderOptions* o) {
     return true;
 }
 
-int cmd_render(int argc, char** argv) {
-    Reporter rep("render");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kRender = {
+    "render",
+    "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--crop X,Y,W,H] [--vertices] [--no-edges]\n"
+    "                  [--over IMAGE | --over-reconstruction | --error ORIGINAL [--error-max E]]",
+    "Draws the triangulation of a .model or .erd file: ordinary edges thin and blue, constrained edges\n"
+    "(the model's discontinuities: where the two faces beside an edge of an .erd model give an endpoint\n"
+    "different values) thick and red. SVG is written as text; PNG is drawn with anti-aliased lines.",
+    {
         {'o', "output", "FILE", "output picture: FILE.svg or FILE.png (\"-\" = stdout with --format)"},
         {0, "format", "svg|png", "output format when the file name does not say"},
         {'s', "scale", "S", "output pixels per image pixel (default: 1, or the smallest integer making the larger side >= 512)"},
@@ -85,39 +89,26 @@ int cmd_render(int argc, char** argv) {
         {0, "over-reconstruction", nullptr, "draw over the model's own reconstruction (4x4 supersampled for .erd)"},
         {0, "error", "ORIGINAL", "draw over the error map |ORIGINAL - reconstruction| (black 0 .. white >= --error-max)"},
         {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
-        {'q', "quiet", nullptr, "no warnings"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage =
-        "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--crop X,Y,W,H] [--vertices] [--no-edges]\n"
-        "                  [--over IMAGE | --over-reconstruction | --error ORIGINAL [--error-max E]]";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\n"
-                    "Draws the triangulation of a .model or .erd file: ordinary edges thin and blue, constrained edges\n"
-                    "(the model's discontinuities: where the two faces beside an edge of an .erd model give an endpoint\n"
-                    "different values) thick and red. SVG is written as text; PNG is drawn with anti-aliased lines.\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (args.positional().size() != 1) return rep.usage("expected one MODEL", usage);
-    if (!args.has("output")) return rep.usage("-o OUT.svg or OUT.png is required", usage);
+    },
+    "no warnings", 1, 1, "expected one MODEL",
+};
+
+static int run_render(const Args& args, const Reporter& rep) {
+    if (!args.has("output")) return rep.usage("-o OUT.svg or OUT.png is required");
     const std::string in = args.positional()[0], out = args.str("output");
     std::string format;
-    if (!(st = output_format(args.str("format"), out, "svg", "png", &format))) return rep.usage(st.message, usage);
+    Status st = output_format(args.str("format"), out, "svg", "png", &format);
+    if (!st) return rep.usage(st.message);
     int backgrounds = int(args.has("over")) + int(args.has("over-reconstruction")) + int(args.has("error"));
-    if (backgrounds > 1) return rep.usage("give at most one of --over, --over-reconstruction, --error", usage);
+    if (backgrounds > 1) return rep.usage("give at most one of --over, --over-reconstruction, --error");
 
     RenderOptions opt;
     opt.scale = args.real("scale", 0, 1e-3, 1e4, &st);
-    if (!st) return rep.usage(st.message, usage);
+    if (!st) return rep.usage(st.message);
     if (args.has("crop") && !parse_crop(args.str("crop"), &opt))
-        return rep.usage("--crop wants X,Y,W,H (integers, W and H > 0), not '" + args.str("crop") + "'", usage);
+        return rep.usage("--crop wants X,Y,W,H (integers, W and H > 0), not '" + args.str("crop") + "'");
     double error_max = args.real("error-max", 0, 1e-9, 1e9, &st);
-    if (!st) return rep.usage(st.message, usage);
+    if (!st) return rep.usage(st.message);
     opt.vertices = args.has("vertices");
     opt.edges = !args.has("no-edges");
 
@@ -191,5 +182,7 @@ int cmd_render(int argc, char** argv) {
     if (!st) return rep.fail(st);
     return 0;
 }
+
+int cmd_render(int argc, char** argv) { return run_command(kRender, argc, argv, run_render); }
 
 }  // namespace erd::cli

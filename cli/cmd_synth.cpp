@@ -4,16 +4,18 @@
 #include <vector>
 
 #include "algorithms/imaging/synth.h"
-#include "cli/args.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
-#include "cli/report.h"
 
 namespace erd::cli {
 
-int cmd_synth(int argc, char** argv) {
-    Reporter rep("synth");
-    static const std::vector<OptionSpec> specs = {
+const CommandLine kSynth = {
+    "synth",
+    "erd synth [-W 256 -H 256 --bits 8|16 --seed N] -o FILE",
+    "Writes a deterministic test image: a smooth ramp and bump, two discs, a triangle and a\n"
+    "slanted step with sharp edges, and mild noise. The same options give the same bytes.",
+    {
         {'W', "width", "N", "width in pixels (default 256)"},
         {'H', "height", "N", "height in pixels (default 256)"},
         {0, "bits", "B", "bits per sample, 1..16 (default 8): maxval = 2^B - 1"},
@@ -21,30 +23,21 @@ int cmd_synth(int argc, char** argv) {
         {0, "no-noise", nullptr, "leave out the noise"},
         {'o', "output", "FILE", "output: .png (8 bits at most) or PGM; \"-\" = stdout"},
         {0, "plain", nullptr, "write plain PGM (P2) instead of raw (P5)"},
-        {'q', "quiet", nullptr, "no messages"},
-        {'h', "help", nullptr, "show this help"},
-    };
-    const char* usage = "erd synth [-W 256 -H 256 --bits 8|16 --seed N] -o FILE";
-    Args args;
-    Status st = args.parse(argc, argv, 1, specs);
-    if (!st) return rep.usage(st.message, usage);
-    if (args.has("help")) {
-        std::printf("usage: %s\n\nWrites a deterministic test image: a smooth ramp and bump, two discs, a triangle and a\n"
-                    "slanted step with sharp edges, and mild noise. The same options give the same bytes.\n\n%s",
-                    usage, describe(specs).c_str());
-        return 0;
-    }
-    rep.set_quiet(args.has("quiet"));
-    if (!args.positional().empty()) return rep.usage("unexpected argument '" + args.positional()[0] + "'", usage);
-    if (!args.has("output")) return rep.usage("missing -o FILE", usage);
+    },
+    "no messages",
+};
 
+static int run_synth(const Args& args, const Reporter& rep) {
+    if (!args.has("output")) return rep.usage("missing -o FILE");
+
+    Status st;
     SynthParams p;
     p.width = int(args.integer("width", 256, 1, kMaxImageSide, &st));
     p.height = int(args.integer("height", 256, 1, kMaxImageSide, &st));
     p.bits = int(args.integer("bits", 8, 1, 16, &st));
     p.seed = std::uint64_t(args.integer("seed", 1, 0, (long long)(~0ull >> 1), &st));
     p.noise = !args.has("no-noise");
-    if (!st) return rep.usage(st.message, usage);
+    if (!st) return rep.usage(st.message);
 
     Image im;
     if (!(st = synth(p, &im))) return rep.fail(st);
@@ -56,5 +49,7 @@ int cmd_synth(int argc, char** argv) {
                              std::to_string(im.maxval) + ")");
     return 0;
 }
+
+int cmd_synth(int argc, char** argv) { return run_command(kSynth, argc, argv, run_synth); }
 
 }  // namespace erd::cli

@@ -25,7 +25,8 @@ int cmd_export(int argc, char** argv);
 // The thesis's seven programs (Appendix A.5), reached through argv[0] (issue: packaging).
 int thesis_alias(const char* name, int argc, char** argv, bool* handled);
 
-// The static table (cli/main.cpp).
-const Command* commands(int* count);
+// The whole program without main's process setup: argv[0] picks a thesis alias, argv[1] the
+// subcommand; returns the exit status (cli/main.cpp).
+int run(int argc, char** argv);
 
 }  // namespace erd::cli

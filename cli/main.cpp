@@ -33,11 +33,6 @@ static const Command kCommands[] = {
     {"help", "list subcommands, or show one's help", cmd_help},
 };
 
-const Command* commands(int* count) {
-    *count = int(sizeof kCommands / sizeof kCommands[0]);
-    return kCommands;
-}
-
 static const Command* find_command(const char* name) {
     for (const auto& c : kCommands)
         if (std::strcmp(c.name, name) == 0) return &c;
@@ -96,7 +91,7 @@ namespace {
 // Not under Valgrind: its tools run glibc's allocator in a brk segment of a few MB, and heap
 // growth beyond it fails (std::bad_alloc on lena). Valgrind always preloads its vgpreload_*
 // objects, which is how it is recognised here.
-void tune_allocator() {
+[[maybe_unused]] void tune_allocator() {
 #if defined(__GLIBC__)
     const char* preload = std::getenv("LD_PRELOAD");
     if (preload && std::strstr(preload, "vgpreload")) return;
@@ -106,9 +101,7 @@ void tune_allocator() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    using namespace erd::cli;
-    tune_allocator();
+int erd::cli::run(int argc, char** argv) {
     const char* self = argc > 0 && argv[0] ? argv[0] : "erd";
     const char* base = std::strrchr(self, '/');
     base = base ? base + 1 : self;
@@ -124,3 +117,11 @@ int main(int argc, char** argv) {
     if (!c) return unknown(sub);
     return flush_stdout(sub, c->run(argc - 1, argv + 1));
 }
+
+// The Python extension links the CLI without this main and calls run() (python/erd/__main__.py).
+#ifndef ERD_CLI_NO_MAIN
+int main(int argc, char** argv) {
+    tune_allocator();
+    return erd::cli::run(argc, argv);
+}
+#endif

@@ -12,9 +12,9 @@ int Reporter::fail(const Status& st) const {
     return st.exit_code();
 }
 
-int Reporter::usage(const std::string& message, const std::string& usage_line) const {
+int Reporter::usage(const std::string& message) const {
     std::fprintf(stderr, "erd %s: %s\nusage: %s\n(erd %s --help for details)\n", sub_.c_str(), message.c_str(),
-                 usage_line.c_str(), sub_.c_str());
+                 usage_.c_str(), sub_.c_str());
     return 2;
 }
 

@@ -11,7 +11,8 @@ namespace erd::cli {
 
 class Reporter {
 public:
-    explicit Reporter(std::string sub) : sub_(std::move(sub)) {}
+    // sub: the subcommand's name; usage_line: its usage, for usage errors.
+    Reporter(std::string sub, std::string usage_line) : sub_(std::move(sub)), usage_(std::move(usage_line)) {}
 
     // -q/--quiet: drop warnings and progress (errors are always printed).
     void set_quiet(bool q) { quiet_ = q; }
@@ -19,8 +20,8 @@ public:
 
     // Prints "erd SUB: message" and returns st.exit_code() (0 prints nothing).
     int fail(const Status& st) const;
-    // A usage error: "erd SUB: message" plus "usage: erd SUB ..." and a pointer to --help; returns 2.
-    int usage(const std::string& message, const std::string& usage_line) const;
+    // A usage error: "erd SUB: message" plus the usage line and a pointer to --help; returns 2.
+    int usage(const std::string& message) const;
     // "erd SUB: warning: message" unless quiet; empty messages print nothing (may hold several lines).
     void warn(const std::string& message) const;
     // "erd SUB: message" unless quiet: progress, timings.
@@ -28,6 +29,7 @@ public:
 
 private:
     std::string sub_;
+    std::string usage_;
     bool quiet_ = false;
 };
 

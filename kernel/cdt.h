@@ -174,7 +174,7 @@ public:
     // an interior constrained edge (so wedges are contiguous runs), if v has one.
     void corners_around(VertInd v, std::vector<EdgeInd>* out) const;
 
-    // Number of wedges of v (NOTES.md): with k incident interior constrained edges (hull edges
+    // Number of wedges of v (../shared/spec/NOTES.md): with k incident interior constrained edges (hull edges
     // excluded), an interior vertex has k wedges if k >= 2, else 1; a boundary vertex has k+1.
     std::uint32_t wedge_count(VertInd v) const;
     // The wedge of the corner e (a half-edge leaving v = org(e)): kOnlyWedge when v has one wedge,

@@ -47,12 +47,6 @@ inline std::int64_t orient2d(LatticePoint a, LatticePoint b, LatticePoint c) {
     return abx * acy - acx * aby;
 }
 
-// Sign of orient2d: -1, 0 or +1.
-inline int orient_sign(LatticePoint a, LatticePoint b, LatticePoint c) {
-    const std::int64_t o = orient2d(a, b, c);
-    return (o > 0) - (o < 0);
-}
-
 // Exclusive bound of the coordinates for which incircle is exact in int64 (see the top).
 constexpr std::int32_t kSmallCoord = std::int32_t(1) << 14;
 

@@ -1,10 +1,18 @@
 // Test helpers shared by the CLI-level tests: a temporary folder that cleans up after itself,
-// file helpers, and a runner for the real `erd` binary (env ERD_BIN, default build/erd).
+// file helpers, a runner for the real `erd` binary (env ERD_BIN, default build/erd), and the rule
+// for inputs a test cannot find.
+//
+// Tests must be able to fail: an input a test needs and does not find (the erd binary, the thesis
+// images, the source tree) fails the test, unless the run allows skipping with ERD_ALLOW_SKIP=1;
+// then a warning names what was skipped. `make test` and `make unit` do not set it.
 #pragma once
+#include <catch2/catch.hpp>
+
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -13,10 +21,11 @@
 
 namespace erd_test {
 
-// Absolute, so tests may run it from another folder.
-inline std::string erd_bin() {
-    const char* b = std::getenv("ERD_BIN");
-    std::string bin = b && *b ? b : "build/erd";
+// $VAR, else fallback, made absolute against the current folder (so tests may run it from
+// another folder).
+inline std::string path_from_env(const char* var, const char* fallback) {
+    const char* b = std::getenv(var);
+    std::string bin = b && *b ? b : fallback;
     if (!bin.empty() && bin[0] != '/') {
         char* cwd = ::getcwd(nullptr, 0);
         if (cwd) bin = std::string(cwd) + "/" + bin;
@@ -24,6 +33,8 @@ inline std::string erd_bin() {
     }
     return bin;
 }
+
+inline std::string erd_bin() { return path_from_env("ERD_BIN", "build/erd"); }
 
 // Single-quotes s for /bin/sh.
 inline std::string sh_quote(const std::string& s) {
@@ -99,6 +110,21 @@ inline RunResult run_shell(const std::string& cmd) {
     return r;
 }
 
+// Runs `sh -c "cd DIR && CMD"`, capturing stdout and stderr.
+inline RunResult run_in(const std::string& dir, const std::string& cmd) {
+    // Braces so the command's own redirections (imgsyn < m > out.pnm) win over the capture.
+    return run_shell("cd " + sh_quote(dir) + " && { " + cmd + " ; }");
+}
+
+// The path with symbolic links and dots resolved (p itself when it does not exist).
+inline std::string absolute(const std::string& p) {
+    char buf[PATH_MAX];
+    return ::realpath(p.c_str(), buf) ? std::string(buf) : p;
+}
+
+// The thesis's seven program names (Appendix A.5), which the erd binary answers to.
+inline const char* const kAliases[] = {"ywb", "gpi", "erd_ed", "erd_gpi", "imgsyn", "imgsyn_aa", "Cal_PSNR"};
+
 // Runs `sh -c "PREFIX ERD ARGS"`; args are passed to the shell as written (quote paths with sh_quote).
 inline RunResult run_erd(const std::string& args, const std::string& prefix = "") {
     return run_shell(prefix + " " + sh_quote(erd_bin()) + " " + args);
@@ -108,5 +134,33 @@ inline bool binary_available() {
     struct stat st;
     return ::stat(erd_bin().c_str(), &st) == 0 && (st.st_mode & S_IXUSR);
 }
+
+// ERD_ALLOW_SKIP=1: a missing input skips the test (with a warning) instead of failing it.
+inline bool skip_allowed() {
+    const char* s = std::getenv("ERD_ALLOW_SKIP");
+    return s && std::string(s) == "1";
+}
+
+// True when found; otherwise a failed check naming `missing` (a warning under ERD_ALLOW_SKIP=1),
+// and the caller returns.
+inline bool have_input(bool found, const std::string& missing) {
+    if (found) return true;
+    if (skip_allowed()) {
+        WARN("skipped (ERD_ALLOW_SKIP=1): " << missing);
+    } else {
+        FAIL_CHECK(missing << " (ERD_ALLOW_SKIP=1 skips instead of failing)");
+    }
+    return false;
+}
+
+// ERD_REGENERATE=1: the tests that compare a generated doc with the committed file (docs/HOSTILE.md,
+// docs/hostile_images.md; tag [generated]) rewrite it instead. `make regenerate` sets it.
+inline bool regenerate_requested() {
+    const char* s = std::getenv("ERD_REGENERATE");
+    return s && std::string(s) == "1";
+}
+
+// The erd binary, for the tests that run it: `if (!need_binary()) return;`.
+inline bool need_binary() { return have_input(binary_available(), "no erd binary at " + erd_bin() + " (set ERD_BIN)"); }
 
 }  // namespace erd_test

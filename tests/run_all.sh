@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# `make test`: the unit tests, the same tests under ASan+UBSan, and a short run of every fuzz
-# target. Counts test cases (a fuzz target counts as one) and ends with "N passed, M failed".
+# `make test`: the layer check, the unit tests, the same tests under ASan+UBSan, and a short run
+# of every fuzz target. Counts test cases (a fuzz target and the layer check count as one each)
+# and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
+# (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
+unset ERD_ALLOW_SKIP ERD_REGENERATE
 cd "$(dirname "$0")/.."
 IMAGES=${IMAGES:-../shared/images}
 passed=0
@@ -28,9 +31,13 @@ count_catch() {
 
 stage_start=$SECONDS
 stage() { echo "   ($(( SECONDS - stage_start )) s)"; stage_start=$SECONDS; }
+echo "== layer check (tools/check_layers.sh, counts as one test)"
+if bash tools/check_layers.sh; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+
+stage
 echo "== build"
 if ! make -s -j2 build/erd build/erd_tests; then
-    echo "build failed"; echo "0 passed, 1 failed"; exit 1
+    echo "build failed"; echo "$passed passed, $((failed + 1)) failed"; exit 1
 fi
 
 # An -O0 build of the binary only (no tests): tests/test_robustness.cpp compares its generate
@@ -72,6 +79,31 @@ if make -s -j2 embedded >"$log/embedded" 2>&1; then
     passed=$((passed + 1))
 else
     tail -20 "$log/embedded"; echo "embedded build or example failed"; failed=$((failed + 1))
+fi
+
+stage
+echo "== python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
+if make -s python >"$log/python-build" 2>&1; then
+    grep '^python: built' "$log/python-build" || true
+    images_abs=$(cd "$IMAGES" 2>/dev/null && pwd)
+    (cd python && ERD_BIN=$PWD/../build/erd ERD_IMAGES=$images_abs PYTHONPATH=$PWD \
+        /usr/bin/python3 -m pytest -q -p no:cacheprovider tests) >"$log/pytest" 2>&1
+    rc=$?
+    tail -3 "$log/pytest"
+    line=$(tail -1 "$log/pytest"); p=0; f=0   # "1 failed, 54 passed in 9.1s", "2 errors in ..."
+    [[ $line =~ ([0-9]+)\ passed ]] && p=${BASH_REMATCH[1]}
+    [[ $line =~ ([0-9]+)\ failed ]] && f=${BASH_REMATCH[1]}
+    [[ $line =~ ([0-9]+)\ error ]] && f=$((f + BASH_REMATCH[1]))
+    [[ $rc -ne 0 && $f -eq 0 ]] && f=1   # pytest crashed, collected nothing or could not start
+    passed=$((passed + p)); failed=$((failed + f))
+    # pip install into a fresh venv made with --system-site-packages (reuses make python's objects).
+    if make -s python-venv-check >"$log/venv" 2>&1; then
+        grep '^python-venv-check' "$log/venv"; passed=$((passed + 1))
+    else
+        tail -20 "$log/venv"; echo "pip install into a venv failed"; failed=$((failed + 1))
+    fi
+else
+    tail -20 "$log/python-build"; echo "python package build failed (pybind11, numpy or pytest missing?)"; failed=$((failed + 1))
 fi
 
 stage

@@ -26,7 +26,7 @@ Image make(int w, int h, std::uint32_t maxval, std::vector<std::uint16_t> v) {
 }  // namespace
 
 TEST_CASE("erd help, --help, --version, help SUB, SUB --help", "[cli]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     RunResult h = run_erd("help");
     CHECK(h.status == 0);
     for (const char* sub : {"generate", "reconstruct", "psnr", "info", "synth"}) CHECK_THAT(h.out, Catch::Contains(sub));
@@ -51,7 +51,7 @@ TEST_CASE("erd help, --help, --version, help SUB, SUB --help", "[cli]") {
 }
 
 TEST_CASE("unknown subcommand: did you mean; bad options: usage and exit 2", "[cli]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     RunResult r = run_erd("synht");
     CHECK(r.status == 2);
     CHECK_THAT(r.err, Catch::Contains("'synht' is not a subcommand"));
@@ -87,7 +87,7 @@ TEST_CASE("unknown subcommand: did you mean; bad options: usage and exit 2", "[c
 }
 
 TEST_CASE("missing and unreadable inputs: one line, exit 2", "[cli]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     TempDir dir;
     RunResult r = run_erd("info " + sh_quote(dir.file("nope.pgm")));
     CHECK(r.status == 2);
@@ -150,10 +150,7 @@ TEST_CASE("write_file_atomic: replaces whole files, keeps the mode, leaves no te
 TEST_CASE("write failures report the OS error and leave nothing behind", "[io]") {
     TempDir dir;
     SECTION("/dev/full") {
-        if (!exists("/dev/full")) {
-            WARN("no /dev/full here; skipped");
-            return;
-        }
+        if (!have_input(exists("/dev/full"), "no /dev/full here")) return;
         erd::Status s = erd::cli::write_file_atomic("/dev/full", "data");
         CHECK(s.code == erd::Code::runtime);
         CHECK(s.message == "/dev/full: No space left on device");
@@ -192,11 +189,8 @@ TEST_CASE("write failures report the OS error and leave nothing behind", "[io]")
 }
 
 TEST_CASE("printed output that cannot be written fails the run (info, psnr, help to /dev/full)", "[cli]") {
-    REQUIRE(binary_available());
-    if (!exists("/dev/full")) {
-        WARN("no /dev/full here; skipped");
-        return;
-    }
+    if (!need_binary()) return;
+    if (!have_input(exists("/dev/full"), "no /dev/full here")) return;
     TempDir dir;
     REQUIRE(run_erd("synth -o " + sh_quote(dir.file("a.pgm")) + " -W 8 -H 8").status == 0);
     const std::string a = sh_quote(dir.file("a.pgm"));
@@ -210,7 +204,7 @@ TEST_CASE("printed output that cannot be written fails the run (info, psnr, help
 }
 
 TEST_CASE("erd synth: a failed write leaves no partial file and keeps the old one", "[io][cli]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     TempDir dir;
     if (exists("/dev/full")) {
         RunResult full = run_erd("synth -o /dev/full");
@@ -309,7 +303,7 @@ TEST_CASE("psnr and mse by hand-computed examples", "[cli][io]") {
 }
 
 TEST_CASE("erd psnr prints 4 decimals, inf, JSON, and refuses mismatches", "[cli]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     TempDir dir;
     REQUIRE(erd::cli::write_image(dir.file("a.pgm"), make(2, 2, 255, {0, 50, 100, 200})).ok());
     REQUIRE(erd::cli::write_image(dir.file("b.png"), make(2, 2, 255, {3, 50, 96, 200})).ok());
@@ -369,7 +363,7 @@ TEST_CASE("synth is deterministic: same bytes twice, seeds differ, library agree
     bad.height = 1;
     CHECK(erd::synth(bad, &c).ok());
 
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     TempDir dir;
     std::string f1 = dir.file("1.pgm"), f2 = dir.file("2.pgm");
     REQUIRE(run_erd("synth -q -W 64 -H 48 --seed 7 -o " + sh_quote(f1)).status == 0);
@@ -405,7 +399,7 @@ TEST_CASE("synth bytes are pinned: the same at every optimisation level and on e
 }
 
 TEST_CASE("writing over an input is refused through the real commands, and the input survives", "[cli][io]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     TempDir dir;
     std::string img = dir.file("a.pgm");
     REQUIRE(run_erd("synth -q -W 16 -H 12 -o " + sh_quote(img)).status == 0);

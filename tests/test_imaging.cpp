@@ -1,5 +1,6 @@
-// Image analysis (algorithms/filters, mmsodd, bilinear, canny, thinning, polylines,
-// douglas_peucker, error_diffusion): hand-worked values.
+// Image analysis for step 1 of the ERD methods (algorithms/imaging: filters, bilinear, canny,
+// thinning, polylines, douglas_peucker): hand-worked values. MMSODD and error diffusion:
+// test_error_diffusion.cpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,23 +11,16 @@
 #include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/douglas_peucker.h"
-#include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/filters.h"
-#include "algorithms/imaging/mmsodd.h"
 #include "algorithms/imaging/polylines.h"
 #include "algorithms/imaging/thinning.h"
+#include "tests/test_grid_util.h"
 
 using namespace erd;
+using erd_test::Lcg;
+using erd_test::make_grid;
 
 namespace {
-
-template <class F>
-Grid<double> make_grid(int w, int h, F f) {
-    Grid<double> g(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) g(x, y) = f(double(x), double(y));
-    return g;
-}
 
 Grid<std::uint8_t> make_map(const std::vector<const char*>& rows) {
     Grid<std::uint8_t> m(int(std::string(rows[0]).size()), int(rows.size()), 0);
@@ -66,12 +60,6 @@ std::vector<int> components(const Grid<std::uint8_t>& m) {
     }
     return lab;
 }
-
-// A deterministic pseudo-random sequence (LCG), for synthetic test images.
-struct Lcg {
-    std::uint32_t s;
-    double next() { s = s * 1664525u + 1013904223u; return double(s >> 8) / double(1u << 24); }
-};
 
 }  // namespace
 
@@ -124,30 +112,6 @@ TEST_CASE("derivatives of polynomials: exact inside, zero extension at the borde
     const Grid<double> once = convolve_rows(cube, comp);
     const Grid<double> twice = convolve_rows(convolve_rows(cube, binomial_taps(5)), derivative1_taps());
     for (int x = 3; x < 7; ++x) CHECK(once(x, 0) == Approx(twice(x, 0)).epsilon(1e-12));
-}
-
-TEST_CASE("MMSODD of x^2 + y^2, x*y, and a constant at the border", "[imaging]") {
-    CHECK(mmsodd_value(2, 2, 0) == 2.0);
-    CHECK(mmsodd_value(0, 0, 1) == 1.0);
-    CHECK(mmsodd_value(3, -1, 0) == 3.0);  // eigenvalues 3 and -1
-    CHECK(mmsodd_value(0, 0, -2) == 2.0);
-    const Grid<double> bowl = make_grid(16, 14, [](double x, double y) { return x * x + y * y; });
-    const Grid<double> saddle = make_grid(16, 14, [](double x, double y) { return x * y; });
-    for (int order : {1, 3, 5}) {
-        const int margin = order / 2 + 1;
-        const Grid<double> db = mmsodd(bowl, order), ds = mmsodd(saddle, order);
-        for (int y = margin; y < 14 - margin; ++y)
-            for (int x = margin; x < 16 - margin; ++x) {
-                CHECK(db(x, y) == Approx(2.0).epsilon(1e-12));
-                CHECK(ds(x, y) == Approx(1.0).epsilon(1e-12));
-            }
-    }
-    // Constant 10, no smoothing, zero extension: at the corner fxx = fyy = 10(0 - 2 + 1) = -10,
-    // fxy = (5 - 0)/2 = 2.5, so l1 = -10, l2 = 2.5 and d = 12.5. Inside: 0.
-    const Grid<double> flat(6, 5, 10.0);
-    const Grid<double> df = mmsodd(flat, 1);
-    CHECK(df(0, 0) == 12.5);
-    CHECK(df(2, 2) == 0.0);
 }
 
 TEST_CASE("phi_bar interpolates the samples and resamples onto the half-pixel grid", "[imaging]") {
@@ -503,78 +467,4 @@ TEST_CASE("Douglas-Peucker keeps exactly the expected points", "[imaging]") {
     Polyline zig;
     for (int i = 0; i < 200000; ++i) zig.push_back({i, (i % 2) * 3});
     CHECK(douglas_peucker(zig, 1.0).size() == zig.size());
-}
-
-TEST_CASE("error diffusion returns the exact count from 4 to W*H/2", "[imaging]") {
-    const int w = 40, h = 30;
-    Lcg rng{99};
-    const std::vector<Grid<double>> densities = {
-        make_grid(w, h, [](double x, double y) { return (x + 1) * (y + 2) / (w * double(h + 1)); }),
-        make_grid(w, h, [](double x, double y) { return std::exp(-((x - 20) * (x - 20) + (y - 12) * (y - 12)) / 60.0); }),
-        make_grid(w, h, [&](double, double) { return rng.next(); }),
-        make_grid(w, h, [](double x, double y) { return (int(x) / 5 + int(y) / 5) % 2 ? 1.0 : 0.1; }),
-    };
-    std::vector<std::size_t> counts = {4, 5, 7, 12, 30, 57, 100, 150, 222, 300, 451, 599, 600};
-    for (std::size_t img = 0; img < densities.size(); ++img)
-        for (Startup mode : {Startup::none, Startup::mirror, Startup::force})
-            for (std::size_t k : counts) {
-                DiffusionParams dp;
-                dp.startup = mode;
-                DiffusionResult r;
-                REQUIRE(select_points(densities[img], k, dp, &r).ok());
-                INFO("image " << img << " mode " << int(mode) << " count " << k << " got " << r.points.size());
-                CHECK(r.exact);
-                CHECK(r.points.size() == k);
-                CHECK(std::is_sorted(r.points.begin(), r.points.end(), [](LatticePoint a, LatticePoint b) {
-                    return a.y != b.y ? a.y < b.y : a.x < b.x;
-                }));
-            }
-}
-
-TEST_CASE("error diffusion: density, mask, pass counts, bad input", "[imaging]") {
-    const Grid<double> d = make_grid(4, 1, [](double x, double) { return x; });
-    const Grid<double> s = ed_density(d, 1.0);
-    CHECK(s(1, 0) == Approx(1.0 / 3));
-    CHECK(ed_density(d, 0.5)(1, 0) == Approx(std::sqrt(1.0 / 3)));
-    CHECK(ed_density(Grid<double>(3, 3, 0.0), 1.0)(1, 1) == 0.0);
-    // One row of density 1/2 with rho 1/2: v = 1/2 fires, error -1/2 carried 7/16 ahead, so the
-    // next pixel has 1/2 - 7/32 < 1/2 and stays off; the third fires again.
-    const Grid<double> half(3, 1, 0.5);
-    std::vector<LatticePoint> pts;
-    CHECK(diffuse(half, 0.5, DiffusionParams(), &pts) == 2);
-    CHECK(pts == std::vector<LatticePoint>{{0, 0}, {4, 0}});
-    // Forbidden points are never chosen.
-    Lcg rng{5};
-    const Grid<double> dens = make_grid(30, 20, [&](double, double) { return rng.next(); });
-    Grid<std::uint8_t> forbid(30, 20, 0);
-    for (int y = 0; y < 20; ++y) forbid(10, y) = forbid(11, y) = 1;
-    DiffusionParams dp;
-    dp.forbidden = &forbid;
-    DiffusionResult r;
-    REQUIRE(select_points(dens, 120, dp, &r).ok());
-    CHECK(r.exact);
-    for (LatticePoint q : r.points) CHECK(!forbid(q.x / 2, q.y / 2));
-    // Bad input.
-    Grid<std::uint8_t> wrong(3, 3, 0);
-    dp.forbidden = &wrong;
-    CHECK(select_points(dens, 10, dp, &r).code == Code::input);
-    Grid<double> neg(3, 3, 1.0);
-    neg(1, 1) = -1;
-    CHECK(select_points(neg, 2, DiffusionParams(), &r).code == Code::input);
-    CHECK(select_points(Grid<double>(), 2, DiffusionParams(), &r).code == Code::input);
-    // Zero count is trivially exact; an all-zero density cannot give points.
-    REQUIRE(select_points(dens, 0, DiffusionParams(), &r).ok());
-    CHECK(r.exact);
-    CHECK(r.points.empty());
-    REQUIRE(select_points(Grid<double>(5, 5, 0.0), 3, DiffusionParams(), &r).ok());
-    CHECK_FALSE(r.exact);
-    // Edge pixels of a half-pixel map.
-    Grid<std::uint8_t> hp(5, 3, 0);
-    hp(2, 2) = 1;
-    hp(3, 0) = 1;  // between pixels: not a pixel
-    const Grid<std::uint8_t> px = edge_pixels(hp);
-    REQUIRE(px.width == 3);
-    REQUIRE(px.height == 2);
-    CHECK(px(1, 1) == 1);
-    CHECK(std::count(px.data.begin(), px.data.end(), 1) == 1);
 }

@@ -13,7 +13,7 @@
 #include "algorithms/methods/scaffold.h"
 #include "api/erd.h"
 #include "tests/erd_run.h"
-#include "tests/people_util.h"
+#include "tests/output_util.h"
 
 using namespace erd;
 
@@ -88,7 +88,7 @@ TEST_CASE("exact-count policy and the thesis preset live in the library", "[meth
 }
 
 TEST_CASE("step 1 has one home: the ERD initial mesh uses the polylines edge_polylines gives", "[methods]") {
-    const Image im = people_test::wave_disc_image();  // 40 x 30 with a disc: step 1 finds its edge
+    const Image im = output_test::wave_disc_image();  // 40 x 30 with a disc: step 1 finds its edge
     EdgePolylineParams p;  // library defaults: beta 0.055, r 0.4, l 5, epsilon one pixel
     EdgePolylineResult chain;
     REQUIRE(edge_polylines(im, p, &chain).ok());
@@ -115,7 +115,7 @@ TEST_CASE("step 1 has one home: the ERD initial mesh uses the polylines edge_pol
 }
 
 TEST_CASE("typed statistics: each method fills its stages, the printed lines come from them", "[methods]") {
-    const Image im = people_test::wave_disc_image();
+    const Image im = output_test::wave_disc_image();
     GenerateOptions o;
     o.points = 120;
     for (const char* name : {"ed", "gpi", "erded", "erdgpi"}) {

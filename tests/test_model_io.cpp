@@ -1,4 +1,4 @@
-// Model files: .model, .erd and -t round trips, lenient reading, and one message per malformed case.
+// Model files: .model, .erd, -t and -p round trips, lenient reading, and one message per malformed case.
 #include <catch2/catch.hpp>
 
 #include <charconv>
@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/edge_polylines.h"
+#include "algorithms/imaging/polylines.h"
+#include "algorithms/imaging/synth.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
 #include "algorithms/model/reconstruct.h"
@@ -310,4 +313,60 @@ TEST_CASE("model_io: triangulation files (-t)", "[model_io]") {
           "the vertices span 3 x 3 pixels, not the 4 x 3 of the header");
     CHECK(err("erd-triangulation 1\n3 3\n4\n0 0\n4 0\n0 4\n4 4\n2\n0 1 3\n0 3 2\n0\n7\n") ==
           "line 12: unexpected '7' after the last constraint (check the counts)");
+}
+
+TEST_CASE("model_io: polylines files (-p) round-trip", "[model_io]") {
+    // The polylines of step 1 on the synthetic test image: many, of every length.
+    erd::SynthParams sp;
+    sp.width = 160;
+    sp.height = 120;
+    erd::Image im;
+    REQUIRE(erd::synth(sp, &im).ok());
+    erd::EdgePolylineParams params;
+    params.canny.beta = 0.2;
+    params.min_length = 2;
+    erd::EdgePolylineResult step1;
+    REQUIRE(erd::edge_polylines(im, params, &step1).ok());
+    std::vector<erd::Polyline> lines = step1.polylines;
+    REQUIRE(lines.size() > 10);
+    lines.push_back({});                                    // an empty polyline
+    lines.push_back({{4, 4}});                              // one point
+    lines.push_back({{0, 0}, {2, 0}, {2, 2}, {0, 0}});      // a closed loop repeats its first point
+    lines.push_back({{0, 0}, {2 * erd::kMaxImageSide - 2, 2 * erd::kMaxImageSide - 2}});  // the largest coordinates
+    std::string text;
+    erd::write_polylines(lines, &text);
+    std::vector<erd::Polyline> back;
+    REQUIRE(erd::read_polylines(text, &back).ok());
+    CHECK(back == lines);
+    std::string again;
+    erd::write_polylines(back, &again);
+    CHECK(again == text);
+
+    erd::write_polylines({{{1, 2}, {30, 4}}, {{7, 8}}}, &text);
+    CHECK(text == "erd-polylines 1\n2\n2 1 2 30 4\n1 7 8\n");
+    erd::write_polylines({}, &text);
+    CHECK(text == "erd-polylines 1\n0\n");
+    // Read leniently: any whitespace, comments.
+    REQUIRE(erd::read_polylines("erd-polylines 1 # two\n2\n2 1 2\n 30 4 1 7 8", &back).ok());
+    CHECK(back == std::vector<erd::Polyline>{{{1, 2}, {30, 4}}, {{7, 8}}});
+
+    const auto err = [](const std::string& s) {
+        std::vector<erd::Polyline> x;
+        const erd::Status st = erd::read_polylines(s, &x);
+        CHECK((st.ok() || st.code == erd::Code::input));
+        return st.message;
+    };
+    CHECK(err("") == "empty file");
+    CHECK(err("erd-triangulation 1\n") ==
+          "line 1: not an erd polylines file (expected 'erd-polylines 1', found 'erd-triangulation')");
+    CHECK(err("erd-polylines 2\n0\n") == "line 1: format version 2 out of range (1..1)");
+    CHECK(err("erd-polylines 1\n") == "file ends early: expected polyline count");
+    CHECK(err("erd-polylines 1\n900\n2 0 0 1 1\n") ==
+          "line 2: polyline count 900 is more than the rest of the file holds (the file ends early or the count is wrong)");
+    CHECK(err("erd-polylines 1\n1\n2 0 0 10 \n") == "file ends early: expected y coordinate of point 1 of polyline 0");
+    CHECK(err("erd-polylines 1\n1\n3 0 0 1 1\n") ==
+          "line 3: point count of polyline 0 3 is more than the rest of the file holds (the file ends early or the count is wrong)");
+    CHECK(err("erd-polylines 1\n1\n1 -2 0\n") == "line 3: x coordinate of point 0 of polyline 0 -2 outside the image (0..65534)");
+    CHECK(err("erd-polylines 1\n1\n1 0 x\n") == "line 3: expected y coordinate of point 0 of polyline 0, found 'x'");
+    CHECK(err("erd-polylines 1\n1\n1 0 0\n5\n") == "line 4: unexpected '5' after the last polyline (check the counts)");
 }

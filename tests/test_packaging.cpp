@@ -1,6 +1,6 @@
 // Packaging: the thesis's seven command names (run through symlinks named as the thesis has
-// them, compared with the erd subcommands), `make install` + pkg-config against the installed
-// copy, and the public API (algorithms/erd.h): validation, exit modes, the kernel, threads.
+// them, compared with the erd subcommands) and the public API (api/erd.h): validation, exit
+// modes, the kernel, threads. Installing it: test_install.cpp.
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
@@ -27,19 +27,6 @@
 using namespace erd_test;
 
 namespace {
-
-const char* const kAliases[] = {"ywb", "gpi", "erd_ed", "erd_gpi", "imgsyn", "imgsyn_aa", "Cal_PSNR"};
-
-std::string absolute(const std::string& p) {
-    char buf[PATH_MAX];
-    return ::realpath(p.c_str(), buf) ? std::string(buf) : p;
-}
-
-// Runs `sh -c "cd DIR && CMD"`, capturing stdout and stderr.
-RunResult run_in(const std::string& dir, const std::string& cmd) {
-    // Braces so the command's own redirections (imgsyn < m > out.pnm) win over the capture.
-    return run_shell("cd " + sh_quote(dir) + " && { " + cmd + " ; }");
-}
 
 // A folder holding bin/<alias> -> $ERD_BIN for all seven names and bin/erd, plus a small
 // synthetic image in plain PGM ("plain pnm", as the thesis's programs read) and raw PGM.
@@ -84,7 +71,7 @@ bool same_model(const erd::Model& a, const erd::Model& b) {
 
 TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[packaging]") {
     // erd_ed and erd_gpi run the thesis's method: erd generate --thesis (lead, 02:37).
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     struct Case { const char* alias; const char* thesis_args; const char* erd_args; const char* ext; };
     const Case cases[] = {
@@ -124,7 +111,7 @@ TEST_CASE("ywb, gpi, erd_ed, erd_gpi write the bytes erd generate writes", "[pac
 }
 
 TEST_CASE("imgsyn and imgsyn_aa: model on stdin, plain PGM on stdout, as erd reconstruct", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     REQUIRE(d.run("ywb -i img.pnm -d 3 -o lena.model").status == 0);
     REQUIRE(d.run("erd_gpi -i img.pnm -d 3 -o lena.erd").status == 0);
@@ -164,7 +151,7 @@ TEST_CASE("imgsyn and imgsyn_aa: model on stdin, plain PGM on stdout, as erd rec
 }
 
 TEST_CASE("Cal_PSNR prints what erd psnr prints", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     REQUIRE(d.run("erd_gpi -i img.pnm -d 3 -o m.erd").status == 0);
     REQUIRE(d.run("imgsyn_aa < m.erd > rec.pnm").status == 0);
@@ -187,7 +174,7 @@ TEST_CASE("Cal_PSNR prints what erd psnr prints", "[packaging]") {
 }
 
 TEST_CASE("thesis exit modes -x 0/1/2 through gpi: exit 3 and the exact lines", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     // A constant image: greedy insertion has nothing to refine, so 20 points cannot be reached.
     erd::Image flat(16, 16, 255);
@@ -208,7 +195,7 @@ TEST_CASE("thesis exit modes -x 0/1/2 through gpi: exit 3 and the exact lines", 
 }
 
 TEST_CASE("thesis programs take exactly the thesis's flags", "[packaging]") {
-    REQUIRE(binary_available());
+    if (!need_binary()) return;
     AliasDir d;
     struct Bad { const char* cmd; const char* fragment; };
     const Bad bad[] = {
@@ -407,186 +394,4 @@ TEST_CASE("public API: two meshes on two threads equal the same meshes made one 
         CHECK(seq_rb.samples == par_rb.samples);
         CHECK(!same_model(par_a, par_b));
     }
-}
-
-namespace {
-
-// The source tree (for make): $ERD_SRC, else the current folder when it is one.
-std::string source_tree() {
-    const char* s = std::getenv("ERD_SRC");
-    std::string root = s && *s ? s : ".";
-    if (!exists(root + "/Makefile") || !exists(root + "/cli/thesis_alias.cpp") || !exists(root + "/docs/erd.1")) return "";
-    return absolute(root);
-}
-
-std::string dirname_of(const std::string& p) {
-    std::string::size_type slash = p.rfind('/');
-    return slash == std::string::npos ? "." : p.substr(0, slash);
-}
-
-const char* const kInstalledProgram = R"(// Built against the installed copy only.
-#include <erd/erd.h>
-#include <cstdio>
-#include <vector>
-int main() {
-    const int w = 40, h = 30;
-    std::vector<std::uint16_t> px(w * h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) px[y * w + x] = std::uint16_t((x - 20) * (x - 20) + (y - 12) * (y - 12) < 64 ? 220 : 30 + x + y);
-    erd::api::ImageView view{w, h, 255, px.data(), 0};
-    erd::api::Options opt;
-    opt.generate.points = 60;
-    opt.exact = erd::api::ExactMode::ignore;
-    erd::Model model;
-    erd::api::GenerateInfo info;
-    erd::Status st = erd::api::generate(erd::api::Method::erdgpi, view, opt, &model, &info);
-    if (!st) { std::printf("generate: %s\n", st.message.c_str()); return 1; }
-    if (info.achieved != model.vertices.size() || info.requested != 60) return 1;
-    erd::Image rec;
-    if (!erd::api::reconstruct(model, true, &rec)) return 1;
-    double db = 0;
-    if (!erd::api::psnr(view, erd::api::view_of(rec), &db)) return 1;
-    erd::Cdt cdt;   // the kernel on its own
-    if (!cdt.reset(10, 10)) return 1;
-    erd::VertInd v = 0;
-    if (!cdt.insert_point(erd::LatticePoint{5, 5}, &v) || !cdt.insert_point(erd::LatticePoint{2, 7}, &v)) return 1;
-    std::string why;
-    std::printf("vertices %zu psnr %.1f cdt faces %zu verify %d\n", model.vertices.size(), db, cdt.face_count(), int(cdt.verify(&why)));
-    return 0;
-}
-)";
-
-}  // namespace
-
-TEST_CASE("make install DESTDIR=..., a program built with pkg-config against it, make uninstall", "[packaging]") {
-    REQUIRE(binary_available());
-    const std::string root = source_tree();
-    if (root.empty()) {
-        WARN("source tree not found (run from the repository or set ERD_SRC): skipped");
-        return;
-    }
-    // BUILD spelled as the Makefile spells it after normalising (relative to the tree when inside
-    // it), so the -o names below match its targets and nothing is rebuilt with other flags.
-    std::string build = absolute(dirname_of(erd_bin()));
-    if (build.compare(0, root.size() + 1, root + "/") == 0) build = build.substr(root.size() + 1);
-    // (a build dir that is the tree itself stays absolute, as the Makefile leaves it)
-    if (!exists((build[0] == '/' ? build : root + "/" + build) + "/liberd.a")) {
-        WARN(build + "/liberd.a missing: skipped");
-        return;
-    }
-    TempDir dest;
-    const std::string prefix = "/opt/erd";
-    // -o: install what the build dir holds; never rebuild someone's objects from here.
-    const std::string make = "make -s -C " + sh_quote(root) + " BUILD=" + sh_quote(build) + " PREFIX=" + prefix +
-                             " DESTDIR=" + sh_quote(dest.path) + " -o " + sh_quote(build + "/erd") + " -o " +
-                             sh_quote(build + "/liberd.a");
-    const std::string lib_path = (build[0] == '/' ? build : root + "/" + build) + "/liberd.a";
-    struct stat before {};
-    ::stat(lib_path.c_str(), &before);
-    RunResult inst = run_in(dest.path, make + " install");
-    INFO(inst.err);
-    REQUIRE(inst.status == 0);
-    struct stat after {};
-    ::stat(lib_path.c_str(), &after);
-    CHECK(after.st_mtime == before.st_mtime);  // installed as built, nothing rebuilt
-    CHECK(exists(erd_bin()));
-    const std::string top = dest.path + prefix;
-    for (const char* f : {"bin/erd", "lib/liberd.a", "lib/pkgconfig/erd.pc", "share/man/man1/erd.1", "include/erd/erd.h",
-                          "include/erd/api/erd.h", "include/erd/algorithms/model/model.h", "include/erd/kernel/cdt.h",
-                          "include/erd/kernel/status.h", "share/man/man1/ywb.1", "share/man/man1/Cal_PSNR.1"}) {
-        INFO(f);
-        CHECK(exists(top + "/" + f));
-    }
-    for (const char* a : kAliases) {
-        INFO(a);
-        char target[64] = {};
-        ssize_t n = ::readlink((top + "/bin/" + a).c_str(), target, sizeof target - 1);
-        CHECK(n == 3);
-        CHECK(std::string(target) == "erd");
-    }
-    std::string pc = slurp(top + "/lib/pkgconfig/erd.pc");
-    CHECK_THAT(pc, Catch::Contains("prefix=/opt/erd"));
-    CHECK_THAT(pc, Catch::Contains("-lerd"));
-    // The installed alias runs as the thesis's program.
-    RunResult cal = run_in(dest.path, sh_quote(top + "/bin/Cal_PSNR") + " " + sh_quote(root + "/docs/erd.1") + " x");
-    CHECK(cal.status == 2);  // not images: the error comes from erd psnr, reached through the link
-
-    // The headers are installed from the tree, the library from the build dir: when a header was
-    // edited after the library was built (helpers share one tree) the two disagree and a program
-    // built against them is meaningless. After `make` they always agree.
-    RunResult newer = run_in(root, "find kernel algorithms api -name '*.h' -newer " + sh_quote(build + "/liberd.a"));
-    if (std::getenv("ERD_SANITIZED")) {
-        WARN("sanitized build: liberd.a needs the sanitizer runtime, the pkg-config program is not linked");
-    } else if (!newer.out.empty()) {
-        WARN("headers newer than " + build + "/liberd.a (rebuild first); the pkg-config program is not built: " + newer.out);
-    } else {
-        spit(dest.file("prog.cpp"), kInstalledProgram);
-        const std::string env = "PKG_CONFIG_PATH=" + sh_quote(top + "/lib/pkgconfig") + " PKG_CONFIG_SYSROOT_DIR=" + sh_quote(dest.path);
-        RunResult flags = run_in(dest.path, env + " pkg-config --cflags --libs erd");
-        INFO(flags.out + flags.err);
-        REQUIRE(flags.status == 0);
-        CHECK_THAT(flags.out, Catch::Contains(top + "/include/erd"));
-        // Compiled in the DESTDIR, away from the source tree: only the installed headers are seen.
-        RunResult cc = run_in(dest.path, "c++ -std=c++17 -O1 prog.cpp $(" + env + " pkg-config --cflags --libs erd) -o prog");
-        INFO(cc.err);
-        REQUIRE(cc.status == 0);
-        RunResult prog = run_in(dest.path, "./prog");
-        INFO(prog.out);
-        CHECK(prog.status == 0);
-        CHECK_THAT(prog.out, Catch::StartsWith("vertices "));
-        CHECK_THAT(prog.out, Catch::Contains(" psnr "));
-        CHECK_THAT(prog.out, Catch::EndsWith("cdt faces 6 verify 1\n"));
-    }
-
-    RunResult un = run_in(dest.path, make + " uninstall");
-    INFO(un.err);
-    CHECK(un.status == 0);
-    RunResult left = run_in(dest.path, "find " + sh_quote(top) + " ! -type d");
-    CHECK(left.out.empty());
-}
-
-TEST_CASE("erd(1) names every subcommand, every generate option and all seven thesis programs", "[packaging]") {
-    REQUIRE(binary_available());
-    const std::string root = source_tree();
-    if (root.empty()) {
-        WARN("source tree not found (run from the repository or set ERD_SRC): skipped");
-        return;
-    }
-    // roff writes "-" as "\-"; undo that to search the text.
-    std::string man = slurp(root + "/docs/erd.1");
-    std::string text;
-    for (std::size_t i = 0; i < man.size(); ++i) {
-        if (man[i] == '\\' && i + 1 < man.size() && man[i + 1] == '-') continue;
-        text += man[i];
-    }
-    RunResult help = run_erd("help");
-    REQUIRE(help.status == 0);
-    std::size_t pos = help.out.find("Subcommands:");
-    REQUIRE(pos != std::string::npos);
-    std::istringstream lines(help.out.substr(pos));
-    std::string line;
-    std::getline(lines, line);
-    int subs = 0;
-    while (std::getline(lines, line) && line.size() > 2 && line[0] == ' ') {
-        std::string name = line.substr(2, line.find(' ', 2) - 2);
-        INFO(name);
-        CHECK(text.find("erd " + name) != std::string::npos);
-        ++subs;
-    }
-    CHECK(subs >= 8);
-    RunResult gen = run_erd("generate --help");
-    REQUIRE(gen.status == 0);
-    int opts = 0;
-    for (std::size_t p = gen.out.find("--"); p != std::string::npos; p = gen.out.find("--", p + 2)) {
-        std::size_t e = p + 2;
-        while (e < gen.out.size() && (std::isalnum(static_cast<unsigned char>(gen.out[e])) || gen.out[e] == '-')) ++e;
-        std::string opt = gen.out.substr(p, e - p);
-        if (opt.size() < 4) continue;
-        INFO(opt);
-        CHECK(text.find(opt) != std::string::npos);
-        ++opts;
-    }
-    CHECK(opts >= 20);
-    for (const char* a : kAliases) CHECK(text.find(std::string(".B ") + a) != std::string::npos);
-    CHECK(text.find(".SH EXIT STATUS") != std::string::npos);
 }

@@ -119,28 +119,29 @@ TEST_CASE("degenerate images through every method at the smallest and largest N"
     };
     std::size_t count = 0;
     const erd::MethodInfo* table = erd::methods(&count);
+    // Method x N (smallest, half, all pixels): one run of the test case each.
+    const std::size_t k = GENERATE_COPY(range(std::size_t(0), count));
+    const int which_n = GENERATE(0, 1, 2);
     for (const Degenerate& d : cases) {
         const std::int64_t pixels = std::int64_t(d.image.width) * d.image.height;
-        for (std::size_t k = 0; k < count; ++k)
-            for (std::int64_t n : {std::int64_t(4), (pixels + 4) / 2, pixels}) {
-                INFO(d.name << " " << table[k].name << " n=" << n);
-                erd::GenerateOptions o;
-                o.points = n;
-                o.density_given = false;
-                erd::GenerateResult res;
-                REQUIRE(table[k].run(d.image, o, &res).ok());
-                REQUIRE(res.requested == std::size_t(n));
-                REQUIRE(res.achieved == res.model.vertices.size());
-                require_valid(d.image, res.model);
-                if (res.achieved != res.requested) {
-                    // The documented reason to stop short (DECISIONS "Robustness"): the model
-                    // already reproduces the image exactly, so no point can lower an error.
-                    REQUIRE(res.achieved < res.requested);
-                    erd::Image rec;
-                    REQUIRE(erd::reconstruct(res.model, false, &rec).ok());
-                    REQUIRE(rec.samples == d.image.samples);
-                }
-            }
+        const std::int64_t n = which_n == 0 ? 4 : which_n == 1 ? (pixels + 4) / 2 : pixels;
+        INFO(d.name << " " << table[k].name << " n=" << n);
+        erd::GenerateOptions o;
+        o.points = n;
+        o.density_given = false;
+        erd::GenerateResult res;
+        REQUIRE(table[k].run(d.image, o, &res).ok());
+        REQUIRE(res.requested == std::size_t(n));
+        REQUIRE(res.achieved == res.model.vertices.size());
+        require_valid(d.image, res.model);
+        if (res.achieved != res.requested) {
+            // The documented reason to stop short (DECISIONS "Robustness"): the model
+            // already reproduces the image exactly, so no point can lower an error.
+            REQUIRE(res.achieved < res.requested);
+            erd::Image rec;
+            REQUIRE(erd::reconstruct(res.model, false, &rec).ok());
+            REQUIRE(rec.samples == d.image.samples);
+        }
     }
 }
 
@@ -165,25 +166,24 @@ TEST_CASE("constant images: every method reproduces them exactly (all errors zer
 
 TEST_CASE("ERD methods with edges everywhere (beta near 1) and none (beta near 0)", "[robust]") {
     const erd::Image im = make_image(16, 16, 255, noise);
-    for (const char* name : {"erded", "erdgpi"})
-        for (double beta : {1e-9, 0.5, 0.999})
-            for (std::int64_t n : {std::int64_t(4), std::int64_t(40), std::int64_t(256)}) {
-                INFO(name << " beta " << beta << " n=" << n);
-                erd::GenerateOptions o;
-                o.points = n;
-                o.density_given = false;
-                o.beta = beta;
-                erd::GenerateResult res;
-                REQUIRE(erd::find_method(name)->run(im, o, &res).ok());
-                require_valid(im, res.model);
-            }
+    const char* name = GENERATE("erded", "erdgpi");
+    const double beta = GENERATE(1e-9, 0.5, 0.999);
+    const std::int64_t n = GENERATE(std::int64_t(4), std::int64_t(40), std::int64_t(256));
+    INFO(name << " beta " << beta << " n=" << n);
+    erd::GenerateOptions o;
+    o.points = n;
+    o.density_given = false;
+    o.beta = beta;
+    erd::GenerateResult res;
+    REQUIRE(erd::find_method(name)->run(im, o, &res).ok());
+    require_valid(im, res.model);
 }
 
-TEST_CASE("hostile-case table docs/HOSTILE.md is current (ERD_WRITE_HOSTILE=1 regenerates it)", "[robust]") {
-    if (!exists("tools/hostile_table.sh") || !exists("docs")) {
-        WARN("run from the repository root to check docs/HOSTILE.md");
+TEST_CASE("hostile-case table docs/HOSTILE.md is current (ERD_REGENERATE=1 rewrites it)", "[robust][generated]") {
+    if (!erd_test::have_input(exists("tools/hostile_table.sh") && exists("docs/HOSTILE.md"),
+                              "tools/hostile_table.sh or docs/HOSTILE.md not found: run from the repository root"))
         return;
-    }
+    if (!erd_test::need_binary()) return;
     TempDir t;
     const std::string out = t.file("HOSTILE.md");
     const std::string cmd = "bash tools/hostile_table.sh " + sh_quote(erd_test::erd_bin()) + " > " + sh_quote(out);
@@ -192,8 +192,7 @@ TEST_CASE("hostile-case table docs/HOSTILE.md is current (ERD_WRITE_HOSTILE=1 re
     INFO(table);
     REQUIRE(table.find("UNEXPECTED") == std::string::npos);
     REQUIRE(rc == 0);
-    const char* w = std::getenv("ERD_WRITE_HOSTILE");
-    if (w && std::string(w) == "1") {
+    if (erd_test::regenerate_requested()) {
         spit("docs/HOSTILE.md", table);
         WARN("docs/HOSTILE.md rewritten");
         return;
@@ -203,10 +202,7 @@ TEST_CASE("hostile-case table docs/HOSTILE.md is current (ERD_WRITE_HOSTILE=1 re
 }
 
 TEST_CASE("every writing subcommand: parent-is-a-file and /dev/full fail cleanly, output = input refused", "[robust]") {
-    if (!erd_test::binary_available()) {
-        WARN("no erd binary (ERD_BIN); skipped");
-        return;
-    }
+    if (!erd_test::need_binary()) return;
     TempDir t;
     prepare(t);
     const std::string before = t.listing();
@@ -266,10 +262,7 @@ TEST_CASE("every writing subcommand: parent-is-a-file and /dev/full fail cleanly
 }
 
 TEST_CASE("generate and edges: a failing later output removes the earlier ones", "[robust]") {
-    if (!erd_test::binary_available()) {
-        WARN("no erd binary (ERD_BIN); skipped");
-        return;
-    }
+    if (!erd_test::need_binary()) return;
     TempDir t;
     prepare(t);
     const std::string before = t.listing();
@@ -282,19 +275,10 @@ TEST_CASE("generate and edges: a failing later output removes the earlier ones",
 }
 
 TEST_CASE("determinism: every method gives the same bytes on every run and at -O0 (build-o0/erd)", "[robust]") {
-    if (!erd_test::binary_available()) {
-        WARN("no erd binary (ERD_BIN); skipped");
-        return;
-    }
+    if (!erd_test::need_binary()) return;
     TempDir t;
     REQUIRE(run_in(t, "synth -W 40 -H 32 --seed 5 -o in.pgm").status == 0);
-    const char* o0env = std::getenv("ERD_BIN_O0");
-    std::string o0 = o0env && *o0env ? o0env : "build-o0/erd";
-    if (!o0.empty() && o0[0] != '/') {
-        char* cwd = ::getcwd(nullptr, 0);
-        if (cwd) o0 = std::string(cwd) + "/" + o0;
-        std::free(cwd);
-    }
+    const std::string o0 = erd_test::path_from_env("ERD_BIN_O0", "build-o0/erd");
     const bool have_o0 = exists(o0);
     if (!have_o0) WARN("no -O0 binary at " << o0 << " (tests/run_all.sh builds it): comparing runs only");
     for (const char* m : {"ed", "gpi", "erded", "erdgpi"}) {

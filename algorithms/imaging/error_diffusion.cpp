@@ -334,12 +334,4 @@ Grid<double> ed_density(Grid<double> d, double gamma) {
     return d;
 }
 
-Grid<std::uint8_t> edge_pixels(const Grid<std::uint8_t>& half_pixel_edges) {
-    const int w = (half_pixel_edges.width + 1) / 2, h = (half_pixel_edges.height + 1) / 2;
-    Grid<std::uint8_t> out(w, h, 0);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) out(x, y) = half_pixel_edges(2 * x, 2 * y) ? 1 : 0;
-    return out;
-}
-
 }  // namespace erd

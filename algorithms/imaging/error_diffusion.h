@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
-#include "algorithms/model/model.h"
+#include "kernel/lattice.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -75,10 +75,5 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
 // The ED density sigma = (d / d_max)^gamma (thesis eq. 3.4), gamma > 0; all zeros when d_max <= 0.
 // Takes d by value so that a caller passing a temporary (ED: the MMSODD grid) reuses its storage.
 Grid<double> ed_density(Grid<double> d, double gamma);
-
-// Pixels lying on an edge of a half-pixel edge map (algorithms/canny.h): pixel (x, y) is marked when
-// the map is set at (2x, 2y). The map must be (2W-1) x (2H-1); the result is W x H. For ERDED,
-// which sets the density to zero on edge pixels (thesis 3.4.2) and passes this as `forbidden`.
-Grid<std::uint8_t> edge_pixels(const Grid<std::uint8_t>& half_pixel_edges);
 
 }  // namespace erd

@@ -155,9 +155,4 @@ Grid<double> convolve_cols(const Grid<double>& in, const std::vector<double>& ta
     return out;
 }
 
-Grid<double> convolve_separable(const Grid<double>& in, const std::vector<double>& hx, const std::vector<double>& hy,
-                                Border border) {
-    return convolve_cols(convolve_rows(in, hx, border), hy, border);
-}
-
 }  // namespace erd

@@ -1,6 +1,6 @@
 // Filters: 1-D taps and separable 2-D convolution, the building blocks of MMSODD and Canny.
 //
-// Conventions (NOTES.md "Filters"):
+// Conventions (../shared/spec/NOTES.md "Filters"):
 //   * A tap vector h of odd length 2c+1 stores h[n] for n = -c..c and is applied as a convolution,
 //     y[i] = sum_n h[n] * x[i - n]. So the first-derivative filter with transfer function
 //     (1/2)z - (1/2)z^-1 is stored {1/2, 0, -1/2} and gives y[i] = (x[i+1] - x[i-1]) / 2: positive
@@ -44,9 +44,5 @@ void weighted_rows(const double* const* rows, const double* t, int m, double* ou
 // 1-D convolution of each row (x direction) / each column (y direction). taps must have odd length.
 Grid<double> convolve_rows(const Grid<double>& in, const std::vector<double>& taps, Border border = Border::zero);
 Grid<double> convolve_cols(const Grid<double>& in, const std::vector<double>& taps, Border border = Border::zero);
-
-// Separable 2-D convolution: taps hx along x (rows), hy along y (columns).
-Grid<double> convolve_separable(const Grid<double>& in, const std::vector<double>& hx, const std::vector<double>& hy,
-                                Border border = Border::zero);
 
 }  // namespace erd

@@ -12,8 +12,9 @@ namespace erd {
 
 // Largest accepted image. The side bound keeps doubled lattice coordinates (at most 2*side-2)
 // far inside the exactness bound of kernel/predicates.h; the pixel bound admits 16384 x 16384
-// (issue 18) and keeps the half-pixel plane of edge detection under 2^32 cells (point_rings.h).
-// Memory is the caller's to cap (api memory_estimate: up to ~90 bytes per pixel for ERD).
+// (issue 18) and keeps the half-pixel plane of edge detection under 2^31 cells (point_rings.h).
+// Memory is the caller's to cap: the methods' peak heap per pixel is in their registry rows
+// (algorithms/methods/methods.cpp: up to 88 bytes per pixel for ERDED and ERDGPI).
 constexpr int kMaxImageSide = 32768;
 constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
 
@@ -45,7 +46,7 @@ struct Image {
     std::uint16_t at(int x, int y) const { return samples[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
     std::size_t pixels() const { return samples.size(); }
 
-    // Bits per sample: ceil(log2(maxval + 1)); PSNR peaks at 2^bits - 1 (NOTES.md).
+    // Bits per sample: ceil(log2(maxval + 1)); PSNR peaks at 2^bits - 1 (../shared/spec/NOTES.md).
     int bits() const {
         int b = 0;
         while ((std::uint32_t(1) << b) - 1 < maxval) ++b;

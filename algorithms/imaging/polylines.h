@@ -9,7 +9,7 @@
 
 #include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/image.h"
-#include "algorithms/model/model.h"
+#include "kernel/lattice.h"
 #include "kernel/status.h"
 
 namespace erd {

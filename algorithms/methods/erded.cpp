@@ -95,7 +95,7 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     const std::int64_t n = std::int64_t(result->requested);
     StageTimer timer(result);
 
-    options.progress("sample selection", 0.0);
+    if (options.progress.report_cancelled("sample selection", 0.0)) return Status::failure(kCancelled);
     const std::size_t k = cdt.vertex_count() < std::size_t(n) ? std::size_t(n) - cdt.vertex_count() : 0;
     const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
     std::vector<LatticePoint> pts;

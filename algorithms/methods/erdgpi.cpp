@@ -21,7 +21,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     const std::int64_t n = std::int64_t(result->requested);
     StageTimer timer(result);
 
-    options.progress("wedge values", 0.0);
+    if (options.progress.report_cancelled("wedge values", 0.0)) return Status::failure(kCancelled);
     ErdModel model(image, wedge_options(options));
     model.assign_all(cdt);
     timer.lap("wedge values");

@@ -168,8 +168,9 @@ public:
         const std::size_t todo = options_.target_vertices > start ? options_.target_vertices - start : 0;
         const std::size_t report_every = std::max<std::size_t>(1, todo / 100);
         for (;;) {
-            if (options_.progress && stats->insertions % report_every == 0)
-                options_.progress("greedy insertion", todo ? double(stats->insertions) / double(todo) : 1.0);
+            if (options_.progress && stats->insertions % report_every == 0 &&
+                options_.progress.report_cancelled("greedy insertion", todo ? double(stats->insertions) / double(todo) : 1.0))
+                return Status::failure(kCancelled);
             if (cdt_.vertex_count() >= options_.target_vertices) { stop = GreedyStop::target; break; }
             if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
             if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }

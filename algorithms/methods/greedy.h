@@ -12,7 +12,7 @@
 // whole-image squared error, which the loop keeps incrementally for the PSNR stop rule.
 //
 // Errors are measured at the pixel lattice Lambda (even doubled coordinates) by point evaluation
-// of the face's plane, also for the ERD model (NOTES.md: the reported PSNR of an ERD model is
+// of the face's plane, also for the ERD model (../shared/spec/NOTES.md: the reported PSNR of an ERD model is
 // the supersampled one; refinement may use point evaluation).
 //
 // Candidates: a lattice point that is already a vertex is never a candidate (inserting it would
@@ -96,9 +96,9 @@ struct GreedyOptions {
     std::size_t max_triangles = 0;
     // Errors against the approximation rounded to the nearest integer and clamped to
     // [0, maxval] (what imgsyn reconstructs; squared errors are integers and the running total
-    // exact) instead of the real-valued plane. docs/DECISIONS.md "Methods: ED and GPI" has the
-    // numbers that chose the default.
-    bool round_values = false;
+    // exact) instead of the real-valued plane. The default is GenerateOptions::round_values's
+    // (docs/DECISIONS.md "Methods: ED and GPI" has the numbers that chose it); ERDGPI turns it off.
+    bool round_values = true;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
 };

@@ -112,7 +112,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
                         InitialMesh* mesh, GenerateResult* result) {
     Status st = begin_method(image, options, result);
     if (!st) return st;
-    options.progress("initial mesh", 0.0);
+    if (options.progress.report_cancelled("initial mesh", 0.0)) return Status::failure(kCancelled);
     StageTimer timer(result);
     InitialMeshOptions mo;
     mo.method = method;

@@ -10,7 +10,8 @@
 // Wedge values (step 2 of the framework, 3.4.1):
 //   one wedge   z = phi_bar(v);
 //   several     line search along the unit bisector d of the wedge: v' = v + alpha d with alpha in
-//               [1, 1.5] pixels in steps of kWedgeAlphaStep, maximising the MMSODD (bilinearly
+//               [alpha_min, alpha_max] pixels (default [0.75, 1]; the thesis's [1, 1.5] with
+//               --thesis) in steps of kWedgeAlphaStep, maximising the MMSODD (bilinearly
 //               interpolated) at v' clamped into Gamma; z = phi_bar(v'). First maximum wins.
 //   rule 0      ("fixed distance", -w 0): z = phi_bar(v + d).
 // For a boundary wedge of an open fan the bounding edges are the hull edge and the constrained
@@ -29,7 +30,7 @@
 
 namespace erd {
 
-// Step of the wedge-value line search in pixels (alpha = 1, 1.05, ..., 1.5).
+// Step of the wedge-value line search in pixels (alpha = alpha_min, alpha_min + 0.05, ..., alpha_max).
 constexpr double kWedgeAlphaStep = 0.05;
 
 struct WedgeValueOptions {

@@ -1,6 +1,6 @@
 // Image quality: mean squared error and PSNR (the thesis's Cal_PSNR).
 //
-// The PSNR peak is 2^p - 1 with p = ceil(log2(maxval + 1)) of the ORIGINAL (NOTES.md): a 12-bit
+// The PSNR peak is 2^p - 1 with p = ceil(log2(maxval + 1)) of the ORIGINAL (../shared/spec/NOTES.md): a 12-bit
 // image with maxval 4095 gets peak 4095, an 8-bit image 255, one with maxval 200 also 255.
 #pragma once
 #include "algorithms/imaging/image.h"

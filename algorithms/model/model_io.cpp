@@ -1,4 +1,4 @@
-// Readers of .model, .erd and -t files (formats in model_io.h; writers in model_write.cpp).
+// Readers of .model, .erd, -t and -p files (formats in model_io.h; writers in model_write.cpp).
 #include "algorithms/model/model_io.h"
 
 #include <algorithm>
@@ -188,6 +188,14 @@ Status count(Tokens& tk, const What& what, std::uint64_t lo, std::uint64_t min_b
     return Status::success();
 }
 
+// Nothing may follow the last record: "unexpected 'X' after the last WHAT (check the counts)".
+Status expect_end(Tokens& tk, const char* what) {
+    if (tk.at_end()) return Status::success();
+    std::string_view t;
+    tk.next(&t);
+    return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last " + what + " (check the counts)");
+}
+
 std::string vname(std::size_t i) { return "vertex " + std::to_string(i); }
 std::string fname(std::size_t i) { return "face " + std::to_string(i); }
 
@@ -293,11 +301,7 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
         listed[v] = 1;
         m->corner_values[f][std::size_t(k)] = z;
     }
-    if (!tk.at_end()) {
-        std::string_view t;
-        tk.next(&t);
-        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last wedge line (check the counts)");
-    }
+    if (Status s = expect_end(tk, "wedge line"); !s) return s;
     std::vector<std::uint32_t> fan;
     std::vector<int> known;
     for (std::uint32_t v = 0; v < nv; ++v) {
@@ -413,11 +417,7 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     if (kind == ModelFileKind::unknown) kind = tk.at_end() ? ModelFileKind::basic : ModelFileKind::erd;
     if (kind == ModelFileKind::basic) {
         m.kind = ModelKind::basic;
-        if (!tk.at_end()) {
-            std::string_view t;
-            tk.next(&t);
-            return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last face (check the counts)");
-        }
+        if (Status s = expect_end(tk, "face"); !s) return s;
         // Pixel coordinates in the file, doubled in the model.
         for (std::size_t i = 0; i < nv; ++i) {
             LatticePoint& p = m.vertices[i];
@@ -510,13 +510,39 @@ Status read_triangulation(const std::string& text, Model* out) {
                                      std::to_string(b) + ") is not an edge of any face");
         m.constraints[i] = {std::uint32_t(a), std::uint32_t(b)};
     }
-    if (!tk.at_end()) {
-        tk.next(&t);
-        return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last constraint (check the counts)");
-    }
+    if (Status s = expect_end(tk, "constraint"); !s) return s;
     std::sort(m.constraints.begin(), m.constraints.end());
     m.kind = ModelKind::basic;
     *out = std::move(m);
+    return Status::success();
+}
+
+Status read_polylines(const std::string& text, std::vector<std::vector<LatticePoint>>* out) {
+    Tokens tk(text);
+    if (tk.at_end()) return Status::bad_input("empty file");
+    std::string_view t;
+    tk.next(&t);
+    if (t != "erd-polylines")
+        return Status::bad_input(tk.where() + "not an erd polylines file (expected 'erd-polylines 1', found '" + show(t) + "')");
+    std::uint64_t version = 0, np = 0;
+    if (Status s = tk.uint("format version", 1, 1, &version); !s) return s;
+    if (Status s = count(tk, "polyline count", 0, 2, &np); !s) return s;
+    std::vector<std::vector<LatticePoint>> lines(np);
+    for (std::uint64_t i = 0; i < np; ++i) {
+        const auto name = [i] { return "polyline " + std::to_string(i); };
+        std::uint64_t n = 0;
+        if (Status s = count(tk, [&] { return "point count of " + name(); }, 0, 4, &n); !s) return s;
+        lines[i].resize(n);
+        for (std::uint64_t k = 0; k < n; ++k) {
+            std::int64_t x = 0, y = 0;
+            const auto point = [&] { return "point " + std::to_string(k) + " of " + name(); };
+            if (Status s = tk.sint([&] { return "x coordinate of " + point(); }, 0, kMaxDoubled, &x); !s) return s;
+            if (Status s = tk.sint([&] { return "y coordinate of " + point(); }, 0, kMaxDoubled, &y); !s) return s;
+            lines[i][k] = LatticePoint{std::int32_t(x), std::int32_t(y)};
+        }
+    }
+    if (Status s = expect_end(tk, "polyline"); !s) return s;
+    *out = std::move(lines);
     return Status::success();
 }
 

@@ -1,6 +1,7 @@
-// The model files: .model (thesis A.4.1), .erd (A.4.2) and the -t triangulation (NOTES.md).
+// The model files: .model (thesis A.4.1), .erd (A.4.2), the -t triangulation and the -p
+// polylines (../shared/spec/NOTES.md).
 //
-// All three are whitespace-separated text, read leniently (any whitespace, '#' comments to the
+// All four are whitespace-separated text, read leniently (any whitespace, '#' comments to the
 // end of the line) and written canonically (one record per line, '\n', values as integers when
 // integral, else the shortest decimal that reads back to the same double).
 //
@@ -9,6 +10,8 @@
 //            NW / NW lines "vertex face value" (wedge lines)
 //   -t       "erd-triangulation 1" / "W H" / NV / NV lines "X Y" (doubled) / NF / NF lines "i j k" /
 //            NC / NC lines "i j" (constrained edges)
+//   -p       "erd-polylines 1" / NP / NP lines "n X1 Y1 ... Xn Yn" (DOUBLED coordinates; a closed
+//            loop repeats its first point): the simplified polylines of an ERD method's step 1
 //
 // Faces are written with positive signed area (X1-X0)(Y2-Y0) - (X2-X0)(Y1-Y0) > 0; either
 // orientation is accepted on input and fixed. Model files carry maxval but not the image size:
@@ -29,6 +32,7 @@
 // holes): reconstruct() checks that.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "algorithms/model/model.h"
 #include "kernel/status.h"
@@ -54,6 +58,11 @@ Status write_model(const Model& m, std::string* out);
 // corner values left empty, kind basic); every constraint must be an edge of a face.
 Status read_triangulation(const std::string& text, Model* out);
 Status write_triangulation(const Model& m, std::string* out);
+
+// The -p polylines (each a Polyline of algorithms/imaging/polylines.h). The reader takes
+// coordinates of any image erd accepts (0 .. 2 kMaxImageSide - 2).
+Status read_polylines(const std::string& text, std::vector<std::vector<LatticePoint>>* out);
+void write_polylines(const std::vector<std::vector<LatticePoint>>& lines, std::string* out);
 
 // A value as the writers print it: an integer when integral, else the shortest decimal that
 // reads back to the same double.

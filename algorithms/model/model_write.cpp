@@ -1,4 +1,4 @@
-// Writers of .model, .erd and -t files (formats in model_io.h; readers in model_io.cpp).
+// Writers of .model, .erd, -t and -p files (formats in model_io.h; readers in model_io.cpp).
 //
 // Every record is assembled in a small stack buffer with the number formatters below and
 // appended to the output once: no temporary strings per number (the writer of a 1% bull .erd
@@ -238,6 +238,27 @@ Status write_triangulation(const Model& m, std::string* out) {
     for (const auto& c : cons) line.num(c[0]).num(c[1]).end();
     *out = std::move(o);
     return Status::success();
+}
+
+void write_polylines(const std::vector<std::vector<LatticePoint>>& lines, std::string* out) {
+    std::string o = "erd-polylines 1\n";
+    char buf[kRecordBytes];
+    char* p = put_uint(buf, lines.size());
+    *p++ = '\n';
+    o.append(buf, p);
+    for (const auto& l : lines) {
+        o.append(buf, put_uint(buf, l.size()));
+        for (const LatticePoint q : l) {
+            p = buf;
+            *p++ = ' ';
+            p = put_int(p, q.x);
+            *p++ = ' ';
+            p = put_int(p, q.y);
+            o.append(buf, p);
+        }
+        o += '\n';
+    }
+    *out = std::move(o);
 }
 
 }  // namespace erd

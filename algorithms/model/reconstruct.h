@@ -1,6 +1,6 @@
 // Reconstruction: the image a mesh model stands for (the thesis's imgsyn and imgsyn_aa).
 //
-// The approximating function (thesis 3.3, NOTES.md): inside a face, the plane through the face's
+// The approximating function (thesis 3.3, ../shared/spec/NOTES.md): inside a face, the plane through the face's
 // three corner values (basic model: the vertex values; ERD model: the face's wedge values); on a
 // discontinuity edge (not at an endpoint) the mean of the planes of its two faces; at a vertex
 // the mean of its wedge values (one wedge: its value). Discontinuities are the edges across which

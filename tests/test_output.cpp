@@ -14,12 +14,12 @@
 #include "algorithms/output/render.h"
 #include "cli/progress.h"
 #include "cli/stats_json.h"
-#include "tests/people_util.h"
+#include "tests/output_util.h"
 
 using namespace erd;
-using namespace people_test;
+using namespace output_test;
 
-TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constrained", "[people]") {
+TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constrained", "[output]") {
     ModelTopology topo;
     REQUIRE(build_topology(diagonal_erd(), &topo).ok());
     std::vector<ModelEdge> edges = model_edges(diagonal_erd(), topo);
@@ -48,7 +48,7 @@ TEST_CASE("mesh edges of the A.4.2 diagonal: five edges, the diagonal constraine
     CHECK(build_topology(bad, &topo).code == Code::input);  // repeats a vertex
 }
 
-TEST_CASE("wedges of the A.4.2 diagonal: corners 1 and 2 have two each", "[people]") {
+TEST_CASE("wedges of the A.4.2 diagonal: corners 1 and 2 have two each", "[output]") {
     Model m = diagonal_erd();
     ModelTopology topo;
     REQUIRE(build_topology(m, &topo).ok());
@@ -65,7 +65,7 @@ TEST_CASE("wedges of the A.4.2 diagonal: corners 1 and 2 have two each", "[peopl
     CHECK(corner_wedges(m, topo).count == 6);
 }
 
-TEST_CASE("OBJ of the diagonal: 6 vertex copies for ERD, 4 for basic, faces point up", "[people]") {
+TEST_CASE("OBJ of the diagonal: 6 vertex copies for ERD, 4 for basic, faces point up", "[output]") {
     std::string obj;
     ExportCounts c;
     ExportOptions o;
@@ -98,7 +98,7 @@ TEST_CASE("OBJ of the diagonal: 6 vertex copies for ERD, 4 for basic, faces poin
     CHECK(default_zscale(diagonal_basic()) == Approx(50.0 / 2550.0));
 }
 
-TEST_CASE("PLY of the diagonal: header counts and index lists", "[people]") {
+TEST_CASE("PLY of the diagonal: header counts and index lists", "[output]") {
     std::string ply;
     ExportOptions o;
     o.format = MeshFormat::ply;
@@ -114,7 +114,7 @@ TEST_CASE("PLY of the diagonal: header counts and index lists", "[people]") {
     CHECK(lines_starting(tail, "0 49 127").size() == 1);
 }
 
-TEST_CASE("SVG of the diagonal: 4 thin edges, 1 constrained, 4 vertex dots", "[people]") {
+TEST_CASE("SVG of the diagonal: 4 thin edges, 1 constrained, 4 vertex dots", "[output]") {
     RenderOptions o;
     o.scale = 2;
     o.vertices = true;
@@ -142,7 +142,7 @@ TEST_CASE("SVG of the diagonal: 4 thin edges, 1 constrained, 4 vertex dots", "[p
     CHECK(render_svg(diagonal_erd(), "", o, &svg).code == Code::input);
 }
 
-TEST_CASE("raster render: constrained edge red and thick, hull blue, interior white", "[people]") {
+TEST_CASE("raster render: constrained edge red and thick, hull blue, interior white", "[output]") {
     RenderOptions o;
     o.scale = 4;
     RgbImage im;
@@ -175,7 +175,7 @@ TEST_CASE("raster render: constrained edge red and thick, hull blue, interior wh
     CHECK(render_raster(diagonal_erd(), nullptr, o, &im).code == Code::input);
 }
 
-TEST_CASE("error map ramp: zero black, full scale white, sizes checked", "[people]") {
+TEST_CASE("error map ramp: zero black, full scale white, sizes checked", "[output]") {
     Image a(3, 1, 255), b(3, 1, 255);
     a.samples = {10, 10, 10};
     b.samples = {10, 42, 200};
@@ -191,7 +191,7 @@ TEST_CASE("error map ramp: zero black, full scale white, sizes checked", "[peopl
     CHECK(auto_scale(1024, 768) == 1);
 }
 
-TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[people]") {
+TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[output]") {
     GenerateResult r;
     r.model = diagonal_erd();
     r.requested = 5;
@@ -257,7 +257,7 @@ TEST_CASE("stats JSON: counts from the model, parameters, stages, psnr", "[peopl
 }
 
 TEST_CASE("wedge copies of a generated ERD model: one value each, as many as vertex_wedges, same after a round trip",
-          "[people]") {
+          "[output]") {
     const erd::MethodInfo* method = erd::find_method("erdgpi");
     if (!method) {
         WARN("erdgpi not registered in this build");
@@ -309,7 +309,7 @@ TEST_CASE("wedge copies of a generated ERD model: one value each, as many as ver
     CHECK(c2.faces == m.faces.size());
 }
 
-TEST_CASE("progress is shown only when forced or on a terminal, never when quiet", "[people]") {
+TEST_CASE("progress is shown only when forced or on a terminal, never when quiet", "[output]") {
     CHECK_FALSE(cli::Progress::should_show(true, true));
     CHECK_FALSE(cli::Progress::should_show(false, true));
     CHECK(cli::Progress::should_show(true, false));

@@ -29,10 +29,7 @@ std::string scene_pgm() {
 }  // namespace
 
 TEST_CASE("generate --thesis is the thesis's settings; our defaults differ; flags after it override", "[erd]") {
-    if (!binary_available()) {
-        WARN("erd binary not available: " << erd_bin());
-        return;
-    }
+    if (!need_binary()) return;
     TempDir dir;
     const std::string img = dir.file("scene.pgm");
     spit(img, scene_pgm());
@@ -63,10 +60,7 @@ TEST_CASE("generate --thesis is the thesis's settings; our defaults differ; flag
 }
 
 TEST_CASE("generate rejects a reversed or out-of-range line-search range and refit count", "[erd]") {
-    if (!binary_available()) {
-        WARN("erd binary not available: " << erd_bin());
-        return;
-    }
+    if (!need_binary()) return;
     TempDir dir;
     const std::string img = dir.file("scene.pgm");
     spit(img, scene_pgm());

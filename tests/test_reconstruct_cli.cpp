@@ -10,21 +10,15 @@ using namespace erd_test;
 
 namespace {
 
-// 2x2 image, z = 10 + 8x: point evaluation 10 18 / 10 18 (see test_raster_reconstruct.cpp).
+// 2x2 image, z = 10 + 8x: point evaluation 10 18 / 10 18 (see test_reconstruct.cpp).
 const char* kModel = "255\n4\n0 0 10\n1 0 18\n0 1 10\n1 1 18\n2\n0 1 3\n0 3 2\n";
 // The same function as an .erd (doubled coordinates, no wedge lines): supersampled 11 17.
 const char* kErd = "255\n4\n0 0 10\n2 0 18\n0 2 10\n2 2 18\n2\n0 1 3\n0 3 2\n0\n";
 
-bool have_binary() {
-    if (binary_available()) return true;
-    WARN("ERD_BIN not found (" << erd_bin() << "): CLI tests skipped");
-    return false;
-}
-
 }  // namespace
 
 TEST_CASE("reconstruct CLI: .model to stdout, -o, --plain", "[model_io]") {
-    if (!have_binary()) return;
+    if (!need_binary()) return;
     TempDir d;
     spit(d.file("a.model"), kModel);
     RunResult r = run_erd("reconstruct " + sh_quote(d.file("a.model")));
@@ -43,7 +37,7 @@ TEST_CASE("reconstruct CLI: .model to stdout, -o, --plain", "[model_io]") {
 }
 
 TEST_CASE("reconstruct CLI: .erd supersampled unless --no-aa", "[model_io]") {
-    if (!have_binary()) return;
+    if (!need_binary()) return;
     TempDir d;
     spit(d.file("a.erd"), kErd);
     RunResult r = run_erd("reconstruct --plain " + sh_quote(d.file("a.erd")));
@@ -59,7 +53,7 @@ TEST_CASE("reconstruct CLI: .erd supersampled unless --no-aa", "[model_io]") {
 }
 
 TEST_CASE("reconstruct CLI: bad input is one line and exit status 2", "[model_io]") {
-    if (!have_binary()) return;
+    if (!need_binary()) return;
     TempDir d;
     const std::string bad = d.file("bad.model");
     spit(bad, "255\n4\n0 0 10\n1 0 18\n0 1 10\n1 1 18\n2\n0 1 3\n0 3 9\n");

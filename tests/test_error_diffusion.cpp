@@ -1,6 +1,6 @@
-// Speed-round checks of the error-diffusion and MMSODD implementations (helper "diffusion"):
-// the one-sweep MMSODD against the separable filters it replaced, and the 16-lane diffusion
-// sweep of the count search against single passes.
+// ED's sample points (thesis 3.2.1): the MMSODD density (hand-worked values, and the one-sweep
+// MMSODD against the three separable filters) and error diffusion (exact counts, masks, bad
+// input, and the 16-lane sweep of the count search against single passes).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -12,8 +12,11 @@
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/mmsodd.h"
+#include "tests/test_grid_util.h"
 
 using namespace erd;
+using erd_test::Lcg;
+using erd_test::make_grid;
 
 namespace {
 
@@ -37,7 +40,31 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 
 }  // namespace
 
-TEST_CASE("MMSODD from one smoothing equals the three separable filters", "[diffusion]") {
+TEST_CASE("MMSODD of x^2 + y^2, x*y, and a constant at the border", "[imaging]") {
+    CHECK(mmsodd_value(2, 2, 0) == 2.0);
+    CHECK(mmsodd_value(0, 0, 1) == 1.0);
+    CHECK(mmsodd_value(3, -1, 0) == 3.0);  // eigenvalues 3 and -1
+    CHECK(mmsodd_value(0, 0, -2) == 2.0);
+    const Grid<double> bowl = make_grid(16, 14, [](double x, double y) { return x * x + y * y; });
+    const Grid<double> saddle = make_grid(16, 14, [](double x, double y) { return x * y; });
+    for (int order : {1, 3, 5}) {
+        const int margin = order / 2 + 1;
+        const Grid<double> db = mmsodd(bowl, order), ds = mmsodd(saddle, order);
+        for (int y = margin; y < 14 - margin; ++y)
+            for (int x = margin; x < 16 - margin; ++x) {
+                CHECK(db(x, y) == Approx(2.0).epsilon(1e-12));
+                CHECK(ds(x, y) == Approx(1.0).epsilon(1e-12));
+            }
+    }
+    // Constant 10, no smoothing, zero extension: at the corner fxx = fyy = 10(0 - 2 + 1) = -10,
+    // fxy = (5 - 0)/2 = 2.5, so l1 = -10, l2 = 2.5 and d = 12.5. Inside: 0.
+    const Grid<double> flat(6, 5, 10.0);
+    const Grid<double> df = mmsodd(flat, 1);
+    CHECK(df(0, 0) == 12.5);
+    CHECK(df(2, 2) == 0.0);
+}
+
+TEST_CASE("MMSODD from one smoothing equals the three separable filters", "[imaging]") {
     // The reference is the definition: three separable filter pairs (mmsodd_separable).
     // Integer samples (what the methods pass) up to 16 bits: bit for bit, since both ways are
     // exact up to the formula. Non-integer samples: equal to rounding. Sizes below, at and
@@ -68,7 +95,7 @@ TEST_CASE("MMSODD from one smoothing equals the three separable filters", "[diff
     for (int order : {3, 5}) CHECK(mmsodd(spike, order).data == mmsodd_separable(spike, order, Border::zero).data);
 }
 
-TEST_CASE("MMSODD of an image's samples equals that of its grid", "[diffusion]") {
+TEST_CASE("MMSODD of an image's samples equals that of its grid", "[imaging]") {
     for (int order : {1, 3, 5}) {
         Image im(37, 23, 65535);
         Rng rng{std::uint64_t(order)};
@@ -82,7 +109,7 @@ TEST_CASE("MMSODD of an image's samples equals that of its grid", "[diffusion]")
     CHECK(mmsodd(Image(0, 0, 255), 3).data.empty());
 }
 
-TEST_CASE("mmsodd_value is the larger magnitude of l1 +- l2", "[diffusion]") {
+TEST_CASE("mmsodd_value is the larger magnitude of l1 +- l2", "[imaging]") {
     Rng rng{11};
     for (int i = 0; i < 10000; ++i) {
         const double fxx = (rng.next() - 0.5) * 1e3, fyy = (rng.next() - 0.5) * 1e3, fxy = (rng.next() - 0.5) * 1e3;
@@ -94,7 +121,7 @@ TEST_CASE("mmsodd_value is the larger magnitude of l1 +- l2", "[diffusion]") {
     CHECK(mmsodd_value(2.0, -2.0, 0.0) == 2.0);
 }
 
-TEST_CASE("the count search's lanes choose what single passes choose", "[diffusion]") {
+TEST_CASE("the count search's lanes choose what single passes choose", "[imaging]") {
     // select_points runs 4 thresholds in its first sweep and 16 in each later one; the pass it
     // returns must be exactly the single pass diffuse() makes at the returned threshold (same
     // arithmetic per lane), points included.
@@ -129,7 +156,7 @@ TEST_CASE("the count search's lanes choose what single passes choose", "[diffusi
         }
 }
 
-TEST_CASE("ed_density in place equals the formula", "[diffusion]") {
+TEST_CASE("ed_density in place equals the formula", "[imaging]") {
     Grid<double> d(3, 2);
     d.data = {0.0, 1.0, 4.0, 2.0, -1.0, 3.0};
     const Grid<double> one = ed_density(d, 1.0), half = ed_density(d, 0.5), other = ed_density(d, 2.0);
@@ -140,4 +167,69 @@ TEST_CASE("ed_density in place equals the formula", "[diffusion]") {
     CHECK(d(1, 0) == 1.0);  // an lvalue argument is copied, not changed
     const Grid<double> moved = ed_density(Grid<double>(2, 2, -5.0), 1.0);
     CHECK(moved.data == std::vector<double>(4, 0.0));
+}
+
+TEST_CASE("error diffusion returns the exact count from 4 to W*H/2", "[imaging]") {
+    const int w = 40, h = 30;
+    Lcg rng{99};
+    const std::vector<Grid<double>> densities = {
+        make_grid(w, h, [](double x, double y) { return (x + 1) * (y + 2) / (w * double(h + 1)); }),
+        make_grid(w, h, [](double x, double y) { return std::exp(-((x - 20) * (x - 20) + (y - 12) * (y - 12)) / 60.0); }),
+        make_grid(w, h, [&](double, double) { return rng.next(); }),
+        make_grid(w, h, [](double x, double y) { return (int(x) / 5 + int(y) / 5) % 2 ? 1.0 : 0.1; }),
+    };
+    std::vector<std::size_t> counts = {4, 5, 7, 12, 30, 57, 100, 150, 222, 300, 451, 599, 600};
+    for (std::size_t img = 0; img < densities.size(); ++img)
+        for (Startup mode : {Startup::none, Startup::mirror, Startup::force})
+            for (std::size_t k : counts) {
+                DiffusionParams dp;
+                dp.startup = mode;
+                DiffusionResult r;
+                REQUIRE(select_points(densities[img], k, dp, &r).ok());
+                INFO("image " << img << " mode " << int(mode) << " count " << k << " got " << r.points.size());
+                CHECK(r.exact);
+                CHECK(r.points.size() == k);
+                CHECK(std::is_sorted(r.points.begin(), r.points.end(), [](LatticePoint a, LatticePoint b) {
+                    return a.y != b.y ? a.y < b.y : a.x < b.x;
+                }));
+            }
+}
+
+TEST_CASE("error diffusion: density, mask, pass counts, bad input", "[imaging]") {
+    const Grid<double> d = make_grid(4, 1, [](double x, double) { return x; });
+    const Grid<double> s = ed_density(d, 1.0);
+    CHECK(s(1, 0) == Approx(1.0 / 3));
+    CHECK(ed_density(d, 0.5)(1, 0) == Approx(std::sqrt(1.0 / 3)));
+    CHECK(ed_density(Grid<double>(3, 3, 0.0), 1.0)(1, 1) == 0.0);
+    // One row of density 1/2 with rho 1/2: v = 1/2 fires, error -1/2 carried 7/16 ahead, so the
+    // next pixel has 1/2 - 7/32 < 1/2 and stays off; the third fires again.
+    const Grid<double> half(3, 1, 0.5);
+    std::vector<LatticePoint> pts;
+    CHECK(diffuse(half, 0.5, DiffusionParams(), &pts) == 2);
+    CHECK(pts == std::vector<LatticePoint>{{0, 0}, {4, 0}});
+    // Forbidden points are never chosen.
+    Lcg rng{5};
+    const Grid<double> dens = make_grid(30, 20, [&](double, double) { return rng.next(); });
+    Grid<std::uint8_t> forbid(30, 20, 0);
+    for (int y = 0; y < 20; ++y) forbid(10, y) = forbid(11, y) = 1;
+    DiffusionParams dp;
+    dp.forbidden = &forbid;
+    DiffusionResult r;
+    REQUIRE(select_points(dens, 120, dp, &r).ok());
+    CHECK(r.exact);
+    for (LatticePoint q : r.points) CHECK(!forbid(q.x / 2, q.y / 2));
+    // Bad input.
+    Grid<std::uint8_t> wrong(3, 3, 0);
+    dp.forbidden = &wrong;
+    CHECK(select_points(dens, 10, dp, &r).code == Code::input);
+    Grid<double> neg(3, 3, 1.0);
+    neg(1, 1) = -1;
+    CHECK(select_points(neg, 2, DiffusionParams(), &r).code == Code::input);
+    CHECK(select_points(Grid<double>(), 2, DiffusionParams(), &r).code == Code::input);
+    // Zero count is trivially exact; an all-zero density cannot give points.
+    REQUIRE(select_points(dens, 0, DiffusionParams(), &r).ok());
+    CHECK(r.exact);
+    CHECK(r.points.empty());
+    REQUIRE(select_points(Grid<double>(5, 5, 0.0), 3, DiffusionParams(), &r).ok());
+    CHECK_FALSE(r.exact);
 }

@@ -1,5 +1,6 @@
-// ED and GPI on small synthetic images: exact counts, valid Delaunay meshes, vertex values equal to
-// the samples, early stop on planar images, determinism. (CLI behaviour: test_basic_cli.cpp.)
+// ED and GPI, the methods of the basic model: exact counts, valid Delaunay meshes, vertex values
+// equal to the samples, early stop on planar images, determinism, the greedy loop's contract, and
+// the thesis images. (Against a reference loop: test_greedy.cpp; CLI: test_generate_cli.cpp.)
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -386,27 +387,18 @@ TEST_CASE("greedy loop: the total squared error of GPI equals a fresh scan", "[b
 }
 
 TEST_CASE("ED on the thesis photos: exactly N points", "[basic]") {
-    const char* dir = std::getenv("ERD_IMAGES");
-    const std::string images = dir && *dir ? dir : "../shared/images";
-    for (const char* name : {"peppers", "lena"}) {
-        std::string bytes;
-        Image im;
-        if (!cli::read_file(images + "/" + name + ".pgm", &bytes).ok() ||
-            !cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &im, nullptr).ok()) {
-            WARN("skipped: " << images << "/" << name << ".pgm not readable");
-            return;
-        }
-        for (double d : {0.5, 2.0}) {
-            GenerateOptions o;
-            o.density = d;
-            o.density_given = true;
-            GenerateResult r;
-            REQUIRE(generate_ed(im, o, &r).ok());
-            INFO(name << " " << d << "%");
-            CHECK(r.requested == std::size_t(std::llround(d * double(im.pixels()) / 100.0)));
-            CHECK(r.achieved == r.requested);
-        }
-    }
+    const char* name = GENERATE("peppers", "lena");
+    const double d = GENERATE(0.5, 2.0);
+    Image im;
+    if (!test::read_thesis_image(name, &im)) return;
+    GenerateOptions o;
+    o.density = d;
+    o.density_given = true;
+    GenerateResult r;
+    REQUIRE(generate_ed(im, o, &r).ok());
+    INFO(name << " " << d << "%");
+    CHECK(r.requested == std::size_t(std::llround(d * double(im.pixels()) / 100.0)));
+    CHECK(r.achieved == r.requested);
 }
 
 TEST_CASE("greedy loop: exact totals on a 16-bit image with values at binade edges and the extremes", "[basic]") {

@@ -11,13 +11,13 @@
 
 #include "algorithms/model/model_io.h"
 #include "cli/image_io.h"
-#include "tests/people_util.h"
+#include "tests/output_util.h"
 
 using namespace erd;
-using namespace people_test;
+using namespace output_test;
 
-TEST_CASE("erd export: OBJ and PLY files of the A.4.2 example, wedge copies", "[people]") {
-    if (!have_erd()) return;
+TEST_CASE("erd export: OBJ and PLY files of the A.4.2 example, wedge copies", "[output]") {
+    if (!erd_test::need_binary()) return;
     using namespace erd_test;
     TempDir dir;
     spit(dir.file("d.erd"), kDiagonalErd);
@@ -50,8 +50,8 @@ TEST_CASE("erd export: OBJ and PLY files of the A.4.2 example, wedge copies", "[
     CHECK(slurp(dir.file("d.erd")) == kDiagonalErd);
 }
 
-TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[people]") {
-    if (!have_erd()) return;
+TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[output]") {
+    if (!erd_test::need_binary()) return;
     using namespace erd_test;
     TempDir dir;
     spit(dir.file("d.erd"), kDiagonalErd);
@@ -99,8 +99,8 @@ TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[people
     CHECK_FALSE(exists(dir.file("x.png")));
 }
 
-TEST_CASE("erd generate --stats -: one JSON object with the run's facts", "[people]") {
-    if (!have_erd()) return;
+TEST_CASE("erd generate --stats -: one JSON object with the run's facts", "[output]") {
+    if (!erd_test::need_binary()) return;
     using namespace erd_test;
     TempDir dir;
     erd::Image im = wave_disc_image();
@@ -149,8 +149,8 @@ TEST_CASE("erd generate --stats -: one JSON object with the run's facts", "[peop
     }
 }
 
-TEST_CASE("the manual names every long option of every subcommand", "[people]") {
-    if (!have_erd()) return;
+TEST_CASE("the manual names every long option of every subcommand", "[output]") {
+    if (!erd_test::need_binary()) return;
     using namespace erd_test;
     const char* env = std::getenv("ERD_MANUAL");
     std::string manual = slurp(env && *env ? env : "docs/manual.md");
@@ -189,8 +189,8 @@ TEST_CASE("the manual names every long option of every subcommand", "[people]") 
     }
 }
 
-TEST_CASE("erd render draws a -t triangulation file with the method's constrained edges", "[people]") {
-    if (!have_erd()) return;
+TEST_CASE("erd render draws a -t triangulation file with the method's constrained edges", "[output]") {
+    if (!erd_test::need_binary()) return;
     using namespace erd_test;
     TempDir dir;
     erd::Image im = wave_disc_image();

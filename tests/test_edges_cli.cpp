@@ -1,15 +1,19 @@
 // `erd edges` through the real binary (env ERD_BIN): outputs, their sizes and formats, bad flags.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <string>
+#include <vector>
 
+#include "algorithms/imaging/polylines.h"
+#include "algorithms/model/model_io.h"
 #include "cli/image_io.h"
 #include "tests/erd_run.h"
 
 using namespace erd_test;
 
 TEST_CASE("erd edges writes the half-pixel edge map and the polylines", "[imaging]") {
-    if (!binary_available()) { WARN("erd binary not found; set ERD_BIN"); return; }
+    if (!need_binary()) return;
     TempDir dir;
     // 20x12, a vertical step between x = 9 and x = 10.
     erd::Image im(20, 12, 255);
@@ -40,17 +44,28 @@ TEST_CASE("erd edges writes the half-pixel edge map and the polylines", "[imagin
     // One straight vertical polyline, simplified to its two ends.
     const std::string text = slurp(dir.file("p.txt"));
     CHECK(text.rfind("erd-polylines 1\n1\n2 ", 0) == 0);
+    std::vector<erd::Polyline> lines;
+    REQUIRE(erd::read_polylines(text, &lines).ok());
+    REQUIRE(lines.size() == 1);
+    REQUIRE(lines[0].size() == 2);
+    CHECK(lines[0][0].x == lines[0][1].x);
+    CHECK(std::abs(lines[0][0].y - lines[0][1].y) >= 18);
     erd::Image drawn;
     REQUIRE(erd::cli::read_image(dir.file("d.png"), &drawn, &warning).ok());
     CHECK(drawn.width == 39);
 
     RunResult bad = run_erd("edges " + sh_quote(dir.file("step.pgm")) + " -o " + sh_quote(dir.file("x.pgm")) + " --nope");
-    CHECK(bad.status == 2);
-    CHECK(bad.err.find('\n') == bad.err.size() - 1);  // one line
+    CHECK(bad.status == 2);  // a usage error as in every subcommand: the problem, then the usage line
+    CHECK_THAT(bad.err, Catch::StartsWith("erd edges: unknown option --nope\nusage: erd edges IMAGE -o EDGES"));
     bad = run_erd("edges " + sh_quote(dir.file("step.pgm")) + " -o " + sh_quote(dir.file("x.pgm")) + " -b 0");
     CHECK(bad.status == 2);
+    CHECK_THAT(bad.err, Catch::StartsWith("erd edges: --beta: 0 is outside [1e-09, 1]\nusage: erd edges"));
     bad = run_erd("edges " + sh_quote(dir.file("step.pgm")));
     CHECK(bad.status == 2);
+    CHECK_THAT(bad.err, Catch::StartsWith("erd edges: missing -o EDGES\nusage: erd edges"));
+    bad = run_erd("edges -o " + sh_quote(dir.file("x.pgm")));
+    CHECK(bad.status == 2);
+    CHECK_THAT(bad.err, Catch::StartsWith("erd edges: expected one IMAGE\nusage: erd edges"));
     bad = run_erd("edges " + sh_quote(dir.file("step.pgm")) + " -o " + sh_quote(dir.file("step.pgm")));
     CHECK(bad.status == 2);  // would overwrite the input
 }

@@ -1,4 +1,4 @@
-// Helpers shared by the [people] tests: the thesis's A.4.2 example as a Model and as a file,
+// Helpers shared by the [output] tests: the thesis's A.4.2 example as a Model and as a file,
 // counting SVG elements, a small JSON reader for --stats, a synthetic image with an edge.
 #pragma once
 #include <catch2/catch.hpp>
@@ -15,7 +15,7 @@
 #include "algorithms/model/model.h"
 #include "tests/erd_run.h"
 
-namespace people_test {
+namespace output_test {
 
 using erd::Model;
 using erd::ModelKind;
@@ -150,18 +150,9 @@ inline Json parse_json(const std::string& text) {
     return v;
 }
 
-
 // The A.4.2 example as an .erd file on the 50 x 50 domain, in the thesis's one-line-per-wedge form.
 inline const char* const kDiagonalErd =
     "255\n4\n0 0 127\n0 98 64\n98 0 64\n98 98 90\n2\n0 2 1\n1 2 3\n4\n1 0 73\n1 1 54\n2 0 73\n2 1 54\n";
-
-inline bool have_erd() {
-    if (!erd_test::binary_available()) {
-        WARN("ERD_BIN not found: " << erd_test::erd_bin());
-        return false;
-    }
-    return true;
-}
 
 // Width and height from a PNG's IHDR (bytes 16..23, big-endian).
 inline bool png_size(const std::string& png, int* w, int* h) {
@@ -175,7 +166,6 @@ inline bool png_size(const std::string& png, int* w, int* h) {
     return true;
 }
 
-
 // 40 x 30: smooth waves with a bright disc (an edge for the ERD methods); GPI reaches any N here.
 inline erd::Image wave_disc_image() {
     erd::Image im(40, 30, 255);
@@ -187,4 +177,4 @@ inline erd::Image wave_disc_image() {
     return im;
 }
 
-}  // namespace people_test
+}  // namespace output_test

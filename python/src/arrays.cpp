@@ -1,0 +1,86 @@
+#include "python/src/arrays.h"
+
+#include <cstring>
+#include <string>
+
+namespace erd::py {
+
+namespace {
+
+std::string shape_text(const pyb::array& a) {
+    std::string s = "(";
+    for (pyb::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
+    return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+pyb::array as_array(pyb::handle obj, const char* what) {
+    if (!pyb::isinstance<pyb::array>(obj))
+        throw pyb::value_error(std::string(what) + " must be a numpy array (uint8 or uint16), got " +
+                               std::string(pyb::str(pyb::type::handle_of(obj).attr("__name__"))));
+    return pyb::reinterpret_borrow<pyb::array>(obj);
+}
+
+}  // namespace
+
+std::uint32_t dtype_maxval(pyb::handle obj) {
+    if (!pyb::isinstance<pyb::array>(obj)) return 255;
+    const pyb::dtype dt = pyb::reinterpret_borrow<pyb::array>(obj).dtype();
+    return dt.itemsize() == 2 ? 65535u : 255u;
+}
+
+ImageArg image_arg(pyb::handle obj, const char* what, std::optional<long long> maxval) {
+    pyb::array a = as_array(obj, what);
+    const pyb::dtype dt = a.dtype();
+    const char kind = dt.kind();
+    if (kind != 'u' || (dt.itemsize() != 1 && dt.itemsize() != 2))
+        throw pyb::value_error(std::string(what) + " has dtype " + std::string(pyb::str(pyb::handle(dt))) +
+                               "; erd takes uint8 or uint16 samples (convert with .astype(numpy.uint8) "
+                               "after scaling to 0..255)");
+    // Colour comes later as H x W x 3 (issue 17); the shape check already tells the cases apart.
+    const bool gray3 = a.ndim() == 3 && a.shape(2) == 1;
+    if (a.ndim() == 3 && (a.shape(2) == 3 || a.shape(2) == 4))
+        throw pyb::value_error(std::string(what) + " has shape " + shape_text(a) +
+                               ": colour images are not supported yet; pass a 2-D gray array (H x W)");
+    if (a.ndim() != 2 && !gray3)
+        throw pyb::value_error(std::string(what) + " must be a 2-D array (H x W), got shape " + shape_text(a));
+    if (a.shape(0) == 0 || a.shape(1) == 0) throw pyb::value_error(std::string(what) + " is empty: shape " + shape_text(a));
+    if (a.shape(0) > kMaxImageSide || a.shape(1) > kMaxImageSide)
+        throw pyb::value_error(std::string(what) + " of shape " + shape_text(a) + " has a side above " +
+                               std::to_string(kMaxImageSide));
+    long long mv = maxval ? *maxval : (dt.itemsize() == 2 ? 65535 : 255);
+    if (mv < 1 || mv > 65535) throw pyb::value_error("maxval " + std::to_string(mv) + " outside 1..65535");
+
+    ImageArg arg;
+    const pyb::ssize_t item = pyb::ssize_t(sizeof(std::uint16_t));
+    const bool native16 = dt.itemsize() == 2 && dt.attr("isnative").cast<bool>();
+    const bool rows_ok = a.strides(1) == item && a.strides(0) >= a.shape(1) * item && a.strides(0) % item == 0;
+    if (native16 && rows_ok) {
+        arg.owner = a;  // the library reads the caller's samples in place and copies them once
+    } else {
+        // One conversion by numpy (widening, byte order, any strides) into a contiguous uint16 array.
+        pyb::module_ np = pyb::module_::import("numpy");
+        arg.owner = np.attr("ascontiguousarray")(a, np.attr("uint16")).cast<pyb::array>();
+    }
+    if (gray3) arg.owner = arg.owner.attr("reshape")(a.shape(0), a.shape(1)).cast<pyb::array>();
+    arg.view.width = int(a.shape(1));
+    arg.view.height = int(a.shape(0));
+    arg.view.maxval = std::uint32_t(mv);
+    arg.view.samples = static_cast<const std::uint16_t*>(arg.owner.data());
+    arg.view.stride = std::size_t(arg.owner.strides(0) / item);
+    return arg;
+}
+
+pyb::array image_array(const Image& image) {
+    const std::size_t h = std::size_t(image.height), w = std::size_t(image.width);
+    if (image.maxval <= 255) {
+        pyb::array_t<std::uint8_t> out({h, w});
+        std::uint8_t* dst = out.mutable_data();
+        for (std::size_t i = 0; i < image.samples.size(); ++i) dst[i] = std::uint8_t(image.samples[i]);
+        return out;
+    }
+    pyb::array_t<std::uint16_t> out({h, w});
+    std::memcpy(out.mutable_data(), image.samples.data(), image.samples.size() * sizeof(std::uint16_t));
+    return out;
+}
+
+}  // namespace erd::py

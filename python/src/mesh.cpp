@@ -1,0 +1,155 @@
+#include "python/src/mesh.h"
+
+#include <pybind11/numpy.h>
+
+#include <utility>
+
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/model_topology.h"
+#include "api/erd.h"
+#include "cli/fileio.h"
+#include "cli/stats_json.h"
+#include "python/src/arrays.h"
+
+namespace erd::py {
+
+namespace pyb = pybind11;
+
+void raise_status(const Status& st, bool os_error) {
+    if (os_error) {
+        PyErr_SetString(PyExc_OSError, st.message.c_str());
+        throw pyb::error_already_set();
+    }
+    if (st.code == Code::runtime) throw std::runtime_error(st.message);
+    throw pyb::value_error(st.message);
+}
+
+pyb::dict mesh_stats(const Mesh& mesh) {
+    // The CLI's own collector, so the counts mean what --stats's do.
+    GenerateResult r;
+    r.model = mesh.model;
+    r.requested = mesh.requested;
+    r.achieved = mesh.achieved;
+    r.stats = mesh.run;
+    r.stages = mesh.stages;
+    Image shape;
+    shape.width = mesh.model.width;
+    shape.height = mesh.model.height;
+    shape.maxval = mesh.model.maxval;
+    const cli::GenerateStats s = cli::collect_stats(mesh.method, shape, r);
+    const pyb::object none = pyb::none();
+    pyb::dict d;
+    d["method"] = mesh.method.empty() ? none : pyb::str(mesh.method);
+    d["model"] = s.erd ? "erd" : "basic";
+    d["image"] = pyb::dict(pyb::arg("width") = s.width, pyb::arg("height") = s.height, pyb::arg("maxval") = s.maxval);
+    d["points"] = pyb::dict(pyb::arg("requested") = s.requested, pyb::arg("achieved") = s.achieved);
+    d["vertices"] = s.vertices;
+    d["faces"] = s.faces;
+    d["constrained_vertices"] = s.constrained_vertices;
+    d["constrained_edges"] = s.constrained_edges;
+    d["dropped_constraints"] = s.dropped_constraints;
+    d["parameters"] = s.has_params ? pyb::object(pyb::dict(pyb::arg("beta") = s.beta, pyb::arg("r") = s.r, pyb::arg("l") = s.l,
+                                                           pyb::arg("epsilon") = s.epsilon, pyb::arg("simple") = s.simple))
+                                   : none;
+    d["stop"] = s.stop.empty() ? none : pyb::str(s.stop);
+    pyb::list stages;
+    for (const StageTime& t : s.stages) stages.append(pyb::dict(pyb::arg("name") = t.name, pyb::arg("seconds") = t.seconds));
+    d["stages"] = stages;
+    return d;
+}
+
+namespace {
+
+std::string path_text(pyb::handle path) {
+    pyb::module_ os = pyb::module_::import("os");
+    return os.attr("fsdecode")(os.attr("fspath")(path)).cast<std::string>();
+}
+
+pyb::array reconstruct(const Mesh& m, pyb::object supersample) {
+    const bool aa = supersample.is_none() ? m.model.kind == ModelKind::erd : supersample.cast<bool>();
+    Image out;
+    Status st;
+    {
+        pyb::gil_scoped_release unlocked;
+        st = api::reconstruct(m.model, aa, &out);
+    }
+    if (!st) raise_status(st);
+    return image_array(out);
+}
+
+void save(const Mesh& m, pyb::handle path) {
+    const std::string name = path_text(path);
+    Status st;
+    {
+        pyb::gil_scoped_release unlocked;
+        std::string bytes;
+        st = write_model(m.model, &bytes);
+        if (st) st = cli::write_file_atomic(name, bytes);
+        else st = Status::bad_input(name + ": " + st.message);
+    }
+    if (!st) raise_status(st, st.code == Code::runtime);
+}
+
+}  // namespace
+
+void bind_mesh(pyb::module_& m) {
+    pyb::class_<Mesh>(m, "Mesh",
+                      "A triangle mesh of an image, as erd.generate or erd.load makes it.\n\n"
+                      "Basic model (methods ed, gpi; .model files): one value per vertex, continuous.\n"
+                      "ERD model (erded, erdgpi; .erd files): vertices on the half-pixel lattice, one value per\n"
+                      "face corner (wedge values), discontinuous across the constrained edges.\n"
+                      "Every array property returns a new array.")
+        .def_property_readonly("kind", [](const Mesh& s) { return s.model.kind == ModelKind::erd ? "erd" : "basic"; },
+                               "'basic' or 'erd'.")
+        .def_property_readonly("method", [](const Mesh& s) { return s.method.empty() ? pyb::object(pyb::none()) : pyb::object(pyb::str(s.method)); },
+                               "The method that made the mesh ('ed', 'gpi', 'erded', 'erdgpi'); None when loaded from a file.")
+        .def_property_readonly("width", [](const Mesh& s) { return s.model.width; }, "Image width in pixels.")
+        .def_property_readonly("height", [](const Mesh& s) { return s.model.height; }, "Image height in pixels.")
+        .def_property_readonly("maxval", [](const Mesh& s) { return s.model.maxval; }, "Largest sample value of the image.")
+        .def_property_readonly("stats", [](Mesh& s) {
+            // Counting the constrained edges builds the mesh's adjacency: 2-3% of a generate call.
+            if (!s.stats || s.stats.is_none()) s.stats = mesh_stats(s);
+            return s.stats.attr("copy")();
+        },
+                               "The `erd generate --stats` fields as a dict: method, model, image, points, vertices, faces,\n"
+                               "constrained_vertices, constrained_edges, dropped_constraints, parameters (ERD: beta, r, l,\n"
+                               "epsilon, simple), stop (greedy methods), stages (name, seconds).")
+        .def_property_readonly("vertices", [](const Mesh& s) {
+            return table<double>(s.model.vertices.size(), 2, [&](std::size_t i, std::size_t j) {
+                const LatticePoint p = s.model.vertices[i];
+                return 0.5 * double(j ? p.y : p.x);
+            });
+        }, "N x 2 float64: (x, y) in pixel units, x to the right, y down; ERD vertices may lie on half pixels.")
+        .def_property_readonly("faces", [](const Mesh& s) {
+            return table<std::int64_t>(s.model.faces.size(), 3, [&](std::size_t i, std::size_t j) { return std::int64_t(s.model.faces[i][j]); });
+        }, "F x 3 int64: vertex indices of each triangle, counter-clockwise with y up (clockwise on screen).")
+        .def_property_readonly("values", [](const Mesh& s) {
+            return table<double>(s.model.values.size(), 1, [&](std::size_t i, std::size_t) { return s.model.values[i]; }).attr("reshape")(-1);
+        }, "N float64: the value at each vertex (ERD model: the mean of its wedge values).")
+        .def_property_readonly("corner_values", [](const Mesh& s) {
+            const bool erd = s.model.kind == ModelKind::erd;
+            return table<double>(s.model.faces.size(), 3, [&](std::size_t i, std::size_t j) {
+                return erd ? s.model.corner_values[i][j] : s.model.values[s.model.faces[i][j]];
+            });
+        }, "F x 3 float64: the value of face i at its corner j (ERD model: the wedge value; basic: the vertex value).")
+        .def_property_readonly("constrained_edges", [](const Mesh& s) {
+            return table<std::int64_t>(s.model.constraints.size(), 2, [&](std::size_t i, std::size_t j) { return std::int64_t(s.model.constraints[i][j]); });
+        }, "E x 2 int64: vertex pairs (i < j) of the constrained edges (empty for a basic model). A mesh\n"
+           "loaded from an .erd has those across which the corner values jump (what the file records).")
+        .def("reconstruct", &reconstruct, pyb::arg("supersample") = pyb::none(),
+             "reconstruct(supersample=None) -> numpy.ndarray\n\n"
+             "The image the mesh stands for, H x W, uint8 when maxval <= 255 else uint16. supersample=True\n"
+             "takes the mean of 4x4 sub-samples per pixel, False evaluates at the pixel centres; None does\n"
+             "what `erd reconstruct` does (4x4 for an ERD model, point evaluation for a basic one).")
+        .def("save", &save, pyb::arg("path"),
+             "save(path)\n\nWrites the mesh as `erd generate -o` does: a .model for a basic mesh, an .erd for an ERD one\n"
+             "(byte-identical files), atomically. OSError when the file cannot be written.")
+        .def("__len__", [](const Mesh& s) { return s.model.vertices.size(); }, "Number of vertices.")
+        .def("__repr__", [](const Mesh& s) {
+            return "<erd.Mesh " + std::string(s.method.empty() ? (s.model.kind == ModelKind::erd ? "erd" : "basic") : s.method) +
+                   " " + std::to_string(s.model.width) + "x" + std::to_string(s.model.height) + ", " +
+                   std::to_string(s.model.vertices.size()) + " vertices, " + std::to_string(s.model.faces.size()) + " faces>";
+        });
+}
+
+}  // namespace erd::py

@@ -1,0 +1,91 @@
+"""Two threads meshing at once, memory over 1000 calls, Ctrl-C in a long call."""
+import os
+import signal
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import erd
+from conftest import read_pgm
+
+
+def rss_bytes():
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+
+
+def test_two_threads_mesh_at_once_with_the_same_results(lena, tmp_path):
+    jobs = [("erdgpi", lena), ("gpi", lena[::-1]), ("erded", lena.T), ("erdgpi", lena[:300, :400])] * 2
+
+    def work(job):
+        mesh = erd.generate(job[1], job[0], density=1.0)
+        return mesh.faces, mesh.corner_values, mesh.reconstruct()
+
+    alone = [work(j) for j in jobs[:4]]
+    start = time.perf_counter()
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        together = list(pool.map(work, jobs))
+    for i, got in enumerate(together):
+        for a, b in zip(got, alone[i % 4]):
+            assert np.array_equal(a, b), i
+    # The lock is released during the calls: a Python thread keeps running meanwhile.
+    ticks = []
+    stop = threading.Event()
+    t = threading.Thread(target=lambda: [ticks.append(1) or time.sleep(0.001) for _ in iter(stop.is_set, True)])
+    t.start()
+    erd.generate(lena, "erdgpi", density=2.0)
+    stop.set()
+    t.join()
+    assert len(ticks) > 5
+
+
+def test_memory_stays_flat_over_1000_small_calls(lena, tmp_path):
+    small = np.ascontiguousarray(lena[:48, :48])
+    path = str(tmp_path / "m.erd")
+
+    def calls(n):
+        for i in range(n):
+            mesh = erd.generate(small, ("erdgpi", "gpi", "erded", "ed")[i % 4], density=5.0, exit_mode=2)
+            mesh.reconstruct()
+            erd.psnr(small, mesh.reconstruct(supersample=False))
+            mesh.vertices, mesh.faces, mesh.corner_values, mesh.stats
+            if i % 4 == 0:
+                mesh.save(path)
+                erd.load(path)
+            try:
+                erd.generate(small, nosuch=1)
+            except TypeError:
+                pass
+            try:
+                erd.generate(small.astype(float))
+            except ValueError:
+                pass
+
+    calls(200)  # warm-up: allocator pools, imported modules
+    before = rss_bytes()
+    calls(1000)
+    grown = rss_bytes() - before
+    assert grown < 1 << 20, "RSS grew by %d bytes over 1000 calls" % grown
+
+
+def test_ctrl_c_interrupts_a_long_generate(images):
+    bull, _ = read_pgm(os.path.join(images, "bull.pgm"))
+    start = time.perf_counter()
+    erd.generate(bull, "gpi", density=8.0)
+    full = time.perf_counter() - start
+    before = rss_bytes()
+    for _ in range(3):
+        timer = threading.Timer(full / 4, os.kill, (os.getpid(), signal.SIGINT))
+        start = time.perf_counter()
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            erd.generate(bull, "gpi", density=8.0)
+        took = time.perf_counter() - start
+        timer.join()
+        assert took < full * 0.75, "interrupted after %.3f s of a %.3f s call" % (took, full)
+    assert rss_bytes() - before < 8 << 20
+    # Still usable afterwards.
+    assert len(erd.generate(bull[:64, :64], "gpi", points=50)) == 50
