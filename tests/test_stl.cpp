@@ -14,7 +14,7 @@
 #include "algorithms/imaging/synth.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/output/export.h"
-#include "tests/people_util.h"
+#include "tests/output_util.h"
 
 using namespace erd;
 
@@ -76,13 +76,13 @@ bool watertight(const std::vector<Facet>& facets) {
 
 }  // namespace
 
-TEST_CASE("STL of the diagonal: 2 facets up, 12 closed with a base", "[people][stl]") {
+TEST_CASE("STL of the diagonal: 2 facets up, 12 closed with a base", "[output][stl]") {
     ExportOptions o;
     o.format = MeshFormat::stl;
     o.zscale = 0.5;
     std::string stl;
     ExportCounts c;
-    REQUIRE(export_mesh(people_test::diagonal_basic(), o, &stl, &c).ok());
+    REQUIRE(export_mesh(output_test::diagonal_basic(), o, &stl, &c).ok());
     std::vector<Facet> f = parse_stl(stl);
     REQUIRE(f.size() == 2);
     CHECK(c.facets == 2);
@@ -91,7 +91,7 @@ TEST_CASE("STL of the diagonal: 2 facets up, 12 closed with a base", "[people][s
     CHECK(!watertight(f));
 
     o.base = 3;
-    REQUIRE(export_mesh(people_test::diagonal_basic(), o, &stl, &c).ok());
+    REQUIRE(export_mesh(output_test::diagonal_basic(), o, &stl, &c).ok());
     f = parse_stl(stl);
     REQUIRE(f.size() == 2 * 2 + 2 * 4);  // top, bottom, two per boundary edge
     check_normals(f);
@@ -99,13 +99,13 @@ TEST_CASE("STL of the diagonal: 2 facets up, 12 closed with a base", "[people][s
     CHECK(f[0].v[0][2] == Approx(127 * 0.5 + 3));  // lifted by the base
 
     // An ERD surface is open along its constrained edges: no solid from it.
-    CHECK(export_mesh(people_test::diagonal_erd(), o, &stl, &c).code == Code::input);
+    CHECK(export_mesh(output_test::diagonal_erd(), o, &stl, &c).code == Code::input);
     o.base = 0;
-    REQUIRE(export_mesh(people_test::diagonal_erd(), o, &stl, &c).ok());
+    REQUIRE(export_mesh(output_test::diagonal_erd(), o, &stl, &c).ok());
     CHECK(parse_stl(stl).size() == 2);
 }
 
-TEST_CASE("STL of a GPI heightmap mesh: facet count, normals, watertight with a base", "[people][stl]") {
+TEST_CASE("STL of a GPI heightmap mesh: facet count, normals, watertight with a base", "[output][stl]") {
     const MethodInfo* gpi = find_method("gpi");
     REQUIRE(gpi);
     SynthParams sp;
