@@ -8,8 +8,8 @@
 
 namespace erd::cli {
 
-// Reads `path` ("-" = stdin) and parses it with algorithms/model_io.h; the kind comes from the
-// name (.model / .erd), else from the content. A ".tri" name reads the -t triangulation instead
+// Reads `path` ("-" = stdin) and parses it with algorithms/model/model_io.h; the kind comes from
+// the name (.model / .erd), else from the content. A ".tri" name reads the -t triangulation instead
 // (vertices, faces and constraints, no values: enough to draw, not to reconstruct or export).
 // Messages start with the path. *warning (may be null) is cleared: reserved for non-fatal remarks.
 // *topo (may be null) receives the model's adjacency for a .model or .erd (see read_model).
