@@ -36,11 +36,7 @@ std::string methods_help();
 const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-<<<<<<< HEAD
-    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--stats FILE] [--psnr-report] [-q]",
-=======
-    "[--max-error E] [--psnr P] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
->>>>>>> main
+    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},

@@ -17,24 +17,14 @@ namespace {
 // every measured ED and GPI peak; for the ERD methods they are the edge-rich case, so an image
 // with few edges uses 3-4 times less (docs/DECISIONS.md, Reliability).
 const MethodInfo kMethods[] = {
-<<<<<<< HEAD
-    {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", ModelKind::basic, "ywb", "idnotpx", 32, 64,
-=======
     {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", ModelKind::basic, "ywb", "idnotpx", 12, 200,
->>>>>>> main
      generate_ed},
     {"gpi", "greedy point insertion (thesis 3.2.2, gpi), basic model", ModelKind::basic, "gpi", "idnotpx", 3, 210,
      generate_gpi},
     {"erded", "ERD model, error-diffusion refinement (thesis 3.4.2, erd_ed)", ModelKind::erd, "erd_ed",
-<<<<<<< HEAD
-     "idnotpxlbrefwsBS", 88, 320, generate_erded},
-    {"erdgpi", "ERD model, greedy point insertion (thesis 3.4.3, erd_gpi)", ModelKind::erd, "erd_gpi",
-     "idnotpxlbrewsS", 88, 320, generate_erdgpi},
-=======
      "idnotpxlbrefwsBS", 96, 960, generate_erded},
     {"erdgpi", "ERD model, greedy point insertion (thesis 3.4.3, erd_gpi)", ModelKind::erd, "erd_gpi",
      "idnotpxlbrewsS", 96, 960, generate_erdgpi},
->>>>>>> main
 };
 
 }  // namespace
