@@ -36,7 +36,7 @@ std::string methods_help();
 const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
+    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
@@ -49,6 +49,7 @@ const CommandLine kGenerate = {
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
         {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E"},
         {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
+        {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
         {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
         {'r', "ratio", "R", "ERD: tau_low / tau_high (default automatic: 0.4)"},
@@ -110,6 +111,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("points")) o->points = a.integer("points", 0, 1, (1LL << 40), st);
     *exit_mode = int(a.integer("exit-mode", 0, 0, 2, st));
     if (a.has("max-error")) o->max_error = a.real("max-error", -1.0, 0.0, big, st);
+    if (a.has("triangles")) o->triangles = a.integer("triangles", 0, 1, (1LL << 40), st);
     if (a.has("psnr")) {
         o->psnr = a.real("psnr", 0.0, 0.0, 1000.0, st, true);
     }

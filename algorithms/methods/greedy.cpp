@@ -16,6 +16,7 @@ const char* to_string(GreedyStop s) {
         case GreedyStop::target: return "target";
         case GreedyStop::max_error: return "max_error";
         case GreedyStop::psnr: return "psnr";
+        case GreedyStop::triangles: return "triangles";
         case GreedyStop::exhausted: return "exhausted";
     }
     return "?";
@@ -186,6 +187,7 @@ public:
             if (cdt_.vertex_count() >= options_.target_vertices) { stop = GreedyStop::target; break; }
             if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
             if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }
+            if (options_.max_triangles && cdt_.face_count() >= options_.max_triangles) { stop = GreedyStop::triangles; break; }
             if (by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
 
             const FaceInd f = by_sum_.top();

@@ -91,6 +91,9 @@ struct GreedyOptions {
     std::size_t target_vertices = 0;  // stop when the triangulation has this many vertices
     double max_error = -1.0;          // stop when max abs error <= max_error; negative: rule off
     double psnr = 0.0;                // stop when PSNR >= psnr dB; <= 0: rule off
+    // Stop when the triangulation has at least this many triangles (an insertion adds two, so it
+    // ends with T or T + 1); 0: rule off.
+    std::size_t max_triangles = 0;
     // Errors against the approximation rounded to the nearest integer and clamped to
     // [0, maxval] (what imgsyn reconstructs; squared errors are integers and the running total
     // exact) instead of the real-valued plane. The default is GenerateOptions::round_values's

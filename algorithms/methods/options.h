@@ -27,6 +27,7 @@ struct GenerateOptions {
     // Extra stop rules of the greedy methods (GPI, ERDGPI); whichever holds first.
     double max_error = -1.0;     // --max-error: largest abs error <= E; negative: off
     double psnr = 0.0;           // --psnr: whole-image PSNR >= P dB; <= 0: off
+    std::int64_t triangles = 0;  // --triangles: the mesh has >= T triangles; 0: off
     bool round_values = true;    // greedy: errors against the rounded approximation (DECISIONS.md)
 
     // ERD methods (erdmodel helper). Negative / -1: automatic selection (thesis 3.4.1).

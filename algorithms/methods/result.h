@@ -18,6 +18,7 @@ enum class GreedyStop {
     target,     // cdt.vertex_count() reached GreedyOptions::target_vertices
     max_error,  // the largest absolute error over candidate points is <= max_error
     psnr,       // the whole-image PSNR (point evaluation) is >= psnr
+    triangles,  // the triangulation has >= max_triangles triangles
     exhausted,  // no face has an admissible point with nonzero error (e.g. planar image)
 };
 

@@ -94,6 +94,7 @@ GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
     go.target_vertices = n;
     go.max_error = options.max_error;
     go.psnr = options.psnr;
+    go.max_triangles = options.triangles > 0 ? std::size_t(options.triangles) : 0;
     go.round_values = options.round_values;
     go.progress = options.progress;
     return go;
