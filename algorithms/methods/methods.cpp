@@ -15,7 +15,7 @@ namespace {
 // GPI 3 + 184; ERDED and ERDGPI 90 + 900 on the edge-rich images (synth, noise), 32 B/pixel in
 // all on bull (the edge planes and polylines grow with the edges). The factors are 3-12% above
 // every measured ED and GPI peak; for the ERD methods they are the edge-rich case, so an image
-// with few edges uses 3-4 times less (docs/DECISIONS.md, Reliability).
+// with few edges uses 3-4 times less (docs/DECISIONS.md, Memory).
 const MethodInfo kMethods[] = {
     {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", ModelKind::basic, "ywb", "idnotpx", 12, 200,
      generate_ed},

@@ -29,7 +29,7 @@
 namespace erd {
 
 // How the hairlines between abutting anti-aliased triangles are avoided (docs/DECISIONS.md,
-// "Vector SVG seams"). layered: the faces are drawn twice (one group, two <use>), first with
+// "Vector SVG"). layered: the faces are drawn twice (one group, two <use>), first with
 // shape-rendering="crispEdges" (each pixel painted whole by one face, no background left), then
 // anti-aliased over it, so an edge pixel mixes its faces by coverage over that underlayer instead
 // of over the background. crisp: only the crispEdges layer (jagged jumps when zoomed). none: only
