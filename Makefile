@@ -76,8 +76,8 @@ $(BUILD)/liberd.a: $(LIB_OBJ)
 	ar rcs $@ $^
 
 # build/erd is linked statically (ERD_LINK= links it dynamically; the sanitizer build must): no
-# dynamic loader, PLT calls or shared-library pages at run time, which is 0.8 ms of every run and
-# 2-3 ms of a 50 ms one (docs/DECISIONS.md "Build flags").
+# dynamic loader, PLT calls or shared-library pages at run time, a fixed cost of every run
+# (docs/DECISIONS.md "Build flags").
 ERD_LINK  ?= -static
 $(BUILD)/erd: $(CLI_OBJ) $(BUILD)/liberd.a
 	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) -lpthread

@@ -21,8 +21,9 @@
 // arguments or data, runtime = an internal limit, density = the exact vertex count was not
 // reached and Options::exact is ExactMode::fail) with a one-line message. Nothing throws, prints,
 // exits or touches files. Memory is allocated only through std::vector inside the calls;
-// built with -fno-exceptions a failed allocation aborts the process (docs/DECISIONS.md,
-// Packaging), so set Options::max_memory to refuse jobs that would not fit before they start.
+// built with -fno-exceptions a failed allocation aborts the process (docs/DECISIONS.md, "Public
+// API and packaging"), so set Options::max_memory to refuse jobs that would not fit before they
+// start.
 //
 // Threads: there is no global or static mutable state. Calls on different images run
 // concurrently on different threads without locking. One object (Model, Image, Cdt) must not
@@ -75,8 +76,9 @@ Status method_from_name(const std::string& name, Method* out);
 using ExactMode = erd::ExactMode;
 
 struct Options {
-    // Target size and the thesis's parameters (algorithms/options.h), thesis defaults: density
-    // 3% of the pixels (-d wins over -n: set density_given or points), automatic ERD parameters.
+    // Target size and the thesis's parameters (algorithms/methods/options.h), thesis defaults:
+    // density 3% of the pixels (-d wins over -n: set density_given or points), automatic ERD
+    // parameters.
     GenerateOptions generate;
     ExactMode exact = ExactMode::fail;
     // Refuse (Code::runtime, before allocating) when memory_estimate() exceeds this many bytes.
@@ -101,11 +103,11 @@ struct GenerateInfo {
 
 // Upper estimate of the bytes a generate() call allocates at its peak for a width x height
 // image with this method and target (the model it returns included). See docs/DECISIONS.md,
-// Packaging, for how it was measured.
+// "Memory", for how it was measured.
 std::size_t memory_estimate(Method m, int width, int height, const Options& options);
 
 // Meshes `image` with method `m`. *model receives the mesh (coordinates doubled, faces with
-// positive orientation; algorithms/model.h). The view is copied once into an erd::Image
+// positive orientation; algorithms/model/model.h). The view is copied once into an erd::Image
 // (2 bytes per pixel) for the duration of the call. `info` may be null.
 Status generate(Method m, const ImageView& image, const Options& options, Model* model,
                 GenerateInfo* info = nullptr);

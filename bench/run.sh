@@ -14,7 +14,7 @@ CALLGRIND=${CALLGRIND:-0}
 [[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
 cd "$(dirname "$0")/.."
 # Outputs go to tmpfs when there is one (BENCH_OUT overrides): the atomic writer fsyncs, and on
-# this machine's disk an fsync costs 30-100 ms, which would swamp the work being measured.
+# a disk an fsync can cost more than the work being measured.
 if [[ -n ${BENCH_OUT:-} ]]; then OUT=$BENCH_OUT
 elif [[ -d /dev/shm && -w /dev/shm ]]; then OUT=$(mktemp -d /dev/shm/erd-bench-XXXXXX); trap 'rm -rf "$OUT"' EXIT
 else OUT=out/bench; fi

@@ -4,7 +4,7 @@
 // Usage: timeit RUNS COMMAND [ARGS...]   (the command's stdout and stderr go to /dev/null)
 //
 // Why not /usr/bin/time inside a bash loop: that adds a subshell, a second exec and `date` calls
-// to every run (about 6 ms here, a quarter of a 25 ms target), and its CPU time has 10 ms steps.
+// to every run (a large share of a 25 ms target), and its CPU time has 10 ms steps.
 // wait4() hands back the child's own rusage with microsecond times, and the clock is read around
 // fork and wait only.
 #include <algorithm>

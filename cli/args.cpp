@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cli/report.h"
 #include "cli/suggest.h"
 
 namespace erd::cli {
@@ -110,6 +111,15 @@ std::string Args::str(const char* long_name, const std::string& fallback) const 
     return g ? g->value : fallback;
 }
 
+// "[lo, hi]" for a message, reals in their shortest form.
+static std::string range_text(double lo, double hi, bool lo_open = false) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%c%g, %g]", lo_open ? '(' : '[', lo, hi);
+    return buf;
+}
+
+// Every numeric option is checked against its range on the text, before any conversion can
+// overflow: a value too large for the type is "outside the range", never a wrapped number.
 long long Args::integer(const char* long_name, long long fallback, long long lo, long long hi, Status* st) const {
     const Given* g = find(long_name);
     if (!g) return fallback;
@@ -117,35 +127,35 @@ long long Args::integer(const char* long_name, long long fallback, long long lo,
     char* end = nullptr;
     errno = 0;
     long long v = std::strtoll(s, &end, 10);
-    if (g->value.empty() || *end != '\0' || errno == ERANGE) {
-        if (st->ok()) *st = Status::bad_input("--" + g->name + ": '" + g->value + "' is not an integer");
+    const std::string shown = escape_name(g->value);
+    if (g->value.empty() || *end != '\0' || end == s) {
+        if (st->ok()) *st = Status::bad_input("--" + g->name + ": '" + shown + "' is not an integer (allowed: [" +
+                                              std::to_string(lo) + ", " + std::to_string(hi) + "])");
         return fallback;
     }
-    if (v < lo || v > hi) {
+    if (errno == ERANGE || v < lo || v > hi) {
         if (st->ok())
-            *st = Status::bad_input("--" + g->name + ": " + g->value + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+            *st = Status::bad_input("--" + g->name + ": " + shown + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return fallback;
     }
     return v;
 }
 
-double Args::real(const char* long_name, double fallback, double lo, double hi, Status* st) const {
+double Args::real(const char* long_name, double fallback, double lo, double hi, Status* st, bool lo_open) const {
     const Given* g = find(long_name);
     if (!g) return fallback;
     const char* s = g->value.c_str();
     char* end = nullptr;
     errno = 0;
     double v = std::strtod(s, &end);
-    if (g->value.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v)) {
-        if (st->ok()) *st = Status::bad_input("--" + g->name + ": '" + g->value + "' is not a number");
+    const bool overflow = errno == ERANGE && std::isinf(v);  // underflow: a tiny value, checked below
+    const std::string shown = escape_name(g->value);
+    if (g->value.empty() || *end != '\0' || end == s || std::isnan(v)) {
+        if (st->ok()) *st = Status::bad_input("--" + g->name + ": '" + shown + "' is not a number (allowed: " + range_text(lo, hi, lo_open) + ")");
         return fallback;
     }
-    if (v < lo || v > hi) {
-        if (st->ok()) {
-            char range[96];
-            std::snprintf(range, sizeof range, "[%g, %g]", lo, hi);
-            *st = Status::bad_input("--" + g->name + ": " + g->value + " is outside " + range);
-        }
+    if (overflow || std::isinf(v) || v < lo || v > hi || (lo_open && v == lo)) {
+        if (st->ok()) *st = Status::bad_input("--" + g->name + ": " + shown + " is outside " + range_text(lo, hi, lo_open));
         return fallback;
     }
     return v;

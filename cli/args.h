@@ -26,7 +26,8 @@ public:
     std::string str(const char* long_name, const std::string& fallback = "") const;
     // Typed getters: a value that does not parse completely, or lies outside [lo, hi], sets *st.
     long long integer(const char* long_name, long long fallback, long long lo, long long hi, Status* st) const;
-    double real(const char* long_name, double fallback, double lo, double hi, Status* st) const;
+    // With lo_open the range is (lo, hi]: lo itself is refused.
+    double real(const char* long_name, double fallback, double lo, double hi, Status* st, bool lo_open = false) const;
     const std::vector<std::string>& positional() const { return positional_; }
 
 private:

@@ -12,6 +12,8 @@
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
+#include "cli/outputs.h"
+#include "cli/report.h"
 
 namespace erd::cli {
 
@@ -100,8 +102,8 @@ static int run_edges(const Args& args, const Reporter& rep) {
     std::vector<std::string> outs = {args.str("output")};
     if (args.has("polylines")) outs.push_back(args.str("polylines"));
     if (args.has("draw-polylines")) outs.push_back(args.str("draw-polylines"));
-    for (const std::string& o : outs)
-        if (!(st = refuse_overwrite(o, {in}))) return rep.fail(st);
+    Outputs outputs;
+    if (!(st = outputs.check(outs, {in}))) return rep.fail(st);
 
     Image im;
     std::string warning;
@@ -120,24 +122,23 @@ static int run_edges(const Args& args, const Reporter& rep) {
              " added at junctions), " + std::to_string(chain.traced) + " traced polylines, " +
              std::to_string(lines.size()) + " kept with " + std::to_string(points) + " vertices");
 
-    // A later output failing removes the earlier ones, so a failed run leaves nothing (issue 7).
-    auto undo = [&](std::size_t count) {
-        for (std::size_t i = 0; i < count; ++i)
-            if (outs[i] != "-") std::remove(outs[i].c_str());
-    };
-    if (!(st = write_image(args.str("output"), edge_image(edges)))) return rep.fail(st);
+    // All outputs committed together at the end: a failure leaves every old file as it was.
+    std::string bytes;
+    if (!(st = encode_image(args.str("output"), edge_image(edges), WriteOptions(), &bytes)) ||
+        !(st = outputs.stage(args.str("output"), bytes)))
+        return rep.fail(st);
     if (args.has("polylines")) {
         std::string text;
         write_polylines(lines, &text);
-        if (!(st = write_file_atomic(args.str("polylines"), text))) {
-            undo(1);
+        if (!(st = outputs.stage(args.str("polylines"), text))) return rep.fail(st);
+    }
+    if (args.has("draw-polylines")) {
+        const std::string draw = args.str("draw-polylines");
+        if (!(st = encode_image(draw, polyline_image(im, lines, args.has("over-image")), WriteOptions(), &bytes)) ||
+            !(st = outputs.stage(draw, bytes)))
             return rep.fail(st);
-        }
     }
-    if (args.has("draw-polylines") && !(st = write_image(args.str("draw-polylines"), polyline_image(im, lines, args.has("over-image"))))) {
-        undo(outs.size() - 1);
-        return rep.fail(st);
-    }
+    if (!(st = outputs.commit())) return rep.fail(st);
     return 0;
 }
 

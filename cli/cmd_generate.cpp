@@ -18,10 +18,13 @@
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
+#include "api/erd.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
+#include "cli/memory_cap.h"
+#include "cli/outputs.h"
 #include "cli/progress.h"
 #include "cli/stats_json.h"
 #include "cli/suggest.h"
@@ -35,7 +38,7 @@ std::string methods_help();
 const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME [-i IMAGE] [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--thesis] [--stats FILE] [--psnr-report] [-q]",
+    "[--max-error E] [--psnr P] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
@@ -63,6 +66,7 @@ const CommandLine kGenerate = {
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
+        {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
@@ -121,17 +125,14 @@ std::string real_text(double v) {
 void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st) {
     const double big = 1e300;
     if (a.has("density")) {
-        o->density = a.real("density", 3.0, -big, big, st);
+        o->density = a.real("density", 3.0, 0.0, 100.0, st, true);
         o->density_given = true;
-        if (st->ok() && !(o->density > 0.0))
-            *st = Status::bad_input("--density: " + a.str("density") + " is not a positive percentage");
     }
     if (a.has("points")) o->points = a.integer("points", 0, 1, (1LL << 40), st);
     *exit_mode = int(a.integer("exit-mode", 0, 0, 2, st));
     if (a.has("max-error")) o->max_error = a.real("max-error", -1.0, 0.0, big, st);
     if (a.has("psnr")) {
-        o->psnr = a.real("psnr", 0.0, -big, big, st);
-        if (st->ok() && !(o->psnr > 0.0)) *st = Status::bad_input("--psnr: " + a.str("psnr") + " is not a positive dB value");
+        o->psnr = a.real("psnr", 0.0, 0.0, 1000.0, st, true);
     }
     o->min_length = int(a.integer("min-length", -1, 1, 1 << 20, st));
     if (a.has("beta")) o->beta = a.real("beta", -1.0, 1e-9, 1.0, st);
@@ -141,7 +142,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     o->wedge_rule = int(a.integer("wedge-rule", 1, 0, 1, st));
     o->wedge_order = int(a.integer("wedge-order", 5, 1, 31, st));
     if (st->ok() && o->wedge_order % 2 == 0)
-        *st = Status::bad_input("--wedge-order: " + a.str("wedge-order") + " is not an odd filter order");
+        *st = Status::bad_input("--wedge-order: " + escape_name(a.str("wedge-order")) + " is not an odd filter order (allowed: 1, 3, ..., 31)");
     o->startup = int(a.integer("startup", 0, 0, 2, st));
     if (a.has("simple")) o->simple = int(a.integer("simple", -1, 0, 1 << 30, st));
     if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));
@@ -176,6 +177,10 @@ static int run_generate(const Args& a, const Reporter& rep) {
     parse_options(a, &opt, &exit_mode, &st);
     if (!st) return rep.usage(st.message);
 
+    std::size_t max_memory = 0;
+    const bool have_cap = a.has("max-memory");
+    if (have_cap && !(st = parse_memory_size(a.str("max-memory"), &max_memory))) return rep.usage(st.message);
+
     const std::string in = a.str("input", "-"), out = a.str("output");
     const std::string tri = a.str("triangulation"), poly = a.str("polylines"), stats_out = a.str("stats");
     if (a.has("triangulation") && tri.empty()) return rep.usage("empty -t file name");
@@ -185,18 +190,9 @@ static int run_generate(const Args& a, const Reporter& rep) {
     if (!tri.empty()) outs.push_back(tri);
     if (!poly.empty()) outs.push_back(poly);
     if (!stats_out.empty()) outs.push_back(stats_out);
-    int to_stdout = 0;
-    for (std::size_t i = 0; i < outs.size(); ++i) {
-        if (outs[i].empty()) return rep.usage("empty output file name");
-        if (outs[i] == "-") ++to_stdout;
-        st = refuse_overwrite(outs[i], {in});
-        if (!st) return rep.fail(st);
-        for (std::size_t j = 0; j < i; ++j) {
-            st = outs[i] == "-" ? Status::success() : refuse_overwrite(outs[i], {outs[j]});
-            if (!st) return rep.fail(Status::bad_input(outs[i] + ": named for two outputs"));
-        }
-    }
-    if (to_stdout > 1) return rep.usage("only one output can go to stdout");
+    Outputs outputs;
+    st = outputs.check(outs, {in});
+    if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message) : rep.fail(st);
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
 
@@ -212,6 +208,20 @@ static int run_generate(const Args& a, const Reporter& rep) {
     std::int64_t n = target_points(opt, image.width, image.height);
     st = check_target(n, image.width, image.height);
     if (!st) return rep.fail(Status::bad_input(in + ": " + st.message));
+
+    // Refused up front when the estimated peak does not fit (cli/memory_cap.h).
+    api::Method api_method;
+    if (api::method_from_name(method->name, &api_method)) {
+        api::Options api_opt;
+        api_opt.generate = opt;
+        // The library's estimate plus the process itself (binary, stdio, buffers): 2 MiB.
+        const std::size_t need = api::memory_estimate(api_method, image.width, image.height, api_opt) + (std::size_t(2) << 20);
+        const std::size_t cap = have_cap ? max_memory : available_memory();
+        st = check_memory(need, cap, have_cap,
+                          escape_name(in) + ": meshing " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                              " with " + method->name + " at " + std::to_string(n) + " points");
+        if (!st) return rep.fail(st);
+    }
 
     Progress progress("generate", Progress::should_show(a.has("progress"), rep.quiet()));
     opt.progress = progress.hook();
@@ -234,40 +244,28 @@ static int run_generate(const Args& a, const Reporter& rep) {
     }
     if (!exact_warning.empty()) std::fprintf(stderr, "WARNING: %s\n", exact_warning.c_str());
 
-    // A later output failing removes the files this run already wrote, so a failed run leaves
-    // nothing behind (robustness, issue 7); stdout cannot be taken back.
-    std::vector<std::string> written;
-    auto fail_after_write = [&](const Status& bad) {
-        for (const std::string& w : written) std::remove(w.c_str());
-        return rep.fail(bad);
-    };
-    auto wrote = [&](const std::string& path) {
-        if (path != "-") written.push_back(path);
-    };
+    // Every output is staged (a temporary beside its target) and committed together at the end,
+    // so a failure anywhere leaves every old file as it was (cli/outputs.h).
     t0 = std::chrono::steady_clock::now();
     std::string bytes;
     st = write_model(res.model, &bytes);
     if (!st) return rep.fail(st);
-    st = write_file_atomic(out, bytes);
+    st = outputs.stage(out, bytes);
     if (!st) return rep.fail(st);
-    wrote(out);
     if (!tri.empty()) {
         std::string tri_bytes;
         st = write_triangulation(res.model, &tri_bytes);
-        if (!st) return fail_after_write(st);
-        st = write_file_atomic(tri, tri_bytes);
-        if (!st) return fail_after_write(st);
-        wrote(tri);
+        if (!st) return rep.fail(st);
+        st = outputs.stage(tri, tri_bytes);
+        if (!st) return rep.fail(st);
     }
     if (!poly.empty()) {
         std::string poly_bytes;
         write_polylines(res.polylines, &poly_bytes);
-        st = write_file_atomic(poly, poly_bytes);
-        if (!st) return fail_after_write(st);
-        wrote(poly);
+        st = outputs.stage(poly, poly_bytes);
+        if (!st) return rep.fail(st);
     }
     const double write_seconds = seconds_since(t0);
-    rep.note(summary(*method, image, res, out, seconds_since(t_start)));
 
     // The reported PSNR is that of the model's own reconstruction: imgsyn for a basic model,
     // 4x4-supersampled imgsyn_aa for an ERD model (../shared/spec/NOTES.md).
@@ -277,9 +275,9 @@ static int run_generate(const Args& a, const Reporter& rep) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
         st = reconstruct(res.model, res.model.kind == ModelKind::erd, &rec);
-        if (!st) return fail_after_write(Status::failure("reconstruct: " + st.message));
+        if (!st) return rep.fail(Status::failure("reconstruct: " + st.message));
         st = psnr(image, rec, &db);
-        if (!st) return fail_after_write(st);
+        if (!st) return rep.fail(st);
         have_psnr = true;
         psnr_seconds = seconds_since(t0);
         // Asked for explicitly, so printed under -q too (stderr: stdout may carry the model).
@@ -297,9 +295,12 @@ static int run_generate(const Args& a, const Reporter& rep) {
         }
         gs.total_seconds = seconds_since(t_start);
         gs.peak_memory_bytes = peak_memory_bytes();
-        st = write_file_atomic(stats_out, stats_json(gs));
-        if (!st) return fail_after_write(st);
+        st = outputs.stage(stats_out, stats_json(gs));
+        if (!st) return rep.fail(st);
     }
+    st = outputs.commit();
+    if (!st) return rep.fail(st);
+    rep.note(summary(*method, image, res, out, seconds_since(t_start)));
     return 0;
 }
 

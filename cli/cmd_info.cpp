@@ -57,7 +57,7 @@ static int run_info(const Args& args, const Reporter& rep) {
     } else {
         std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\nmaxval:  %u\nbits:    %d\n"
                     "samples: min %u, max %u, mean %.4f\n",
-                    path.c_str(), format_name(fmt), im.width, im.height, im.pixels(), im.maxval, im.bits(), lo, hi, mean);
+                    escape_name(path).c_str(), format_name(fmt), im.width, im.height, im.pixels(), im.maxval, im.bits(), lo, hi, mean);
     }
     return 0;
 }

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "cli/fileio.h"
+#include "cli/framing.h"
+#include "cli/report.h"
 #include "third_party/stb_glue.h"
 
 namespace erd::cli {
@@ -222,37 +224,44 @@ Status read_plain(Cursor& c, Image* out, std::uint32_t maxval, std::string* warn
 
 }  // namespace
 
-Status decode_pgm(const unsigned char* data, std::size_t size, Image* out, std::string* warning, const ImageLimits& limits) {
-    if (warning) warning->clear();
+Status pgm_header(const unsigned char* data, std::size_t size, const ImageLimits& limits, PgmHeader* hd) {
     if (size < 2 || data[0] != 'P' || (data[1] != '2' && data[1] != '5')) return Status::bad_input(wrong_magic(data, size));
-    const bool plain = data[1] == '2';
+    hd->plain = data[1] == '2';
     Cursor c{data, size, 2};
     if (c.i == size) return Status::bad_input("end of file inside the header, after the magic");
     if (data[2] == 0) return c.nul();
     // A comment directly after the magic is accepted (netpbm does); anything else must be whitespace.
     if (!is_space(data[2]) && data[2] != '#')
         return Status::bad_input("junk after the magic: '" + show(data, size, 0) + "' (the magic must be followed by whitespace)");
-
-    std::uint64_t w = 0, h = 0, maxval = 0;
-    Status s = c.number("width", &w);
+    Status s = c.number("width", &hd->w);
     if (!s) return s;
-    if (!(s = check_side("width", w, limits))) return s;
-    if (!(s = c.number("height", &h))) return s;
-    if (!(s = check_side("height", h, limits))) return s;
-    if (!(s = c.number("maxval", &maxval))) return s;
-    if (maxval == 0) return Status::bad_input("maxval is 0 (it must be 1 to 65535)");
-    if (maxval > 65535) return Status::bad_input("maxval " + std::to_string(maxval) + " is above 65535");
-    const std::uint64_t pixels = w * h;  // both <= 2^32 - 1 here, and bounded by max_side
+    if (!(s = check_side("width", hd->w, limits))) return s;
+    if (!(s = c.number("height", &hd->h))) return s;
+    if (!(s = check_side("height", hd->h, limits))) return s;
+    if (!(s = c.number("maxval", &hd->maxval))) return s;
+    if (hd->maxval == 0) return Status::bad_input("maxval is 0 (it must be 1 to 65535)");
+    if (hd->maxval > 65535) return Status::bad_input("maxval " + std::to_string(hd->maxval) + " is above 65535");
+    const std::uint64_t pixels = hd->w * hd->h;  // both <= 2^32 - 1 here, and bounded by max_side
     if (std::int64_t(pixels) > limits.max_pixels)
-        return Status::bad_input(std::to_string(w) + " x " + std::to_string(h) + " = " + std::to_string(pixels) +
+        return Status::bad_input(std::to_string(hd->w) + " x " + std::to_string(hd->h) + " = " + std::to_string(pixels) +
                                  " pixels is above the limit of " + std::to_string(limits.max_pixels) + " pixels (memory)");
-
     // Exactly one whitespace byte ends the header; a comment may stand before it.
     if (c.d[c.i] == '#') {
         if (!(s = c.skip_comment("raster"))) return s;
     }
-    const std::size_t sep = c.i;
-    c.i = sep + 1;
+    hd->sep = c.i;
+    return Status::success();
+}
+
+Status decode_pgm(const unsigned char* data, std::size_t size, Image* out, std::string* warning, const ImageLimits& limits) {
+    if (warning) warning->clear();
+    PgmHeader hd;
+    Status s = pgm_header(data, size, limits, &hd);
+    if (!s) return s;
+    const bool plain = hd.plain;
+    const std::uint64_t w = hd.w, h = hd.h, maxval = hd.maxval, pixels = w * h;
+    const std::size_t sep = hd.sep;
+    Cursor c{data, size, sep + 1};
 
     Image im;
     im.width = int(w);
@@ -360,7 +369,27 @@ Status decode_png(const unsigned char* data, std::size_t size, Image* out, std::
     // Room for the compressed stream, the inflated rows and the output, with slack for stb's growth.
     const std::size_t budget = std::size_t(3 * raw + 2 * pixels * bytes_per + 4 * std::uint64_t(size) + (1u << 20));
     stb::PngImage png;
-    if (!stb::png_decode(data, size, budget, &png, &why)) return Status::bad_input("PNG rejected by the decoder: " + printable(why));
+    bool short_palette = false;
+    std::string padded;
+    std::size_t entries = 0;
+    if (Status p = pad_png_palette(data, size, 0, &short_palette, &padded, &entries); !p) return p;
+    if (short_palette) {
+        // Decoded with the missing entries black, then white: a pixel that changes uses one.
+        auto bytes = [](const std::string& b) { return reinterpret_cast<const unsigned char*>(b.data()); };
+        if (!stb::png_decode(bytes(padded), padded.size(), budget, &png, &why))
+            return Status::bad_input("PNG rejected by the decoder: " + printable(why));
+        stb::PngImage white;
+        (void)pad_png_palette(data, size, 255, &short_palette, &padded, &entries);
+        if (!stb::png_decode(bytes(padded), padded.size(), budget, &white, &why))
+            return Status::bad_input("PNG rejected by the decoder: " + printable(why));
+        for (std::size_t k = 0; k < png.gray.size(); ++k)
+            if (png.gray[k] != white.gray[k])
+                return Status::bad_input("PNG pixel " + at((long long)(k % std::size_t(png.width)), (long long)(k / std::size_t(png.width))) +
+                                         " uses a palette index beyond the " + std::to_string(entries) +
+                                         " entries of its PLTE chunk");
+    } else if (!stb::png_decode(data, size, budget, &png, &why)) {
+        return Status::bad_input("PNG rejected by the decoder: " + printable(why));
+    }
     Image im;
     im.width = png.width;
     im.height = png.height;
@@ -442,12 +471,14 @@ static bool ends_with_png(const std::string& path) {
 Status read_image(const std::string& path, Image* out, std::string* warning, ImageFormat* format, const ImageLimits& limits) {
     if (warning) warning->clear();
     std::string bytes;
-    Status s = read_file(path, &bytes, kMaxInputBytes);
+    bool more = false;
+    Status s = read_file(path, &bytes, kMaxInputBytes, image_framer(limits), &more);
     if (!s) return s;
-    const std::string name = path == "-" ? "stdin" : path;
+    const std::string name = escape_name(path == "-" ? "stdin" : path);
     std::string w;
     s = decode_image(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), out, &w, format, limits);
     if (!s) return Status::bad_input(name + ": " + s.message);
+    if (more) w += std::string(w.empty() ? "" : "\n") + "ignored the data after the image (a stream is read as far as its header says)";
     if (warning && !w.empty()) {
         // Prefix every line with the file name.
         std::string::size_type i = 0;
@@ -462,19 +493,24 @@ Status read_image(const std::string& path, Image* out, std::string* warning, Ima
     return Status::success();
 }
 
-Status write_image(const std::string& path, const Image& im, const WriteOptions& options) {
+Status encode_image(const std::string& path, const Image& im, const WriteOptions& options, std::string* bytes) {
     if (im.width <= 0 || im.height <= 0 || im.samples.size() != std::size_t(im.width) * std::size_t(im.height) ||
         im.maxval < 1 || im.maxval > 65535)
-        return Status::failure(path + ": internal error: invalid image " + std::to_string(im.width) + " x " +
+        return Status::failure(escape_name(path) + ": internal error: invalid image " + std::to_string(im.width) + " x " +
                                std::to_string(im.height) + " maxval " + std::to_string(im.maxval));
-    std::string bytes;
     if (ends_with_png(path)) {
-        Status s = encode_png(im, &bytes);
-        if (!s) return Status::error(s.code, path + ": " + s.message);
+        Status s = encode_png(im, bytes);
+        if (!s) return Status::error(s.code, escape_name(path) + ": " + s.message);
     } else {
-        bytes = encode_pgm(im, options.plain);
+        *bytes = encode_pgm(im, options.plain);
     }
-    return write_file_atomic(path, bytes);
+    return Status::success();
+}
+
+Status write_image(const std::string& path, const Image& im, const WriteOptions& options) {
+    std::string bytes;
+    Status s = encode_image(path, im, options, &bytes);
+    return s ? write_file_atomic(path, bytes) : s;
 }
 
 }  // namespace erd::cli

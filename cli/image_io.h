@@ -19,7 +19,7 @@ enum class ImageFormat { unknown, pgm_plain, pgm_raw, png };
 // "PGM (P2, plain)", "PGM (P5, raw)", "PNG", "unknown".
 const char* format_name(ImageFormat f);
 
-// Size limits, checked before any allocation. Defaults are those of algorithms/image.h
+// Size limits, checked before any allocation. Defaults are those of algorithms/imaging/image.h
 // (predicate exactness bounds the side, memory bounds the pixel count); the fuzzers lower them.
 struct ImageLimits {
     int max_side = kMaxImageSide;
@@ -28,6 +28,15 @@ struct ImageLimits {
 
 // Detects the format from the magic bytes (P2, P5, PNG signature). Unknown for anything else.
 ImageFormat detect_format(const unsigned char* data, std::size_t size);
+
+// The header of a PGM: magic, width, height, maxval (each checked against the limits) and the
+// index of the one whitespace byte that ends it (the raster starts after it).
+struct PgmHeader {
+    bool plain = false;
+    std::uint64_t w = 0, h = 0, maxval = 0;
+    std::size_t sep = 0;
+};
+Status pgm_header(const unsigned char* data, std::size_t size, const ImageLimits& limits, PgmHeader* header);
 
 // Decodes a PGM from memory. *warning receives non-fatal remarks (e.g. a CR before an LF after
 // maxval); it may be null. Errors are Code::input with a one-line message without file name.
@@ -59,6 +68,10 @@ Status read_image(const std::string& path, Image* out, std::string* warning, Ima
 struct WriteOptions {
     bool plain = false;  // PGM: write P2 (the thesis's programs write plain PNM) instead of P5
 };
+
+// The bytes write_image writes to `path` (PNG or PGM, chosen by the name as below), for a
+// command that stages several outputs (cli/outputs.h). Messages start with the path.
+Status encode_image(const std::string& path, const Image& im, const WriteOptions& options, std::string* bytes);
 
 // Writes atomically (cli/fileio.h). A path ending in ".png" (any case) gets PNG, which needs
 // maxval < 256 (else Code::input, before anything is written); anything else, "-" included,

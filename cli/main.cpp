@@ -11,6 +11,8 @@
 #endif
 
 #include "cli/commands.h"
+#include "cli/outputs.h"
+#include "cli/report.h"
 #include "cli/suggest.h"
 #include "cli/version.h"
 
@@ -49,7 +51,7 @@ static int cmd_help(int argc, char** argv) {
     if (!std::strcmp(argv[1], "--version")) { std::printf("erd %s\n", kVersion); return 0; }
     const Command* c = find_command(argv[1]);
     if (!c || c->run == cmd_help) {
-        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", argv[1]); return 2; }
+        if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", escape_name(argv[1]).c_str()); return 2; }
         list_commands(stdout);
         return 0;
     }
@@ -61,7 +63,8 @@ static int cmd_help(int argc, char** argv) {
 static int unknown(const char* name) {
     std::vector<const char*> names;
     for (const auto& c : kCommands) names.push_back(c.name);
-    std::fprintf(stderr, "erd: '%s' is not a subcommand.%s See 'erd help'.\n", name, did_you_mean(name, names).c_str());
+    std::fprintf(stderr, "erd: '%s' is not a subcommand.%s See 'erd help'.\n", escape_name(name).c_str(),
+                 did_you_mean(name, names).c_str());
     return 2;
 }
 
@@ -82,10 +85,10 @@ namespace {
 // glibc serves blocks above a dynamic threshold (128 KiB at first) with fresh mmaps and unmaps
 // them on free, so every whole-image array the pipeline allocates again after freeing one (the
 // edge detector's planes between detections, the greedy and refit arrays after them) is paid
-// for again in page faults, ~2 us each on this machine. A fixed threshold above the largest of
-// them takes them from the heap, where freed blocks are reused as they are: bull ERDGPI 1%
-// 14.0k -> 10.3k minor faults, ~13 ms less system time, peak RSS +0.5 MB. (Keeping the freed top
-// of the heap as well, M_TRIM_THRESHOLD, saves 0.9k faults more but costs 1 MB more RSS.)
+// for again in page faults. A fixed threshold above the largest of them takes them from the
+// heap, where freed blocks are reused as they are: fewer faults for a little more peak RSS
+// (docs/DECISIONS.md "Memory"). Keeping the freed top of the heap as well (M_TRIM_THRESHOLD)
+// saves few more faults for more RSS, so it is left alone.
 //
 // Not under Valgrind: its tools run glibc's allocator in a brk segment of a few MB, and heap
 // growth beyond it fails (std::bad_alloc on lena). Valgrind always preloads its vgpreload_*
@@ -121,6 +124,7 @@ int erd::cli::run(int argc, char** argv) {
 #ifndef ERD_CLI_NO_MAIN
 int main(int argc, char** argv) {
     tune_allocator();
+    erd::cli::install_output_signal_handlers();
     return erd::cli::run(argc, argv);
 }
 #endif

@@ -2,6 +2,8 @@
 
 #include "algorithms/model/model_io.h"
 #include "cli/fileio.h"
+#include "cli/framing.h"
+#include "cli/report.h"
 
 namespace erd::cli {
 
@@ -29,9 +31,10 @@ bool is_triangulation(const std::string& text) {
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo) {
     if (warning) warning->clear();
     std::string text;
-    Status st = read_file(path, &text);
+    const ModelFileKind kind = model_kind_from_name(path);
+    Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
     if (!st) return st;
-    const ModelFileKind named = model_kind_from_name(path);
+    const ModelFileKind named = kind;
     ModelFileKind found = ModelFileKind::unknown;
     if (is_triangulation(text)) {
         found = ModelFileKind::triangulation;
@@ -48,9 +51,9 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
         Model again;
         st = named == ModelFileKind::triangulation ? read_triangulation(text, &again) : read_model(text, named, &again);
     }
-    if (!st) return Status::error(st.code, path + ": " + st.message);
+    if (!st) return Status::error(st.code, escape_name(path) + ": " + st.message);
     if (warning && named != ModelFileKind::unknown && named != found)
-        *warning = path + ": the content is a " + extension_of(found) + " file, not a " + extension_of(named) +
+        *warning = escape_name(path) + ": the content is a " + extension_of(found) + " file, not a " + extension_of(named) +
                    " as the name says; read as " + extension_of(found);
     return st;
 }

@@ -8,7 +8,7 @@
 
 namespace erd::cli {
 
-// Reads `path` ("-" = stdin) and parses it with algorithms/model_io.h. The content decides the
+// Reads `path` ("-" = stdin) and parses it with algorithms/model/model_io.h. The content decides the
 // kind: "erd-triangulation" first is the -t triangulation (vertices, faces and constraints, no
 // values: enough to draw, not to reconstruct or export); a model that goes on after its faces is
 // an .erd, else a .model. The name (.model, .erd, .tri) only breaks a tie: content that reads as

@@ -23,7 +23,7 @@ public:
     // True when progress should be shown: --progress given, or stderr is a terminal; never quiet.
     static bool should_show(bool forced, bool quiet);
 
-    // The hook to put in a method's options (algorithms/progress.h); valid while *this lives.
+    // The hook for a method's options (algorithms/methods/progress.h); valid while *this lives.
     ProgressHook hook() { return ProgressHook{&Progress::callback, this}; }
 
     void update(const char* stage, double fraction);

@@ -23,7 +23,7 @@ public:
 
     // Prints "erd SUB: message" and returns st.exit_code() (0 prints nothing).
     int fail(const Status& st) const;
-    // A usage error: "erd SUB: message" plus the usage line and a pointer to --help; returns 2.
+    // A usage error: "erd SUB: message" and the usage on one line ("usage: erd SUB ..."); returns 2.
     int usage(const std::string& message) const;
     // "erd SUB: warning: message" unless quiet; empty messages print nothing (may hold several lines).
     void warn(const std::string& message) const;
@@ -40,5 +40,14 @@ private:
     bool quiet_ = false;
     bool verbose_ = false;
 };
+
+// A file name as it may be printed: control characters, bytes that are not UTF-8 and the C1
+// controls (U+0080..U+009F) shown as \n, \t, \xNN, a backslash as \\, so a crafted name can
+// neither split a message into two lines nor drive the terminal; other text is kept as it is.
+// Every message that names a file uses it; Reporter applies the same to whole messages (without
+// doubling backslashes), so whatever it prints is one line per message.
+std::string escape_name(const std::string& name);
+// The same for a whole message (backslashes kept as they are): one printable line.
+std::string escape_message(const std::string& message);
 
 }  // namespace erd::cli

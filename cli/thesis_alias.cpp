@@ -29,6 +29,7 @@
 
 #include "algorithms/methods/methods.h"
 #include "cli/commands.h"
+#include "cli/report.h"
 
 namespace erd::cli {
 
@@ -77,7 +78,7 @@ const Program kOtherPrograms[] = {
 };
 
 int usage(const Program& p, const std::string& message) {
-    if (!message.empty()) std::fprintf(stderr, "%s: %s\n", p.name, message.c_str());
+    if (!message.empty()) std::fprintf(stderr, "%s: %s\n", p.name, escape_message(message).c_str());
     std::fprintf(stderr, "usage: %s%s%s\n", p.name, p.kind == Kind::generate ? kMeshUsage : "", p.usage.c_str());
     return 2;
 }

@@ -1,5 +1,5 @@
-// libFuzzer target for the whole generate pipeline (algorithms/methods.h), on tiny images made
-// from the input bytes. Layout (missing bytes read as 0):
+// libFuzzer target for the whole generate pipeline (algorithms/methods/methods.h), on tiny images
+// made from the input bytes. Layout (missing bytes read as 0):
 //   byte 0, 1   width, height: 1 + b % 24
 //   byte 2, 3   maxval: 1 + (b2 << 8 | b3) % 65535
 //   byte 4      method: b % method count

@@ -1,4 +1,4 @@
-// libFuzzer target for the model-file readers (algorithms/model_io.h: .model and .erd) and
+// libFuzzer target for the model-file readers (algorithms/model/model_io.h: .model and .erd) and
 // reconstruction of whatever they accept.
 //
 // Checks beyond "no crash": a refusal is one non-empty line with Code::input; an accepted model

@@ -1,4 +1,4 @@
-// libFuzzer target for the -t triangulation reader (algorithms/model_io.h read_triangulation).
+// libFuzzer target for the -t triangulation reader (algorithms/model/model_io.h).
 // A refusal is one non-empty line with Code::input; an accepted file has indices in range,
 // positive faces, coordinates inside W x H, constraints that are face edges, and survives
 // write -> read unchanged. Replay without libFuzzer: fuzz/replay.cpp.

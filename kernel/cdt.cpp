@@ -26,7 +26,7 @@ void Cdt::begin_change() {
 }
 
 // The arrays are kept longer than face_count() and grown geometrically, so taking a slot is a
-// counter increment (a push_back per entry cost ~95 instructions a face). Slots past nfaces_ are
+// counter increment (not a push_back with its capacity check per array). Slots past nfaces_ are
 // all zero (a memset to grow): split_face relies on new faces' flags being 0 and stamps must not
 // match a change id; vertices and twins of a new face are always written by its creator.
 FaceInd Cdt::new_faces(FaceInd n) {
@@ -301,10 +301,10 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
 // edge, in that order, that has p strictly on its outer side. The edge the walk came through is
 // positive (exactly the negation of the test that crossed it), so it is tested rather than
 // skipped: same path, no unpredictable skip branch. Two ways to find the exit, same answer:
-//   Branchless (insert_points): all three tests, then a select. 5% faster on short walks in a
+//   Branchless (insert_points): all three tests, then a select. Faster on short walks in a
 //     spatially coherent order, where the exit branches mispredict.
-//   otherwise: a branch per test. 35% faster on long random-order walks, where predicted exits
-//     let the next face's loads start before the tests finish.
+//   otherwise: a branch per test. Faster on long random-order walks, where predicted exits
+//     let the next face's loads start before the tests finish (docs/DECISIONS.md "Kernel").
 Location Cdt::walk(LatticePoint p, FaceInd start) const { return walk_as<false>(p, start); }
 
 template <bool Branchless>

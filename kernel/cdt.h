@@ -128,7 +128,7 @@ public:
 
     // Inserts many points in a spatially coherent (Hilbert curve) order, each walking from the
     // previous one. (*v)[i] receives the vertex of pts[i]. changes() covers the whole batch, or
-    // is left empty when report_changes is false (saves the per-face bookkeeping, ~3%).
+    // is left empty when report_changes is false (saves the per-face bookkeeping).
     Status insert_points(const std::vector<LatticePoint>& pts, std::vector<VertInd>* v,
                          bool report_changes = true);
 

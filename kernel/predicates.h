@@ -14,7 +14,7 @@
 //   incircle: differences < 2^24, lifted terms dx^2+dy^2 < 2^49, 2x2 cofactors < 2^49,
 //   each product < 2^98, the sum of three < 2^100: exact in __int128.
 // Cdt::reset and Cdt::insert_point check the bound; images are at most 32768 pixels a side
-// (algorithms/image.h), so doubled coordinates stay below 65536, far inside it.
+// (algorithms/imaging/image.h), so doubled coordinates stay below 65536, far inside it.
 // Small coordinates: when every coordinate is below kSmallCoord = 2^14, differences are below
 // 2^14 in magnitude, lifted terms and cofactors below 2^29 (exact in int32), each product below
 // 2^58 and the sum of three below 2^60: incircle_small is exact in int64 and saves the three

@@ -1,5 +1,5 @@
 // Reconstruction (imgsyn, imgsyn_aa) against hand-computed values and a brute-force evaluator of
-// the approximating function that shares no code with algorithms/reconstruct.cpp.
+// the approximating function that shares no code with algorithms/model/reconstruct.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>

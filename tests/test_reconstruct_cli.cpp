@@ -62,11 +62,17 @@ TEST_CASE("reconstruct CLI: bad input is one line and exit status 2", "[model_io
     CHECK(r.err == "erd reconstruct: " + bad + ": line 9: face 1: vertex index 9 out of range (4 vertices)\n");
     CHECK_FALSE(exists(d.file("o.pgm")));
     const std::string hole = d.file("hole.model");
-    spit(hole, "255\n4\n0 0 10\n1 0 18\n0 1 10\n1 1 18\n1\n0 1 3\n");
+    // Every vertex in a face (else the reader refuses it first), one face of the fan missing.
+    spit(hole, "255\n5\n0 0 10\n2 0 18\n0 2 10\n2 2 18\n1 1 14\n3\n0 1 4\n1 3 4\n3 2 4\n");
     r = run_erd("reconstruct " + sh_quote(hole));
     CHECK(r.status == 2);
     CHECK(r.err == "erd reconstruct: " + hole +
                        ": not a triangulation of the image domain: the faces leave holes (their areas add up to less than the rectangle)\n");
+    const std::string lone = d.file("lone.model");
+    spit(lone, "255\n4\n0 0 10\n1 0 18\n0 1 10\n1 1 18\n1\n0 1 3\n");
+    r = run_erd("reconstruct " + sh_quote(lone));
+    CHECK(r.status == 2);
+    CHECK(r.err == "erd reconstruct: " + lone + ": line 5: vertex 2 (0, 1) belongs to no face\n");
     r = run_erd("reconstruct " + sh_quote(d.file("missing.erd")));
     CHECK(r.status == 2);
     CHECK(r.err.find("erd reconstruct: ") == 0);

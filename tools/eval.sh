@@ -104,11 +104,11 @@ printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"
     echo "Tables 3.5 (ED, ERDED) and 3.6 (GPI, ERDGPI). diff = ours - thesis. \"met\" = ours >= thesis - tol"
     echo "(tol: ED 1.5, GPI 0.5, ERDED 0.5, ERDGPI 0.3 dB, the targets of issues 5 and 6). time = wall"
     echo "seconds of \`erd generate\` (load, mesh, write), $JOBS cases at once on a shared machine."
-    echo "Misses of the targets, their likely causes and what was tried: docs/DECISIONS.md, per method."
+    echo "Misses of the targets and their likely causes: docs/DECISIONS.md \"ED and GPI\", \"ERD model and methods\"."
     echo "ERDED and ERDGPI appear twice: \"thesis method\" is \`erd generate --thesis\` (the thesis's wedge"
     echo "values, line search alpha in [1, 1.5] px, ERDED density zeroed on edge pixels only; this is what the"
     echo "reproduction targets are judged on), \"erd default\" is what \`erd generate\` does without flags (our"
-    echo "least-squares wedge refit, alpha in [0.75, 1] px, edge radius 1 px; docs/DECISIONS.md)."
+    echo "least-squares wedge refit, alpha in [0.75, 1] px, edge radius 1 px; docs/DECISIONS.md \"ERD model and methods\")."
     echo
     for v in "${variants[@]}"; do
         m=${v%+thesis}

@@ -7,6 +7,7 @@
 set -u
 BIN=${1:?usage: hostile_table.sh ERD_BIN}
 [[ $BIN == /* ]] || BIN=$PWD/$BIN
+SRC=$(cd "$(dirname "$0")/.." && pwd)
 D=$(mktemp -d)
 trap 'rm -rf "$D"' EXIT
 cd "$D" || exit 2
@@ -42,24 +43,38 @@ case_() {
     local label=$1 want=$2; shift 2
     local args=() a
     for a in "$@"; do args+=("$a"); done
-    "$BIN" "${args[@]}" >out.stdout 2>out.stderr
+    # IN: standard input (default /dev/null); LIMIT_KB: a memory cap (ulimit -v), LIMIT_FSIZE a
+    # file-size cap (ulimit -f, 512-byte blocks); CHECK: a condition on the files afterwards.
+    (
+        [[ -n ${LIMIT_KB:-} ]] && ulimit -v "$LIMIT_KB"
+        [[ -n ${LIMIT_FSIZE:-} ]] && ulimit -f "$LIMIT_FSIZE"
+        exec "$BIN" "${args[@]}"
+    ) <"${IN:-/dev/null}" >out.stdout 2>out.stderr
     local rc=$? msg
     msg=$(grep -v '^$' out.stderr | head -1 | sed "s|$D/||g" | cut -c1-200)
+    [[ -n ${SHOW:-} ]] && msg=$SHOW
     if [[ $rc -eq 0 && ${args[0]} == generate ]]; then
         local n="" o="" k
         for ((k = 0; k < ${#args[@]}; k++)); do
             [[ ${args[k]} == -n ]] && n=${args[k+1]}
             [[ ${args[k]} == -o ]] && o=${args[k+1]}
         done
-        local nv; nv=$(sed -n 2p "$o" 2>/dev/null)
+        local nv=""
+        [[ -f $o ]] && nv=$(sed -n 2p "$o" 2>/dev/null)
+        [[ -f $o ]] || n=""  # a special output (/dev/null, a FIFO): nothing to count
         msg="ok: $nv vertices; $(grep 'psnr' out.stderr | head -1 | sed 's/^erd generate: //')"
         if [[ -n $n && $nv != "$n" ]]; then msg="$msg (NOT the $n asked for)"; rc=99; fi
     fi
     [[ -z $msg ]] && msg="(nothing on stderr)"
+    if [[ -n ${CHECK:-} ]] && ! eval "$CHECK"; then rc="$rc, check failed: $CHECK"; fi
     local mark=""
     if ! [[ "|$want|" == *"|$rc|"* ]]; then mark=" UNEXPECTED (wanted $want)"; bad=1; fi
     msg=${msg//|/\\|}
-    echo "| $label | \`erd ${args[*]}\` | $rc$mark | $msg |"
+    local shown=() w
+    for w in "${args[@]}"; do
+        if [[ $w == *[[:cntrl:]]* ]]; then shown+=("$(printf '%q' "$w")"); else shown+=("$w"); fi
+    done
+    echo "| $label | \`erd ${shown[*]}\` | $rc$mark | $msg |"
 }
 
 cat <<'EOF'
@@ -221,4 +236,107 @@ case_ "parent is a file (synth)" 1 synth -W 4 -H 4 -o afile/s.pgm
 if [[ -e /dev/full ]]; then
     case_ "/dev/full (synth)" 1 synth -W 64 -H 64 -o /dev/full
 fi
+
+cat <<'EOF'
+
+## Outputs that are not ours, and old files (issue 19)
+All outputs of a command are committed together at the end (docs/DECISIONS.md, "Outputs"): a
+failure leaves every old file as it was; special files are written in place and never
+unlinked; a symbolic link is followed (its target replaced, the link kept), a link to nothing
+refused. Each row also checks the files afterwards ("check failed" when they are not as stated).
+Device nodes and a full file system: tests/test_outputs.cpp ("[outputs]", as root).
+
+| case | command | exit | message |
+| --- | --- | --- | --- |
+EOF
+mkdir sub
+echo old-model > old.model
+sum() { cksum <"$1" | cut -d' ' -f1; }
+OLDM=$(sum old.model)
+no_temp() { ! ls -A . sub | grep -q '^\.erd-'; }
+CHECK='[[ -c /dev/null ]]' case_ "-o /dev/null, -t fails: /dev/null kept" 1 generate -q -m gpi -i in.pgm -o /dev/null -t /nonexistent/x.tri -n 20
+CHECK='[[ -c /dev/null ]]' case_ "-o /dev/null, -p a folder" 1 generate -q -m erdgpi -i in.pgm -o /dev/null -p sub -n 20
+CHECK='[[ $(sum old.model) == "$OLDM" ]] && no_temp' case_ "old model kept when -t fails" 1 generate -q -m gpi -i in.pgm -o old.model -t /nonexistent/x.tri -n 20
+CHECK='[[ $(sum old.model) == "$OLDM" ]] && no_temp' case_ "old model kept when -p is a folder" 1 generate -q -m erdgpi -i in.pgm -o old.model -p sub -n 20
+CHECK='[[ $(sum old.model) == "$OLDM" ]] && no_temp' case_ "old model kept when --stats fails" 1 generate -q -m gpi -i in.pgm -o old.model --stats /nonexistent/s.json -n 20
+if [[ -e /dev/full ]]; then
+    CHECK='[[ $(sum old.model) == "$OLDM" && -c /dev/full ]] && no_temp' case_ "old model kept when --stats is /dev/full" 1 generate -q -m gpi -i in.pgm -o old.model --stats /dev/full -n 20
+fi
+ln -s old.model link.model
+CHECK='[[ -L link.model && $(sed -n 2p old.model) == 20 ]]' case_ "-o a symbolic link: target replaced, link kept" 0 generate -q -m gpi -i in.pgm -o link.model -n 20
+echo old-model > old.model
+ln -s missing.model dangling.model
+CHECK='[[ -L dangling.model && ! -e missing.model ]]' case_ "-o a dangling symbolic link: refused" 1 generate -q -m gpi -i in.pgm -o dangling.model -n 20
+ln -s in.pgm inlink.pgm
+CHECK='[[ -L inlink.pgm && $(head -c 2 in.pgm) == P2 ]]' case_ "-o a link to the input: refused" 2 generate -q -m gpi -i in.pgm -o inlink.pgm -n 20
+mkfifo fifo.model
+(timeout 20 cat fifo.model > fifo.out) &
+CHECK='[[ -p fifo.model ]] && wait && [[ $(sed -n 2p fifo.out) == 20 ]]' case_ "-o a FIFO: written in place, kept" 0 generate -q -m gpi -i in.pgm -o fifo.model -n 20
+CHECK='[[ -p fifo.model ]]' case_ "-o a FIFO, -t fails: FIFO not opened, kept" 1 generate -q -m gpi -i in.pgm -o fifo.model -t /nonexistent/x.tri -n 20
+CHECK='[[ $(sum old.model) == "$OLDM" ]]' case_ "-o x -t x: refused" 2 generate -q -m gpi -i in.pgm -o old.model -t old.model -n 20
+CHECK='[[ $(sum old.model) == "$OLDM" ]]' case_ "-o x --stats ./x: refused" 2 generate -q -m gpi -i in.pgm -o old.model --stats ./old.model -n 20
+ln old.model hard.model
+CHECK='[[ $(sum old.model) == "$OLDM" ]]' case_ "-o x -p (a hard link of x): refused" 2 generate -q -m erdgpi -i in.pgm -o old.model -p hard.model -n 20
+CHECK='[[ ! -e e.pgm ]]' case_ "edges -o e.pgm --draw-polylines e.pgm" 2 edges in.pgm -o e.pgm --draw-polylines e.pgm
+CHECK='[[ ! -e e.pgm ]]' case_ "edges -o e.pgm -p sub/../e.pgm" 2 edges in.pgm -o e.pgm -p sub/../e.pgm
+case_ "-o /dev/null -t /dev/null: both discarded" 0 generate -q -m gpi -i in.pgm -o /dev/null -t /dev/null -n 20
+cp good.model self.model
+OLDS=$(sum self.model)
+IN=self.model CHECK='[[ $(sum self.model) == "$OLDS" ]]' case_ "stdin is the output (reconstruct)" 2 reconstruct - -o self.model
+cp in.pgm self.pgm
+OLDP=$(sum self.pgm)
+IN=self.pgm CHECK='[[ $(sum self.pgm) == "$OLDP" ]]' case_ "stdin is the output (generate -i -)" 2 generate -q -m gpi -i - -o self.pgm -n 20
+ln self.pgm hard.pgm
+CHECK='[[ $(sum self.pgm) == "$OLDP" ]]' case_ "output is a hard link of the input" 2 generate -q -m gpi -i self.pgm -o hard.pgm -n 20
+LONG=$(printf 'n%.0s' {1..245}).model
+CHECK='[[ -e $LONG ]] && no_temp' case_ "a 251-byte output name" 0 generate -q -m gpi -i in.pgm -o "$LONG" -n 20
+rm -f "$LONG"
+CHECK='no_temp' LIMIT_FSIZE=1 case_ "file-size limit (SIGXFSZ): an error, no temporary" 1 synth -W 64 -H 64 -o sub/s.pgm
+
+cat <<'EOF'
+
+## Endless, special and crafted inputs (issue 19)
+A stream (pipe, device) is read only as far as its header says; here under a 64 MB memory
+limit (ulimit -v). Regular files are read whole.
+
+| case | command | exit | message |
+| --- | --- | --- | --- |
+EOF
+LIMIT_KB=65536 IN=/dev/zero case_ "/dev/zero as an image" 2 info -
+LIMIT_KB=65536 IN=/dev/zero case_ "/dev/zero as a model" 2 reconstruct - -o r.pgm
+LIMIT_KB=65536 IN=/dev/urandom SHOW="(random bytes: the message varies)" case_ "/dev/urandom as an image" 2 info -
+LIMIT_KB=65536 IN=/dev/urandom SHOW="(random bytes: the message varies)" case_ "/dev/urandom as a model" 2 reconstruct - -o r.pgm
+LIMIT_KB=65536 IN=<(yes) case_ "yes piped in, as an image" 2 info -
+LIMIT_KB=65536 IN=<(yes) case_ "yes piped in, as a model" 2 reconstruct - -o r.pgm
+LIMIT_KB=65536 IN=<(yes 1) case_ "yes 1 piped in, as a model" 2 reconstruct - -o r.pgm
+LIMIT_KB=65536 IN=<(printf 'P5\n64 64\n255\n'; cat /dev/zero) case_ "P5 header, then /dev/zero" 0 info -
+LIMIT_KB=65536 IN=<(printf 'P2\n4 4\n255\n'; yes 7) case_ "P2 header, then endless samples" 0 info -
+LIMIT_KB=65536 IN=<(printf 'P5\n'; yes '# comment') case_ "P5 magic, then an endless comment" 2 info -
+{ printf '255\n20000000\n0'; head -c 40000000 /dev/zero | tr '\0' ' '; } > spaces.model
+LIMIT_KB=131072 case_ "a count held only by 40 MB of spaces" 2 reconstruct spaces.model -o r.pgm
+rm -f spaces.model
+cp "$SRC/fuzz/corpus/fuzz_png/palette_beyond_plte" pal.png
+case_ "PNG palette index beyond PLTE" 2 info pal.png
+awk 'NR == 2 { n = $1; print n + 1; next } { print } NR == 2 + n { print "1 1 0" }' good.model > unused.model
+case_ "model: a vertex in no face (reconstruct)" 2 reconstruct unused.model -o r.pgm
+case_ "model: a vertex in no face (render)" 2 render unused.model -o r.svg
+case_ "model: a vertex in no face (export)" 2 export unused.model -o r.obj
+case_ "a file name with a newline" 2 info $'new\nline.pgm'
+case_ "a file name with terminal escapes" 2 info $'\033[2J\033]0;owned\007.pgm'
+
+cat <<'EOF'
+
+## Extreme parameters and usage (issue 19)
+| case | command | exit | message |
+| --- | --- | --- | --- |
+EOF
+case_ "density 1e300" 2 generate -q -m ed -i in.pgm -o o.model -d 1e300
+case_ "density 1e-320" 2 generate -q -m ed -i in.pgm -o o.model -d 1e-320
+case_ "N 2^63" 2 generate -q -m ed -i in.pgm -o o.model -n 9223372036854775808
+case_ "synth width 1e9" 2 synth -W 1000000000 -H 4 -o s.pgm
+case_ "render scale 1e400" 2 render good.model -o r.svg --scale 1e400
+case_ "usage error (render): one usage line" 2 render good.model
+case_ "--max-memory below the estimate" 1 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1M
+case_ "--max-memory not a size" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1e9
+case_ "--max-memory too large" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 99999999T
 exit $bad

@@ -207,7 +207,7 @@ struct EdgeDetector::Pass {
         std::size_t expected = 0;  // points the guess is expected to keep
         const float guess = sampled_bound(width, sample, params, k_high, &expected);
         // Room for them up front (a quarter more): the store then rarely fills, and a full one
-        // is compacted and copied (bull: make_room 16M instructions while it grew from empty).
+        // is compacted and copied (growing it from empty was a real share of the pass).
         if (expected > 0) {
             capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
             regrow(&at, 0, capacity);
@@ -299,7 +299,7 @@ struct EdgeDetector::Pass {
     // A guess of the streaming pass's final bound: r times the magnitude of the same rank among
     // the sampled rows as tau_high has among all, less a margin (kGuessMargin). A sampled run
     // costs about twice as much a row as the stream (its smoothed neighbours are made for it
-    // alone): 1.6% of the rows, ~4M instructions on lena. 0 (no guess) when the sample is too
+    // alone): 1.6% of the rows at twice the cost, ~3% of the pass. 0 (no guess) when the sample is too
     // small to rank. *expected: the sample's count at or above the guess, scaled to the grid.
     template <class Sample>
     float sampled_bound(int width, Sample sample, const CannyParams& params, std::size_t k_high,

@@ -1,7 +1,7 @@
 // Edge detection on the half-pixel grid: Canny with the modification of Ding and Goshtasby (2001)
 // that keeps junction points, then thinning to one pixel wide (thesis 2.4.3, 2.4.4, 3.4.1 step 1.1).
 //
-// Pipeline, all on the (2W-1) x (2H-1) grid of phi_bar (algorithms/bilinear.h):
+// Pipeline, all on the (2W-1) x (2H-1) grid of phi_bar (algorithms/imaging/bilinear.h):
 //   1. gradient: gx, gy = first derivative [1/2 0 -1/2] composed with the binomial of order
 //      smoothing_order (5 in the thesis) along the derivative's axis, the same binomial across it;
 //      g = sqrt(gx^2 + gy^2). Units: grey levels per half pixel.
@@ -25,7 +25,7 @@
 //      direction, so no secondary path exists; for that case (our addition) each end of a main curve
 //      also climbs the magnitude (strictly increasing, >= tau_low, at most max_link points) and the
 //      climb is kept when it arrives next to a different main component.
-//   6. thinning (algorithms/thinning.h): Zhang-Suen, then removal of staircase corners, so every
+//   6. thinning (thinning.h): Zhang-Suen, then removal of staircase corners, so every
 //      edge is a one-point-wide 8-connected curve.
 #pragma once
 #include <cstddef>
@@ -48,7 +48,7 @@ struct CannyParams {
     bool thin = true;         // thinning to one pixel wide
     // Border extension for the gradient filter. Zero extension (the thesis's rule for ED filtering)
     // makes the whole image frame a strong edge that eats a third of the beta quantile on bull, so
-    // edge detection replicates the border sample instead (docs/DECISIONS.md).
+    // edge detection replicates the border sample instead (docs/DECISIONS.md "Filters and MMSODD").
     Border border = Border::replicate;
 };
 
@@ -86,7 +86,7 @@ public:
     Status detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats = nullptr);
     // The same detection as the edge points in row-major order: point (X, Y) of the half-pixel
     // grid is plane index (Y + 1) * stride + X + 1 (a frame of at least one column; not linked).
-    // edge_map() turns it into the map; trace_polylines (algorithms/polylines.h) takes it as is.
+    // edge_map() turns it into the map; trace_polylines (polylines.h) takes it as is.
     Status detect(const CannyParams& params, SortedPoints* edges, CannyStats* stats = nullptr);
     void release();  // frees the kept pass
 

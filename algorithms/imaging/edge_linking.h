@@ -1,4 +1,4 @@
-// Steps 4 and 5 of edge detection (algorithms/canny.h) on one detection's strong points:
+// Steps 4 and 5 of edge detection (algorithms/imaging/canny.h) on one detection's strong points:
 // hysteresis from the strong maxima, and the junction repair of Ding and Goshtasby (2001).
 // Internal to canny.cpp; the points come from its streaming pass.
 #pragma once

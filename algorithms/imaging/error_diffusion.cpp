@@ -15,8 +15,7 @@ namespace {
 // Four lanes of the diffusion as one value. Written as plain loops over four floats, which the
 // compiler turns into single SSE instructions at the x86-64 baseline. Passed by value and kept
 // in locals, the carried error of every lane stays in a register across a row (as 16-float
-// arrays, the previous form, it went through the stack at every pixel: 155 instructions a
-// pixel for a 16-lane sweep then, about 125 now).
+// arrays, the previous form, it went through the stack at every pixel).
 struct alignas(16) Quad {
     float v[4];
 };
@@ -87,8 +86,8 @@ struct Sweep {
 // state carried from pixel to pixel in registers is e_prev (the rest waits in memory, off the
 // chain of dependent operations). Shares pushed past either end of the row land in the spare
 // cells and are dropped. Chosen pixels (when `counted`) are counted and recorded in scan order.
-// Not inlined: inside select_points the register allocator spilled the share weights, which
-// cost 6% more instructions (an attribute other compilers ignore).
+// Not inlined: inside select_points the register allocator spilled the share weights (an
+// attribute other compilers ignore).
 template <int G, int Dir, bool Masked>
 [[gnu::noinline]] void diffuse_row(const double* sig, const std::uint8_t* forb, float* buf, int w, int y, bool counted,
                                    Sweep<G>* sw) {
@@ -324,7 +323,7 @@ Grid<double> ed_density(Grid<double> d, double gamma) {
         std::fill(d.data.begin(), d.data.end(), 0.0);
         return d;
     }
-    // One loop per exponent (the choice inside the loop cost 4 instructions a pixel).
+    // One loop per exponent (not the choice inside the loop, at every pixel).
     if (gamma == 1.0)
         for (double& v : d.data) v = std::max(0.0, v) / dmax;
     else if (gamma == 0.5)

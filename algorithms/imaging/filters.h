@@ -11,7 +11,7 @@
 //     to the extended signal once. With zero extension this differs near the border from filtering
 //     twice with truncation in between; the composed form is the thesis's wording (3.4.1).
 //   * Border: zero extension (the thesis, 3.2.1) unless the caller asks for replication of the
-//     nearest sample (used by edge detection, docs/DECISIONS.md "Image analysis").
+//     nearest sample (used by edge detection, docs/DECISIONS.md "Filters and MMSODD").
 #pragma once
 #include <vector>
 

@@ -1,4 +1,4 @@
-// The gradient of edge detection's step 1 (algorithms/canny.h), streamed row by row, and the
+// The gradient of edge detection's step 1 (canny.h), streamed row by row, and the
 // rows of phi_bar it is computed from. Internal to canny.cpp (its streaming pass, its sampled
 // bound, canny_gradient); kept apart so that canny.cpp holds the detection itself.
 #pragma once
@@ -26,7 +26,7 @@ inline void weighted_sum_any(const float* const* in, const float* t, int m, floa
     }
 }
 
-// The same with m = sizeof...(K) known, so rows and taps stay in registers (a third faster).
+// The same with m = sizeof...(K) known, so rows and taps stay in registers.
 template <std::size_t... K>
 inline void weighted_sum_fixed(const float* const* in, const float* t, float* __restrict out, int n, std::index_sequence<K...>) {
     const float* const p[] = {in[K]...};

@@ -3,7 +3,7 @@
 //   d = max(|l1 + l2|, |l1 - l2|),  l1 = (fxx + fyy) / 2,  l2 = sqrt((fxx - fyy)^2 / 4 + fxy^2)
 //
 // with each second derivative estimated by one separable filter: smoothing composed with the
-// derivative taps of algorithms/filters.h, the binomial of order smoothing_order in both directions:
+// derivative taps of filters.h, the binomial of order smoothing_order in both directions:
 //   fxx: x taps = [1 -2 1] * b_n, y taps = b_n
 //   fyy: x taps = b_n,            y taps = [1 -2 1] * b_n
 //   fxy: x taps = [1/2 0 -1/2] * b_n, y taps = [1/2 0 -1/2] * b_n   (first derivative in x, then in y)

@@ -2,7 +2,7 @@
 // algorithms/imaging/edge_polylines.h.
 //
 // Coordinates are LatticePoints in doubled coordinates, which are exactly the indices of the
-// half-pixel grid of algorithms/canny.h: entry (X, Y) of the edge map is LatticePoint{X, Y}.
+// half-pixel grid of canny.h: entry (X, Y) of the edge map is LatticePoint{X, Y}.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -24,10 +24,10 @@ struct InitialMeshOptions {
     ErdMethod method = ErdMethod::erdgpi;
     std::size_t target = 0;  // N, the final mesh size (it steers the parameter selection)
     ErdParamRequest request; // flags the user gave
-    // When l is counted (docs/DECISIONS.md "ERD model and methods" has the numbers).
+    // When l is counted (docs/DECISIONS.md "Edge detection and polylines" has the numbers).
     LengthRule length_rule = LengthRule::before_simplification;
     // Doubled-coordinate units per unit of epsilon: 2 = epsilon in pixels, 1 = in half pixels
-    // (docs/DECISIONS.md "ERD model and methods").
+    // (docs/DECISIONS.md "Edge detection and polylines").
     double eps_unit = kEpsilonUnitsPerPixel;
 };
 

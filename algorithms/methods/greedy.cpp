@@ -36,7 +36,7 @@ std::uint64_t tie_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y))
 // adds the squared errors to *sum and moves the candidate (*best, *bx) to the first pixel of
 // larger absolute error that is not banned; returns true when it moved.
 //
-// Rounded: the approximation as imgsyn makes it (algorithms/reconstruct.cpp), so errors are
+// Rounded: the approximation as imgsyn makes it (algorithms/model/reconstruct.cpp), so errors are
 // integers and sums exact. Two ways to get it (see scan_exact and Refiner::rescan):
 //   exact: v is p of kernel/raster.h RoundedPlane, whose truncation IS the rounded value;
 //   clamp: v is the real plane, clamped to [0, maxval] and rounded half up as to_sample does.

@@ -38,7 +38,7 @@ namespace erd {
 // What the greedy loop needs from a mesh model. One instance lives for one refinement run; it may
 // keep its own per-vertex or per-wedge state (values, wedge values) keyed by kernel indices.
 //
-//   GPI (algorithms/gpi.cpp, BasicGreedyModel): the plane through the image samples at the
+//   GPI (algorithms/methods/gpi.cpp, BasicGreedyModel): the plane through the image samples at the
 //       face's three vertices; on_vertex_inserted does nothing (the value of a vertex is the
 //       sample at its pixel, read again in face_plane).
 //   ERDGPI (erdmodel helper): the plane through the face's three wedge values (the wedge of each
@@ -94,7 +94,7 @@ struct GreedyOptions {
     // Errors against the approximation rounded to the nearest integer and clamped to
     // [0, maxval] (what imgsyn reconstructs; squared errors are integers and the running total
     // exact) instead of the real-valued plane. The default is GenerateOptions::round_values's
-    // (docs/DECISIONS.md "Methods: ED and GPI" has the numbers that chose it); ERDGPI turns it off.
+    // (docs/DECISIONS.md "Greedy point insertion" has the numbers that chose it); ERDGPI turns it off.
     bool round_values = true;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;

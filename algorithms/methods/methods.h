@@ -26,7 +26,7 @@ struct MethodInfo {
     const char* thesis_program;  // the thesis's program (Appendix A.5): ywb, gpi, erd_ed, erd_gpi
     const char* thesis_flags;    // that program's option letters, each taking a value
     // Upper estimate of the peak heap bytes of one run: per pixel and per vertex of the target
-    // (api/erd.h memory_estimate; docs/DECISIONS.md, Packaging, has the measurements).
+    // (api/erd.h memory_estimate; docs/DECISIONS.md "Memory" has the measurements).
     std::size_t bytes_per_pixel;
     std::size_t bytes_per_point;
     MethodFn run;

@@ -86,7 +86,7 @@ double ErdModel::mmsodd_pixel(int x, int y) {
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
     if (stencil_radius_ < 0) prepare_taps();
-    // The separable filters of algorithms/mmsodd.cpp at one pixel, zero extension: each tap
+    // The separable filters of algorithms/imaging/mmsodd.cpp at one pixel, zero extension: each tap
     // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
     // +-0 may be added or left out (the taps padded with zeros to the stencil radius; stencil rows
     // outside the image): every sum starts at +0 and adding +-0 never changes it, so the values

@@ -196,7 +196,29 @@ Status expect_end(Tokens& tk, const char* what) {
     return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last " + what + " (check the counts)");
 }
 
+// Room for at most 65536 records up front: a count that the rest of the file only "holds" as
+// whitespace costs nothing until its records actually arrive (vectors grow as they are read).
+template <class V>
+void reserve_arriving(V* v, std::uint64_t n) {
+    v->clear();
+    v->reserve(std::size_t(std::min<std::uint64_t>(n, std::uint64_t(1) << 16)));
+}
+
 std::string vname(std::size_t i) { return "vertex " + std::to_string(i); }
+
+// Every vertex must be a corner of some face: a vertex in no face would be accepted, drawn and
+// exported as if it belonged to the mesh although nothing of the surface depends on it.
+Status check_all_used(const std::vector<LatticePoint>& pts, const std::vector<std::array<std::uint32_t, 3>>& faces,
+                      const std::vector<int>& lines, int unit) {
+    std::vector<std::uint8_t> used(pts.size(), 0);
+    for (const auto& f : faces)
+        for (std::uint32_t v : f) used[v] = 1;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        if (!used[i])
+            return Status::bad_input("line " + std::to_string(lines[i]) + ": " + vname(i) + " (" + std::to_string(pts[i].x / unit) +
+                                     ", " + std::to_string(pts[i].y / unit) + ") belongs to no face");
+    return Status::success();
+}
 std::string fname(std::size_t i) { return "face " + std::to_string(i); }
 
 // Faces: indices in range, three distinct vertices, nonzero area; orientation made positive
@@ -205,11 +227,11 @@ Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<
                   std::vector<int>* lines) {
     std::uint64_t nf = 0;
     if (Status s = count(tk, "face count", 1, 6, &nf); !s) return s;
-    faces->resize(nf);
-    lines->resize(nf);
+    reserve_arriving(faces, nf);
+    reserve_arriving(lines, nf);
     const std::uint64_t nv = pts.size();
     for (std::uint64_t f = 0; f < nf; ++f) {
-        std::array<std::uint32_t, 3>& fc = (*faces)[f];
+        std::array<std::uint32_t, 3> fc{};
         for (int k = 0; k < 3; ++k) {
             std::uint64_t v = 0;
             const auto what = [&] { return "vertex index " + std::to_string(k + 1) + " of " + fname(f); };
@@ -219,12 +241,13 @@ Status read_faces(Tokens& tk, const std::vector<LatticePoint>& pts, std::vector<
                                          std::to_string(nv) + " vertices)");
             fc[std::size_t(k)] = std::uint32_t(v);
         }
-        (*lines)[f] = tk.line();
+        lines->push_back(tk.line());
         if (fc[0] == fc[1] || fc[1] == fc[2] || fc[0] == fc[2])
             return Status::bad_input(tk.where() + fname(f) + " repeats a vertex");
         const std::int64_t o = orient2d(pts[fc[0]], pts[fc[1]], pts[fc[2]]);
         if (o == 0) return Status::bad_input(tk.where() + fname(f) + " is degenerate (its vertices are collinear)");
         if (o < 0) std::swap(fc[1], fc[2]);
+        faces->push_back(fc);
     }
     return Status::success();
 }
@@ -401,16 +424,19 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
     m.maxval = std::uint32_t(maxval);
     if (Status s = count(tk, "vertex count", 4, 6, &nv); !s) return s;
-    m.vertices.resize(nv);
-    m.values.resize(nv);
-    std::vector<int> vlines(nv);
+    reserve_arriving(&m.vertices, nv);
+    reserve_arriving(&m.values, nv);
+    std::vector<int> vlines;
+    reserve_arriving(&vlines, nv);
     for (std::uint64_t i = 0; i < nv; ++i) {
         std::int64_t x = 0, y = 0;
+        double value = 0.0;
         if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, kMaxDoubled, &x); !s) return s;
         if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, kMaxDoubled, &y); !s) return s;
-        if (Status s = tk.real([&] { return "value of " + vname(i); }, &m.values[i]); !s) return s;
-        m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
-        vlines[i] = tk.line();
+        if (Status s = tk.real([&] { return "value of " + vname(i); }, &value); !s) return s;
+        m.vertices.push_back(LatticePoint{std::int32_t(x), std::int32_t(y)});
+        m.values.push_back(value);
+        vlines.push_back(tk.line());
     }
     std::vector<int> flines;
     if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
@@ -446,6 +472,7 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
             }
         return Status::bad_input("not a triangulation of the image domain: " + s.message);
     }
+    if (Status s = check_all_used(m.vertices, m.faces, vlines, erd ? 1 : 2); !s) return s;
     if (m.kind == ModelKind::erd)
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
     *out = std::move(m);
@@ -471,14 +498,15 @@ Status read_triangulation(const std::string& text, Model* out) {
     m.width = int(w);
     m.height = int(h);
     if (Status s = count(tk, "vertex count", 4, 4, &nv); !s) return s;
-    m.vertices.resize(nv);
-    std::vector<int> vlines(nv);
+    reserve_arriving(&m.vertices, nv);
+    std::vector<int> vlines;
+    reserve_arriving(&vlines, nv);
     for (std::uint64_t i = 0; i < nv; ++i) {
         std::int64_t x = 0, y = 0;
         if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, std::int64_t(2 * w - 2), &x); !s) return s;
         if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, std::int64_t(2 * h - 2), &y); !s) return s;
-        m.vertices[i] = LatticePoint{std::int32_t(x), std::int32_t(y)};
-        vlines[i] = tk.line();
+        m.vertices.push_back(LatticePoint{std::int32_t(x), std::int32_t(y)});
+        vlines.push_back(tk.line());
     }
     std::vector<int> flines;
     if (Status s = read_faces(tk, m.vertices, &m.faces, &flines); !s) return s;
@@ -496,7 +524,7 @@ Status read_triangulation(const std::string& text, Model* out) {
             edges.push_back((std::min(a, b) << 32) | std::max(a, b));
         }
     std::sort(edges.begin(), edges.end());
-    m.constraints.resize(nc);
+    reserve_arriving(&m.constraints, nc);
     for (std::uint64_t i = 0; i < nc; ++i) {
         std::uint64_t a = 0, b = 0;
         if (Status s = tk.uint([&] { return "first vertex index of constraint " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &a); !s) return s;
@@ -508,9 +536,10 @@ Status read_triangulation(const std::string& text, Model* out) {
         if (!std::binary_search(edges.begin(), edges.end(), (a << 32) | b))
             return Status::bad_input(tk.where() + "constraint " + std::to_string(i) + " (" + std::to_string(a) + ", " +
                                      std::to_string(b) + ") is not an edge of any face");
-        m.constraints[i] = {std::uint32_t(a), std::uint32_t(b)};
+        m.constraints.push_back({std::uint32_t(a), std::uint32_t(b)});
     }
     if (Status s = expect_end(tk, "constraint"); !s) return s;
+    if (Status s = check_all_used(m.vertices, m.faces, vlines, 1); !s) return s;
     std::sort(m.constraints.begin(), m.constraints.end());
     m.kind = ModelKind::basic;
     *out = std::move(m);

@@ -25,7 +25,7 @@
 // side, at the open end of a border fan); otherwise it stops with "the wedge of face F at vertex
 // V is undetermined". For a vertex with wedge lines the value on its vertex line is ignored (thesis
 // A.4.2) and Model::values holds the mean of its wedge values; Model::constraints holds the edges
-// across which corner values jump (algorithms/model_topology.h).
+// across which corner values jump (algorithms/model/model_topology.h).
 //
 // Every problem gives one Status (Code::input) whose message says what and where ("line 7: ...").
 // A model that passes the reader may still not be a triangulation of the image domain (overlaps,

@@ -8,7 +8,7 @@
 // Wedges without constraint lists. A wedge of v is a maximal run of faces around v not separated
 // by a discontinuity. For an ERD model the discontinuities are derived from the corner values: an
 // edge is a discontinuity when its two faces' corner values differ at either endpoint (files do
-// not list constraints; docs/DECISIONS.md, "Reconstruction and files"). Faces of one wedge then
+// not list constraints; docs/DECISIONS.md, "Model files"). Faces of one wedge then
 // always agree at v, so each wedge has one value.
 #pragma once
 #include <cstdint>

@@ -1,8 +1,8 @@
 // Writers of .model, .erd, -t and -p files (formats in model_io.h; readers in model_io.cpp).
 //
 // Every record is assembled in a small stack buffer with the number formatters below and
-// appended to the output once: no temporary strings per number (the writer of a 1% bull .erd
-// used to spend ~46M instructions, most of them building and concatenating std::strings).
+// appended to the output once: no temporary strings per number (building and concatenating
+// std::strings was most of the writer's time; docs/DECISIONS.md "Model files").
 #include <algorithm>
 #include <charconv>
 #include <cmath>

@@ -204,8 +204,8 @@ void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Se
 
 // The exactly rounded plane of face f of a basic model whose corner values are integers in
 // [0, maxval] (kernel/raster.h RoundedPlane); false for any other face, which is evaluated in
-// doubles. Greedy refinement (algorithms/greedy.cpp) makes the same choice per face, so GPI's
-// errors are exactly those of this reconstruction.
+// doubles. Greedy refinement (algorithms/methods/greedy.cpp) makes the same choice per face, so
+// GPI's errors are exactly those of this reconstruction.
 bool exact_plane(const Model& m, std::size_t f, RoundedPlane* rp) {
     if (m.kind != ModelKind::basic) return false;
     const auto& fc = m.faces[f];

@@ -4,7 +4,7 @@
 // three corner values (basic model: the vertex values; ERD model: the face's wedge values); on a
 // discontinuity edge (not at an endpoint) the mean of the planes of its two faces; at a vertex
 // the mean of its wedge values (one wedge: its value). Discontinuities are the edges across which
-// corner values jump (algorithms/model_topology.h), so a model read from a file and the model
+// corner values jump (algorithms/model/model_topology.h), so a model read from a file and the model
 // in memory give the same image.
 //
 // Point evaluation samples that function at every pixel (lattice Lambda); 4x4 supersampling

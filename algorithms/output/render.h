@@ -4,8 +4,8 @@
 // the square's centre, so a mesh vertex at lattice point (X, Y) lands at ((X/2 + 0.5) s, (Y/2 + 0.5) s)
 // and a background image lines up pixel for pixel. A crop window (in pixels) selects a part.
 //
-// Edges come from algorithms/model_topology.h: constrained edges (the model's list, or where the
-// corner values of an ERD model differ across an edge) are drawn thick and red, the others thin
+// Edges come from algorithms/model/model_topology.h: constrained edges (the model's list, or where
+// the corner values of an ERD model differ across an edge) are drawn thick and red, the others thin
 // and blue, vertices as dark dots. The library draws; cli/ encodes PNG and writes files.
 #pragma once
 #include <cstdint>

@@ -1,0 +1,177 @@
+#include "cli/framing.h"
+
+#include <cstdint>
+#include <cstring>
+#include <memory>
+
+#include "algorithms/model/model_io.h"
+
+namespace erd::cli {
+
+namespace {
+
+std::uint64_t be32(const unsigned char* p) {
+    return std::uint64_t(p[0]) << 24 | std::uint64_t(p[1]) << 16 | std::uint64_t(p[2]) << 8 | p[3];
+}
+
+bool space(unsigned char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
+bool digit(unsigned char c) { return c >= '0' && c <= '9'; }
+
+const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+// The state of one stream's framing, kept between calls so each byte is looked at once.
+struct ImageFrame {
+    ImageLimits limits;
+    bool header_done = false;
+    PgmHeader hd;
+    std::size_t pos = 0;        // P2: next byte to scan; PNG: next chunk
+    bool in_comment = false, in_token = false;
+    std::uint64_t samples = 0;  // P2: samples seen
+
+    Status operator()(const std::string& so_far, std::uint64_t* total) {
+        const auto* d = reinterpret_cast<const unsigned char*>(so_far.data());
+        const std::size_t n = so_far.size();
+        *total = UINT64_MAX;
+        if (n >= 1 && d[0] == 0x89) return png(d, n, total);
+        if (!header_done) {
+            if (n >= 2 && (d[0] != 'P' || (d[1] != '2' && d[1] != '5'))) {
+                *total = n;  // not an image: the decoder says what it is
+                return Status::success();
+            }
+            Status s = pgm_header(d, n, limits, &hd);
+            if (!s) {
+                if (s.message.compare(0, 11, "end of file") != 0) *total = n;  // bad already
+                else if (n >= kMaxStreamHeader)
+                    return Status::bad_input("no complete PGM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
+                return Status::success();
+            }
+            header_done = true;
+            pos = hd.sep + 1;
+            if (!hd.plain) {
+                const std::uint64_t bps = hd.maxval < 256 ? 1 : 2;
+                // One byte more when "maxval\r\n": decode_pgm may take the LF as the separator's pair.
+                *total = hd.sep + 1 + hd.w * hd.h * bps + (d[hd.sep] == '\r' ? 1 : 0);
+                return Status::success();
+            }
+        }
+        // P2: count the samples; a byte no plain PGM holds ends the reading.
+        const std::uint64_t want = hd.w * hd.h;
+        for (; pos < n; ++pos) {
+            const unsigned char c = d[pos];
+            if (in_comment) {
+                in_comment = c != '\n' && c != '\r';
+                continue;
+            }
+            if (digit(c)) {
+                in_token = true;
+                continue;
+            }
+            if (in_token && ++samples == want) {
+                *total = pos + 1;
+                return Status::success();
+            }
+            in_token = false;
+            if (c == '#') in_comment = true;
+            else if (!space(c)) {
+                *total = pos + 1;
+                return Status::success();
+            }
+        }
+        return Status::success();
+    }
+
+    // PNG: chunk after chunk up to IEND.
+    Status png(const unsigned char* d, std::size_t n, std::uint64_t* total) {
+        if (n < 8) return Status::success();
+        if (std::memcmp(d, kPng, 8) != 0) {
+            *total = n;
+            return Status::success();
+        }
+        if (pos < 8) pos = 8;
+        while (pos + 8 <= n) {
+            const std::uint64_t len = be32(d + pos);
+            if (len > 0x7fffffffu) {
+                *total = n;
+                return Status::success();
+            }
+            const std::uint64_t end = pos + 12 + len;
+            if (std::memcmp(d + pos + 4, "IEND", 4) == 0) {
+                *total = end;
+                return Status::success();
+            }
+            if (end > n) return Status::success();
+            pos = std::size_t(end);
+        }
+        return Status::success();
+    }
+};
+
+}  // namespace
+
+Framer image_framer(const ImageLimits& limits) {
+    auto frame = std::make_shared<ImageFrame>();
+    frame->limits = limits;
+    return [frame](const std::string& so_far, std::uint64_t* total) { return (*frame)(so_far, total); };
+}
+
+Framer model_framer(bool triangulation) {
+    // Checkpoints at 4 KiB, 16 KiB, 64 KiB, ...: the text so far (cut after its last whitespace,
+    // so no token is split) is parsed, and a definite error stops the reading; an error that only
+    // says the text ends early does not. The parses cost at most 4/3 of one parse of the whole.
+    auto next = std::make_shared<std::size_t>(4096);
+    return [next, triangulation](const std::string& so_far, std::uint64_t* total) {
+        *total = UINT64_MAX;
+        if (std::memchr(so_far.data(), 0, so_far.size())) {
+            *total = so_far.size();  // text has no NUL: the parser names the line
+            return Status::success();
+        }
+        if (so_far.size() < *next) return Status::success();
+        *next = so_far.size() * 4;
+        std::size_t cut = so_far.size();
+        while (cut > 0 && !space(static_cast<unsigned char>(so_far[cut - 1]))) --cut;
+        const std::string prefix = so_far.substr(0, cut);
+        Model m;
+        Status s = triangulation ? read_triangulation(prefix, &m) : read_model(prefix, ModelFileKind::unknown, &m);
+        if (!s && s.message.find("ends early") == std::string::npos && s.message != "empty file") *total = so_far.size();
+        return Status::success();
+    };
+}
+
+Status pad_png_palette(const unsigned char* d, std::size_t n, unsigned char fill, bool* short_palette, std::string* padded,
+                       std::size_t* entries) {
+    *short_palette = false;
+    if (n < 33 || std::memcmp(d, kPng, 8) != 0 || std::memcmp(d + 12, "IHDR", 4) != 0) return Status::success();
+    const unsigned depth = d[24], colour = d[25];
+    if (colour != 3 || depth == 0 || depth > 8) return Status::success();
+    const std::size_t need = std::size_t(1) << depth;
+    std::size_t pos = 8, plte = 0, plte_len = 0;
+    while (pos + 12 <= n) {
+        const std::uint64_t len = be32(d + pos);
+        if (len > n - pos - 12) break;
+        if (std::memcmp(d + pos + 4, "PLTE", 4) == 0 && plte == 0) {
+            plte = pos;
+            plte_len = std::size_t(len);
+        }
+        if (std::memcmp(d + pos + 4, "tRNS", 4) == 0 && plte != 0 && len > plte_len / 3)
+            return Status::bad_input("PNG tRNS chunk has " + std::to_string(len) + " entries, more than the " +
+                                     std::to_string(plte_len / 3) + " of its palette");
+        if (std::memcmp(d + pos + 4, "IEND", 4) == 0) break;
+        pos += std::size_t(12 + len);
+    }
+    if (plte == 0 || plte_len % 3 != 0 || plte_len / 3 >= need) return Status::success();  // stb judges the rest
+    *short_palette = true;
+    *entries = plte_len / 3;
+    // The same file with a longer PLTE (stb does not check CRCs, so the old one is kept).
+    const std::size_t new_len = 3 * need;
+    padded->assign(reinterpret_cast<const char*>(d), plte + 8);
+    (*padded)[plte] = char(new_len >> 24);
+    (*padded)[plte + 1] = char(new_len >> 16 & 0xff);
+    (*padded)[plte + 2] = char(new_len >> 8 & 0xff);
+    (*padded)[plte + 3] = char(new_len & 0xff);
+    padded->append(reinterpret_cast<const char*>(d + plte + 8), plte_len);
+    padded->append(new_len - plte_len, char(fill));
+    padded->append(reinterpret_cast<const char*>(d + plte + 8 + plte_len), n - plte - 8 - plte_len);
+    return Status::success();
+}
+
+}  // namespace erd::cli

@@ -1,0 +1,78 @@
+// The outputs of one command, committed together at the end (docs/DECISIONS.md, "Outputs").
+//
+//     Outputs outs;
+//     if (!(st = outs.check({out, tri}, {in}))) ...   // before the work: clashes refused
+//     ... compute ...
+//     if (!(st = outs.stage(out, bytes))) ...          // a temporary beside the target
+//     if (!(st = outs.stage(tri, tri_bytes))) ...
+//     if (!(st = outs.commit())) ...                   // every target replaced, or none
+//
+// A regular file (or a name that does not exist yet) is written to an unnamed temporary in the
+// target's own folder (O_TMPFILE; a named ".erd-PID-N.tmp" where the file system lacks it) and
+// fsync'ed; commit() links each into place (rename over an old file), so until then every old
+// file is exactly as it was, and a failure anywhere before commit leaves them all untouched.
+// Special files (devices, FIFOs, sockets) and "-" (stdout) cannot be replaced: they are written
+// in place, first in commit(), and are never unlinked. A symbolic link is followed: its target
+// is replaced in the target's folder and the link stays; a link to nothing is refused.
+//
+// Signals (install_output_signal_handlers, below): INT, TERM, HUP, QUIT and PIPE remove any named temporary before the process dies
+// (the handler only unlinks fixed buffers, async-signal-safe); SIGXFSZ is ignored so a file-size
+// limit is an ordinary write error. An unnamed temporary cannot outlive the process, KILL
+// included; replacing an old file links it under a short-lived name and renames that over the
+// target (linkat cannot replace), with the signals above held. The only names ever created are
+// the short ones above, so they fit NAME_MAX whatever the output name. ERD_NO_TMPFILE=1 in the
+// environment takes the named path everywhere (for the tests of it).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "kernel/status.h"
+
+namespace erd::cli {
+
+class Outputs {
+public:
+    Outputs() = default;
+    Outputs(const Outputs&) = delete;
+    Outputs& operator=(const Outputs&) = delete;
+    ~Outputs();  // discards every temporary not committed
+
+    // Refuses (Code::input) an output that is the same file as an input (device and inode, stdin
+    // and stdout included; different spellings and hard links are the same file), two outputs
+    // that are the same file, a second "-", an output that is a folder or a symbolic link to
+    // nothing. Special files may repeat (/dev/null as two outputs) and may be inputs too.
+    Status check(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) const;
+
+    // Writes `bytes` for `path` ("-" = stdout): to a temporary beside a regular target, or kept
+    // for commit() when the target is special. Failures (Code::runtime) name the path.
+    Status stage(const std::string& path, const std::string& bytes);
+
+    // Writes the special outputs in place, then moves every temporary onto its target. A failed
+    // special output leaves every regular target untouched. Signals are held until it is done.
+    Status commit();
+
+    // Removes every temporary staged so far (also done by the destructor).
+    void discard();
+
+private:
+    struct Staged {
+        std::string path;    // as given, for messages
+        std::string target;  // the file to replace (symbolic links resolved)
+        std::string bytes;   // special targets only: written at commit
+        bool special = false;
+        int fd = -1;          // the temporary, open
+        int dirfd = -1;       // the target's folder
+        std::string base;     // the target's name in it
+        std::string tmp;      // the temporary's name when named (no O_TMPFILE), else empty
+        int slot = -1;        // its entry in the signal handler's list
+        bool existed = false; // an old file is replaced (else the new one is linked in)
+    };
+    std::vector<Staged> staged_;
+};
+
+// Installs the handlers described above (INT, TERM, HUP, QUIT, PIPE remove named temporaries;
+// SIGXFSZ ignored); a signal the process ignores stays ignored (nohup). The erd program calls it
+// first thing; a library user (the Python module, the tests) keeps its own signal handling.
+void install_output_signal_handlers();
+
+}  // namespace erd::cli
