@@ -50,6 +50,7 @@ help:
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make regenerate rewrite the docs the tests generate (docs/HOSTILE.md, docs/hostile_images.md)"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
+	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten); make serve: on 127.0.0.1:8000"
 	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
 	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
@@ -241,3 +242,21 @@ python-venv-check: python
 	  m = erd.generate(numpy.arange(4096, dtype=numpy.uint16).reshape(64, 64), 'erdgpi', density=2, maxval=4095, exit_mode=2); \
 	  print('python-venv-check: pip-installed', erd.__file__, m)" && $(CURDIR)/$(PY_VENV)/bin/python -m erd --version
 
+# erd in a web page (web/): erd compiled to WebAssembly with Debian's emscripten (installed with
+# apt when missing), served on 127.0.0.1 by `make serve`.
+WEB_PORT ?= 8000
+WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_error,_erd_model_text,_erd_vector_svg,_erd_mesh_svg,_erd_reconstruction,_erd_psnr,_erd_vertices
+.PHONY: web serve
+web: web/build/erd.js
+/usr/bin/em++:
+	@echo "installing Debian package emscripten" >&2
+	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q emscripten >/dev/null 2>&1 || \
+	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q emscripten >/dev/null; }
+web/build/erd.js: /usr/bin/em++ $(LIB_SRC) web/erd_wasm.cpp $(wildcard kernel/*.h algorithms/*/*.h api/*.h)
+	@mkdir -p $(@D)
+	NODE_PATH=/usr/share/nodejs em++ -O2 -std=c++17 -I. -DNDEBUG $(LIB_SRC) web/erd_wasm.cpp -o $@ \
+	  -sMODULARIZE=1 -sEXPORT_NAME=createErd -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=worker \
+	  -sEXPORTED_FUNCTIONS=$(WEB_EXPORTS) -sEXPORTED_RUNTIME_METHODS=ccall,UTF8ToString
+serve: web
+	@echo "erd in the browser: http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
+	python3 -m http.server $(WEB_PORT) --bind 127.0.0.1 --directory web

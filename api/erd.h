@@ -114,7 +114,8 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
 
 // Rasterises a model into *out (model's width, height and maxval): point evaluation at every
 // pixel (the thesis's imgsyn), or with `supersample` the mean of 4x4 sub-samples per pixel
-// (imgsyn_aa). Values rounded to the nearest integer and clamped to [0, maxval].
+// (imgsyn_aa). Values rounded to the nearest integer and clamped to [0, maxval]. A model's own
+// reconstruction is supersample = supersampled(model): soft-edged ERD models only (model.h).
 Status reconstruct(const Model& model, bool supersample, Image* out);
 
 // PSNR of `approx` against `original` in dB, peak 2^p - 1 with p the bits per sample of the

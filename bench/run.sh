@@ -122,3 +122,46 @@ else
     echo "raster: bull.pgm missing or erd generate failed; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# ---------------------------------------------------------------------------------------------
+# scale (issue 18): whole process at -d 1 on `erd synth` images (8-bit with noise; a 16-bit
+# heightmap without noise), and on the photos, side by side with fogleman/hmm when HMM_SRC names
+# a local checkout of it (built here, outside the repository, into $OUT), else against our GPI.
+# hmm meshes to the same vertex count (-p N -e 0) and writes STL. Targets: erdgpi and erded
+# <= 1.0x hmm's CPU time, within 2x GPI; peak RSS <= 32 bytes per pixel for every method.
+# SCALE_SIZES (default "512 1024 2048") adds 4096 8192; SCALE_RUNS (default 3) runs per case.
+SCALE_SIZES=${SCALE_SIZES:-512 1024 2048}
+SCALE_RUNS=${SCALE_RUNS:-3}
+HMM=""
+if [[ -n ${HMM_SRC:-} ]]; then
+    if [[ -f $HMM_SRC/Makefile ]] && cp -r "$HMM_SRC" "$OUT/hmm-src" && make -s -C "$OUT/hmm-src" >/dev/null 2>&1 &&
+       [[ -x $OUT/hmm-src/bin/release/hmm ]]; then HMM=$OUT/hmm-src/bin/release/hmm
+    else echo "scale: hmm did not build from $HMM_SRC (needs libglm-dev); comparing against gpi only"; fi
+fi
+# scale_case LABEL IMAGE: one line per method: CPU ms, peak RSS in bytes per pixel, the ratio to
+# hmm (or to GPI), and the B/px verdict.
+scale_case() {
+    local label=$1 img=$2 w h px n m wall cpu rss gcpu="" hcpu="" ref bpx verdict
+    read -r w h < <("$ERD" info "$img" | awk '/^size:/ { print $2, $4 }')
+    px=$((w * h)); n=$(( (px + 50) / 100 ))
+    if [[ -n $HMM ]]; then
+        read -r wall hcpu rss < <("$TIMEIT" "$SCALE_RUNS" "$HMM" -z 1 -e 0 -p "$n" -q "$img" "$OUT/scale.stl" || echo "- - -")
+        if [[ $hcpu == - ]]; then hcpu=""; echo "scale $label: hmm could not mesh it (its reader takes 8-bit images)"
+        else printf 'scale %-16s %-7s cpu %8s ms  %6s B/px\n' "$label" hmm "$hcpu" "$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')"; fi
+    fi
+    for m in gpi ed erded erdgpi; do
+        read -r wall cpu rss < <("$TIMEIT" "$SCALE_RUNS" "$ERD" generate --method "$m" -q -x 2 -n "$n" -i "$img" -o "$OUT/scale.$m" || echo "- - -")
+        [[ $m == gpi ]] && gcpu=$cpu
+        ref=${hcpu:-$gcpu}
+        bpx=$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')
+        verdict=$(awk -v b="$bpx" 'BEGIN { print (b <= 32) ? "ok" : "over" }')
+        printf 'scale %-16s %-7s cpu %8s ms  %6s B/px %-4s  %s\n' "$label" "$m" "$cpu" "$bpx" "$verdict" \
+            "$(awk -v c="$cpu" -v r="$ref" -v h="$hcpu" 'BEGIN { if (r > 0) printf "%.2fx %s", c / r, (h != "" ? "hmm" : "gpi") }')"
+    done
+}
+for s in $SCALE_SIZES; do
+    "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/synth$s.pgm" && scale_case "synth $s" "$OUT/synth$s.pgm"
+    "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/height$s.pgm" && scale_case "height16 $s" "$OUT/height$s.pgm"
+done
+for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pgm"; done
+rm -f "$OUT"/synth*.pgm "$OUT"/height*.pgm "$OUT"/scale.*
+# ---------------------------------------------------------------------------------------------

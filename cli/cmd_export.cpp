@@ -1,4 +1,4 @@
-// erd export MODEL -o OUT.obj|OUT.ply [--zscale Z]: a mesh model as a height field for 3-D tools.
+// erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]: a mesh model as a height field for 3-D tools.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -14,14 +14,15 @@ namespace erd::cli {
 
 const CommandLine kExport = {
     "export",
-    "erd export MODEL -o OUT.obj|OUT.ply [--zscale Z]",
+    "erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]",
     "Writes a .model or .erd mesh as a surface: x, y in pixels with y up (y = H-1 - row), z = value * Z,\n"
     "faces counter-clockwise seen from above. For an ERD model every wedge becomes its own vertex copy,\n"
     "so the surface is cut open along the constrained edges (the model's discontinuities).",
     {
-        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront) or FILE.ply (ASCII PLY); \"-\" = stdout with --format"},
-        {0, "format", "obj|ply", "output format when the file name does not say (default: from the name)"},
+        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront), FILE.ply (ASCII PLY) or FILE.stl (binary STL); \"-\" = stdout with --format"},
+        {0, "format", "obj|ply|stl", "output format when the file name does not say (default: from the name)"},
         {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
+        {'b', "base", "H", "STL: a solid with walls and a bottom, the surface lifted by H (basic models)"},
     },
     "no warnings", 1, 1, "expected one MODEL",
 };
@@ -33,11 +34,17 @@ static int run_export(const Args& args, const Reporter& rep) {
     ExportOptions opt;
     std::string format;
     Status st;
-    if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message);
-    opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
+    const bool stl = args.str("format") == "stl" || (args.str("format").empty() && has_extension(out, ".stl"));
+    if (stl) opt.format = MeshFormat::stl;
+    else if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message + " (or .stl)");
+    else opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
     opt.zscale = args.real("zscale", 0, 0, 1e12, &st);
     if (!st) return rep.usage(st.message);
     if (args.has("zscale") && !(opt.zscale > 0)) return rep.usage("--zscale must be greater than 0");
+    opt.base = args.real("base", 0, 0, 1e12, &st);
+    if (!st) return rep.usage(st.message);
+    if (args.has("base") && !(opt.base > 0)) return rep.usage("--base must be greater than 0");
+    if (args.has("base") && !stl) return rep.usage("--base applies to STL output");
 
     st = refuse_overwrite(out, {in});
     if (!st) return rep.fail(st);

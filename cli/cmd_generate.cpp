@@ -38,7 +38,7 @@ std::string methods_help();
 const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME [-i IMAGE] [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
+    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
@@ -51,6 +51,7 @@ const CommandLine kGenerate = {
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
         {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E"},
         {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
+        {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
         {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
         {'r', "ratio", "R", "ERD: tau_low / tau_high (default automatic: 0.4)"},
@@ -61,11 +62,13 @@ const CommandLine kGenerate = {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
+        {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
+        {0, "aa-errors", "0|1", "ERDGPI: refinement errors against the 4x4-supersampled approximation (default 0; thesis 1)"},
         {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
@@ -131,6 +134,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("points")) o->points = a.integer("points", 0, 1, (1LL << 40), st);
     *exit_mode = int(a.integer("exit-mode", 0, 0, 2, st));
     if (a.has("max-error")) o->max_error = a.real("max-error", -1.0, 0.0, big, st);
+    if (a.has("triangles")) o->triangles = a.integer("triangles", 0, 1, (1LL << 40), st);
     if (a.has("psnr")) {
         o->psnr = a.real("psnr", 0.0, 0.0, 1000.0, st, true);
     }
@@ -148,6 +152,13 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));
     // --thesis first, so an explicit flag beside it still wins.
     if (a.has("thesis")) set_thesis_preset(o);
+    if (a.has("edges")) {
+        const std::string e = a.str("edges");
+        if (e == "hard" || e == "soft" || e == "auto")
+            o->edges = e == "hard" ? EdgeChoice::hard : e == "soft" ? EdgeChoice::soft : EdgeChoice::automatic;
+        else if (st->ok())
+            *st = Status::bad_input("--edges: '" + e + "' is not hard, soft or auto");
+    }
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
     if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
@@ -156,6 +167,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
                                 real_text(o->alpha_min));
     if (a.has("edge-zero-radius"))
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
+    if (a.has("aa-errors")) o->supersampled_errors = a.integer("aa-errors", 0, 0, 1, st) == 1;
 }
 
 }  // namespace
@@ -268,13 +280,14 @@ static int run_generate(const Args& a, const Reporter& rep) {
     const double write_seconds = seconds_since(t0);
 
     // The reported PSNR is that of the model's own reconstruction: imgsyn for a basic model,
-    // 4x4-supersampled imgsyn_aa for an ERD model (../shared/spec/NOTES.md).
+    // 4x4-supersampled imgsyn_aa for a soft-edged ERD model (../shared/spec/NOTES.md), imgsyn for a
+    // hard-edged one.
     bool have_psnr = false;
     double db = 0.0, psnr_seconds = 0.0;
     if (a.has("psnr-report")) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
-        st = reconstruct(res.model, res.model.kind == ModelKind::erd, &rec);
+        st = reconstruct(res.model, supersampled(res.model), &rec);
         if (!st) return rep.fail(Status::failure("reconstruct: " + st.message));
         st = psnr(image, rec, &db);
         if (!st) return rep.fail(st);

@@ -18,12 +18,12 @@ const CommandLine kReconstruct = {
     "erd reconstruct [MODEL] [-o OUT] [--no-aa] [--plain]",
     "Rasterises a mesh model back into an image. MODEL is a .model (basic model: point\n"
     "evaluation at every pixel, the thesis's imgsyn) or an .erd (ERD model: 4x4 supersampling,\n"
-    "imgsyn_aa, unless --no-aa); read from stdin when omitted or \"-\" (the kind is then told\n"
+    "imgsyn_aa, unless --no-aa or the file says \"edges hard\": then point evaluation); read from stdin when omitted or \"-\" (the kind is then told\n"
     "from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
     "over the vertices).",
     {
         {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), else PGM"},
-        {0, "no-aa", nullptr, "point evaluation at the pixels also for an .erd (default there: 4x4 supersampling)"},
+        {0, "no-aa", nullptr, "point evaluation at the pixels also for a soft-edged .erd (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2), as the thesis's imgsyn did"},
     },
     "no warnings", 0, 1, "expected at most one MODEL",
@@ -40,7 +40,7 @@ static int run_reconstruct(const Args& args, const Reporter& rep) {
     std::string warning;
     if (!(st = load_model_file(in, &model, &warning, &topo))) return rep.fail(st);
     rep.warn(warning);
-    const bool supersample = model.kind == ModelKind::erd && !args.has("no-aa");
+    const bool supersample = supersampled(model) && !args.has("no-aa");
     Image im;
     if (!(st = reconstruct(model, topo, supersample, &im))) return rep.fail(Status::error(st.code, in + ": " + st.message));
     WriteOptions wo;

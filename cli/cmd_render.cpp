@@ -8,6 +8,7 @@
 
 #include "algorithms/model/reconstruct.h"
 #include "algorithms/output/render.h"
+#include "algorithms/output/vector_svg.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
@@ -74,7 +75,8 @@ static bool parse_crop(const std::string& s, RenderOptions* o) {
 const CommandLine kRender = {
     "render",
     "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--crop X,Y,W,H] [--vertices] [--no-edges]\n"
-    "                  [--over IMAGE | --over-reconstruction | --error ORIGINAL [--error-max E]]",
+    "                  [--over IMAGE | --over-reconstruction | --error ORIGINAL [--error-max E]]\n"
+    "       erd render MODEL -o OUT.svg --vector [--scale S] [--crop X,Y,W,H] [--seams layered|crisp|none]",
     "Draws the triangulation of a .model or .erd file: ordinary edges thin and blue, constrained edges\n"
     "(the model's discontinuities: where the two faces beside an edge of an .erd model give an endpoint\n"
     "different values) thick and red. SVG is written as text; PNG is drawn with anti-aliased lines.",
@@ -86,9 +88,11 @@ const CommandLine kRender = {
         {0, "vertices", nullptr, "draw the vertices as dots"},
         {0, "no-edges", nullptr, "draw no triangulation (just the background)"},
         {0, "over", "IMAGE", "draw over this image (the original)"},
-        {0, "over-reconstruction", nullptr, "draw over the model's own reconstruction (4x4 supersampled for .erd)"},
+        {0, "over-reconstruction", nullptr, "draw over the model's own reconstruction (4x4 supersampled for a soft-edged .erd)"},
         {0, "error", "ORIGINAL", "draw over the error map |ORIGINAL - reconstruction| (black 0 .. white >= --error-max)"},
         {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
+        {0, "vector", nullptr, "SVG of the approximating function itself: each face a triangle filled with its plane as a linear gradient"},
+        {0, "seams", "layered|crisp|none", "--vector: how seams between anti-aliased triangles are avoided (default layered)"},
     },
     "no warnings", 1, 1, "expected one MODEL",
 };
@@ -109,6 +113,22 @@ static int run_render(const Args& args, const Reporter& rep) {
         return rep.usage("--crop wants X,Y,W,H (integers, W and H > 0), not '" + args.str("crop") + "'");
     double error_max = args.real("error-max", 0, 1e-9, 1e9, &st);
     if (!st) return rep.usage(st.message);
+    const bool vector = args.has("vector");
+    VectorSvgOptions vopt;
+    if (vector) {
+        if (format != "svg") return rep.usage("--vector writes SVG only");
+        if (backgrounds > 0 || args.has("vertices") || args.has("no-edges"))
+            return rep.usage("--vector draws the surface alone: no --over, --over-reconstruction, --error, --vertices, --no-edges");
+        const std::string seams = args.str("seams", "layered");
+        if (seams == "layered") vopt.seams = SeamFix::layered;
+        else if (seams == "crisp") vopt.seams = SeamFix::crisp;
+        else if (seams == "none") vopt.seams = SeamFix::none;
+        else return rep.usage("--seams wants layered, crisp or none, not '" + seams + "'");
+        vopt.scale = opt.scale > 0 ? opt.scale : 1;
+        vopt.crop_x = opt.crop_x, vopt.crop_y = opt.crop_y, vopt.crop_w = opt.crop_w, vopt.crop_h = opt.crop_h;
+    } else if (args.has("seams")) {
+        return rep.usage("--seams goes with --vector");
+    }
     opt.vertices = args.has("vertices");
     opt.edges = !args.has("no-edges");
 
@@ -123,6 +143,13 @@ static int run_render(const Args& args, const Reporter& rep) {
     st = load_model_file(in, &m, &warning);
     if (!st) return rep.fail(st);
     rep.warn(warning);
+    if (vector) {
+        std::string svg;
+        st = render_vector_svg(m, vopt, &svg);
+        if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
+        st = write_file_atomic(out, svg);
+        return st ? 0 : rep.fail(st);
+    }
     RenderOptions resolved;
     st = resolve_render(m, opt, &resolved);
     if (!st) return rep.fail(st);
@@ -143,7 +170,7 @@ static int run_render(const Args& args, const Reporter& rep) {
             bg = gray_to_rgb(im);
         } else {
             Image approx;
-            st = reconstruct(m, m.kind == ModelKind::erd, &approx);
+            st = reconstruct(m, supersampled(m), &approx);
             if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
             approx.maxval = im.maxval;
             st = error_map(im, approx, error_max, &bg);
@@ -152,7 +179,7 @@ static int run_render(const Args& args, const Reporter& rep) {
         have_bg = true;
     } else if (args.has("over-reconstruction")) {
         Image approx;
-        st = reconstruct(m, m.kind == ModelKind::erd, &approx);
+        st = reconstruct(m, supersampled(m), &approx);
         if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
         bg = gray_to_rgb(approx);
         have_bg = true;

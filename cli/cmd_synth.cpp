@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/drawings.h"
 #include "algorithms/imaging/synth.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
@@ -12,15 +13,19 @@ namespace erd::cli {
 
 const CommandLine kSynth = {
     "synth",
-    "erd synth [-W 256 -H 256 --bits 8|16 --seed N] -o FILE",
+    "erd synth [-W 256 -H 256 --bits 8|16 --seed N] [--kind K --blur N] -o FILE",
     "Writes a deterministic test image: a smooth ramp and bump, two discs, a triangle and a\n"
-    "slanted step with sharp edges, and mild noise. The same options give the same bytes.",
+    "slanted step with sharp edges, and mild noise; or, with --kind, a hard-edged picture (no\n"
+    "anti-aliasing: every edge a step between two pixels), blurred with --blur. The same\n"
+    "options give the same bytes.",
     {
         {'W', "width", "N", "width in pixels (default 256)"},
         {'H', "height", "N", "height in pixels (default 256)"},
         {0, "bits", "B", "bits per sample, 1..16 (default 8): maxval = 2^B - 1"},
         {0, "seed", "N", "noise seed (default 1); shapes depend on the size only"},
         {0, "no-noise", nullptr, "leave out the noise"},
+        {0, "kind", "K", "mixed (default) or a hard-edged picture: drawing, cartoon, screenshot, icons, map, scene, chart, pixelart, cel"},
+        {0, "blur", "N", "hard-edged kinds: N passes of the binomial [1 2 1]/4 along x and y (soft edges; default 0)"},
         {'o', "output", "FILE", "output: .png (8 bits at most) or PGM; \"-\" = stdout"},
         {0, "plain", nullptr, "write plain PGM (P2) instead of raw (P5)"},
     },
@@ -37,10 +42,18 @@ static int run_synth(const Args& args, const Reporter& rep) {
     p.bits = int(args.integer("bits", 8, 1, 16, &st));
     p.seed = std::uint64_t(args.integer("seed", 1, 0, (long long)(~0ull >> 1), &st));
     p.noise = !args.has("no-noise");
+    const std::string kind = args.has("kind") ? args.str("kind") : "mixed";
+    DrawingParams dp;
+    dp.kind = kind;
+    dp.width = p.width;
+    dp.height = p.height;
+    dp.bits = p.bits;
+    dp.blur = int(args.integer("blur", 0, 0, 64, &st));
     if (!st) return rep.usage(st.message);
+    if (kind == "mixed" && args.has("blur")) return rep.usage("--blur needs a hard-edged --kind");
 
     Image im;
-    if (!(st = synth(p, &im))) return rep.fail(st);
+    if (!(st = kind == "mixed" ? synth(p, &im) : draw_picture(dp, &im))) return rep.fail(st);
     WriteOptions wo;
     wo.plain = args.has("plain");
     const std::string out = args.str("output");

@@ -41,6 +41,7 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
         s.l = p.l;
         s.epsilon = p.eps;
         s.simple = p.simple;
+        s.hard_edges = rs.erd.hard_edges;
         s.dropped_constraints = rs.erd.dropped_crossing;
     }
     if (rs.has_greedy) s.stop = to_string(rs.greedy.stop);
@@ -57,7 +58,8 @@ std::string stats_json(const GenerateStats& s) {
     j.integer("constrained_edges", (long long)s.constrained_edges);
     j.integer("dropped_constraints", (long long)s.dropped_constraints);
     if (s.has_params)
-        j.object("parameters", JsonObject().num("beta", s.beta).num("r", s.r).integer("l", s.l).num("epsilon", s.epsilon).boolean("simple", s.simple));
+        j.object("parameters", JsonObject().num("beta", s.beta).num("r", s.r).integer("l", s.l).num("epsilon", s.epsilon).boolean("simple", s.simple)
+                                   .str("edges", s.hard_edges ? "hard" : "soft"));
     else
         j.null("parameters");
     if (s.stop.empty()) j.null("stop");

@@ -2,7 +2,7 @@
 // the parameters chosen, time per stage, peak memory, PSNR). Keys, in this order:
 //   method, model ("basic" | "erd"), image {width, height, maxval},
 //   points {requested, achieved}, vertices, faces, constrained_vertices, constrained_edges,
-//   dropped_constraints, parameters ({beta, r, l, epsilon, simple} or null for ED/GPI),
+//   dropped_constraints, parameters ({beta, r, l, epsilon, simple, edges} or null for ED/GPI),
 //   stop (greedy stop rule, or null), stages [{name, seconds}], total_seconds,
 //   peak_memory_bytes, psnr (only with --psnr-report; null when infinite).
 #pragma once
@@ -27,6 +27,7 @@ struct GenerateStats {
     double beta = 0, r = 0, epsilon = 0;
     int l = 0;
     bool simple = false;
+    bool hard_edges = false;         // the model's kind of edge ("edges": "hard" | "soft")
     std::string stop;                // empty: not a greedy method
     std::vector<StageTime> stages;   // the method's stages, then the CLI's (read, write, psnr)
     double total_seconds = 0;        // wall time of the whole command

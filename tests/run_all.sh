@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 IMAGES=${IMAGES:-../shared/images}
 passed=0
 failed=0
+skipped=0
 log=$(mktemp -d)
 trap 'rm -rf "$log"' EXIT
 
@@ -107,5 +108,35 @@ else
 fi
 
 stage
+echo "== vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction"
+# Installs chromium and librsvg2-bin when missing (as the Makefile installs its packages); without
+# any renderer the stage is counted as skipped, never as passed.
+for pkg in chromium:chromium rsvg-convert:librsvg2-bin; do
+    command -v "${pkg%%:*}" >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${pkg#*:}" >/dev/null 2>&1 || true
+done
+# Runs one browser stage (a script whose exit 77 means "skipped") and counts it once.
+browser_stage() {
+    local name=$1; shift
+    "$@" >"$log/$name" 2>&1
+    local rc=$?
+    cat "$log/$name"
+    case $rc in
+        0) passed=$((passed + 1)) ;;
+        77) echo "SKIPPED: the $name stage did not run (see the SKIP line)"; skipped=$((skipped + 1)) ;;
+        *) failed=$((failed + 1)) ;;
+    esac
+}
+if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm ]]; then
+    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm"
+else
+    echo "SKIPPED: $IMAGES/bull.pgm or lena.pgm missing"; skipped=$((skipped + 1))
+fi
+
+stage
+echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's"
+browser_stage web tests/web_test.sh "$IMAGES"
+
+stage
+[[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -70,7 +70,7 @@ TEST_CASE("unknown subcommand: did you mean; bad options: usage and exit 2", "[c
         {"synth -W abc -o x.pgm", "erd synth: --width: 'abc' is not an integer"},
         {"synth -W 0 -o x.pgm", "erd synth: --width: 0 is outside [1, 32768]"},
         {"synth --bits 17 -o x.pgm", "erd synth: --bits: 17 is outside [1, 16]"},
-        {"synth -W 20000 -H 20000 -o x.pgm", "above the limit of 67108864 pixels"},
+        {"synth -W 20000 -H 20000 -o x.pgm", "above the limit of 268435456 pixels"},
         {"synth", "erd synth: missing -o FILE"},
         {"synth -o", "option --output needs a value"},
         {"synth -x -o a.pgm", "unknown option -x"},

@@ -218,6 +218,21 @@ TEST_CASE("GPI: --psnr and --max-error stop rules", "[basic]") {
     REQUIRE(greedy_refine(cdt3, im, model, go3, &gs3).ok());
     CHECK(gs3.stop == GreedyStop::max_error);
     CHECK(gs3.max_error <= 6.0);
+
+    // --triangles: stops at T or T + 1 triangles (an insertion adds two), before the target.
+    for (std::size_t t : {std::size_t(7), std::size_t(100), std::size_t(501)}) {
+        Cdt cdt4;
+        REQUIRE(cdt4.reset(78, 78).ok());
+        GreedyOptions go4;
+        go4.target_vertices = 1600;
+        go4.max_triangles = t;
+        go4.round_values = true;
+        GreedyStats gs4;
+        REQUIRE(greedy_refine(cdt4, im, model, go4, &gs4).ok());
+        CHECK(gs4.stop == GreedyStop::triangles);
+        CHECK(cdt4.face_count() >= t);
+        CHECK(cdt4.face_count() <= t + 1);
+    }
 }
 
 TEST_CASE("GPI and ED are deterministic", "[basic]") {

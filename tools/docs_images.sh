@@ -4,6 +4,9 @@
 #   (default "erdgpi gpi", the README pair; a missing method is skipped with a note): for each, the reconstruction and the
 #   triangulation (constrained edges thick and red) at half size, a 2x detail of the head with the
 #   mesh over the reconstruction, and the error map of the detail. PNGs go to docs/img/.
+#   Hard edges (issue 15): the `erd synth` drawing and cartoon at 320 x 240 and 1%, ERDGPI before
+#   (--edges soft) and after (the default, auto: hard), mesh over the reconstruction and error map.
+#   PARTS (default "bull hard") picks the parts.
 # usage: tools/docs_images.sh ERD_BIN IMAGES_DIR [OUT_DIR]
 set -euo pipefail
 erd=${1:-build/erd}
@@ -14,10 +17,28 @@ density=0.125
 crop="260,40,320,240"   # the bull's head (pixels): edges meeting smooth shading
 
 if [ ! -x "$erd" ]; then echo "docs_images: no erd binary at $erd (run make first)" >&2; exit 1; fi
-if [ ! -f "$img" ]; then echo "docs_images: $img not found (set IMAGES=...)" >&2; exit 1; fi
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+parts=${PARTS:-bull hard}
+
+if [[ " $parts " == *" hard "* ]]; then
+    for kind in drawing cartoon; do
+        "$erd" synth -q --kind "$kind" -W 320 -H 240 -o "$tmp/$kind.pgm"
+        for when in before after; do
+            flags=(); [ "$when" = before ] && flags=(--edges soft)
+            model="$tmp/${kind}_$when.erd"
+            "$erd" generate -m erdgpi "${flags[@]}" -i "$tmp/$kind.pgm" -d 1 -x 1 -q -o "$model"
+            "$erd" reconstruct "$model" -q -o "$tmp/${kind}_$when.pgm"
+            echo "docs_images: $kind ERDGPI $when: PSNR $("$erd" psnr "$tmp/$kind.pgm" "$tmp/${kind}_$when.pgm") dB" >&2
+            "$erd" render "$model" -q --over-reconstruction -o "$out/hard_${kind}_${when}_mesh.png"
+            "$erd" render "$model" -q --error "$tmp/$kind.pgm" --no-edges -o "$out/hard_${kind}_${when}_error.png"
+        done
+        "$erd" render "$model" -q --over "$tmp/$kind.pgm" --no-edges -o "$out/hard_${kind}_original.png"
+    done
+fi
+[[ " $parts " == *" bull "* ]] || exit 0
+if [ ! -f "$img" ]; then echo "docs_images: $img not found (set IMAGES=...)" >&2; exit 1; fi
 
 made=()
 first=""

@@ -64,13 +64,7 @@ trap 'rm -f "$section"' EXIT
     echo "<!-- /erded-startup -->"
 } >"$section"
 
-if [[ -f $RESULTS ]] && grep -q '^<!-- erded-startup' "$RESULTS"; then
-    awk -v f="$section" '
-        /^<!-- erded-startup/ { while ((getline l < f) > 0) print l; skip = 1; next }
-        /^<!-- \/erded-startup -->/ { skip = 0; next }
-        !skip' "$RESULTS" >"$RESULTS.tmp" && mv "$RESULTS.tmp" "$RESULTS"
-else
-    { [[ -f $RESULTS ]] && echo; cat "$section"; } >>"$RESULTS"
-fi
+source tools/results_section.sh
+put_section erded-startup "$section" "$RESULTS"
 echo "eval_startup: wrote the start-up section of $RESULTS"
 grep -E '^Mirroring' "$RESULTS"

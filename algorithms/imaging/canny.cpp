@@ -217,19 +217,22 @@ struct EdgeDetector::Pass {
         if (!stream(width, sample, params, k_high, guess)) stream(width, sample, params, k_high, 0.0f);
         // Only the points at or above the final bound can be strong in a detection this pass
         // covers; with narrow bins they are hardly more than the first detection's strong points.
-        const std::size_t n = count_at_least(mag.get(), n_kept, low);
+        // Compacted in place, then moved out one array at a time, each freed as soon as it is
+        // copied: the peak is the stream's store plus one array of the kept points, not two stores.
+        std::size_t n = 0;
+        for_each_at_least(mag.get(), n_kept, low, [&](std::size_t k) {
+            at[n] = at[k];
+            mag[n] = mag[k];
+            flag[n] = flag[k];
+            ++n;
+        });
         kept = SortedPoints();
         kept.stride = pl.stride;
-        kept.at.reserve(n);
-        kept_mag.reserve(n);
-        kept_flag.reserve(n);
-        for_each_at_least(mag.get(), n_kept, low, [&](std::size_t k) {
-            kept.at.push_back(at[k]);
-            kept_mag.push_back(mag[k]);
-            kept_flag.push_back(flag[k]);
-        });
+        kept.at.assign(at.get(), at.get() + n);
         at.reset();
+        kept_mag.assign(mag.get(), mag.get() + n);
         mag.reset();
+        kept_flag.assign(flag.get(), flag.get() + n);
         flag.reset();
         n_kept = capacity = 0;
         kept.link_rows();

@@ -17,7 +17,9 @@ static double distance2(LatticePoint p, LatticePoint a, LatticePoint b) {
     return ex * ex + ey * ey;
 }
 
-Polyline douglas_peucker(const Polyline& line, double epsilon) {
+Polyline douglas_peucker(const Polyline& line, double epsilon) { return douglas_peucker(line, epsilon, PieceTest()); }
+
+Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& accept) {
     const std::size_t n = line.size();
     if (n <= 2) return line;
     const double eps2 = epsilon > 0 ? epsilon * epsilon : 0.0;
@@ -33,7 +35,7 @@ Polyline douglas_peucker(const Polyline& line, double epsilon) {
             const double d = distance2(line[i], line[first], line[last]);
             if (d > best) { best = d; at = i; }  // first farthest point wins ties
         }
-        if (at == first || !(best > eps2)) continue;
+        if (at == first || (!(best > eps2) && (!accept || accept(first, last)))) continue;
         keep[at] = 1;
         stack.push_back({at, last});
         stack.push_back({first, at});

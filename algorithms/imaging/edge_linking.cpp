@@ -47,50 +47,62 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     const std::size_t n = sp->size();
     std::vector<std::uint8_t>& flag = sp->flag;
     std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
-    // dist and from are read only at labelled points: set for the sources below, and for a
-    // reached point when it is reached, so neither is initialised.
+    // dist and back are read only at labelled points: set for the sources below, and for a
+    // reached point when it is reached, so neither is initialised. back[j] is the direction
+    // (point_rings.h order) from j to the point it was reached from: a byte instead of an index.
     std::unique_ptr<std::uint8_t[]> dist(new std::uint8_t[n]);
-    std::unique_ptr<std::uint32_t[]> from(new std::uint32_t[n]);
-    std::vector<std::uint32_t> queue(sp->mains);
-    for (const std::uint32_t i : queue) {
-        dist[i] = 0;
-        from[i] = kNoPoint;
-    }
-    struct Meeting { std::uint64_t key; std::uint32_t p, q; };
+    std::unique_ptr<std::uint8_t[]> back(new std::uint8_t[n]);
+    // The queue is the mains themselves, followed by the secondary points as they are reached
+    // (cut off again after the search).
+    std::vector<std::uint32_t>& queue = sp->mains;
+    const std::size_t sources = queue.size();
+    for (const std::uint32_t i : queue) dist[i] = 0;
+    // p has the smaller label; the pair's key is the two labels (read back when sorting).
+    struct Meeting { std::uint32_t p, q; };
     std::vector<Meeting> meetings;
     const std::uint8_t limit = std::uint8_t(max_link);
+    // Every main point is taken from the queue before any reached point, and claims each free
+    // secondary neighbour; so with limit >= 2 a point reached at distance `limit` is next to no
+    // main point of another component and could only meet one (a meeting needs the two
+    // distances to sum to at most limit): it would find no meeting and reach nothing further,
+    // and is not labelled at all. This outermost shell is the largest.
+    const std::uint8_t reach = limit >= 2 ? std::uint8_t(limit - 1) : limit;
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const std::uint32_t i = queue[head];
         const std::uint32_t li = label[i];
         const std::uint8_t di = dist[i];
         std::uint32_t nb[8];
         sp->ring(i, nb);
-        for (const std::uint32_t j : nb) {
+        for (int d = 0; d < 8; ++d) {
+            const std::uint32_t j = nb[d];
             if (j == kNoPoint) continue;
             const std::uint32_t lj = label[j];
             if (lj == 0) {
-                if (di < limit && (flag[j] & (kSecondary | kMain)) == kSecondary) {
+                if (di < reach && (flag[j] & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
                     dist[j] = std::uint8_t(di + 1);
-                    from[j] = i;
+                    back[j] = std::uint8_t((d + 4) & 7);
                     queue.push_back(j);
                 }
             } else if (lj != li && std::uint32_t(di) + dist[j] <= limit) {
-                if (li < lj) meetings.push_back({(std::uint64_t(li) << 32) | lj, i, j});
-                else meetings.push_back({(std::uint64_t(lj) << 32) | li, j, i});
+                if (li < lj) meetings.push_back({i, j});
+                else meetings.push_back({j, i});
             }
         }
     }
+    queue.resize(sources);
     // One link per pair of components: the first found, i.e. (nearly) the shortest.
     std::size_t added = 0;
-    std::stable_sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& c) { return a.key < c.key; });
+    auto key = [&](const Meeting& m) { return (std::uint64_t(label[m.p]) << 32) | label[m.q]; };
+    std::stable_sort(meetings.begin(), meetings.end(), [&](const Meeting& a, const Meeting& c) { return key(a) < key(c); });
     for (std::size_t k = 0; k < meetings.size(); ++k) {
-        if (k > 0 && meetings[k].key == meetings[k - 1].key) continue;
+        if (k > 0 && key(meetings[k]) == key(meetings[k - 1])) continue;
         for (std::uint32_t i : {meetings[k].p, meetings[k].q})
-            for (; i != kNoPoint && !(flag[i] & kMain); i = from[i]) {
+            while (!(flag[i] & kMain)) {  // a reached point: its chain ends at a main point
                 flag[i] |= kMain;
                 sp->mains.push_back(i);
                 ++added;
+                i = sp->points->neighbour(i, back[i]);
             }
     }
 
@@ -101,8 +113,8 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     // to a different main component. Only strong points can be climbed to: the climb starts at
     // g >= tau_low and only rises.
     std::vector<std::uint32_t> path;
-    for (const std::uint32_t end : queue) {
-        if (dist[end] != 0 || !(flag[end] & kMain)) continue;
+    for (std::size_t s = 0; s < sources; ++s) {
+        const std::uint32_t end = sp->mains[s];  // the climbs below append to mains
         int neighbours = 0;
         std::uint32_t nb[8];
         sp->ring(end, nb);

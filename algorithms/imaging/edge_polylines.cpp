@@ -2,10 +2,12 @@
 
 #include <utility>
 
+#include "algorithms/imaging/edge_kind.h"
+
 namespace erd {
 
-EdgePolylines::EdgePolylines(const Image& image)
-    : detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1) {}
+EdgePolylines::EdgePolylines(const Image& image, bool hard)
+    : image_(image), hard_(hard), detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1) {}
 
 Status EdgePolylines::detect(const CannyParams& canny) {
     if (have_edges_ && canny.beta == canny_.beta && canny.r == canny_.r && canny.modified == canny_.modified)
@@ -18,6 +20,13 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     edges_.clear();
     std::vector<Polyline>().swap(traced_);
     std::vector<Polyline>().swap(kept_);
+    if (hard_) {
+        if (!(canny.beta > 0 && canny.beta <= 1) || !(canny.r >= 0 && canny.r <= 1))
+            return Status::bad_input("crack edges: beta must be in (0, 1] and r in [0, 1]");
+        cracks_ = crack_edges(image_, canny.beta, canny.r);
+        traced_ = trace_polylines(cracks_);
+        return Status::success();
+    }
     // Points, not a map: only the chosen detection's map is ever made (edge_map()).
     Status st = detector_.detect(canny, &edges_, &stats_);  // reuses the gradient pass while it can
     edges_.link_rows();
@@ -25,18 +34,24 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     return st;
 }
 
-const std::vector<Polyline>& EdgePolylines::simplify(int min_length, double epsilon_units, LengthRule rule) {
-    if (have_kept_ && min_length == l_ && epsilon_units == eps_ && rule == rule_) return kept_;
+const std::vector<Polyline>& EdgePolylines::simplify(int min_length, double epsilon_units, LengthRule rule, CrackRule crack) {
+    if (have_kept_ && min_length == l_ && epsilon_units == eps_ && rule == rule_ && (!hard_ || crack == crack_)) return kept_;
     l_ = min_length;
     eps_ = epsilon_units;
     rule_ = rule;
+    crack_ = crack;
     have_kept_ = true;
     ++generation_;
-    kept_ = simplify_polylines(traced_, epsilon_units, min_length, rule);
+    if (!hard_)
+        kept_ = simplify_polylines(traced_, epsilon_units, min_length, rule);
+    else if (crack == CrackRule::keep_sides)
+        kept_ = simplify_crack_polylines(traced_, kHardEpsilonScale * epsilon_units, min_length);
+    else
+        kept_ = simplify_polylines(traced_, kHardEpsilonScale * epsilon_units, min_length, rule);
     return kept_;
 }
 
-Grid<std::uint8_t> EdgePolylines::edge_map() const { return erd::edge_map(edges_, map_w_, map_h_); }
+Grid<std::uint8_t> EdgePolylines::edge_map() const { return hard_ ? cracks_ : erd::edge_map(edges_, map_w_, map_h_); }
 
 Status edge_polylines(const Image& image, const EdgePolylineParams& params, EdgePolylineResult* out) {
     if (params.epsilon < 0 || params.epsilon != params.epsilon)

@@ -1,7 +1,8 @@
 // Step 1.1-1.3 of the ERD framework (thesis 3.4.1) in one place: half-pixel edges (modified
 // Canny, algorithms/imaging/canny.h), polylines (polylines.h), Douglas-Peucker simplification
 // with the short polylines dropped (douglas_peucker.h). The ERD methods' initial mesh
-// (algorithms/methods/erd_mesh.cpp), `erd edges` and the benchmark all run this chain.
+// (algorithms/methods/erd_mesh.cpp), `erd edges` and the benchmark all run this chain. With hard
+// edges (algorithms/imaging/edge_kind.h) the chain traces the cracks between pixels instead.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +28,13 @@ struct EdgePolylineParams {
 
 // Doubled-coordinate units (half-pixel grid steps) per pixel of epsilon.
 constexpr double kEpsilonUnitsPerPixel = 2.0;
+// Douglas-Peucker tolerance on cracks, in multiples of the soft one: the side test is what binds
+// (docs/DECISIONS.md "Hard edges").
+constexpr double kHardEpsilonScale = 2.0;
+
+// How a hard-edged chain simplifies its cracks: keeping every pixel on its side
+// (simplify_cracks), or plain Douglas-Peucker (fewer points, some pixels change sides).
+enum class CrackRule { keep_sides, plain };
 
 // The chain on one image, step by step, keeping what a later call can reuse: a detection with
 // the same beta, r and Canny variant as the last one is skipped (the gradient pass is reused by
@@ -34,12 +42,14 @@ constexpr double kEpsilonUnitsPerPixel = 2.0;
 // and tolerance on the same detection (the ERD parameter selection repeats both).
 class EdgePolylines {
 public:
-    explicit EdgePolylines(const Image& image);
+    // hard: crack edges (crack_edges with canny.beta and canny.r), simplified by `crack` below.
+    explicit EdgePolylines(const Image& image, bool hard = false);
     // Steps 1.1 and 1.2: edges with these parameters, traced into polylines.
     Status detect(const CannyParams& canny);
     // Step 1.3 on the last detection: epsilon in doubled-coordinate units (pixels times
-    // kEpsilonUnitsPerPixel). Returns the kept polylines.
-    const std::vector<Polyline>& simplify(int min_length, double epsilon_units, LengthRule rule);
+    // kEpsilonUnitsPerPixel; hard: times kHardEpsilonScale too). Returns the kept polylines.
+    const std::vector<Polyline>& simplify(int min_length, double epsilon_units, LengthRule rule,
+                                          CrackRule crack = CrackRule::keep_sides);
 
     const CannyStats& stats() const { return stats_; }          // of the last detection
     const std::vector<Polyline>& traced() const { return traced_; }
@@ -50,6 +60,10 @@ public:
     std::size_t generation() const { return generation_; }
 
 private:
+    const Image& image_;
+    bool hard_;
+    CrackRule crack_ = CrackRule::keep_sides;
+    Grid<std::uint8_t> cracks_;  // hard: the last detection's crack map
     EdgeDetector detector_;
     int map_w_, map_h_;  // the half-pixel grid
     bool have_edges_ = false, have_kept_ = false;

@@ -77,6 +77,56 @@ struct Sweep {
     std::vector<LatticePoint>* points[lanes] = {};  // null: not recorded
 };
 
+// Where a pixel sits in its row, for the shares that would leave the image: an inner pixel
+// passes 7/16 ahead, 3/16 behind-below, 5/16 below and 1/16 below-ahead; at an end of the row the
+// shares that would fall outside are given to the neighbours inside in proportion to their
+// weights, so no error is lost (first: 7/13 ahead, 5/13 below, 1/13 below-ahead; last: 3/8
+// behind-below, 5/8 below; a one-pixel row: all below). docs/DECISIONS.md "ERD reproduction".
+enum class RowPos { inner, first, last, single };
+
+// One pixel of diffuse_row for all lanes (see there). The first pixel's ahead shares go out
+// through e_prev, so it is stored scaled by 16/13 (the next pixel takes 7/16 and 1/16 of it).
+template <int G, int Dir, bool Masked, RowPos P>
+inline void diffuse_pixel(const double* sig, const std::uint8_t* forb, float* buf, int x, int y, bool counted,
+                          Quad* e_prev, const Quad* rho, const Quad* level, Sweep<G>* sw) {
+    constexpr int L = 4 * G;
+    constexpr float behind_w = P == RowPos::inner ? 3.0f / 16.0f : P == RowPos::last ? 3.0f / 8.0f : 0.0f;
+    constexpr float below_w = P == RowPos::inner ? 5.0f / 16.0f
+                              : P == RowPos::first ? 5.0f / 13.0f
+                              : P == RowPos::last  ? 5.0f / 8.0f
+                                                   : 1.0f;
+    constexpr float carry = P == RowPos::first ? 16.0f / 13.0f : 1.0f;
+    float* cell = buf + std::ptrdiff_t(x) * L;
+    float* behind = cell - Dir * L;
+    const Quad s = splat(float(sig[x]));
+    // A forbidden pixel emits nothing in any lane (level * 0 = +0, so e = v exactly).
+    const float allowed = Masked && forb[x] ? 0.0f : 1.0f;
+    Quad out[G], any = splat(0.0f);
+#pragma GCC unroll 4
+    for (int g = 0; g < G; ++g) {  // unrolled, so that e_prev stays in registers
+        const Quad v = (s + load(cell + 4 * g)) + e_prev[g] * (7.0f / 16.0f);
+        out[g] = emitted(v, rho[g], level[g]);
+        if (Masked) out[g] = out[g] * allowed;
+        any = max(any, out[g]);
+        const Quad e = v - out[g];
+        if (P == RowPos::inner || P == RowPos::last) store(behind + 4 * g, load(behind + 4 * g) + e * behind_w);
+        store(cell + 4 * g, e_prev[g] * (1.0f / 16.0f) + e * below_w);
+        e_prev[g] = P == RowPos::first ? e * carry : e;
+    }
+    // Rare (about one pixel in four fires in some lane of 16): the emitted levels are 0 or
+    // positive, so a sum tells whether any lane (or any lane of a quad) fired.
+    if (counted && (any.v[0] + any.v[1]) + (any.v[2] + any.v[3]) > 0.0f)
+        for (int g = 0; g < G; ++g) {
+            if (!((out[g].v[0] + out[g].v[1]) + (out[g].v[2] + out[g].v[3]) > 0.0f)) continue;
+            for (int i = 0; i < 4; ++i) {
+                if (!(out[g].v[i] > 0.0f)) continue;
+                const int l = 4 * g + i;
+                ++sw->count[l];
+                if (sw->points[l]) sw->points[l]->push_back(LatticePoint{std::int32_t(2 * x), std::int32_t(2 * y)});
+            }
+        }
+}
+
 // One row of the diffusion for all lanes, in place. buf holds a cell of 4G floats per pixel
 // (plus spare cells at -1 and w): cell x holds the error carried into this row until pixel x
 // reads it; then it is free and receives that pixel's running sum for the next row, e_prev/16 +
@@ -84,52 +134,29 @@ struct Sweep {
 // completes with its 3/16 behind-below and leaves final. So every cell is written once for the
 // next row, in the same order of additions as three separate shares would need, and the only
 // state carried from pixel to pixel in registers is e_prev (the rest waits in memory, off the
-// chain of dependent operations). Shares pushed past either end of the row land in the spare
-// cells and are dropped. Chosen pixels (when `counted`) are counted and recorded in scan order.
+// chain of dependent operations). The end pixels keep every share inside the row (RowPos).
+// Chosen pixels (when `counted`) are counted and recorded in scan order.
 // Not inlined: inside select_points the register allocator spilled the share weights (an
 // attribute other compilers ignore).
 template <int G, int Dir, bool Masked>
 [[gnu::noinline]] void diffuse_row(const double* sig, const std::uint8_t* forb, float* buf, int w, int y, bool counted,
                                    Sweep<G>* sw) {
-    constexpr int L = 4 * G;
     // e_prev: the previous pixel's error, whose 7/16 is carried ahead and 1/16 goes below-ahead.
     Quad e_prev[G] = {}, rho[G], level[G];
     for (int g = 0; g < G; ++g) {
         rho[g] = load(sw->rho + 4 * g);
         level[g] = load(sw->level + 4 * g);
     }
-    int x = Dir > 0 ? 0 : w - 1;
-    for (int k = 0; k < w; ++k, x += Dir) {
-        float* cell = buf + std::ptrdiff_t(x) * L;
-        float* behind = cell - Dir * L;
-        const Quad s = splat(float(sig[x]));
-        // A forbidden pixel emits nothing in any lane (level * 0 = +0, so e = v exactly).
-        const float allowed = Masked && forb[x] ? 0.0f : 1.0f;
-        Quad out[G], any = splat(0.0f);
-#pragma GCC unroll 4
-        for (int g = 0; g < G; ++g) {  // unrolled, so that e_prev stays in registers
-            const Quad v = (s + load(cell + 4 * g)) + e_prev[g] * (7.0f / 16.0f);
-            out[g] = emitted(v, rho[g], level[g]);
-            if (Masked) out[g] = out[g] * allowed;
-            any = max(any, out[g]);
-            const Quad e = v - out[g];
-            store(behind + 4 * g, load(behind + 4 * g) + e * (3.0f / 16.0f));
-            store(cell + 4 * g, e_prev[g] * (1.0f / 16.0f) + e * (5.0f / 16.0f));
-            e_prev[g] = e;
-        }
-        // Rare (about one pixel in four fires in some lane of 16): the emitted levels are 0 or
-        // positive, so a sum tells whether any lane (or any lane of a quad) fired.
-        if (counted && (any.v[0] + any.v[1]) + (any.v[2] + any.v[3]) > 0.0f)
-            for (int g = 0; g < G; ++g) {
-                if (!((out[g].v[0] + out[g].v[1]) + (out[g].v[2] + out[g].v[3]) > 0.0f)) continue;
-                for (int i = 0; i < 4; ++i) {
-                    if (!(out[g].v[i] > 0.0f)) continue;
-                    const int l = 4 * g + i;
-                    ++sw->count[l];
-                    if (sw->points[l]) sw->points[l]->push_back(LatticePoint{std::int32_t(2 * x), std::int32_t(2 * y)});
-                }
-            }
+    const int x0 = Dir > 0 ? 0 : w - 1;
+    if (w == 1) {
+        diffuse_pixel<G, Dir, Masked, RowPos::single>(sig, forb, buf, x0, y, counted, e_prev, rho, level, sw);
+        return;
     }
+    diffuse_pixel<G, Dir, Masked, RowPos::first>(sig, forb, buf, x0, y, counted, e_prev, rho, level, sw);
+    int x = x0 + Dir;
+    for (int k = 1; k < w - 1; ++k, x += Dir)
+        diffuse_pixel<G, Dir, Masked, RowPos::inner>(sig, forb, buf, x, y, counted, e_prev, rho, level, sw);
+    diffuse_pixel<G, Dir, Masked, RowPos::last>(sig, forb, buf, x, y, counted, e_prev, rho, level, sw);
 }
 
 // Runs the 4G passes of sw (rho > 0 each) over the density.
@@ -300,9 +327,18 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
             width = std::min(0.25, 2.0 * spread);
         }
         if (center > 0) {
+            // Sampled within the bracket where it is narrower than the window: near the exact
+            // count the bands of rho that give it can be far narrower than the window (bull-like
+            // densities are smooth, a random one at K = 4 gives a band 0.16% wide).
+            double w_lo = center * (1.0 - width), w_hi = center * (1.0 + width);
+            if (have_lo && have_hi && lo < hi) {
+                w_lo = std::max(w_lo, lo);
+                w_hi = std::min(w_hi, hi);
+                if (!(w_lo < w_hi)) { w_lo = lo; w_hi = hi; }
+            }
             for (int l = 0; l < kLanes; ++l, ++j) {
                 const double g = double(j) * golden - std::floor(double(j) * golden);
-                trials[l] = center * (1.0 + width * (2.0 * g - 1.0));
+                trials[l] = w_lo + (w_hi - w_lo) * g;
             }
             continue;
         }

@@ -11,11 +11,12 @@
 namespace erd {
 
 // Largest accepted image. The side bound keeps doubled lattice coordinates (at most 2*side-2)
-// far inside the exactness bound of kernel/predicates.h; the pixel bound caps memory (the
-// methods' peak heap per pixel is in their registry rows, algorithms/methods/methods.cpp: up to
-// ~110 bytes per pixel for ERDED and ERDGPI, so 2^26 pixels ~ 7 GiB worst case).
+// far inside the exactness bound of kernel/predicates.h; the pixel bound admits 16384 x 16384
+// (issue 18) and keeps the half-pixel plane of edge detection under 2^31 cells (point_rings.h).
+// Memory is the caller's to cap: the methods' peak heap per pixel is in their registry rows
+// (algorithms/methods/methods.cpp: up to 88 bytes per pixel for ERDED and ERDGPI).
 constexpr int kMaxImageSide = 32768;
-constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 26;
+constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
 
 template <class T>
 struct Grid {

@@ -24,15 +24,13 @@ Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<doubl
     Grid<double> out(w, h);
     if (w <= 0 || h <= 0) return out;
 
-    // Each derivative filter is the binomial composed with a 3-tap derivative, and composition
-    // is associative on the zero-extended image: fxx = [1 -2 1]_x S, fyy = [1 -2 1]_y S,
-    // fxy = [1/2 0 -1/2]_x [1/2 0 -1/2]_y S with S = b_x b_y f, the smoothed image, taken one
-    // sample beyond the image on every side. So one smoothing (2n taps a pixel for order n)
-    // replaces three filter pairs (20 nonzero taps for order 3, 36 for order 5), and the
-    // derivatives are a few additions. For integer samples (every method's input) below 2^16
-    // and orders up to 17 both ways are exact: every product is an integer times a dyadic tap
-    // and every sum stays far inside 53 bits, so the result equals the composed filters bit
-    // for bit (tested); for other samples the two agree to rounding.
+    // Noise removal first, then the derivatives, as two filtering passes that each extend their
+    // input by zeros (docs/DECISIONS.md "ERD reproduction"): S = b_x b_y f on the image, zero
+    // outside it; fxx = [1 -2 1]_x S, fyy = [1 -2 1]_y S, fxy = [1/2 0 -1/2]_x [1/2 0 -1/2]_y S.
+    // For integer samples (every method's input) below 2^16 and orders up to 17 every product
+    // is an integer times a dyadic tap and every sum stays far inside 53 bits, so any order of
+    // the additions gives the same bits (tested against mmsodd_separable); for other samples the
+    // two agree to rounding.
     //
     // One sweep down the image: each input row is smoothed along x into a ring of the last
     // 2c+1 such rows (c = order / 2); each S row is their weighted sum; each output row needs
@@ -58,6 +56,12 @@ Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<doubl
             src[std::size_t(k)] = r >= 0 && r < h ? hrow(r) : zeros.data();
         }
         weighted_rows(src.data(), b.data(), span, srow(j), int(ew));
+        // The derivatives see S zero-extended in turn (two filtering passes, each with zero
+        // extension): S is kept only on the image, not one sample beyond it.
+        double* const sr = srow(j);
+        if (j < 0 || j >= h) std::fill(sr, sr + ew, 0.0);
+        sr[0] = 0.0;
+        sr[ew - 1] = 0.0;
         const int y = j - 1;
         if (y < 0) continue;
         // S rows y-1, y, y+1 are complete; index x + 1 holds sample x.
@@ -85,11 +89,10 @@ std::vector<double> smoothing_taps(int order) {
 
 Grid<double> mmsodd_separable(const Grid<double>& im, int smoothing_order, Border border) {
     const std::vector<double> b = smoothing_taps(smoothing_order);
-    const std::vector<double> d2 = compose_taps(derivative2_taps(), b);
-    const std::vector<double> d1 = compose_taps(derivative1_taps(), b);
-    const Grid<double> fxx = convolve_cols(convolve_rows(im, d2, border), b, border);
-    const Grid<double> fyy = convolve_cols(convolve_rows(im, b, border), d2, border);
-    const Grid<double> fxy = convolve_cols(convolve_rows(im, d1, border), d1, border);
+    const Grid<double> smooth = convolve_cols(convolve_rows(im, b, border), b, border);
+    const Grid<double> fxx = convolve_rows(smooth, derivative2_taps(), border);
+    const Grid<double> fyy = convolve_cols(smooth, derivative2_taps(), border);
+    const Grid<double> fxy = convolve_cols(convolve_rows(smooth, derivative1_taps(), border), derivative1_taps(), border);
     Grid<double> out(im.width, im.height);
     for (std::size_t i = 0; i < out.data.size(); ++i) out.data[i] = mmsodd_value(fxx.data[i], fyy.data[i], fxy.data[i]);
     return out;

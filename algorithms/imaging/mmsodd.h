@@ -2,13 +2,14 @@
 //
 //   d = max(|l1 + l2|, |l1 - l2|),  l1 = (fxx + fyy) / 2,  l2 = sqrt((fxx - fyy)^2 / 4 + fxy^2)
 //
-// with each second derivative estimated by one separable filter: smoothing composed with the
-// derivative taps of filters.h, the binomial of order smoothing_order in both directions:
-//   fxx: x taps = [1 -2 1] * b_n, y taps = b_n
-//   fyy: x taps = b_n,            y taps = [1 -2 1] * b_n
-//   fxy: x taps = [1/2 0 -1/2] * b_n, y taps = [1/2 0 -1/2] * b_n   (first derivative in x, then in y)
+// with the second derivatives estimated in two filtering passes, as the thesis describes them
+// (3.2.1: a binomial filter "for noise removal", then derivative filters): first the image is
+// smoothed by the binomial of order smoothing_order in x and y, S = b_n b_n f; then
+//   fxx = [1 -2 1] in x on S,  fyy = [1 -2 1] in y on S,  fxy = [1/2 0 -1/2] in x, then in y, on S.
+// Each pass extends its input by zeros (the thesis's border rule), so S is zero outside the image
+// (not the smoothed zero-extended image, which is what one composed filter would see): the frame
+// is then the MMSODD's maximum, not the sample next to it (docs/DECISIONS.md "ERD reproduction").
 // ED uses order 3 (thesis 3.2.1), ERDED and the wedge-value line search order 5 (3.4.1, 3.4.2).
-// Borders: zero extension, as the thesis says; the MMSODD is therefore large along the image frame.
 #pragma once
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/image.h"
@@ -23,9 +24,9 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border =
 // mmsodd(to_grid(im), smoothing_order) without the image-sized copy in doubles.
 Grid<double> mmsodd(const Image& im, int smoothing_order);
 
-// The MMSODD by its definition: the three separable filter pairs above, any border, three
+// The MMSODD by its definition: the passes above with whole-image filters, any border, four
 // image-sized temporaries. mmsodd() serves Border::replicate with it; tests use it as the
-// reference for the one-smoothing form of the zero border.
+// reference for the one-sweep form of the zero border.
 Grid<double> mmsodd_separable(const Grid<double>& im, int smoothing_order, Border border);
 
 // The formula alone, from the three second derivatives at one point.

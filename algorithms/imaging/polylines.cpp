@@ -33,12 +33,11 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
     // cluster of mutual "junctions" out of one junction. Directions E, SE, S, SW, W, NW, N, NE.
     std::vector<std::uint8_t> links(n, 0), degree(n, 0), used(n, 0);  // used: one bit per direction
     for (std::uint32_t i = 0; i < n; ++i) {
-        std::uint32_t nb[8];
-        pts.ring(i, nb);
+        const unsigned ring = pts.mask(i);
         unsigned mask = 0;
         for (int d = 0; d < 8; ++d) {
-            if (nb[d] == kNoPoint) continue;
-            if ((d & 1) && (nb[(d + 7) & 7] != kNoPoint || nb[(d + 1) & 7] != kNoPoint)) continue;
+            if (!(ring & (1u << d))) continue;
+            if ((d & 1) && (ring & ((1u << ((d + 7) & 7)) | (1u << ((d + 1) & 7))))) continue;
             mask |= 1u << d;
         }
         links[i] = std::uint8_t(mask);
@@ -57,10 +56,8 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
         Polyline line{point(start)};
         std::uint32_t cur = start;
         for (;;) {
-            std::uint32_t nb[8];
-            pts.ring(cur, nb);
             used[cur] |= std::uint8_t(1u << d);
-            cur = nb[d];
+            cur = pts.neighbour(cur, d);
             used[cur] |= std::uint8_t(1u << ((d + 4) & 7));
             line.push_back(point(cur));
             if (cur == start || degree[cur] != 2) break;

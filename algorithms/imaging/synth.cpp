@@ -3,20 +3,11 @@
 #include <string>
 #include <utility>
 
+#include "algorithms/imaging/splitmix.h"
+
 namespace erd {
 
 namespace {
-
-// splitmix64 (Steele, Lea, Flood 2014): a full-period 64-bit generator, fixed by its seed.
-struct SplitMix {
-    std::uint64_t state;
-    std::uint64_t next() {
-        std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-};
 
 std::int64_t orient(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t cx, std::int64_t cy) {
     return (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);

@@ -61,7 +61,14 @@ void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_point
     // d + 4.
     std::vector<std::uint8_t> ring(n, 0);
     std::uint32_t nb[8];
+    bool all_alive = true;
+    for (std::uint32_t i = 0; i < n; ++i) all_alive = all_alive && alive[i] != 0;
     for (std::uint32_t i = 0; i < n; ++i) {
+        if (all_alive) {  // the ring is the set's own (the usual case): no neighbour's index needed
+            const unsigned m = pts.mask(i);
+            ring[i] = std::uint8_t(((m << 2) | (m >> 6)) & 0xFFu);
+            continue;
+        }
         if (!alive[i]) continue;
         pts.ring(i, nb);
         unsigned r = 0;

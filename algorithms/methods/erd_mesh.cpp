@@ -14,7 +14,9 @@ namespace {
 // loop iteration often coincide), and a count with the same (l, eps) on the same detection.
 class StepOneCounter : public ConstraintPointCounter {
 public:
-    StepOneCounter(const Image& image, LengthRule rule, double eps_unit) : chain_(image), rule_(rule), eps_unit_(eps_unit) {}
+    // budget: the most constrained points the parameter selection accepts (0.7 N there).
+    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard, bool fallback, double budget)
+        : chain_(image, hard), rule_(rule), eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget) {}
 
     void detect(double beta, double r) override {
         CannyParams cp;
@@ -25,10 +27,14 @@ public:
     }
 
     std::size_t count(int l, double eps) override {
-        const std::vector<Polyline>& kept = chain_.simplify(l, eps * eps_unit_, rule_);
+        const std::vector<Polyline>* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
+        // Hard edges: the side-keeping curves when they fit the budget, else plain Douglas-Peucker
+        // on the same cracks (docs/DECISIONS.md "Hard edges").
+        if (hard_ && fallback_ && double(distinct_points(*kept)) > budget_)
+            kept = &chain_.simplify(l, eps * eps_unit_, rule_, CrackRule::plain);
         if (chain_.generation() != counted_) {
             counted_ = chain_.generation();
-            count_ = distinct_points(kept);
+            count_ = distinct_points(*kept);
         }
         return count_;
     }
@@ -44,6 +50,8 @@ private:
     EdgePolylines chain_;
     LengthRule rule_;
     double eps_unit_;
+    bool hard_, fallback_;
+    double budget_;
     Status status_;
     std::size_t counted_ = 0, count_ = 0;  // distinct points of simplification number counted_
 };
@@ -85,7 +93,8 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
 }
 
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
-    StepOneCounter counter(image, options.length_rule, options.eps_unit);
+    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
+                           0.7 * double(options.target));
     out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                     counter);
     counter.release_detector();

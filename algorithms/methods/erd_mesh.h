@@ -1,7 +1,8 @@
 // Step 1 of the ERD framework (thesis 3.4.1): the initial mesh of ERDED and ERDGPI.
 //
 //   1.1-1.3 half-pixel edges with beta, r; polylines; Douglas-Peucker with epsilon, polylines
-//       shorter than l dropped (the chain of algorithms/imaging/edge_polylines.h);
+//       shorter than l dropped (the chain of algorithms/imaging/edge_polylines.h; with hard
+//       edges its crack version, algorithms/imaging/edge_kind.h);
 //   1.4 P = polyline vertices + the four corners, E = polyline segments, constrained DT.
 // beta, r, l, epsilon come from the automatic selection (algorithms/erd_params.h) unless given.
 // Constraint segments the kernel refuses (they would cross an earlier one) are counted.
@@ -29,6 +30,13 @@ struct InitialMeshOptions {
     // Doubled-coordinate units per unit of epsilon: 2 = epsilon in pixels, 1 = in half pixels
     // (docs/DECISIONS.md "Edge detection and polylines").
     double eps_unit = kEpsilonUnitsPerPixel;
+    // Hard edges (algorithms/imaging/edge_kind.h): step 1.1 traces the cracks between pixels
+    // instead of Canny's half-pixel maxima, and step 1.3 keeps every pixel on its side.
+    bool hard_edges = false;
+    // Hard edges whose side-keeping curves hold more points than the selection accepts (0.7 N):
+    // true = plain Douglas-Peucker on the same cracks at that beta; false = keep the side test
+    // and let the selection shrink beta and grow l.
+    bool hard_fallback = true;
 };
 
 struct InitialMesh {

@@ -87,10 +87,12 @@ Grid<std::uint8_t> occupied_pixels(const Cdt& cdt, int width, int height) {
     return occ;
 }
 
-Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+namespace {
+
+Status erded_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
     Cdt cdt;
     InitialMesh mesh;
-    Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result);
+    Status st = begin_erd_method(image, options, ErdMethod::erded, &cdt, &mesh, result, hard_fallback);
     if (!st) return st;
     const std::int64_t n = std::int64_t(result->requested);
     StageTimer timer(result);
@@ -100,12 +102,12 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
     std::vector<LatticePoint> pts;
     const WedgeValueOptions wo = wedge_options(options);
-    Grid<double> d5;  // the order-5 MMSODD, shared with the wedge-value line search when -s 5
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
-        d5 = mmsodd(image, 5);
-        Grid<double> density = ed_density(d5, 0.5);
+        // The MMSODD plane becomes the density in place; the wedge-value line search computes
+        // its values where it needs them (the same values), so no second plane is kept.
+        Grid<double> density = ed_density(mmsodd(image, 5), 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
         // Only the edge pixels are visited (the map is mostly empty); the zeros written do not
@@ -134,11 +136,16 @@ Status generate_erded(const Image& image, const GenerateOptions& options, Genera
     st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it
     if (!st) return st;
     ErdModel model(image, wo);
-    if (wo.rule == 1 && wo.smoothing_order == 5 && d5.width > 0) model.set_mmsodd(std::move(d5));
     model.assign_all(cdt);
     timer.lap("triangulation and wedge values");
     finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
     return Status::success();
+}
+
+}  // namespace
+
+Status generate_erded(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    return run_erd_method(image, options, erded_once, result);
 }
 
 }  // namespace erd

@@ -12,10 +12,12 @@ Status ErdGreedyModel::on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector
     return Status::success();
 }
 
-Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+namespace {
+
+Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
     Cdt cdt;
     InitialMesh mesh;
-    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result);
+    Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result, hard_fallback);
     if (!st) return st;
     mesh.edges = Grid<std::uint8_t>();  // only ERDED reads the edge map again
     const std::int64_t n = std::int64_t(result->requested);
@@ -31,6 +33,7 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
     // Real-valued errors: the ERD model is judged by its supersampled reconstruction, which
     // rounding the point evaluation does not model (DECISIONS.md: +0.85 dB on bull at 0.125%).
     go.round_values = false;
+    go.supersampled = options.supersampled_errors;
     result->stats.has_greedy = true;
     if (cdt.vertex_count() < std::size_t(n)) {
         st = greedy_refine(cdt, image, greedy, go, &result->stats.greedy);
@@ -40,6 +43,12 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
 
     finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
     return Status::success();
+}
+
+}  // namespace
+
+Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    return run_erd_method(image, options, erdgpi_once, result);
 }
 
 }  // namespace erd

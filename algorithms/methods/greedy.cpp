@@ -16,6 +16,7 @@ const char* to_string(GreedyStop s) {
         case GreedyStop::target: return "target";
         case GreedyStop::max_error: return "max_error";
         case GreedyStop::psnr: return "psnr";
+        case GreedyStop::triangles: return "triangles";
         case GreedyStop::exhausted: return "exhausted";
     }
     return "?";
@@ -148,6 +149,15 @@ public:
         if (!options.round_values)
             for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
         track_max_ = options.max_error >= 0.0;
+        if (options.supersampled) {
+            const std::size_t w = std::size_t(image.width), h = std::size_t(image.height);
+            sub_.assign(16 * w * h, 0.0f);
+            left_.assign(4 * h, 0.0f);
+            right_.assign(4 * h, 0.0f);
+            top_.assign(4 * w, 0.0f);
+            bottom_.assign(4 * w, 0.0f);
+            owner_.assign(w * h, 0);
+        }
         // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
         std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
         by_sum_.reserve(faces);
@@ -159,6 +169,10 @@ public:
     Status run(GreedyStats* stats) {
         for (LatticePoint p : cdt_.points()) ban(p);
         grow();
+        if (options_.supersampled) {
+            for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
+            touched_.clear();
+        }
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) rescan(f);
 
         GreedyStop stop;
@@ -173,6 +187,7 @@ public:
             if (cdt_.vertex_count() >= options_.target_vertices) { stop = GreedyStop::target; break; }
             if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
             if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }
+            if (options_.max_triangles && cdt_.face_count() >= options_.max_triangles) { stop = GreedyStop::triangles; break; }
             if (by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
 
             const FaceInd f = by_sum_.top();
@@ -198,7 +213,18 @@ public:
             if (!st) return st;
             grow();
             ++generation_;
-            for (FaceInd c : cdt_.changes().created) rescan(c);
+            if (options_.supersampled) {
+                touched_.clear();
+                for (FaceInd c : cdt_.changes().created) paint(c);
+                for (FaceInd c : cdt_.changes().created) rescan(c);
+                for (const Span& t : touched_)
+                    for (std::int32_t x = t.x_begin; x <= t.x_end; ++x) {
+                        const FaceInd o = owner_[std::size_t(t.y) * std::size_t(image_.width) + std::size_t(x)];
+                        if (stamp_[o] != generation_) rescan(o);
+                    }
+            } else {
+                for (FaceInd c : cdt_.changes().created) rescan(c);
+            }
             for (FaceInd d : dirty)
                 if (d < faces_.size() && stamp_[d] != generation_) rescan(d);
         }
@@ -231,6 +257,98 @@ private:
         return 10.0 * std::log10(peak_ * peak_ / mse);
     }
 
+    // Supersampled errors: writes the model's plane of face f at the sub-samples it owns (and at
+    // the border-line points its clamped border sub-samples take), and appends to touched_ the
+    // pixel runs whose values that changed.
+    void paint(FaceInd f) {
+        const LatticePoint a = cdt_.point(cdt_.face_vertex(f, 0)), b = cdt_.point(cdt_.face_vertex(f, 1)),
+                           c = cdt_.point(cdt_.face_vertex(f, 2));
+        const SpanPlane plane = model_.face_plane(cdt_, f);
+        const Lattice sub = Lattice::supersample();
+        const std::size_t sw = 4 * std::size_t(image_.width);
+        scan_triangle(sub, domain_, a, b, c, &spans_);
+        const double dv = plane.step_x(sub);
+        for (const Span& sp : spans_) {
+            float* row = &sub_[std::size_t(sp.y) * sw];
+            double v = plane.at(sub, sp.x_begin, sp.y);
+            for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, v += dv) row[i] = float(v);
+            touched_.push_back({sp.y >> 2, sp.x_begin >> 2, sp.x_end >> 2});
+        }
+        // The border lines (as algorithms/model/reconstruct.cpp clamps onto them) and the corners.
+        const std::int32_t mx = domain_.max_x, my = domain_.max_y;
+        const auto touches_x = [&](std::int32_t x) { return a.x == x || b.x == x || c.x == x; };
+        const auto touches_y = [&](std::int32_t y) { return a.y == y || b.y == y || c.y == y; };
+        const std::int32_t last_x = image_.width - 1, last_y = image_.height - 1;
+        if (touches_x(0) || touches_x(mx)) {
+            const Lattice cols{4, 4 * mx, 2, 0, -3};
+            scan_triangle(cols, domain_, a, b, c, &spans_);
+            for (const Span& sp : spans_)
+                for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i) {
+                    (i == 0 ? left_ : right_)[std::size_t(sp.y)] = float(plane.at(cols, i, sp.y));
+                    const std::int32_t x = i == 0 ? 0 : last_x;
+                    touched_.push_back({sp.y >> 2, x, x});
+                }
+        }
+        if (touches_y(0) || touches_y(my)) {
+            const Lattice rows{4, 2, 4 * my, -3, 0};
+            scan_triangle(rows, domain_, a, b, c, &spans_);
+            for (const Span& sp : spans_) {
+                float* line = sp.y == 0 ? top_.data() : bottom_.data();
+                for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i) line[i] = float(plane.at(rows, i, sp.y));
+                touched_.push_back({sp.y == 0 ? 0 : last_y, sp.x_begin >> 2, sp.x_end >> 2});
+            }
+        }
+        // A corner (always a vertex) takes the plane of the face owning its pixel: its value in
+        // that face (reconstruction: the mean of its wedges, which differs only when an edge
+        // constraint ends at the corner).
+        for (int k = 0; k < 4; ++k) {
+            const std::int32_t i = (k & 1) ? last_x : 0, j = (k & 2) ? last_y : 0;
+            if (triangle_owns(Lattice::pixels(), domain_, a, b, c, i, j)) {
+                corner_[k] = plane.at(double(2 * i), double(2 * j));
+                touched_.push_back({j, i, i});
+            }
+        }
+    }
+
+    // The supersampled approximation at pixel (x, y), rounded half up and clamped to [0, maxval]:
+    // the mean of its 16 sub-samples, those outside the domain clamped onto its border.
+    std::int32_t supersampled_value(std::int32_t x, std::int32_t y) const {
+        const std::size_t sw = 4 * std::size_t(image_.width);
+        const std::int32_t last_x = image_.width - 1, last_y = image_.height - 1;
+        double s = 0;
+        if (x > 0 && y > 0 && x < last_x && y < last_y) {  // no clamped sub-samples
+            const float* row = &sub_[std::size_t(4 * y) * sw + 4 * std::size_t(x)];
+            for (int l = 0; l < 4; ++l, row += sw) s += (double(row[0]) + row[1]) + (double(row[2]) + row[3]);
+        } else {
+            s = border_sum(x, y);
+        }
+        const double v = s / 16.0, maxval = double(image_.maxval);
+        const double c = v < maxval ? v : maxval;
+        const std::int32_t r = std::int32_t(c + 0.5);
+        return r < 0 ? 0 : r;
+    }
+
+    // The 16 sub-samples' sum at a pixel on the image frame, the outside ones clamped.
+    double border_sum(std::int32_t x, std::int32_t y) const {
+        const std::size_t sw = 4 * std::size_t(image_.width);
+        const std::int32_t last_x = image_.width - 1, last_y = image_.height - 1;
+        double s = 0;
+        for (int l = 0; l < 4; ++l) {
+            const std::int32_t jy = 4 * y + l;
+            const bool out_y = (y == 0 && l < 2) || (y == last_y && l >= 2);
+            const float* row = &sub_[std::size_t(jy) * sw + 4 * std::size_t(x)];
+            for (int k = 0; k < 4; ++k) {
+                const std::int32_t ix = 4 * x + k;
+                const bool out_x = (x == 0 && k < 2) || (x == last_x && k >= 2);
+                if (out_x && out_y) s += corner_[(x == 0 ? 0 : 1) + (y == 0 ? 0 : 2)];
+                else if (out_x) s += (x == 0 ? left_ : right_)[std::size_t(jy)];
+                else if (out_y) s += (y == 0 ? top_ : bottom_)[std::size_t(ix)];
+                else s += row[k];
+            }
+        }
+        return s;
+    }
+
     // Scans the pixels face f owns against the model's plane: new sum and candidate.
     void rescan(FaceInd f) {
         stamp_[f] = generation_;
@@ -242,7 +360,7 @@ private:
         // reconstruction does for such a face); the others step the model's plane.
         std::int64_t z[3];
         RoundedPlane exact;
-        const bool is_exact = options_.round_values && model_.integer_values(cdt_, f, z) &&
+        const bool is_exact = options_.round_values && !options_.supersampled && model_.integer_values(cdt_, f, z) &&
                               exact.set(p[0], z[0], p[1], z[1], p[2], z[2], image_.maxval);
         const SpanPlane plane = is_exact ? SpanPlane() : model_.face_plane(cdt_, f);
         const double dv = 2.0 * plane.gx;
@@ -272,7 +390,25 @@ private:
         };
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
-        if (options_.round_values) {
+        if (options_.supersampled) {
+            std::int64_t isum = 0, ibest_sq = -1;
+            walk(std::false_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
+                                        std::int32_t lo, std::int32_t hi) {
+                FaceInd* own = &owner_[std::size_t(j) * width];
+                for (std::int32_t x = lo; x <= hi; ++x) {
+                    own[x] = f;
+                    const std::int64_t e = std::int64_t(srow[x]) - supersampled_value(x, j);
+                    isum += e * e;
+                    if (e * e > ibest_sq && !brow[x]) {
+                        ibest_sq = e * e;
+                        bx = x;
+                        by = j;
+                    }
+                }
+            });
+            sum = double(isum);
+            best = ibest_sq < 0 ? -1.0 : std::sqrt(double(ibest_sq));
+        } else if (options_.round_values) {
             std::int64_t isum = 0, ibest_sq = -1;
             if (is_exact) {
                 walk(std::false_type(), [&](const std::uint16_t* srow, const std::uint8_t* brow, std::int32_t j,
@@ -324,6 +460,14 @@ private:
     IndexedMaxHeap by_sum_;  // faces with a candidate, keyed on squared-error sum
     IndexedMaxHeap by_max_;  // the same faces keyed on candidate error (only for --max-error)
     bool track_max_ = false;
+    // Supersampled errors (GreedyOptions::supersampled): the sub-samples of the current
+    // approximation (index (4y + l) * 4W + 4x + k as Lattice::supersample()), the border lines'
+    // values at the sub-sample rows / columns and the corners; the face owning each pixel; the
+    // pixel runs whose values the last paints changed (Span: row y, columns x_begin..x_end).
+    std::vector<float> sub_, left_, right_, top_, bottom_;
+    double corner_[4] = {0, 0, 0, 0};
+    std::vector<FaceInd> owner_;
+    std::vector<Span> spans_, touched_;
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
 };

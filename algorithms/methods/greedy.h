@@ -12,8 +12,8 @@
 // whole-image squared error, which the loop keeps incrementally for the PSNR stop rule.
 //
 // Errors are measured at the pixel lattice Lambda (even doubled coordinates) by point evaluation
-// of the face's plane, also for the ERD model (../shared/spec/NOTES.md: the reported PSNR of an ERD model is
-// the supersampled one; refinement may use point evaluation).
+// of the face's plane (../shared/spec/NOTES.md: refinement may use point evaluation), or against
+// the supersampled reconstruction (GreedyOptions::supersampled, the thesis's ERDGPI).
 //
 // Candidates: a lattice point that is already a vertex is never a candidate (inserting it would
 // change nothing), nor is a point the model has refused (GreedyModel::admissible). Among equal
@@ -91,11 +91,23 @@ struct GreedyOptions {
     std::size_t target_vertices = 0;  // stop when the triangulation has this many vertices
     double max_error = -1.0;          // stop when max abs error <= max_error; negative: rule off
     double psnr = 0.0;                // stop when PSNR >= psnr dB; <= 0: rule off
+    // Stop when the triangulation has at least this many triangles (an insertion adds two, so it
+    // ends with T or T + 1); 0: rule off.
+    std::size_t max_triangles = 0;
     // Errors against the approximation rounded to the nearest integer and clamped to
     // [0, maxval] (what imgsyn reconstructs; squared errors are integers and the running total
     // exact) instead of the real-valued plane. The default is GenerateOptions::round_values's
     // (docs/DECISIONS.md "Greedy point insertion" has the numbers that chose it); ERDGPI turns it off.
     bool round_values = true;
+    // Errors against the 4x4-supersampled approximation, rounded and clamped as reconstruction
+    // writes it (imgsyn_aa; sub-samples outside the domain clamped onto its border), instead of
+    // point evaluation: the thesis's ERDGPI "maintains the image approximation" of its model,
+    // which 3.3 rasterises by supersampling (docs/DECISIONS.md "ERD reproduction"). A pixel's
+    // value then depends on the faces within 3/8 pixel of it, so after an insertion the faces
+    // owning the pixels the new faces reach are re-scanned too. Overrides round_values. Costs
+    // 16 floats per pixel. Sub-samples on a constrained edge take the owning face's plane (the
+    // reconstruction takes the mean of both sides there; they are a few per edge).
+    bool supersampled = false;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
 };

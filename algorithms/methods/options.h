@@ -15,6 +15,9 @@
 
 namespace erd {
 
+// --edges: what the ERD methods take the image's edges to be (algorithms/imaging/edge_kind.h).
+enum class EdgeChoice { automatic, soft, hard };
+
 struct GenerateOptions {
     // Target size. -d (percent) wins over -n, as in the thesis; with neither, density 3%.
     double density = 3.0;        // percent of W*H, counting every vertex
@@ -24,6 +27,7 @@ struct GenerateOptions {
     // Extra stop rules of the greedy methods (GPI, ERDGPI); whichever holds first.
     double max_error = -1.0;     // --max-error: largest abs error <= E; negative: off
     double psnr = 0.0;           // --psnr: whole-image PSNR >= P dB; <= 0: off
+    std::int64_t triangles = 0;  // --triangles: the mesh has >= T triangles; 0: off
     bool round_values = true;    // greedy: errors against the rounded approximation (DECISIONS.md)
 
     // ERD methods (erdmodel helper). Negative / -1: automatic selection (thesis 3.4.1).
@@ -41,8 +45,11 @@ struct GenerateOptions {
                                  // refit of all wedge values after refinement; 0 = the thesis's values
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
+    EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft
     int edge_zero_radius = 1;    // ERDED: density zeroed within this many pixels (Chebyshev) of an
                                  // edge pixel (ours; the thesis's "edge pixels" is 0)
+    bool supersampled_errors = false;  // ERDGPI: refinement errors against the 4x4-supersampled
+                                 // approximation (the thesis's, --thesis); false: point evaluation
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages
 };
@@ -68,7 +75,8 @@ enum class ExactMode {
 Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode mode, std::string* warning);
 
 // The thesis's method exactly, as erd_ed and erd_gpi run it (--thesis): the options beyond the
-// thesis (wedge refit, the line-search range, the ERDED edge radius) set to the thesis's values.
+// thesis (wedge refit, the line-search range, the ERDED edge radius, hard edges) set to the
+// thesis's values (soft edges).
 // Other fields stay as they are in *o.
 void set_thesis_preset(GenerateOptions* o);
 // GenerateOptions() with the thesis preset.

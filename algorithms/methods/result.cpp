@@ -33,6 +33,13 @@ std::vector<std::string> result_lines(const RunStats& r) {
         out.push_back("dropped crossing constraints: " + std::to_string(s.dropped_crossing));
         if (s.dropped_polylines > 0)
             out.push_back("dropped polylines (N too small for them): " + std::to_string(s.dropped_polylines));
+        out.push_back(std::string("edges: ") + (s.hard_edges ? "hard" : "soft") +
+                      (s.edges_measured ? " (measured: " + std::to_string(s.hard_steps) + " hard and " + std::to_string(s.soft_steps) +
+                                              " soft strong steps)"
+                                        : " (asked for)"));
+        if (s.plain_psnr > 0 || s.exact_psnr > 0)
+            out.push_back("hard curves: plain past the budget " + real("%.4f", s.plain_psnr) + " dB, side-keeping only " +
+                          real("%.4f", s.exact_psnr) + " dB (the better kept)");
         out.push_back("multi-wedge values: " + std::to_string(s.multi_wedges) + " (line-search maximum at alpha_min: " +
                       std::to_string(s.alpha_first) + ", at alpha_max: " + std::to_string(s.alpha_last) + ")");
     }

@@ -18,6 +18,7 @@ enum class GreedyStop {
     target,     // cdt.vertex_count() reached GreedyOptions::target_vertices
     max_error,  // the largest absolute error over candidate points is <= max_error
     psnr,       // the whole-image PSNR (point evaluation) is >= psnr
+    triangles,  // the triangulation has >= max_triangles triangles
     exhausted,  // no face has an admissible point with nonzero error (e.g. planar image)
 };
 
@@ -57,6 +58,12 @@ struct ErdStepStats {
     std::size_t multi_wedges = 0;       // wedge values found by the line search
     std::size_t alpha_first = 0;        // ... whose maximum was at the near end of the range
     std::size_t alpha_last = 0;         // ... at the far end
+    bool hard_edges = false;            // the model's edges are hard (Model::edges)
+    bool edges_measured = false;        // --edges auto decided it from these counts:
+    std::size_t hard_steps = 0, soft_steps = 0;  // strong steps (algorithms/imaging/edge_kind.h)
+    // ERDED and ERDGPI with hard edges runs both treatments of over-budget crack curves (erd_mesh.h
+    // hard_fallback) and keeps the better: their point-reconstruction PSNRs (0: not run).
+    double plain_psnr = 0, exact_psnr = 0;
 };
 
 // Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.

@@ -6,7 +6,10 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/imaging/edge_kind.h"
 #include "algorithms/methods/wedge_fit.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/reconstruct.h"
 
 namespace erd {
 
@@ -46,6 +49,8 @@ void set_thesis_preset(GenerateOptions* o) {
     o->alpha_min = 1.0;
     o->alpha_max = 1.5;
     o->edge_zero_radius = 0;
+    o->edges = EdgeChoice::soft;
+    o->supersampled_errors = true;
 }
 
 GenerateOptions thesis_options() {
@@ -89,6 +94,7 @@ GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
     go.target_vertices = n;
     go.max_error = options.max_error;
     go.psnr = options.psnr;
+    go.max_triangles = options.triangles > 0 ? std::size_t(options.triangles) : 0;
     go.round_values = options.round_values;
     go.progress = options.progress;
     return go;
@@ -108,15 +114,28 @@ ErdParamRequest param_request(const GenerateOptions& options) {
 }
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
-                        InitialMesh* mesh, GenerateResult* result) {
+                        InitialMesh* mesh, GenerateResult* result, bool hard_fallback) {
     Status st = begin_method(image, options, result);
     if (!st) return st;
+    ErdStepStats& s = result->stats.erd;
+    if (options.edges == EdgeChoice::automatic) {
+        const EdgeKindStats ek = measure_edge_kind(image);
+        s.edges_measured = true;
+        s.hard_steps = ek.hard;
+        s.soft_steps = ek.soft;
+        s.hard_edges = ek.is_hard();
+    } else {
+        s.hard_edges = options.edges == EdgeChoice::hard;
+    }
+    result->model.edges = s.hard_edges ? EdgeKind::hard : EdgeKind::soft;
     if (options.progress.report_cancelled("initial mesh", 0.0)) return Status::failure(kCancelled);
     StageTimer timer(result);
     InitialMeshOptions mo;
     mo.method = method;
     mo.target = result->requested;
     mo.request = param_request(options);
+    mo.hard_edges = s.hard_edges;
+    mo.hard_fallback = hard_fallback;
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
@@ -144,6 +163,23 @@ void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions
     s.alpha_last = model->stats().alpha_last;
     result->polylines = std::move(mesh->polylines);
     timer->lap("model");
+}
+
+Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
+    Status st = run(image, options, true, result);
+    if (!st || result->model.edges != EdgeKind::hard) return st;
+    GenerateResult exact;
+    if (!(st = run(image, options, false, &exact))) return st;
+    double db[2] = {0, 0};
+    const GenerateResult* r[2] = {result, &exact};
+    for (int i = 0; i < 2; ++i) {
+        Image rec;
+        if (!(st = reconstruct(r[i]->model, false, &rec)) || !(st = psnr(image, rec, &db[i]))) return st;
+    }
+    if (db[1] > db[0]) *result = std::move(exact);
+    result->stats.erd.plain_psnr = db[0];
+    result->stats.erd.exact_psnr = db[1];
+    return Status::success();
 }
 
 }  // namespace erd

@@ -54,10 +54,21 @@ WedgeValueOptions wedge_options(const GenerateOptions& options);
 // Parameter flags (-b -r -l -e -S) as a request for the automatic selection.
 ErdParamRequest param_request(const GenerateOptions& options);
 
-// The common start of ERDED and ERDGPI: begin_method, then the initial mesh (framework step 1)
-// into *cdt and *mesh, timed as the stage "initial mesh".
+// The common start of ERDED and ERDGPI: begin_method, the kind of edge (options.edges; auto
+// measures the image: algorithms/imaging/edge_kind.h) into result->model.edges and the stats,
+// then the initial mesh (framework step 1) into *cdt and *mesh, timed as the stage "initial
+// mesh". hard_fallback: InitialMeshOptions::hard_fallback.
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
-                        InitialMesh* mesh, GenerateResult* result);
+                        InitialMesh* mesh, GenerateResult* result, bool hard_fallback = true);
+
+// One run of ERDED or ERDGPI (from begin_erd_method with hard_fallback to finish_erd_method).
+using ErdRun = Status (*)(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result);
+
+// ERDED or ERDGPI: run(hard_fallback = true); when the model's edges are hard, also run(false),
+// since each treatment of crack curves too long for the budget wins on some images
+// (docs/DECISIONS.md "Hard edges"), and keep the model whose point reconstruction has the higher
+// PSNR (the first on a tie); both PSNRs go to result->stats.erd.
+Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result);
 
 // The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the
 // least-squares refit (options.wedge_fit > 0, stage "wedge refit"), the ERD model into result,

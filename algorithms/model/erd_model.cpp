@@ -45,7 +45,7 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     for (int i = 0; i <= steps; ++i) {
         const double alpha = options_.alpha_min + kWedgeAlphaStep * i;
         const double qx = clamp(x + alpha * dx, max_x), qy = clamp(y + alpha * dy, max_y);
-        const double f = mmsodd_at(qx, qy);
+        const double f = mmsodd_near(qx, qy);
         if (f > best) {
             best = f;
             bx = qx;
@@ -58,27 +58,29 @@ double ErdModel::multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w) {
     return bilinear(phi_, bx, by);
 }
 
-namespace {
-
-// h's taps of radius c spread over [-rad, rad] (zeros outside), indexed by n + rad.
-std::vector<double> padded_taps(const std::vector<double>& h, int rad) {
-    std::vector<double> out(std::size_t(2 * rad + 1), 0.0);
-    const int c = int(h.size() / 2);
-    for (int n = -c; n <= c; ++n) out[std::size_t(n + rad)] = h[std::size_t(n + c)];
-    return out;
+void ErdModel::prepare_taps() {
+    taps_b_ = binomial_taps(options_.smoothing_order);
+    if (taps_b_.empty()) taps_b_ = {1.0};
+    stencil_radius_ = int(taps_b_.size() / 2);
 }
 
-}  // namespace
-
-void ErdModel::prepare_taps() {
-    std::vector<double> b = binomial_taps(options_.smoothing_order);
-    if (b.empty()) b = {1.0};
-    const std::vector<double> d1 = compose_taps(derivative1_taps(), b), d2 = compose_taps(derivative2_taps(), b);
-    const int cb = int(b.size() / 2), cd = int(d2.size() / 2);
-    stencil_radius_ = cb > cd ? cb : cd;
-    taps_b_ = padded_taps(b, stencil_radius_);
-    taps_d1_ = padded_taps(d1, stencil_radius_);
-    taps_d2_ = padded_taps(d2, stencil_radius_);
+double ErdModel::smoothed_pixel(int u, int v) const {
+    // S(u, v) of algorithms/mmsodd.h: the binomial in x, then in y, zero outside the image.
+    if (u < 0 || v < 0 || u >= phi_.width || v >= phi_.height) return 0.0;
+    const int c = stencil_radius_;
+    double s = 0;
+    for (int m = -c; m <= c; ++m) {
+        const int y = v - m;
+        if (y < 0 || y >= phi_.height) continue;  // a row of zeros
+        const std::uint16_t* row = &phi_.samples[std::size_t(y) * std::size_t(phi_.width)];
+        double r = 0;
+        for (int n = -c; n <= c; ++n) {
+            const int x = u - n;
+            if (x >= 0 && x < phi_.width) r += taps_b_[std::size_t(n + c)] * double(row[x]);
+        }
+        s += taps_b_[std::size_t(m + c)] * r;
+    }
+    return s;
 }
 
 double ErdModel::mmsodd_pixel(int x, int y) {
@@ -86,70 +88,27 @@ double ErdModel::mmsodd_pixel(int x, int y) {
     const auto found = local_.find(key);
     if (found != local_.end()) return found->second;
     if (stencil_radius_ < 0) prepare_taps();
-    // The separable filters of algorithms/imaging/mmsodd.cpp at one pixel, zero extension: each tap
-    // vector h of radius c is applied as sum_n h[n + c] * f(i - n), n increasing. Terms that are
-    // +-0 may be added or left out (the taps padded with zeros to the stencil radius; stencil rows
-    // outside the image): every sum starts at +0 and adding +-0 never changes it, so the values
-    // are those of the whole-grid filters.
-    const int rad = stencil_radius_;
-    // Each stencil row is read once into stencil_ (zero outside the image) and the three filters
-    // read it there.
-    stencil_.resize(std::size_t(2 * rad + 1));
-    double* const f = stencil_.data() + rad;  // f[-n] = phi(x - n, v)
-    const bool cols_in = x - rad >= 0 && x + rad < phi_.width;
-    const double* const b = taps_b_.data() + rad;  // b[n] for n in [-rad, rad]
-    const double* const d1 = taps_d1_.data() + rad;
-    const double* const d2 = taps_d2_.data() + rad;
-    double fxx = 0, fyy = 0, fxy = 0;
-    for (int m = -rad; m <= rad; ++m) {
-        const int v = y - m;
-        if (v < 0 || v >= phi_.height) continue;  // a row of zeros
-        const std::uint16_t* row = &phi_.samples[std::size_t(v) * std::size_t(phi_.width)];
-        if (cols_in) {
-            for (int n = -rad; n <= rad; ++n) f[-n] = double(row[x - n]);
-        } else {
-            for (int n = -rad; n <= rad; ++n) {
-                const int u = x - n;
-                f[-n] = u >= 0 && u < phi_.width ? double(row[u]) : 0.0;
-            }
-        }
-        // The three x filters in one sweep over the padded taps (their zeros add +-0).
-        double rb = 0, rd1 = 0, rd2 = 0;
-        for (int n = -rad; n <= rad; ++n) {
-            const double sample = f[-n];
-            rb += b[n] * sample;
-            rd1 += d1[n] * sample;
-            rd2 += d2[n] * sample;
-        }
-        // Row m enters fxx through the y smoothing taps (with the x second derivative), fyy
-        // through the y second derivative (with x smoothing), fxy through the y first derivative.
-        if (b[m] != 0) fxx += b[m] * rd2;
-        if (d2[m] != 0) fyy += d2[m] * rb;
-        if (d1[m] != 0) fxy += d1[m] * rd1;
-    }
+    // The two passes of algorithms/imaging/mmsodd.h at one pixel: S on the 3 x 3 neighbourhood, then the
+    // derivative taps, in the same expressions as the whole-grid sweep. Integer samples and dyadic
+    // taps make every value exact, so the order of the additions does not matter: the values are
+    // those of the grid bit for bit.
+    double S[3][3];
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) S[j][i] = smoothed_pixel(x + i - 1, y + j - 1);
+    const double fxx = (S[1][2] + S[1][0]) - 2.0 * S[1][1];
+    const double fyy = (S[2][1] + S[0][1]) - 2.0 * S[1][1];
+    const double fxy = 0.25 * ((S[2][2] - S[2][0]) - (S[0][2] - S[0][0]));
     const double value = mmsodd_value(fxx, fyy, fxy);
     local_.emplace(key, value);
     return value;
 }
 
-double ErdModel::mmsodd_at(double x, double y) {
-    if (have_mmsodd_) return bilinear(mmsodd_, x, y);
-    // Bilinear interpolation of the pixel values, as bilinear() does on a full grid.
-    const int x0 = x >= phi_.width - 1 ? phi_.width - 2 : int(std::floor(x));
-    const int y0 = y >= phi_.height - 1 ? phi_.height - 2 : int(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    // Successive steps of a line search (0.05 px apart) mostly stay in one cell: keep its corners.
-    if (x0 != cell_x_ || y0 != cell_y_) {
-        cell_x_ = x0;
-        cell_y_ = y0;
-        cell_[0] = mmsodd_pixel(x0, y0);
-        cell_[1] = mmsodd_pixel(x0 + 1, y0);
-        cell_[2] = mmsodd_pixel(x0, y0 + 1);
-        cell_[3] = mmsodd_pixel(x0 + 1, y0 + 1);
-    }
-    const double top = (1.0 - fx) * cell_[0] + fx * cell_[1];
-    const double bottom = (1.0 - fx) * cell_[2] + fx * cell_[3];
-    return (1.0 - fy) * top + fy * bottom;
+double ErdModel::mmsodd_near(double x, double y) {
+    // f is the MMSODD of phi, defined on the pixel lattice (thesis 3.2.1, eq. 3.1); a point of
+    // the line search reads it at the nearest pixel (halves up: x, y >= 0).
+    const int px = int(x + 0.5), py = int(y + 0.5);
+    if (have_mmsodd_) return mmsodd_(px, py);
+    return mmsodd_pixel(px, py);
 }
 
 void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {

@@ -11,8 +11,9 @@
 //   one wedge   z = phi_bar(v);
 //   several     line search along the unit bisector d of the wedge: v' = v + alpha d with alpha in
 //               [alpha_min, alpha_max] pixels (default [0.75, 1]; the thesis's [1, 1.5] with
-//               --thesis) in steps of kWedgeAlphaStep, maximising the MMSODD (bilinearly
-//               interpolated) at v' clamped into Gamma; z = phi_bar(v'). First maximum wins.
+//               --thesis) in steps of kWedgeAlphaStep, maximising the MMSODD (defined on the
+//               pixels: read at the pixel nearest v') at v' clamped into Gamma; z = phi_bar(v').
+//               First maximum wins.
 //   rule 0      ("fixed distance", -w 0): z = phi_bar(v + d).
 // For a boundary wedge of an open fan the bounding edges are the hull edge and the constrained
 // edge, so its bisector points into the image as well.
@@ -115,7 +116,7 @@ private:
     // the one wedge_value(v, cdt.wedge_id(e)) finds, without wedge_id's count and gcd.
     std::uint32_t multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const;
     double multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w);
-    double mmsodd_at(double x, double y);  // bilinear MMSODD, from the grid or computed locally
+    double mmsodd_near(double x, double y);  // MMSODD at the pixel nearest (x, y), grid or local
 
     const Image& phi_;
     WedgeValueOptions options_;
@@ -126,14 +127,9 @@ private:
     // rather than a whole W x H grid (8 bytes per pixel that were mostly never read).
     std::unordered_map<std::size_t, double> local_;
     void prepare_taps();
-    // The filters of mmsodd_pixel, along x and y: smoothing b and the derivatives
-    // d1 = [1/2 0 -1/2] * b and d2 = [1 -2 1] * b, each spread over [-stencil_radius_,
-    // stencil_radius_] (zeros where a filter is shorter), indexed by n + stencil_radius_.
-    int stencil_radius_ = -1;  // < 0 until the first use
-    std::vector<double> taps_b_, taps_d1_, taps_d2_;
-    std::vector<double> stencil_;  // one row of the pixel's filter stencil
-    int cell_x_ = -1, cell_y_ = -1;  // the last bilinear cell mmsodd_at read, and its corners
-    double cell_[4] = {0, 0, 0, 0};
+    double smoothed_pixel(int u, int v) const;  // S of algorithms/mmsodd.h at pixel (u, v)
+    int stencil_radius_ = -1;  // radius of taps_b_ (the binomial); < 0 until the first use
+    std::vector<double> taps_b_;
     std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
     std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
     std::vector<Entry> entries_;

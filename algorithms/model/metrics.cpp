@@ -28,7 +28,7 @@ static Status check_pair(const Image& a, const Image& b) {
 Status mse(const Image& orig, const Image& approx, double* out) {
     Status s = check_pair(orig, approx);
     if (!s) return s;
-    // Exact integer sum: at most 2^26 pixels * 2^32 per squared difference < 2^64.
+    // Exact integer sum: at most 2^28 pixels * 2^32 per squared difference < 2^64.
     std::uint64_t sum = 0;
     for (std::size_t i = 0; i < orig.samples.size(); ++i) {
         std::int64_t d = std::int64_t(orig.samples[i]) - std::int64_t(approx.samples[i]);

@@ -21,11 +21,20 @@ namespace erd {
 
 enum class ModelKind { basic, erd };
 
+// Which kind of edge an ERD model's discontinuities stand for, and so how it is reconstructed:
+//   soft  the thesis's: edges the camera has blurred; the image is the mean of 4x4 sub-samples
+//         per pixel (imgsyn_aa). Files without a header block are soft.
+//   hard  steps between two pixels (drawings, screenshots, aliased renderings): each pixel is
+//         the function at its centre (point evaluation), so a pixel lies wholly on one side.
+// Written to an .erd as the header line "edges hard" (algorithms/model/model_io.h).
+enum class EdgeKind { soft, hard };
+
 struct Model {
     ModelKind kind = ModelKind::basic;
     int width = 0;   // image size in pixels; the domain is [0, W-1] x [0, H-1]
     int height = 0;
     std::uint32_t maxval = 255;
+    EdgeKind edges = EdgeKind::soft;  // erd only; a basic model is always point-evaluated
 
     std::vector<LatticePoint> vertices;
     std::vector<double> values;                        // per vertex (for erd: its single-wedge value,
@@ -36,5 +45,8 @@ struct Model {
 
     std::size_t size() const { return vertices.size(); }
 };
+
+// True when m is reconstructed by 4x4 supersampling: an ERD model with soft edges.
+inline bool supersampled(const Model& m) { return m.kind == ModelKind::erd && m.edges == EdgeKind::soft; }
 
 }  // namespace erd

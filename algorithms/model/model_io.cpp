@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/model/float_chars.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/predicates.h"
 
@@ -65,6 +66,12 @@ public:
     bool at_end() {
         skip();
         return pos_ >= s_.size();
+    }
+    // True when the next token is `word` (nothing is consumed).
+    bool peek_is(std::string_view word) {
+        skip();
+        return s_.compare(pos_, word.size(), word.data(), word.size()) == 0 &&
+               (pos_ + word.size() == s_.size() || space(s_[pos_ + word.size()]) || s_[pos_ + word.size()] == '#');
     }
     std::size_t remaining() {
         skip();
@@ -143,7 +150,7 @@ public:
         double x = 0.0;
         const char* b = t.data();
         if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
-        const auto r = std::from_chars(b, t.data() + t.size(), x);
+        const auto r = read_double(b, t.data() + t.size(), &x);
         if (t.empty() || r.ptr != t.data() + t.size() || r.ec == std::errc::invalid_argument)
             return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
         if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
@@ -398,6 +405,29 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
 
 }  // namespace
 
+// The header block (model_io.h): "erd-header 1", then key lines, then "end". *edges_line receives
+// the line of the "edges" key (0 when absent).
+Status read_header(Tokens& tk, Model* m, int* edges_line) {
+    std::string_view t;
+    tk.next(&t);  // "erd-header"
+    std::uint64_t version = 0;
+    if (Status s = tk.uint("header version", 0, ~0ull >> 1, &version); !s) return s;
+    if (version != 1)
+        return Status::bad_input(tk.where() + "header version " + std::to_string(version) + " is not supported (this reader knows 1)");
+    *edges_line = 0;
+    for (;;) {
+        if (!tk.next(&t)) return Status::bad_input("file ends early: expected a header key or 'end'");
+        if (t == "end") return Status::success();
+        if (t != "edges") return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges)");
+        if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
+        *edges_line = tk.line();
+        if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
+        if (t != "hard" && t != "soft")
+            return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
+        m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
+    }
+}
+
 ModelFileKind model_kind_from_name(const std::string& name) {
     const auto ends = [&](const char* ext) {
         const std::string e(ext);
@@ -420,6 +450,9 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     Tokens tk(text);
     if (tk.at_end()) return Status::bad_input("empty file");
     Model m;
+    int edges_line = 0;
+    if (tk.peek_is("erd-header"))
+        if (Status s = read_header(tk, &m, &edges_line); !s) return s;
     std::uint64_t maxval = 0, nv = 0;
     if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
     m.maxval = std::uint32_t(maxval);
@@ -443,6 +476,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     if (kind == ModelFileKind::unknown) kind = tk.at_end() ? ModelFileKind::basic : ModelFileKind::erd;
     if (kind == ModelFileKind::basic) {
         m.kind = ModelKind::basic;
+        if (edges_line)
+            return Status::bad_input("line " + std::to_string(edges_line) + ": header key 'edges' is for .erd files only");
         if (Status s = expect_end(tk, "face"); !s) return s;
         // Pixel coordinates in the file, doubled in the model.
         for (std::size_t i = 0; i < nv; ++i) {

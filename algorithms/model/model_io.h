@@ -27,6 +27,13 @@
 // A.4.2) and Model::values holds the mean of its wedge values; Model::constraints holds the edges
 // across which corner values jump (algorithms/model/model_topology.h).
 //
+// Header block (optional; a file without it is exactly the thesis's format). An extended file
+// starts with the line "erd-header 1", then one "key value..." line per key, then the line
+// "end", then the thesis's body unchanged. Keys: "edges hard|soft" (.erd only; Model::edges,
+// soft when absent). The writer adds the block only when it has something to say (edges hard).
+// A reader refuses a version other than 1, a key it does not know (naming it), and a key given
+// twice.
+//
 // Every problem gives one Status (Code::input) whose message says what and where ("line 7: ...").
 // A model that passes the reader may still not be a triangulation of the image domain (overlaps,
 // holes): reconstruct() checks that.

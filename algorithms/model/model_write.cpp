@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/model/float_chars.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/predicates.h"
@@ -65,7 +66,7 @@ char* put_value(char* p, double v) {
         const std::int64_t i = static_cast<std::int64_t>(v);
         if (double(i) == v) return put_int(p, i);
     }
-    return std::to_chars(p, p + kValueBytes, v).ptr;
+    return write_double(p, p + kValueBytes, v);
 }
 
 // One output line at a time: each field is followed by a space, and end() turns the last space
@@ -192,6 +193,7 @@ Status write_model(const Model& m, std::string* out) {
     std::string o;
     o.reserve(m.vertices.size() * 28 + m.faces.size() * 18);
     Lines line(&o);
+    if (erd && m.edges == EdgeKind::hard) o += "erd-header 1\nedges hard\nend\n";
     line.num(m.maxval).end();
     line.num(m.vertices.size()).end();
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {

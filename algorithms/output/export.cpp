@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "algorithms/model/model_topology.h"
@@ -28,6 +31,66 @@ void append_face(std::string* s, const char* fmt, std::uint32_t a, std::uint32_t
     if (n > 0) s->append(buf, std::size_t(std::min(n, int(sizeof buf) - 1)));
 }
 
+// Little-endian float and uint32 (STL's byte order whatever the host's).
+void put_u32(std::string* s, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) s->push_back(char((v >> (8 * k)) & 0xFFu));
+}
+void put_f32(std::string* s, float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    put_u32(s, u);
+}
+
+using Vec3 = std::array<float, 3>;
+
+void put_facet(std::string* s, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const float ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const float vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    float n[3] = {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+    const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (float& x : n) x = len > 0 ? x / len : 0.0f;
+    for (float x : n) put_f32(s, x);
+    for (const Vec3* p : {&a, &b, &c})
+        for (float x : *p) put_f32(s, x);
+    s->push_back('\0');
+    s->push_back('\0');
+}
+
+// Binary STL of the faces (corners counter-clockwise seen from +z); with base > 0, lifted by base
+// and closed by walls under the boundary edges (those whose reverse no face has) and a bottom.
+void write_stl(const std::vector<std::array<double, 3>>& pos, const std::vector<std::array<std::uint32_t, 3>>& faces,
+               double base, std::string* out, std::size_t* facets) {
+    std::vector<Vec3> top(pos.size());
+    for (std::size_t i = 0; i < pos.size(); ++i) top[i] = {float(pos[i][0]), float(pos[i][1]), float(pos[i][2] + base)};
+    std::vector<std::uint64_t> boundary;  // directed edges a -> b, a in the high half
+    if (base > 0) {
+        std::vector<std::uint64_t> edges;
+        edges.reserve(3 * faces.size());
+        for (const auto& t : faces)
+            for (int k = 0; k < 3; ++k) edges.push_back((std::uint64_t(t[std::size_t(k)]) << 32) | t[std::size_t((k + 1) % 3)]);
+        std::sort(edges.begin(), edges.end());
+        for (const std::uint64_t e : edges)
+            if (!std::binary_search(edges.begin(), edges.end(), (e << 32) | (e >> 32))) boundary.push_back(e);
+    }
+    const std::size_t n = base > 0 ? 2 * faces.size() + 2 * boundary.size() : faces.size();
+    std::string header = "erd binary STL: x, y in pixels (y up), z = value * zscale";
+    header.resize(80, ' ');
+    out->append(header);
+    put_u32(out, std::uint32_t(n));
+    out->reserve(out->size() + 50 * n);
+    for (const auto& t : faces) put_facet(out, top[t[0]], top[t[1]], top[t[2]]);
+    if (base > 0) {
+        auto bottom = [&](std::uint32_t v) { return Vec3{top[v][0], top[v][1], 0.0f}; };
+        for (const auto& t : faces) put_facet(out, bottom(t[0]), bottom(t[2]), bottom(t[1]));
+        for (const std::uint64_t e : boundary) {
+            const std::uint32_t a = std::uint32_t(e >> 32), b = std::uint32_t(e);
+            put_facet(out, top[a], bottom(a), bottom(b));
+            put_facet(out, top[a], bottom(b), top[b]);
+        }
+    }
+    *facets = n;
+}
+
 }  // namespace
 
 Status export_mesh(const Model& m, const ExportOptions& options, std::string* out, ExportCounts* counts) {
@@ -37,6 +100,8 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     if (m.values.size() != m.vertices.size()) return Status::bad_input("model has " + std::to_string(m.vertices.size()) +
                                                                        " vertices but " + std::to_string(m.values.size()) + " values");
     const bool erd = m.kind == ModelKind::erd;
+    if (options.format == MeshFormat::stl && options.base > 0 && erd)
+        return Status::bad_input("--base needs a basic model (.model): an ERD surface is open along its constrained edges");
     if (erd && m.corner_values.size() != m.faces.size())
         return Status::bad_input("ERD model without a value for every face corner");
     ModelTopology topo;
@@ -74,13 +139,21 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
 
     // Flipping y turns positive orientation in image coordinates into clockwise seen from +z;
     // writing corners 0, 2, 1 restores counter-clockwise (normals up).
-    out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
-    if (options.format == MeshFormat::obj) {
-        out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + "\n");
+    // A hard-edged model says so (its pixels are the surface at their centres, not 4x4 means);
+    // soft-edged and basic exports stay as they were.
+    const std::string kind = erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "";
+    std::size_t facets = 0;
+    if (options.format == MeshFormat::stl) {
+        for (auto& t : face_idx) std::swap(t[1], t[2]);
+        write_stl(pos, face_idx, options.base, out, &facets);
+    } else if (options.format == MeshFormat::obj) {
+        out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
+        out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         for (const auto& p : pos) append(out, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
         for (const auto& t : face_idx) append_face(out, "f %u %u %u\n", t[0] + 1, t[2] + 1, t[1] + 1);
     } else {
-        out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + "\n");
+        out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
+        out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         out->append("element vertex " + std::to_string(pos.size()) + "\nproperty double x\nproperty double y\nproperty double z\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
         for (const auto& p : pos) append(out, "%.9g %.9g %.9g\n", p[0], p[1], p[2]);
@@ -89,6 +162,7 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     if (counts) {
         counts->vertices = pos.size();
         counts->faces = face_idx.size();
+        counts->facets = facets;
     }
     return Status::success();
 }

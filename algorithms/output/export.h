@@ -1,4 +1,4 @@
-// Meshes for 3-D tools: Wavefront OBJ and ASCII PLY text of a Model seen as a height field.
+// Meshes for 3-D tools: Wavefront OBJ, ASCII PLY and binary STL of a Model seen as a height field.
 //
 // Frame: x = X/2 and y = (H-1) - Y/2 in pixels (the image's y axis flipped so the picture is upright
 // when seen from +z with y up), z = value * zscale. Faces are written counter-clockwise seen from
@@ -8,6 +8,12 @@
 // An ERD model is discontinuous across its constrained edges, so each wedge gets its own vertex
 // copy (a vertex with k wedges is written k times, at the same x and y, with the wedge's value) and
 // every face uses the copies of its corners' wedges: the discontinuities stay open as cracks.
+//
+// Binary STL (as fogleman/hmm writes for heightmaps): an 80-byte header, the facet count, then per
+// facet the unit normal and three corners as little-endian floats. With base H > 0 (basic models
+// only: an ERD surface is open along its constrained edges) the surface is lifted by H and closed
+// into a solid: a vertical wall under every boundary edge down to z = 0 and a bottom that repeats
+// the top's triangulation facing down, so every edge is shared by exactly two facets.
 #pragma once
 #include <string>
 
@@ -16,23 +22,25 @@
 
 namespace erd {
 
-enum class MeshFormat { obj, ply };
+enum class MeshFormat { obj, ply, stl };
 
 struct ExportOptions {
     MeshFormat format = MeshFormat::obj;
     double zscale = 0;  // <= 0: the default max(W, H) / (10 * maxval)
+    double base = 0;    // STL only: > 0 makes a solid of this base height (see above)
 };
 
 // Counts of what export_mesh writes (for tests and messages).
 struct ExportCounts {
     std::size_t vertices = 0;  // copies written: one per vertex (basic) or per wedge (erd)
-    std::size_t faces = 0;
+    std::size_t faces = 0;     // faces of the model's surface
+    std::size_t facets = 0;    // STL: facets written (faces, plus walls and bottom with a base)
 };
 
 // The default zscale for a model: max(W, H) / (10 * maxval).
 double default_zscale(const Model& m);
 
-// Writes the model as OBJ or PLY text into *out. Fails (Code::input) on an inconsistent model
+// Writes the model as OBJ or PLY text, or binary STL, into *out. Fails (Code::input) on an inconsistent model
 // (index out of range, a repeated vertex, overlapping faces: build_topology).
 Status export_mesh(const Model& m, const ExportOptions& options, std::string* out, ExportCounts* counts = nullptr);
 

@@ -84,6 +84,7 @@ def generate(
     alpha_min: float = ...,
     alpha_max: float = ...,
     edge_zero_radius: int = ...,
+    aa_errors: int = ...,
     maxval: int = ...,
     max_memory: int = ...,
 ) -> Mesh:

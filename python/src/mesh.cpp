@@ -49,7 +49,8 @@ pyb::dict mesh_stats(const Mesh& mesh) {
     d["constrained_edges"] = s.constrained_edges;
     d["dropped_constraints"] = s.dropped_constraints;
     d["parameters"] = s.has_params ? pyb::object(pyb::dict(pyb::arg("beta") = s.beta, pyb::arg("r") = s.r, pyb::arg("l") = s.l,
-                                                           pyb::arg("epsilon") = s.epsilon, pyb::arg("simple") = s.simple))
+                                                           pyb::arg("epsilon") = s.epsilon, pyb::arg("simple") = s.simple,
+                                                           pyb::arg("edges") = s.hard_edges ? "hard" : "soft"))
                                    : none;
     d["stop"] = s.stop.empty() ? none : pyb::str(s.stop);
     pyb::list stages;
@@ -113,7 +114,7 @@ void bind_mesh(pyb::module_& m) {
         },
                                "The `erd generate --stats` fields as a dict: method, model, image, points, vertices, faces,\n"
                                "constrained_vertices, constrained_edges, dropped_constraints, parameters (ERD: beta, r, l,\n"
-                               "epsilon, simple), stop (greedy methods), stages (name, seconds).")
+                               "epsilon, simple, edges), stop (greedy methods), stages (name, seconds).")
         .def_property_readonly("vertices", [](const Mesh& s) {
             return table<double>(s.model.vertices.size(), 2, [&](std::size_t i, std::size_t j) {
                 const LatticePoint p = s.model.vertices[i];

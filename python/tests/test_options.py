@@ -76,7 +76,7 @@ def test_stats_are_the_cli_fields(small):
     assert s["image"] == {"width": 128, "height": 128, "maxval": 255}
     assert s["points"]["requested"] == s["points"]["achieved"] == s["vertices"]
     assert 0 < s["constrained_edges"] and 0 < s["constrained_vertices"] < s["vertices"]
-    assert set(s["parameters"]) == {"beta", "r", "l", "epsilon", "simple"} and s["stop"] == "target"
+    assert set(s["parameters"]) == {"beta", "r", "l", "epsilon", "simple", "edges"} and s["stop"] == "target"
     assert [t["name"] for t in s["stages"]][:2] == ["initial mesh", "wedge values"]
     basic = erd.generate(small, "ed", density=2.0).stats
     assert basic["parameters"] is None and basic["stop"] is None and basic["model"] == "basic"

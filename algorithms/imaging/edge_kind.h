@@ -1,0 +1,58 @@
+// Hard or soft edges: what an image's edges are, measured from its samples, and where a hard
+// edge sits (on the cracks between pixels).
+//
+// Measure. At every pair of 4-neighbours p, q (along x or y) whose difference d = |phi(q) -
+// phi(p)| is at least kStrongStep of maxval and is the largest along the line through them
+// (strictly larger than the differences one step before and after), the step is
+//   hard  when both flanking differences (phi(p) - phi(p-1), phi(q+1) - phi(q)) are at most
+//         kFlankRatio * d: the whole step happens between the two pixels;
+//   soft  when a flanking difference of the same sign exceeds kFlankRatio * d: the step is
+//         spread over more pixels (blurred by a lens, a filter or anti-aliasing);
+//   neither (a ridge: a flank of the opposite sign, a line one pixel wide) otherwise.
+// The image is hard when hard / (hard + soft) >= kHardFraction (docs/DECISIONS.md "Hard edges"
+// gives the measured fractions).
+//
+// Cracks. A hard edge is traced on the half-pixel grid (doubled coordinates): the midpoint
+// (2x+1, 2y) between pixels (x, y) and (x+1, y) and (2x, 2y+1) between (x, y) and (x, y+1) are
+// set where the step between the two pixels is an edge (hysteresis on d, like Canny's), and a
+// pixel corner (2x+1, 2y+1) where at least two of its four cracks are set. The curves run from
+// corner to corner through the crack midpoints, so every pixel lies on one side of them.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/imaging/image.h"
+#include "algorithms/imaging/polylines.h"
+
+namespace erd {
+
+constexpr double kStrongStep = 0.08;   // of maxval
+constexpr double kFlankRatio = 0.2;
+constexpr double kHardFraction = 0.6;
+
+struct EdgeKindStats {
+    std::size_t hard = 0;  // strong steps completed between two pixels
+    std::size_t soft = 0;  // strong steps spread over more pixels
+    double hard_fraction() const { return hard + soft ? double(hard) / double(hard + soft) : 0.0; }
+    // No strong step at all (a smooth image) counts as soft: nothing to gain from hard edges.
+    bool is_hard() const { return hard + soft > 0 && hard_fraction() >= kHardFraction; }
+};
+
+EdgeKindStats measure_edge_kind(const Image& im);
+
+// The crack edge map of im, (2W-1) x (2H-1) on the half-pixel grid (1 = edge). tau_high is the
+// beta-quantile of the differences over the 2WH-W-H cracks, at least kStrongStep * maxval / 2;
+// cracks with d >= tau_high seed, cracks with d >= r * tau_high that touch a set crack through a
+// shared pixel corner join them.
+Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r);
+
+// Douglas-Peucker for a polyline traced on a crack map that keeps every pixel on its side: a
+// piece a..b is replaced by the segment a-b only when no point is further than epsilon (doubled
+// units) from it and each crack midpoint's two pixels lie strictly on either side of it, the
+// same way round as along the crack. Otherwise it is split at its farthest point.
+Polyline simplify_cracks(const Polyline& line, double epsilon);
+// simplify_cracks over lines, dropping those with fewer than min_points points before.
+std::vector<Polyline> simplify_crack_polylines(const std::vector<Polyline>& lines, double epsilon, int min_points);
+
+}  // namespace erd

@@ -1,0 +1,226 @@
+// Hard edges (issue 15): the edge-kind measure on hard and blurred versions of the same drawing,
+// crack edges that keep pixels on their side, the .erd header block, and ERDGPI/ERDED with hard
+// edges (exact N, meshes that verify, point reconstruction).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "algorithms/imaging/drawings.h"
+#include "algorithms/imaging/edge_kind.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/reconstruct.h"
+#include "algorithms/model/metrics.h"
+#include "tests/erd_check.h"
+#include "tests/erd_run.h"
+
+using namespace erd;
+using namespace erd_test;
+
+namespace {
+
+Image picture(const std::string& kind, int blur, int w = 160, int h = 120) {
+    DrawingParams p;
+    p.kind = kind;
+    p.width = w;
+    p.height = h;
+    p.blur = blur;
+    Image im;
+    REQUIRE(draw_picture(p, &im).ok());
+    return im;
+}
+
+GenerateResult run(const char* method, const Image& im, double density, EdgeChoice edges) {
+    GenerateOptions o;
+    o.density = density;
+    o.density_given = true;
+    o.edges = edges;
+    GenerateResult r;
+    const MethodInfo* m = find_method(method);
+    REQUIRE(m != nullptr);
+    REQUIRE(m->run(im, o, &r).ok());
+    return r;
+}
+
+double psnr_of(const Image& im, const Model& m) {
+    Image rec;
+    REQUIRE(reconstruct(m, supersampled(m), &rec).ok());
+    double db = 0;
+    REQUIRE(psnr(im, rec, &db).ok());
+    return db;
+}
+
+// An .erd of a 3x3 image: centre vertex (2, 2), one wedge each (the thesis's body).
+const char* kBody = "255\n5\n0 0 10\n4 0 20\n0 4 30\n4 4 40\n2 2 25\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n0\n";
+
+std::string read_error(const std::string& text, ModelFileKind kind = ModelFileKind::unknown) {
+    Model m;
+    const Status st = read_model(text, kind, &m);
+    return st.ok() ? "OK" : st.message;
+}
+
+}  // namespace
+
+TEST_CASE("edge kind: every hard-edged picture is hard, its blurred versions soft", "[hardedges]") {
+    REQUIRE(drawing_kinds().size() >= 8);
+    for (const std::string& kind : drawing_kinds()) {
+        INFO(kind);
+        const EdgeKindStats hard = measure_edge_kind(picture(kind, 0));
+        CHECK(hard.is_hard());
+        CHECK(hard.hard_fraction() > 0.9);
+        for (int blur : {1, 2}) {
+            INFO("blur " << blur);
+            const EdgeKindStats soft = measure_edge_kind(picture(kind, blur));
+            CHECK(!soft.is_hard());
+            CHECK(soft.hard_fraction() < 0.3);
+        }
+    }
+    // A smooth ramp has no strong step: soft (nothing to gain from hard edges).
+    Image ramp(64, 64, 255);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) ramp.at(x, y) = std::uint16_t(3 * x + y);
+    CHECK(!measure_edge_kind(ramp).is_hard());
+}
+
+TEST_CASE("edge kind: --edges auto picks hard for a drawing and soft for its blurred version", "[hardedges]") {
+    const Image hard = picture("drawing", 0), soft = picture("drawing", 2);
+    CHECK(run("erdgpi", hard, 1, EdgeChoice::automatic).model.edges == EdgeKind::hard);
+    CHECK(run("erdgpi", soft, 1, EdgeChoice::automatic).model.edges == EdgeKind::soft);
+    CHECK(run("erdgpi", soft, 1, EdgeChoice::hard).model.edges == EdgeKind::hard);
+    CHECK(run("erdgpi", hard, 1, EdgeChoice::soft).model.edges == EdgeKind::soft);
+}
+
+TEST_CASE("crack edges: the simplified curves keep every pixel next to a crack on its side", "[hardedges]") {
+    const Image im = picture("cel", 0);
+    const Grid<std::uint8_t> map = crack_edges(im, 0.05, 0.4);
+    REQUIRE(map.width == 2 * im.width - 1);
+    std::size_t cracks = 0;
+    for (int Y = 0; Y < map.height; ++Y)
+        for (int X = 0; X < map.width; ++X) {
+            if (!map(X, Y)) continue;
+            CHECK((X % 2 == 1 || Y % 2 == 1));  // never on a pixel centre
+            cracks += (X + Y) % 2;
+        }
+    REQUIRE(cracks > 100);
+    const std::vector<Polyline> traced = trace_polylines(map);
+    std::size_t before = 0, after = 0;
+    for (const Polyline& line : traced) {
+        const Polyline s = simplify_cracks(line, 8.0);
+        before += line.size();
+        after += s.size();
+        REQUIRE(s.front() == line.front());
+        REQUIRE(s.back() == line.back());
+        // Each crack midpoint of the traced line: its two pixels on either side of the kept
+        // segment that replaced it (located by walking both lines).
+        std::size_t j = 0;
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            while (j + 1 < s.size() && i > 0 && line[i - 1] == s[j + 1]) ++j;
+            const LatticePoint p = line[i];
+            if ((p.x + p.y) % 2 == 0 || j + 1 >= s.size()) continue;
+            const LatticePoint a = s[j], b = s[j + 1];
+            const LatticePoint pa = p.x % 2 ? LatticePoint{p.x - 1, p.y} : LatticePoint{p.x, p.y - 1};
+            const LatticePoint pb = p.x % 2 ? LatticePoint{p.x + 1, p.y} : LatticePoint{p.x, p.y + 1};
+            const auto o = [&](LatticePoint c) {
+                return (std::int64_t(b.x) - a.x) * (std::int64_t(c.y) - a.y) - (std::int64_t(c.x) - a.x) * (std::int64_t(b.y) - a.y);
+            };
+            CHECK(o(pa) * o(pb) < 0);
+        }
+    }
+    CHECK(after * 3 < before);  // it does simplify
+}
+
+TEST_CASE("edges header: written for hard edges only, read back, thesis files unchanged", "[hardedges][model_io]") {
+    Model m;
+    REQUIRE(read_model(kBody, ModelFileKind::erd, &m).ok());
+    CHECK(m.edges == EdgeKind::soft);
+    std::string text;
+    REQUIRE(write_model(m, &text).ok());
+    CHECK(text == kBody);  // no header: the thesis's format byte for byte
+
+    m.edges = EdgeKind::hard;
+    REQUIRE(write_model(m, &text).ok());
+    CHECK(text == std::string("erd-header 1\nedges hard\nend\n") + kBody);
+    Model back;
+    REQUIRE(read_model(text, ModelFileKind::unknown, &back).ok());
+    CHECK(back.kind == ModelKind::erd);
+    CHECK(back.edges == EdgeKind::hard);
+    std::string again;
+    REQUIRE(write_model(back, &again).ok());
+    CHECK(again == text);
+
+    // "edges soft" reads like no header at all.
+    Model soft;
+    REQUIRE(read_model(std::string("erd-header 1\nedges soft\nend\n") + kBody, ModelFileKind::erd, &soft).ok());
+    CHECK(soft.edges == EdgeKind::soft);
+    REQUIRE(write_model(soft, &again).ok());
+    CHECK(again == kBody);
+}
+
+TEST_CASE("edges header: malformed blocks get one message naming the problem", "[hardedges][model_io]") {
+    const std::string b = kBody;
+    CHECK(read_error("erd-header 1\ncolour rgb\nend\n" + b) == "line 2: unknown header key 'colour' (this reader knows: edges)");
+    CHECK(read_error("erd-header 2\nend\n" + b) == "line 1: header version 2 is not supported (this reader knows 1)");
+    CHECK(read_error("erd-header 1\nedges blurry\nend\n" + b) == "line 2: edges must be hard or soft, found 'blurry'");
+    CHECK(read_error("erd-header 1\nedges hard\nedges hard\nend\n" + b) == "line 3: header key 'edges' given twice");
+    CHECK(read_error("erd-header 1\nedges hard\n") == "file ends early: expected a header key or 'end'");
+    CHECK(read_error("erd-header 1\nedges hard\nend\n255\n4\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n2\n0 1 2\n1 3 2\n", ModelFileKind::basic) ==
+          "line 2: header key 'edges' is for .erd files only");
+    CHECK(read_error("erd-header 1\nend\n" + b) == "OK");
+}
+
+TEST_CASE("hard edges: ERDGPI and ERDED make exactly N points, verified meshes, point reconstruction", "[hardedges]") {
+    for (const char* kind : {"drawing", "cartoon", "map"}) {
+        const Image im = picture(kind, 0);
+        for (const char* method : {"erdgpi", "erded"}) {
+            INFO(kind << " " << method);
+            const GenerateResult r = run(method, im, 1.0, EdgeChoice::automatic);
+            CHECK(r.achieved == r.requested);
+            CHECK(r.model.size() == r.requested);
+            CHECK(r.model.edges == EdgeKind::hard);
+            CHECK(!supersampled(r.model));
+            test::check_model(r.model);
+            REQUIRE(check_triangulation(r.model).ok());
+        }
+    }
+    // The drawing's hard edges: ERDGPI far above GPI and above its own soft version.
+    const Image im = picture("drawing", 0);
+    const double gpi = psnr_of(im, run("gpi", im, 1.0, EdgeChoice::automatic).model);
+    const double hard = psnr_of(im, run("erdgpi", im, 1.0, EdgeChoice::automatic).model);
+    const double soft = psnr_of(im, run("erdgpi", im, 1.0, EdgeChoice::soft).model);
+    CHECK(hard > gpi + 10);
+    CHECK(hard > soft + 10);
+    // Both treatments of over-budget curves ran; the better one is the model (its PSNR).
+    const GenerateResult r = run("erdgpi", im, 1.0, EdgeChoice::automatic);
+    CHECK(r.stats.erd.hard_edges);
+    CHECK(r.stats.erd.edges_measured);
+    REQUIRE(r.stats.erd.plain_psnr > 0);
+    REQUIRE(r.stats.erd.exact_psnr > 0);
+    CHECK(psnr_of(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
+    bool said = false;
+    for (const std::string& line : result_lines(r.stats)) said = said || line.rfind("edges: hard (measured: ", 0) == 0;
+    CHECK(said);
+}
+
+TEST_CASE("hard edges: erd generate --edges, the header in the file, reconstruct by point evaluation", "[hardedges][cli]") {
+    REQUIRE(binary_available());
+    TempDir t;
+    REQUIRE(!t.path.empty());
+    REQUIRE(run_erd("synth -q --kind drawing -W 160 -H 120 -o " + t.file("d.pgm")).status == 0);
+    REQUIRE(run_erd("generate -q --method erdgpi -i " + t.file("d.pgm") + " -d 1 -o " + t.file("auto.erd") + " --stats " +
+                    t.file("s.json")).status == 0);
+    CHECK(slurp(t.file("s.json")).find(",\"edges\":\"hard\"}") != std::string::npos);
+    CHECK(slurp(t.file("auto.erd")).rfind("erd-header 1\nedges hard\nend\n", 0) == 0);
+    REQUIRE(run_erd("generate -q --method erdgpi --thesis -i " + t.file("d.pgm") + " -d 1 -o " + t.file("thesis.erd")).status == 0);
+    CHECK(slurp(t.file("thesis.erd")).rfind("255\n", 0) == 0);
+    REQUIRE(run_erd("generate -q --method erdgpi --edges soft -i " + t.file("d.pgm") + " -d 1 -o " + t.file("soft.erd")).status == 0);
+    CHECK(slurp(t.file("soft.erd")).rfind("255\n", 0) == 0);
+    // A hard-edged file reconstructs by point evaluation: the same image as --no-aa.
+    REQUIRE(run_erd("reconstruct " + t.file("auto.erd") + " -o " + t.file("a.pgm")).status == 0);
+    REQUIRE(run_erd("reconstruct --no-aa " + t.file("auto.erd") + " -o " + t.file("b.pgm")).status == 0);
+    CHECK(slurp(t.file("a.pgm")) == slurp(t.file("b.pgm")));
+    const RunResult bad = run_erd("generate -q --method erdgpi --edges blurry -i " + t.file("d.pgm") + " -d 1 -o " + t.file("x.erd"));
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("--edges: 'blurry' is not hard, soft or auto") != std::string::npos);
+}

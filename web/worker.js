@@ -1,0 +1,24 @@
+// Runs erd (erd.js + erd.wasm, built by `make web`) off the page's thread. Message in:
+// {pixels: Uint8Array (gray), width, height, method, density}; out: {ok, ...results} or {ok: false, error}.
+importScripts('build/erd.js');
+const ready = createErd({locateFile: (file) => 'build/' + file});
+onmessage = async (e) => {
+    const erd = await ready;
+    const {pixels, width, height, method, density} = e.data;
+    const ptr = erd._malloc(pixels.length);
+    erd.HEAPU8.set(pixels, ptr);
+    const t0 = performance.now();
+    const rc = erd.ccall('erd_mesh', 'number', ['number', 'number', 'number', 'string', 'number'],
+                         [ptr, width, height, method, density]);
+    const ms = performance.now() - t0;
+    erd._free(ptr);
+    if (rc !== 0) { postMessage({ok: false, error: erd.UTF8ToString(erd._erd_error())}); return; }
+    const recon = erd.HEAPU8.slice(erd._erd_reconstruction(), erd._erd_reconstruction() + width * height);
+    postMessage({
+        ok: true, ms, width, height, method,
+        psnr: erd._erd_psnr(), vertices: erd._erd_vertices(), recon,
+        model: erd.UTF8ToString(erd._erd_model_text()),
+        vector: erd.UTF8ToString(erd._erd_vector_svg()),
+        mesh: erd.UTF8ToString(erd._erd_mesh_svg()),
+    }, [recon.buffer]);
+};
