@@ -7,20 +7,42 @@
 #include <cstring>
 
 #include "cli/report.h"
+#include "cli/suggest.h"
 
 namespace erd::cli {
 
-static const OptionSpec* lookup_long(const std::vector<OptionSpec>& specs, const std::string& name) {
-    for (const auto& s : specs)
-        if (name == s.long_name) return &s;
-    return nullptr;
+namespace {
+
+// The option named `name` exactly, else the one option whose long name starts with it (GNU
+// getopt_long's rule: "--meth" is --method while no other option starts with "meth"). An
+// unknown or ambiguous name is an error that names the candidates.
+Status lookup_long(const std::vector<OptionSpec>& specs, const std::string& name, const OptionSpec** out) {
+    std::vector<const OptionSpec*> starts;
+    for (const auto& s : specs) {
+        if (name == s.long_name) { *out = &s; return Status::success(); }
+        if (!name.empty() && std::strncmp(s.long_name, name.c_str(), name.size()) == 0) starts.push_back(&s);
+    }
+    if (starts.size() == 1) { *out = starts[0]; return Status::success(); }
+    if (starts.size() > 1) {
+        std::string list;
+        for (const OptionSpec* s : starts) list += std::string(list.empty() ? "" : ", ") + "--" + s->long_name;
+        return Status::bad_input("option --" + name + " is ambiguous (" + list + ")");
+    }
+    std::vector<std::string> dashed;
+    for (const auto& s : specs) dashed.push_back(std::string("--") + s.long_name);
+    std::vector<const char*> names;
+    for (const auto& d : dashed) names.push_back(d.c_str());
+    const std::string guess = did_you_mean("--" + name, names);
+    return Status::bad_input("unknown option --" + name + (guess.empty() ? "" : "." + guess));
 }
 
-static const OptionSpec* lookup_short(const std::vector<OptionSpec>& specs, char c) {
+const OptionSpec* lookup_short(const std::vector<OptionSpec>& specs, char c) {
     for (const auto& s : specs)
         if (s.short_name == c) return &s;
     return nullptr;
 }
+
+}  // namespace
 
 Status Args::parse(int argc, char** argv, int first, const std::vector<OptionSpec>& specs) {
     given_.clear();
@@ -33,31 +55,44 @@ Status Args::parse(int argc, char** argv, int first, const std::vector<OptionSpe
             continue;
         }
         if (a == "--") { options_done = true; continue; }
-        const OptionSpec* spec = nullptr;
-        std::string value;
-        bool have_value = false;
         if (a[1] == '-') {
-            std::string name = a.substr(2);
+            std::string name = a.substr(2), value;
             std::size_t eq = name.find('=');
-            if (eq != std::string::npos) { value = name.substr(eq + 1); name.resize(eq); have_value = true; }
-            spec = lookup_long(specs, name);
-            if (!spec) return Status::bad_input("unknown option --" + name);
-        } else {
-            spec = lookup_short(specs, a[1]);
-            if (!spec) return Status::bad_input(std::string("unknown option -") + a[1]);
-            if (a.size() > 2) {
-                if (!spec->value) return Status::bad_input("option -" + std::string(1, a[1]) + " takes no value");
-                value = a.substr(2);
-                have_value = true;
+            const bool have_value = eq != std::string::npos;
+            if (have_value) { value = name.substr(eq + 1); name.resize(eq); }
+            const OptionSpec* spec = nullptr;
+            if (Status st = lookup_long(specs, name, &spec); !st) return st;
+            if (spec->value && !have_value) {
+                if (i + 1 >= argc) return Status::bad_input(std::string("option --") + spec->long_name + " needs a value (" + spec->value + ")");
+                value = argv[++i];
+            } else if (!spec->value && have_value) {
+                return Status::bad_input(std::string("option --") + spec->long_name + " takes no value");
             }
+            given_.push_back({spec->long_name, value});
+            continue;
         }
-        if (spec->value && !have_value) {
-            if (i + 1 >= argc) return Status::bad_input(std::string("option --") + spec->long_name + " needs a value (" + spec->value + ")");
-            value = argv[++i];
-        } else if (!spec->value && have_value) {
-            return Status::bad_input(std::string("option --") + spec->long_name + " takes no value");
+        // Short options, bundled as getopt does: "-qx2" is -q -x 2. Flags may follow each
+        // other; the first option that takes a value takes the rest of the word (or the next
+        // word), so a bundle has one reading only.
+        for (std::size_t k = 1; k < a.size(); ++k) {
+            const OptionSpec* spec = lookup_short(specs, a[k]);
+            if (!spec) {
+                std::string msg = std::string("unknown option -") + a[k];
+                if (k > 1) msg += " (in " + a + ")";
+                return Status::bad_input(msg);
+            }
+            if (!spec->value) {
+                given_.push_back({spec->long_name, std::string()});
+                continue;
+            }
+            std::string value = a.substr(k + 1);
+            if (value.empty()) {
+                if (i + 1 >= argc) return Status::bad_input(std::string("option --") + spec->long_name + " needs a value (" + spec->value + ")");
+                value = argv[++i];
+            }
+            given_.push_back({spec->long_name, value});
+            break;
         }
-        given_.push_back({spec->long_name, value});
     }
     return Status::success();
 }

@@ -6,6 +6,8 @@
 //   0: "ERROR: target sampling density not achieved exactly (requested N but got M)", exit 3, and
 //      nothing is written (the thesis's program exits at that point);
 //   1: the same line with "WARNING:" and the files are written, exit 0;  2: silent, exit 0.
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,12 +37,12 @@ std::string methods_help();
 
 const CommandLine kGenerate = {
     "generate",
-    "erd generate --method NAME -i IMAGE [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
+    "erd generate --method NAME [-i IMAGE] [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
     "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
-        {'i', "input", "FILE", "input image, PGM or PNG (- = stdin)"},
+        {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin)"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
         {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
@@ -72,7 +74,7 @@ const CommandLine kGenerate = {
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
     },
-    "no progress or timing lines", 0, 0, nullptr,
+    "no summary or progress lines", 0, 0, nullptr,
     methods_help,
 };
 
@@ -91,6 +93,27 @@ std::string unknown_method(const std::string& name) {
     std::vector<const char*> names;
     for (std::size_t i = 0; i < count; ++i) names.push_back(m[i].name);
     return "unknown method '" + name + "'; available: " + method_names() + "." + did_you_mean(name, names);
+}
+
+// A model named for the other kind (gpi -o x.erd) would be read by its content, but older tools
+// and the thesis's programs go by the name: refused before any work (docs/DECISIONS.md).
+Status check_model_name(const std::string& out, const MethodInfo& method) {
+    const ModelFileKind named = model_kind_from_name(out);
+    const bool erd = method.model == ModelKind::erd;
+    const char* right = erd ? ".erd" : ".model";
+    if (named == ModelFileKind::unknown || named == (erd ? ModelFileKind::erd : ModelFileKind::basic)) return Status::success();
+    return Status::bad_input(out + ": " + method.name + " makes " + (erd ? "an ERD model" : "a basic model") +
+                             ", which is a " + right + " file; name the output " + right);
+}
+
+// The one line a run prints without -q: what was made, where, how long it took.
+std::string summary(const MethodInfo& method, const Image& image, const GenerateResult& res, const std::string& out,
+                    double seconds) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%s: %zu points, %zu faces from %d x %d in %.2f s -> %s", method.name,
+                  res.model.vertices.size(), res.model.faces.size(), image.width, image.height, seconds,
+                  out == "-" ? "stdout" : out.c_str());
+    return buf;
 }
 
 std::string methods_help() { return "\nMethods:\n" + method_list(); }
@@ -154,7 +177,10 @@ static int run_generate(const Args& a, const Reporter& rep) {
     if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")");
     const MethodInfo* method = find_method(a.str("method"));
     if (!method) return rep.usage(unknown_method(a.str("method")));
-    if (!a.has("input")) return rep.usage("-i IMAGE is required");
+    // Without -i the image comes on stdin, as for reconstruct; not from a terminal, where the
+    // user would wait for nothing.
+    if (!a.has("input") && ::isatty(STDIN_FILENO))
+        return rep.usage("-i IMAGE is required (or an image on standard input)");
     if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)");
 
     GenerateOptions opt;
@@ -167,7 +193,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
     const bool have_cap = a.has("max-memory");
     if (have_cap && !(st = parse_memory_size(a.str("max-memory"), &max_memory))) return rep.usage(st.message);
 
-    const std::string in = a.str("input"), out = a.str("output");
+    const std::string in = a.str("input", "-"), out = a.str("output");
     const std::string tri = a.str("triangulation"), poly = a.str("polylines"), stats_out = a.str("stats");
     if (a.has("triangulation") && tri.empty()) return rep.usage("empty -t file name");
     if (a.has("polylines") && poly.empty()) return rep.usage("empty -p file name");
@@ -179,6 +205,8 @@ static int run_generate(const Args& a, const Reporter& rep) {
     Outputs outputs;
     st = outputs.check(outs, {in});
     if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message) : rep.fail(st);
+    st = check_model_name(out, *method);
+    if (!st) return rep.fail(st);
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
@@ -216,9 +244,9 @@ static int run_generate(const Args& a, const Reporter& rep) {
     for (const StageTime& s : res.stages) {
         char buf[128];
         std::snprintf(buf, sizeof buf, "%-22s %9.3f ms", s.name.c_str(), s.seconds * 1e3);
-        rep.note(buf);
+        rep.detail(buf);
     }
-    for (const std::string& s : result_lines(res.stats)) rep.note(s);
+    for (const std::string& s : result_lines(res.stats)) rep.detail(s);
 
     std::string exact_warning;
     st = check_exact_count(res.requested, res.achieved, ExactMode(exit_mode), &exact_warning);
@@ -285,6 +313,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
     }
     st = outputs.commit();
     if (!st) return rep.fail(st);
+    rep.note(summary(*method, image, res, out, seconds_since(t_start)));
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
+#include "cli/json.h"
 
 namespace erd::cli {
 
@@ -49,10 +50,10 @@ static int run_info(const Args& args, const Reporter& rep) {
     }
     const double mean = sum / double(im.samples.size());
     if (args.has("json")) {
-        std::printf("{\"file\":%s,\"format\":\"%s\",\"width\":%d,\"height\":%d,\"maxval\":%u,\"bits\":%d,"
-                    "\"min\":%u,\"max\":%u,\"mean\":%s}\n",
-                    json_string(path).c_str(), format_key(fmt), im.width, im.height, im.maxval, im.bits(), lo, hi,
-                    json_number(mean).c_str());
+        JsonObject j;
+        j.str("file", path).str("format", format_key(fmt)).integer("width", im.width).integer("height", im.height);
+        j.integer("maxval", im.maxval).integer("bits", im.bits()).integer("min", lo).integer("max", hi).num("mean", mean);
+        std::printf("%s\n", j.text().c_str());
     } else {
         std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\nmaxval:  %u\nbits:    %d\n"
                     "samples: min %u, max %u, mean %.4f\n",

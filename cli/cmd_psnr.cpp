@@ -8,6 +8,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
+#include "cli/json.h"
 
 namespace erd::cli {
 
@@ -41,8 +42,7 @@ static int run_psnr(const Args& args, const Reporter& rep) {
         return rep.fail(Status::bad_input(a + " and " + b + ": " + st.message));
     const double peak = psnr_peak(orig.maxval);
     if (args.has("json")) {
-        std::printf("{\"mse\":%s,\"peak\":%s,\"psnr\":%s}\n", json_number(e).c_str(), json_number(peak).c_str(),
-                    json_number(p).c_str());
+        std::printf("%s\n", JsonObject().num("mse", e).num("peak", peak).num("psnr", p).text().c_str());
     } else if (std::isinf(p)) {
         std::printf("inf\n");
     } else {

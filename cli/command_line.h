@@ -1,8 +1,8 @@
 // The start every subcommand shares: its option table, usage line and help text in one
 // CommandLine, and start_command(), which parses argv against it, prints the help for -h/--help,
-// reports a usage error (exit 2) for a bad option or a wrong number of positionals, and sets
-// -q/--quiet on the Reporter. run_command() does that and hands the parsed options to the
-// subcommand's body, which only reads them:
+// prints the version for --version, reports a usage error (exit 2) for a bad option or a wrong
+// number of positionals, and sets -q/--quiet and -v/--verbose on the Reporter. run_command()
+// does that and hands the parsed options to the subcommand's body, which only reads them:
 //
 //     int cmd_info(int argc, char** argv) { return run_command(kInfo, argc, argv, run_info); }
 #pragma once
@@ -18,7 +18,7 @@ struct CommandLine {
     const char* name;   // the subcommand: messages read "erd NAME: ..."
     const char* usage;  // the usage line(s), printed after "usage: "
     const char* about;  // what the subcommand does, for --help (no trailing newline)
-    std::vector<OptionSpec> options;  // the subcommand's own; -q/--quiet and -h/--help are added
+    std::vector<OptionSpec> options;  // the subcommand's own; -q, -v, -h and --version are added
     const char* quiet;  // what -q/--quiet leaves out, for --help ("no warnings")
     std::size_t min_positional = 0;
     std::size_t max_positional = 0;
@@ -37,7 +37,8 @@ struct Invocation {
     bool done() const { return status >= 0; }
 };
 
-// Parses argv[1..argc) (argv[0] is the subcommand's name) against cl.options plus -q and -h.
+// Parses argv[1..argc) (argv[0] is the subcommand's name) against cl.options plus -q, -v, -h
+// and --version.
 // Prints the help on stdout for -h/--help (status 0); a bad option or positional count is a
 // usage error on stderr (status 2). Otherwise status stays -1 and the subcommand goes on.
 Invocation start_command(const CommandLine& cl, int argc, char** argv);

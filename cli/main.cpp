@@ -14,10 +14,8 @@
 #include "cli/outputs.h"
 #include "cli/report.h"
 #include "cli/suggest.h"
+#include "cli/version.h"
 
-#ifndef ERD_VERSION
-#define ERD_VERSION "0.1.0"
-#endif
 
 namespace erd::cli {
 
@@ -49,7 +47,8 @@ static void list_commands(FILE* out) {
 }
 
 static int cmd_help(int argc, char** argv) {
-    if (argc < 2) { list_commands(stdout); return 0; }
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) { list_commands(stdout); return 0; }
+    if (!std::strcmp(argv[1], "--version")) { std::printf("erd %s\n", kVersion); return 0; }
     const Command* c = find_command(argv[1]);
     if (!c || c->run == cmd_help) {
         if (!c) { std::fprintf(stderr, "erd help: no subcommand '%s'\n", escape_name(argv[1]).c_str()); return 2; }
@@ -114,7 +113,7 @@ int erd::cli::run(int argc, char** argv) {
 
     if (argc < 2) { list_commands(stderr); return 2; }
     const char* sub = argv[1];
-    if (!std::strcmp(sub, "--version") || !std::strcmp(sub, "version")) { std::printf("erd %s\n", ERD_VERSION); return 0; }
+    if (!std::strcmp(sub, "--version") || !std::strcmp(sub, "version")) { std::printf("erd %s\n", kVersion); return 0; }
     if (!std::strcmp(sub, "--help") || !std::strcmp(sub, "-h")) { list_commands(stdout); return 0; }
     const Command* c = find_command(sub);
     if (!c) return unknown(sub);

@@ -7,14 +7,54 @@
 
 namespace erd::cli {
 
+namespace {
+
+const char* extension_of(ModelFileKind k) {
+    switch (k) {
+        case ModelFileKind::basic: return ".model";
+        case ModelFileKind::erd: return ".erd";
+        case ModelFileKind::triangulation: return ".tri";
+        case ModelFileKind::unknown: break;
+    }
+    return "";
+}
+
+// What the text is, from its first word and, for a model, from whether it goes on after its
+// faces (read_model with kind unknown decides that itself).
+bool is_triangulation(const std::string& text) {
+    std::size_t i = text.find_first_not_of(" \t\r\n");
+    return i != std::string::npos && text.compare(i, 17, "erd-triangulation") == 0;
+}
+
+}  // namespace
+
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo) {
     if (warning) warning->clear();
     std::string text;
     const ModelFileKind kind = model_kind_from_name(path);
     Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
     if (!st) return st;
-    st = kind == ModelFileKind::triangulation ? read_triangulation(text, out) : read_model(text, kind, out, topo);
+    const ModelFileKind named = kind;
+    ModelFileKind found = ModelFileKind::unknown;
+    if (is_triangulation(text)) {
+        found = ModelFileKind::triangulation;
+        st = read_triangulation(text, out);
+    } else {
+        st = read_model(text, ModelFileKind::unknown, out, topo);
+        if (st) found = out->kind == ModelKind::erd ? ModelFileKind::erd : ModelFileKind::basic;
+    }
+    // Content that cannot be read is reported as the name's kind would read it: the name says
+    // what the file was meant to be (a cut-off .erd reads as a broken .model otherwise), and the
+    // messages stay those of the reader the user asked for. Where the content reads, the same
+    // reader agrees with it, so the name only ever breaks this tie.
+    if (!st && named != ModelFileKind::unknown) {
+        Model again;
+        st = named == ModelFileKind::triangulation ? read_triangulation(text, &again) : read_model(text, named, &again);
+    }
     if (!st) return Status::error(st.code, escape_name(path) + ": " + st.message);
+    if (warning && named != ModelFileKind::unknown && named != found)
+        *warning = escape_name(path) + ": the content is a " + extension_of(found) + " file, not a " + extension_of(named) +
+                   " as the name says; read as " + extension_of(found);
     return st;
 }
 

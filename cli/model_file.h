@@ -8,10 +8,12 @@
 
 namespace erd::cli {
 
-// Reads `path` ("-" = stdin) and parses it with algorithms/model/model_io.h; the kind comes from
-// the name (.model / .erd), else from the content. A ".tri" name reads the -t triangulation instead
-// (vertices, faces and constraints, no values: enough to draw, not to reconstruct or export).
-// Messages start with the path. *warning (may be null) is cleared: reserved for non-fatal remarks.
+// Reads `path` ("-" = stdin) and parses it with algorithms/model/model_io.h. The content decides the
+// kind: "erd-triangulation" first is the -t triangulation (vertices, faces and constraints, no
+// values: enough to draw, not to reconstruct or export); a model that goes on after its faces is
+// an .erd, else a .model. The name (.model, .erd, .tri) only breaks a tie: content that reads as
+// nothing is reported as the named kind reads it. A name that disagrees with readable content
+// sets *warning (may be null; cleared first). Messages start with the path.
 // *topo (may be null) receives the model's adjacency for a .model or .erd (see read_model).
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr);
 

@@ -1,8 +1,6 @@
 #include "cli/report.h"
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 namespace erd::cli {
 
@@ -103,43 +101,6 @@ void Reporter::warn(const std::string& message) const {
 void Reporter::note(const std::string& message) const {
     if (quiet_ || message.empty()) return;
     std::fprintf(stderr, "erd %s: %s\n", sub_.c_str(), escape_message(message).c_str());
-}
-
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (unsigned char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (c < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out += char(c);
-                }
-        }
-    }
-    return out + "\"";
-}
-
-std::string json_number(double v) {
-    if (!std::isfinite(v)) return "null";
-    char buf[40];
-    if (v == std::floor(v) && std::fabs(v) < 1e15) {
-        std::snprintf(buf, sizeof buf, "%.0f", v);  // integers without an exponent
-        return buf;
-    }
-    // The shortest precision that reads back to the same double.
-    for (int prec = 1; prec <= 17; ++prec) {
-        std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
 }
 
 }  // namespace erd::cli

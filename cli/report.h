@@ -17,6 +17,9 @@ public:
     // -q/--quiet: drop warnings and progress (errors are always printed).
     void set_quiet(bool q) { quiet_ = q; }
     bool quiet() const { return quiet_; }
+    // -v/--verbose: also print detail() lines (stage timings, the method's statistics).
+    void set_verbose(bool v) { verbose_ = v; }
+    bool verbose() const { return verbose_; }
 
     // Prints "erd SUB: message" and returns st.exit_code() (0 prints nothing).
     int fail(const Status& st) const;
@@ -26,11 +29,16 @@ public:
     void warn(const std::string& message) const;
     // "erd SUB: message" unless quiet: progress, timings.
     void note(const std::string& message) const;
+    // note() under -v/--verbose only (and never under -q).
+    void detail(const std::string& message) const {
+        if (verbose_) note(message);
+    }
 
 private:
     std::string sub_;
     std::string usage_;
     bool quiet_ = false;
+    bool verbose_ = false;
 };
 
 // A file name as it may be printed: control characters, bytes that are not UTF-8 and the C1
@@ -41,11 +49,5 @@ private:
 std::string escape_name(const std::string& name);
 // The same for a whole message (backslashes kept as they are): one printable line.
 std::string escape_message(const std::string& message);
-
-// A JSON string literal (quotes included) with the escapes JSON requires, for --json outputs.
-std::string json_string(const std::string& s);
-
-// A JSON number: shortest round-trip form ("%.17g" trimmed); "null" for NaN or infinity.
-std::string json_number(double v);
 
 }  // namespace erd::cli

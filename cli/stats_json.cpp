@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "algorithms/model/model_topology.h"
-#include "cli/report.h"
+#include "cli/json.h"
 
 namespace erd::cli {
 
@@ -48,40 +48,29 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
     return s;
 }
 
-static std::string kv(const char* key, const std::string& value) { return std::string("\"") + key + "\":" + value; }
-static std::string num(double v) { return json_number(v); }
-static std::string num(std::size_t v) { return std::to_string(v); }
-
 std::string stats_json(const GenerateStats& s) {
-    std::string j = "{";
-    j += kv("method", json_string(s.method)) + ",";
-    j += kv("model", s.erd ? "\"erd\"" : "\"basic\"") + ",";
-    j += kv("image", "{" + kv("width", std::to_string(s.width)) + "," + kv("height", std::to_string(s.height)) + "," +
-                         kv("maxval", std::to_string(s.maxval)) + "}") + ",";
-    j += kv("points", "{" + kv("requested", num(s.requested)) + "," + kv("achieved", num(s.achieved)) + "}") + ",";
-    j += kv("vertices", num(s.vertices)) + ",";
-    j += kv("faces", num(s.faces)) + ",";
-    j += kv("constrained_vertices", num(s.constrained_vertices)) + ",";
-    j += kv("constrained_edges", num(s.constrained_edges)) + ",";
-    j += kv("dropped_constraints", num(s.dropped_constraints)) + ",";
+    JsonObject j;
+    j.str("method", s.method).str("model", s.erd ? "erd" : "basic");
+    j.object("image", JsonObject().integer("width", s.width).integer("height", s.height).integer("maxval", s.maxval));
+    j.object("points", JsonObject().integer("requested", (long long)s.requested).integer("achieved", (long long)s.achieved));
+    j.integer("vertices", (long long)s.vertices).integer("faces", (long long)s.faces);
+    j.integer("constrained_vertices", (long long)s.constrained_vertices);
+    j.integer("constrained_edges", (long long)s.constrained_edges);
+    j.integer("dropped_constraints", (long long)s.dropped_constraints);
     if (s.has_params)
-        j += kv("parameters", "{" + kv("beta", num(s.beta)) + "," + kv("r", num(s.r)) + "," + kv("l", std::to_string(s.l)) +
-                                  "," + kv("epsilon", num(s.epsilon)) + "," + kv("simple", s.simple ? "true" : "false") + "," +
-                                  kv("edges", s.hard_edges ? "\"hard\"" : "\"soft\"") + "}") + ",";
+        j.object("parameters", JsonObject().num("beta", s.beta).num("r", s.r).integer("l", s.l).num("epsilon", s.epsilon).boolean("simple", s.simple)
+                                   .str("edges", s.hard_edges ? "hard" : "soft"));
     else
-        j += kv("parameters", "null") + ",";
-    j += kv("stop", s.stop.empty() ? "null" : json_string(s.stop)) + ",";
-    j += "\"stages\":[";
-    for (std::size_t i = 0; i < s.stages.size(); ++i) {
-        if (i) j += ",";
-        j += "{" + kv("name", json_string(s.stages[i].name)) + "," + kv("seconds", num(s.stages[i].seconds)) + "}";
-    }
-    j += "],";
-    j += kv("total_seconds", num(s.total_seconds)) + ",";
-    j += kv("peak_memory_bytes", std::to_string(s.peak_memory_bytes));
-    if (s.has_psnr) j += "," + kv("psnr", num(s.psnr));
-    j += "}\n";
-    return j;
+        j.null("parameters");
+    if (s.stop.empty()) j.null("stop");
+    else j.str("stop", s.stop);
+    std::string stages = "[";
+    for (std::size_t i = 0; i < s.stages.size(); ++i)
+        stages += (i ? "," : "") + JsonObject().str("name", s.stages[i].name).num("seconds", s.stages[i].seconds).text();
+    j.raw("stages", stages + "]");
+    j.num("total_seconds", s.total_seconds).integer("peak_memory_bytes", s.peak_memory_bytes);
+    if (s.has_psnr) j.num("psnr", s.psnr);
+    return j.text() + "\n";
 }
 
 long long peak_memory_bytes() {

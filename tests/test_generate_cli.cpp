@@ -148,7 +148,7 @@ TEST_CASE("generate: bad flags and impossible requests exit 2 with one line", "[
         {"--method gpi" + in + out + " -x 3", "exit-mode"},
         {"--method gpi" + in + out + " --psnr -1", "--psnr"},
         {"--method nonesuch" + in + out, "available: ed, gpi"},
-        {"--method gpi" + out, "-i IMAGE is required"},
+        {"--method gpi" + out + " </dev/null", "stdin"},  // no -i: stdin, empty here
         {"--method gpi" + in, "-o OUT is required"},
         {in + out, "--method is required"},
         {"--method gpi" + in + " -o " + sh_quote(dir.file("in.pgm")), "in.pgm"},

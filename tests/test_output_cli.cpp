@@ -43,7 +43,7 @@ TEST_CASE("erd export: OBJ and PLY files of the A.4.2 example, wedge copies", "[
     CHECK(count(r.out, "element vertex 4\n") == 1);
 
     // Usage and input errors: exit 2, one line naming the problem.
-    CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.stl"))).status == 2);
+    CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.xyz"))).status == 2);
     CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.obj")) + " --zscale 0").status == 2);
     CHECK(run_erd("export " + sh_quote(dir.file("missing.erd")) + " -o " + sh_quote(dir.file("x.obj"))).status == 2);
     CHECK(run_erd("export " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.erd")) + " --format obj").status == 2);

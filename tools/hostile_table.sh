@@ -96,27 +96,29 @@ header cases (every INPUTS.md item with variants): docs/hostile_images.md.
 | --- | --- | --- | --- |
 EOF
 for m in ed gpi erded erdgpi; do
-    case_ "1x1" 2 generate -q -m $m -i 1x1.pgm -o o.model -n 4
-    case_ "1x6" 2 generate -q -m $m -i 1x6.pgm -o o.model -n 4
-    case_ "6x1, largest N" 2 generate -q -m $m -i 6x1.pgm -o o.model -n 6
-    case_ "2x2, only N" 0 generate -q --psnr-report -m $m -i 2x2.pgm -o o.model -n 4
-    case_ "3x2, smallest N" 0 generate -q --psnr-report -m $m -i 3x2.pgm -o o.model -n 4
-    case_ "3x2, largest N" '0|3' generate -q --psnr-report -m $m -i 3x2.pgm -o o.model -n 6
-    case_ "constant, smallest N" '0|3' generate -q --psnr-report -m $m -i const.pgm -o o.model -n 4
-    case_ "constant, largest N" '0|3' generate -q --psnr-report -m $m -i const.pgm -o o.model -n 256
-    case_ "16-bit all 0" '0|3' generate -q --psnr-report -m $m -i const0_16.pgm -o o.model -n 20
-    case_ "16-bit all 65535" '0|3' generate -q --psnr-report -m $m -i constmax_16.pgm -o o.model -n 20
-    case_ "checkerboard, smallest N" 0 generate -q --psnr-report -m $m -i checker.pgm -o o.model -n 4
-    case_ "checkerboard, 50%" 0 generate -q --psnr-report -m $m -i checker.pgm -o o.model -n 128
-    case_ "checkerboard, largest N" 0 generate -q --psnr-report -m $m -i checker.pgm -o o.model -n 256
-    case_ "white noise, 10%" 0 generate -q --psnr-report -m $m -i noise.pgm -o o.model -n 58
-    case_ "white noise, largest N" '0|3' generate -q --psnr-report -m $m -i noise.pgm -o o.model -n 576
-    case_ "16-bit noise, 5%" 0 generate -q --psnr-report -m $m -i noise16.pgm -o o.model -n 20
+    o=o.model; [[ $m == erd* ]] && o=o.erd  # the name of the kind the method makes
+    case_ "1x1" 2 generate -q -m $m -i 1x1.pgm -o $o -n 4
+    case_ "1x6" 2 generate -q -m $m -i 1x6.pgm -o $o -n 4
+    case_ "6x1, largest N" 2 generate -q -m $m -i 6x1.pgm -o $o -n 6
+    case_ "2x2, only N" 0 generate -q --psnr-report -m $m -i 2x2.pgm -o $o -n 4
+    case_ "3x2, smallest N" 0 generate -q --psnr-report -m $m -i 3x2.pgm -o $o -n 4
+    case_ "3x2, largest N" '0|3' generate -q --psnr-report -m $m -i 3x2.pgm -o $o -n 6
+    case_ "constant, smallest N" '0|3' generate -q --psnr-report -m $m -i const.pgm -o $o -n 4
+    case_ "constant, largest N" '0|3' generate -q --psnr-report -m $m -i const.pgm -o $o -n 256
+    case_ "16-bit all 0" '0|3' generate -q --psnr-report -m $m -i const0_16.pgm -o $o -n 20
+    case_ "16-bit all 65535" '0|3' generate -q --psnr-report -m $m -i constmax_16.pgm -o $o -n 20
+    case_ "checkerboard, smallest N" 0 generate -q --psnr-report -m $m -i checker.pgm -o $o -n 4
+    case_ "checkerboard, 50%" 0 generate -q --psnr-report -m $m -i checker.pgm -o $o -n 128
+    case_ "checkerboard, largest N" 0 generate -q --psnr-report -m $m -i checker.pgm -o $o -n 256
+    case_ "white noise, 10%" 0 generate -q --psnr-report -m $m -i noise.pgm -o $o -n 58
+    case_ "white noise, largest N" '0|3' generate -q --psnr-report -m $m -i noise.pgm -o $o -n 576
+    case_ "16-bit noise, 5%" 0 generate -q --psnr-report -m $m -i noise16.pgm -o $o -n 20
 done
 for m in erded erdgpi; do
-    case_ "edges everywhere (beta 0.999)" 0 generate -q --psnr-report -m $m -i noise.pgm -o o.model -n 58 -b 0.999
-    case_ "no edges (beta 1e-9)" '0|3' generate -q --psnr-report -m $m -i step.pgm -o o.model -n 26 -b 1e-9
-    case_ "edges everywhere, smallest N" 0 generate -q --psnr-report -m $m -i checker.pgm -o o.model -n 4 -b 0.999
+    o=o.erd
+    case_ "edges everywhere (beta 0.999)" 0 generate -q --psnr-report -m $m -i noise.pgm -o $o -n 58 -b 0.999
+    case_ "no edges (beta 1e-9)" '0|3' generate -q --psnr-report -m $m -i step.pgm -o $o -n 26 -b 1e-9
+    case_ "edges everywhere, smallest N" 0 generate -q --psnr-report -m $m -i checker.pgm -o $o -n 4 -b 0.999
 done
 
 cat <<'EOF'
