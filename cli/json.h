@@ -6,7 +6,8 @@
 // valid UTF-8 whatever it is given: each byte that is not part of a well-formed UTF-8 sequence
 // (a stray continuation byte, 0xC0/0xC1/0xF5..0xFF, an overlong form, a surrogate, a code point
 // above U+10FFFF, a sequence cut short) becomes U+FFFD, written "\ufffd". Control characters
-// are escaped (\n, \t, ..., else \u00XX), as are '"' and '\'. docs/DECISIONS.md ("JSON").
+// are escaped (\n, \t, ..., else \u00XX), as are '"' and '\'. docs/DECISIONS.md, "CLI and thesis
+// aliases" (JSON).
 #pragma once
 #include <cstdint>
 #include <string>
