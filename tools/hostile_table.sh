@@ -45,8 +45,10 @@ case_() {
     for a in "$@"; do args+=("$a"); done
     # IN: standard input (default /dev/null); LIMIT_KB: a memory cap (ulimit -v), LIMIT_FSIZE a
     # file-size cap (ulimit -f, 512-byte blocks); CHECK: a condition on the files afterwards.
+    # A sanitized binary (ERD_SANITIZED set) reserves terabytes of shadow address space, which no
+    # ulimit -v allows: there the rows run without the memory cap (the plain build checks it).
     (
-        [[ -n ${LIMIT_KB:-} ]] && ulimit -v "$LIMIT_KB"
+        [[ -n ${LIMIT_KB:-} && -z ${ERD_SANITIZED:-} ]] && ulimit -v "$LIMIT_KB"
         [[ -n ${LIMIT_FSIZE:-} ]] && ulimit -f "$LIMIT_FSIZE"
         exec "$BIN" "${args[@]}"
     ) <"${IN:-/dev/null}" >out.stdout 2>out.stderr
