@@ -85,6 +85,7 @@ def generate(
     alpha_max: float = ...,
     edge_zero_radius: int = ...,
     aa_errors: int = ...,
+    triangles: int = ...,
     maxval: int = ...,
     max_memory: int = ...,
 ) -> Mesh:

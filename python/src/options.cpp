@@ -31,6 +31,7 @@ const std::vector<Spec>& specs() {
         {"exit_mode", Kind::integer, 0, 2, [](GenerateArgs* a, double v) { a->options.exact = api::ExactMode(int(v)); }},
         {"max_error", Kind::real, 0, kBig, [](GenerateArgs* a, double v) { a->options.generate.max_error = v; }},
         {"psnr", Kind::real, 1e-300, kBig, [](GenerateArgs* a, double v) { a->options.generate.psnr = v; }},
+        {"triangles", Kind::integer, 1, 9e18, [](GenerateArgs* a, double v) { a->options.generate.triangles = std::int64_t(v); }},
         {"min_length", Kind::integer, 1, 1 << 20, [](GenerateArgs* a, double v) { a->options.generate.min_length = int(v); }},
         {"beta", Kind::real, 1e-9, 1.0, [](GenerateArgs* a, double v) { a->options.generate.beta = v; }},
         {"ratio", Kind::real, 1e-9, 1.0, [](GenerateArgs* a, double v) { a->options.generate.ratio = v; }},
