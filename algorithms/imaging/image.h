@@ -33,18 +33,25 @@ struct Grid {
     std::size_t size() const { return data.size(); }
 };
 
+// channels is 1 (gray) or 3 (RGB). Samples are interleaved: channel c of pixel (x, y) is at
+// index (y*width + x)*channels + c, so a gray image is exactly the thesis's row-major plane.
+// at(x, y) is the gray accessor (channels == 1); at(x, y, c) reads any channel.
 struct Image {
     int width = 0;
     int height = 0;
     std::uint32_t maxval = 255;          // 1 .. 65535, kept exactly
-    std::vector<std::uint16_t> samples;  // row-major, each <= maxval
+    int channels = 1;                    // 1 or 3
+    std::vector<std::uint16_t> samples;  // interleaved, row-major, each <= maxval
 
     Image() = default;
-    Image(int w, int h, std::uint32_t mv) : width(w), height(h), maxval(mv), samples(std::size_t(w) * std::size_t(h), 0) {}
+    Image(int w, int h, std::uint32_t mv, int c = 1)
+        : width(w), height(h), maxval(mv), channels(c), samples(std::size_t(w) * std::size_t(h) * std::size_t(c), 0) {}
 
     std::uint16_t& at(int x, int y) { return samples[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
     std::uint16_t at(int x, int y) const { return samples[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    std::size_t pixels() const { return samples.size(); }
+    std::uint16_t& at(int x, int y, int c) { return samples[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)]; }
+    std::uint16_t at(int x, int y, int c) const { return samples[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)]; }
+    std::size_t pixels() const { return std::size_t(width) * std::size_t(height); }
 
     // Bits per sample: ceil(log2(maxval + 1)); PSNR peaks at 2^bits - 1 (../shared/spec/NOTES.md).
     int bits() const {
@@ -54,7 +61,14 @@ struct Image {
     }
 };
 
-// Samples as doubles, for filtering.
+// Channel c of a colour image as a gray image of the same size and maxval.
+inline Image channel_plane(const Image& im, int c) {
+    Image g(im.width, im.height, im.maxval);
+    for (std::size_t i = 0; i < g.samples.size(); ++i) g.samples[i] = im.samples[i * std::size_t(im.channels) + std::size_t(c)];
+    return g;
+}
+
+// Samples as doubles, for filtering (a gray image).
 inline Grid<double> to_grid(const Image& im) {
     Grid<double> g(im.width, im.height);
     for (std::size_t i = 0; i < im.samples.size(); ++i) g.data[i] = im.samples[i];

@@ -36,11 +36,15 @@ struct Model {
     std::uint32_t maxval = 255;
     EdgeKind edges = EdgeKind::soft;  // erd only; a basic model is always point-evaluated
 
+    int channels = 1;  // 1 (gray) or 3 (RGB): values per vertex and per corner
+
     std::vector<LatticePoint> vertices;
-    std::vector<double> values;                        // per vertex (for erd: its single-wedge value,
-                                                       // or the mean of its wedge values)
+    std::vector<double> values;                        // per vertex and channel, values[v*channels + c]
+                                                       // (for erd: its single-wedge value, or the
+                                                       // mean of its wedge values)
     std::vector<std::array<std::uint32_t, 3>> faces;   // vertex indices, positive orientation
-    std::vector<std::array<double, 3>> corner_values;  // erd only: wedge value at each face corner
+    std::vector<std::array<double, 3>> corner_values;  // erd only: wedge values at the corners of
+                                                       // face f in channel c: [f*channels + c]
     std::vector<std::array<std::uint32_t, 2>> constraints;  // erd only: constrained edges (i < j)
 
     std::size_t size() const { return vertices.size(); }
