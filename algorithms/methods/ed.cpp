@@ -1,5 +1,6 @@
 #include "algorithms/methods/ed.h"
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/methods/exact_count.h"
@@ -17,7 +18,8 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     // Step 1: sigma = (d / d_max)^1 with d the MMSODD after 3rd-order binomial smoothing,
     // zero extension at the borders (thesis 3.2.1).
     StageTimer timer(result);
-    Grid<double> sigma = ed_density(mmsodd(image, 3), 1.0);
+    // Colour: the channels' MMSODDs combined (ColourChoices::density).
+    Grid<double> sigma = ed_density(colour_mmsodd(image, 3, options.colour.density), 1.0);
     timer.lap("mmsodd density");
 
     // Steps 2-3: error diffusion chooses the N - 4 non-corner points; the corners are forbidden

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/imaging/set_points.h"
@@ -107,7 +108,7 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
     } else if (k > 0) {
         // The MMSODD plane becomes the density in place; the wedge-value line search computes
         // its values where it needs them (the same values), so no second plane is kept.
-        Grid<double> density = ed_density(mmsodd(image, 5), 0.5);
+        Grid<double> density = ed_density(colour_mmsodd(image, 5, options.colour.density), 0.5);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
         // Only the edge pixels are visited (the map is mostly empty); the zeros written do not
@@ -135,6 +136,13 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
     std::vector<VertInd> ids;
     st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it
     if (!st) return st;
+    if (image.channels > 1) {
+        ErdChannels model(image, wo, options.colour.shared_wedge_position, options.colour.density);
+        model.assign_all(cdt);
+        timer.lap("triangulation and wedge values");
+        finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
+        return Status::success();
+    }
     ErdModel model(image, wo);
     model.assign_all(cdt);
     timer.lap("triangulation and wedge values");

@@ -1,5 +1,6 @@
 #include "algorithms/methods/erdgpi.h"
 
+#include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/scaffold.h"
 
@@ -14,6 +15,35 @@ Status ErdGreedyModel::on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector
 
 namespace {
 
+// ERDGPI on a colour image, from the initial mesh (step 1, on the luma plane): the greedy loop
+// on all channels' errors (ColourErdGreedyModel), or for comparison on the luma plane's gray
+// model (ColourChoices::greedy_on_luma) with the colour values assigned to the final mesh.
+Status erdgpi_colour(const Image& image, const GenerateOptions& options, Cdt* cdt, InitialMesh* mesh,
+                     StageTimer* timer, GenerateResult* result) {
+    const std::size_t n = result->requested;
+    const WedgeValueOptions wo = wedge_options(options);
+    GreedyOptions go = greedy_options(options, n);
+    go.round_values = false;  // as in gray
+    result->stats.has_greedy = true;
+    ErdChannels model(image, wo, options.colour.shared_wedge_position, options.colour.density);
+    Status st;
+    if (options.colour.greedy_on_luma) {
+        const Image luma = luma_of(image);
+        ErdModel gray(luma, wo);
+        gray.assign_all(*cdt);
+        ErdGreedyModel greedy(gray);
+        if (cdt->vertex_count() < n && !(st = greedy_refine(*cdt, luma, greedy, go, &result->stats.greedy))) return st;
+        model.assign_all(*cdt);
+    } else {
+        model.assign_all(*cdt);
+        ColourErdGreedyModel greedy(model);
+        if (cdt->vertex_count() < n && !(st = greedy_refine(*cdt, image, greedy, go, &result->stats.greedy))) return st;
+    }
+    timer->lap("greedy insertion");
+    finish_erd_method(*cdt, image, options, mesh, &model, timer, result);
+    return Status::success();
+}
+
 Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
     Cdt cdt;
     InitialMesh mesh;
@@ -24,6 +54,7 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
     StageTimer timer(result);
 
     if (options.progress.report_cancelled("wedge values", 0.0)) return Status::failure(kCancelled);
+    if (image.channels > 1) return erdgpi_colour(image, options, &cdt, &mesh, &timer, result);
     ErdModel model(image, wedge_options(options));
     model.assign_all(cdt);
     timer.lap("wedge values");

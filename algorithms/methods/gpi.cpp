@@ -15,6 +15,18 @@ SpanPlane BasicGreedyModel::face_plane(const Cdt& cdt, FaceInd f) const {
     return plane;
 }
 
+SpanPlane BasicGreedyModel::channel_face_plane(const Cdt& cdt, FaceInd f, int c) const {
+    LatticePoint p[3];
+    double z[3];
+    for (int i = 0; i < 3; ++i) {
+        p[i] = cdt.point(cdt.face_vertex(f, i));
+        z[i] = double(image_.at(p[i].x / 2, p[i].y / 2, c));
+    }
+    SpanPlane plane;
+    plane.set(p[0], z[0], p[1], z[1], p[2], z[2]);
+    return plane;
+}
+
 bool BasicGreedyModel::integer_values(const Cdt& cdt, FaceInd f, std::int64_t z[3]) const {
     for (int i = 0; i < 3; ++i) {
         const LatticePoint p = cdt.point(cdt.face_vertex(f, i));

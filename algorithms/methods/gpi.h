@@ -21,6 +21,9 @@ public:
     // The samples at the face's vertices: always integers.
     bool integer_values(const Cdt& cdt, FaceInd f, std::int64_t z[3]) const override;
     Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>* dirty) override;
+    // Colour: channel c's plane through the face's vertex samples of that channel.
+    int channels() const override { return image_.channels; }
+    SpanPlane channel_face_plane(const Cdt& cdt, FaceInd f, int c) const override;
 
 private:
     double sample_at(LatticePoint p) const;

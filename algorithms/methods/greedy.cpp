@@ -24,6 +24,8 @@ const char* to_string(GreedyStop s) {
 
 namespace {
 
+constexpr int kMaxChannels = 4;  // the colour scan's per-channel arrays
+
 // Per-face bookkeeping: the face's squared-error sum over the pixels it owns and its candidate.
 struct FaceState {
     double sum = 0.0;
@@ -144,7 +146,7 @@ public:
     Refiner(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options)
         : cdt_(cdt), image_(image), model_(model), options_(options),
           banned_(std::size_t(image.width) * std::size_t(image.height), 0),
-          domain_{cdt.max_x(), cdt.max_y()} {
+          domain_{cdt.max_x(), cdt.max_y()}, channels_(image.channels) {
         peak_ = std::pow(2.0, image.bits()) - 1.0;
         if (!options.round_values)
             for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
@@ -253,7 +255,7 @@ private:
 
     double psnr() const {
         if (total_ <= 0.0) return std::numeric_limits<double>::infinity();
-        double mse = total_ / (double(image_.width) * double(image_.height));
+        double mse = total_ / (double(image_.width) * double(image_.height) * double(channels_));
         return 10.0 * std::log10(peak_ * peak_ / mse);
     }
 
@@ -351,6 +353,7 @@ private:
 
     // Scans the pixels face f owns against the model's plane: new sum and candidate.
     void rescan(FaceInd f) {
+        if (channels_ > 1) return rescan_colour(f);
         stamp_[f] = generation_;
         FaceState& fs = faces_[f];
         total_ -= fs.sum;
@@ -431,11 +434,71 @@ private:
                 if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
             });
         }
+        if (best > 0.0) fs.cand = LatticePoint{2 * bx, 2 * by};
+        settle(f, sum, best);
+    }
+
+    // rescan for a colour image: every channel's plane by point evaluation, stepped along each
+    // span (rounded and clamped as reconstruction writes it when round_values). The candidate
+    // metric is the sum of squared channel errors or the largest squared channel error.
+    void rescan_colour(FaceInd f) {
+        stamp_[f] = generation_;
+        total_ -= faces_[f].sum;
+        const int C = channels_;
+        SpanPlane planes[kMaxChannels];
+        for (int c = 0; c < C; ++c) planes[c] = model_.channel_face_plane(cdt_, f, c);
+        const LatticePoint p0 = cdt_.point(cdt_.face_vertex(f, 0)), p1 = cdt_.point(cdt_.face_vertex(f, 1)),
+                           p2 = cdt_.point(cdt_.face_vertex(f, 2));
+        const bool round = options_.round_values, by_max = options_.max_channel_error;
+        const double maxval = double(image_.maxval);
+        const std::size_t width = std::size_t(image_.width);
+        double sum = 0.0, best = -1.0;
+        std::int32_t bx = 0, by = 0;
+        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
+        for (RowRun part; rows.next(&part);) {
+            for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                std::int64_t lo64, hi64;
+                run.columns(&lo64, &hi64);
+                if (lo64 > hi64) continue;
+                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
+                double v[kMaxChannels], dv[kMaxChannels];
+                for (int c = 0; c < C; ++c) {
+                    v[c] = planes[c].at(double(2 * lo), double(2 * j));
+                    dv[c] = 2.0 * planes[c].gx;
+                }
+                const std::uint16_t* s = &image_.samples[(std::size_t(j) * width + std::size_t(lo)) * std::size_t(C)];
+                const std::uint8_t* banned = &banned_[std::size_t(j) * width];
+                for (std::int32_t x = lo; x <= hi; ++x, s += C) {
+                    double e2 = 0.0, m2 = 0.0;
+                    for (int c = 0; c < C; ++c) {
+                        const double a = round ? double(rounded<Rounding::clamp>(v[c], maxval)) : v[c];
+                        const double e = double(s[c]) - a, ec = e * e;
+                        e2 += ec;
+                        m2 = ec > m2 ? ec : m2;
+                        v[c] += dv[c];
+                    }
+                    sum += e2;
+                    const double metric = by_max ? m2 : e2;
+                    if (metric > best && !banned[x]) {
+                        best = metric;
+                        bx = x;
+                        by = j;
+                    }
+                }
+            }
+        }
+        if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
+        settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
+    }
+
+    // Stores face f's new error sum and candidate error (the candidate point is in faces_[f])
+    // and updates the heaps.
+    void settle(FaceInd f, double sum, double best) {
+        FaceState& fs = faces_[f];
         fs.sum = sum;
         total_ += sum;
         if (best > 0.0) {
             fs.cand_error = best;
-            fs.cand = LatticePoint{2 * bx, 2 * by};
             by_sum_.set(f, sum, tie_of(fs.cand));
             if (track_max_) by_max_.set(f, best, tie_of(fs.cand));
         } else {
@@ -470,6 +533,7 @@ private:
     std::vector<Span> spans_, touched_;
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
+    int channels_ = 1;
 };
 
 }  // namespace
@@ -479,7 +543,15 @@ Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const Gre
     *stats = GreedyStats();
     if (cdt.max_x() != 2 * (image.width - 1) || cdt.max_y() != 2 * (image.height - 1))
         return Status::failure("greedy_refine: triangulation and image sizes differ");
-    Refiner r(cdt, image, model, options);
+    if (model.channels() != image.channels || image.channels < 1 || image.channels > kMaxChannels)
+        return Status::failure("greedy_refine: the model's and the image's channel counts differ");
+    if (image.channels == 1) {
+        Refiner r(cdt, image, model, options);
+        return r.run(stats);
+    }
+    GreedyOptions colour = options;
+    colour.supersampled = false;  // the colour scan evaluates points
+    Refiner r(cdt, image, model, colour);
     return r.run(stats);
 }
 

@@ -77,6 +77,15 @@ public:
         return false;
     }
 
+    // Colour (issue 17): the number of channels the model approximates (the image's), and the
+    // plane of channel c on face f. With channels() > 1 the loop calls channel_face_plane for
+    // every channel instead of face_plane (and never integer_values).
+    virtual int channels() const { return 1; }
+    virtual SpanPlane channel_face_plane(const Cdt& cdt, FaceInd f, int c) const {
+        (void)c;
+        return face_plane(cdt, f);
+    }
+
     // May the candidate point p (a pixel, even coordinates) be inserted? Asked when a face's
     // candidate reaches the top of the heap. On false the loop bans p for the rest of the run
     // (it is never a candidate again), re-scans that face and carries on. Default: always.
@@ -108,6 +117,9 @@ struct GreedyOptions {
     // 16 floats per pixel. Sub-samples on a constrained edge take the owning face's plane (the
     // reconstruction takes the mean of both sides there; they are a few per edge).
     bool supersampled = false;
+    // Colour images: the candidate is the pixel with the largest single channel error instead
+    // of the largest sum of squared channel errors (ColourChoices::max_channel_error).
+    bool max_channel_error = false;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
 };
@@ -115,6 +127,9 @@ struct GreedyOptions {
 // Refines `cdt` (already holding the initial mesh: the four corners for GPI; corners, polyline
 // points and constraints for ERDGPI) by greedy point insertion until a stop rule holds.
 // `image` must match the triangulation's domain: cdt covers [0, 2W-2] x [0, 2H-2].
+// Colour images (model.channels() == image.channels > 1): errors by point evaluation of each
+// channel's plane (rounded and clamped when round_values; supersampled is ignored), a pixel's
+// error the sum of its squared channel errors, the PSNR that of their mean over the channels.
 // Fails with Code::runtime if the kernel or the model fails; the triangulation is then valid
 // but partly refined.
 Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options,

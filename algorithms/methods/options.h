@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
 #include "algorithms/methods/progress.h"
@@ -14,6 +15,23 @@
 #include "kernel/status.h"
 
 namespace erd {
+
+// How the methods treat the channels of a colour image (issue 17): one triangulation and one set
+// of constrained edges shared by the channels, a value per channel at every vertex and wedge.
+// The defaults are the measured choices (docs/DECISIONS.md "Colour methods"); the other values
+// are kept for that measurement (tools/eval_colour.sh). Gray images ignore all of it.
+struct ColourChoices {
+    // Greedy candidate (GPI, ERDGPI): the pixel with the largest sum of squared channel errors
+    // (false) or the largest single channel error (true). Faces are keyed on the sum either way.
+    bool max_channel_error = false;
+    ColourDensity density = ColourDensity::sum;  // ED's and ERDED's MMSODD over the channels
+    // Wedge values: each channel's own line search on its own MMSODD (false), or one position
+    // per wedge from the MMSODD combined as `density` says, read in every channel (true).
+    bool shared_wedge_position = false;
+    // The cheap alternative, for comparison only: ERDGPI's greedy loop on the luma plane and its
+    // gray model; the colour values are then assigned and refit on the final mesh.
+    bool greedy_on_luma = false;
+};
 
 // --edges: what the ERD methods take the image's edges to be (algorithms/imaging/edge_kind.h).
 enum class EdgeChoice { automatic, soft, hard };
@@ -50,6 +68,8 @@ struct GenerateOptions {
                                  // edge pixel (ours; the thesis's "edge pixels" is 0)
     bool supersampled_errors = false;  // ERDGPI: refinement errors against the 4x4-supersampled
                                  // approximation (the thesis's, --thesis); false: point evaluation
+
+    ColourChoices colour;        // colour images only (channels == 3)
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages
 };

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/edge_kind.h"
 #include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/metrics.h"
@@ -74,9 +75,11 @@ Model basic_model(const Cdt& cdt, const Image& image) {
     m.width = image.width;
     m.height = image.height;
     m.maxval = image.maxval;
+    m.channels = image.channels;
     m.vertices = cdt.points();
-    m.values.reserve(m.vertices.size());
-    for (LatticePoint p : m.vertices) m.values.push_back(double(image.at(p.x / 2, p.y / 2)));
+    m.values.reserve(m.vertices.size() * std::size_t(image.channels));
+    for (LatticePoint p : m.vertices)
+        for (int c = 0; c < image.channels; ++c) m.values.push_back(double(image.at(p.x / 2, p.y / 2, c)));
     std::vector<std::array<VertInd, 3>> faces;
     cdt.export_faces(&faces);
     m.faces.assign(faces.begin(), faces.end());
@@ -96,6 +99,7 @@ GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
     go.psnr = options.psnr;
     go.max_triangles = options.triangles > 0 ? std::size_t(options.triangles) : 0;
     go.round_values = options.round_values;
+    go.max_channel_error = options.colour.max_channel_error;
     go.progress = options.progress;
     return go;
 }
@@ -118,8 +122,13 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     Status st = begin_method(image, options, result);
     if (!st) return st;
     ErdStepStats& s = result->stats.erd;
+    // Colour: the edges (their kind, then step 1) are those of the luma plane (docs/DECISIONS.md
+    // "Colour methods"), shared by the channels.
+    Image luma;
+    if (image.channels > 1) luma = luma_of(image);
+    const Image& gray = image.channels > 1 ? luma : image;
     if (options.edges == EdgeChoice::automatic) {
-        const EdgeKindStats ek = measure_edge_kind(image);
+        const EdgeKindStats ek = measure_edge_kind(gray);
         s.edges_measured = true;
         s.hard_steps = ek.hard;
         s.soft_steps = ek.soft;
@@ -136,20 +145,17 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
-    st = build_initial_mesh(image, mo, cdt, mesh);
+    st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
     return Status::success();
 }
 
-void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
-                       ErdModel* model, StageTimer* timer, GenerateResult* result) {
-    if (options.wedge_fit > 0) {
-        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
-        result->stats.has_wedge_fit = true;
-        timer->lap("wedge refit");
-    }
-    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+namespace {
+
+// The end of finish_erd_method once result->model is made: the step-1 facts and the wedge-value
+// counts (of `model`, channel 0 in colour), the polylines; stage "model".
+void finish_erd_stats(InitialMesh* mesh, const ErdModel* model, StageTimer* timer, GenerateResult* result) {
     result->achieved = result->model.size();
     result->stats.has_erd = true;
     ErdStepStats& s = result->stats.erd;
@@ -165,9 +171,34 @@ void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions
     timer->lap("model");
 }
 
+}  // namespace
+
+void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdModel* model, StageTimer* timer, GenerateResult* result) {
+    if (options.wedge_fit > 0) {
+        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
+        result->stats.has_wedge_fit = true;
+        timer->lap("wedge refit");
+    }
+    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    finish_erd_stats(mesh, model, timer, result);
+}
+
+void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdChannels* model, StageTimer* timer, GenerateResult* result) {
+    if (options.wedge_fit > 0) {
+        model->fit(cdt, options.wedge_fit, &result->stats.wedge_fit);
+        result->stats.has_wedge_fit = true;
+        timer->lap("wedge refit");
+    }
+    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    finish_erd_stats(mesh, &model->channel(0), timer, result);
+}
+
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
     Status st = run(image, options, true, result);
-    if (!st || result->model.edges != EdgeKind::hard) return st;
+    // Colour keeps the first run: the comparison reconstructs gray models only.
+    if (!st || result->model.edges != EdgeKind::hard || image.channels > 1) return st;
     GenerateResult exact;
     if (!(st = run(image, options, false, &exact))) return st;
     double db[2] = {0, 0};

@@ -9,6 +9,7 @@
 #include <chrono>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/erd_params.h"
 #include "algorithms/methods/greedy.h"
@@ -75,5 +76,8 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
 // the step-1 facts and the wedge-value counts, the polylines (moved out of *mesh); stage "model".
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result);
+// The same for a colour image: the refit per channel (ErdChannels::fit), the C-channel model.
+void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdChannels* model, StageTimer* timer, GenerateResult* result);
 
 }  // namespace erd

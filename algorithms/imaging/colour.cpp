@@ -1,0 +1,32 @@
+#include "algorithms/imaging/colour.h"
+
+#include <algorithm>
+
+#include "algorithms/imaging/mmsodd.h"
+
+namespace erd {
+
+Image luma_of(const Image& im) {
+    if (im.channels != 3) return im;
+    Image g(im.width, im.height, im.maxval);
+    for (std::size_t i = 0; i < g.samples.size(); ++i) {
+        const std::uint16_t* s = &im.samples[3 * i];
+        const std::uint64_t y = 299u * std::uint64_t(s[0]) + 587u * std::uint64_t(s[1]) + 114u * std::uint64_t(s[2]);
+        g.samples[i] = std::uint16_t((y + 500u) / 1000u);
+    }
+    return g;
+}
+
+Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity how) {
+    if (im.channels == 1) return mmsodd(im, smoothing_order);
+    if (how == ColourDensity::luma) return mmsodd(luma_of(im), smoothing_order);
+    Grid<double> d = mmsodd(channel_plane(im, 0), smoothing_order);
+    for (int c = 1; c < im.channels; ++c) {
+        const Grid<double> dc = mmsodd(channel_plane(im, c), smoothing_order);
+        for (std::size_t i = 0; i < d.size(); ++i)
+            d.data[i] = how == ColourDensity::sum ? d.data[i] + dc.data[i] : std::max(d.data[i], dc.data[i]);
+    }
+    return d;
+}
+
+}  // namespace erd

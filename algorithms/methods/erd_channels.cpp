@@ -1,0 +1,59 @@
+#include "algorithms/methods/erd_channels.h"
+
+#include "algorithms/methods/wedge_fit.h"
+
+namespace erd {
+
+ErdChannels::ErdChannels(const Image& image, const WedgeValueOptions& options, bool shared_position,
+                         ColourDensity density) {
+    planes_.reserve(std::size_t(image.channels));
+    for (int c = 0; c < image.channels; ++c) planes_.push_back(channel_plane(image, c));
+    Grid<double> shared;
+    if (shared_position && options.rule == 1) shared = colour_mmsodd(image, options.smoothing_order, density);
+    for (const Image& p : planes_) {
+        models_.push_back(std::make_unique<ErdModel>(p, options));
+        if (!shared.data.empty()) models_.back()->set_mmsodd(shared);
+    }
+}
+
+void ErdChannels::assign_vertex(const Cdt& cdt, VertInd v) {
+    for (auto& m : models_) m->assign_vertex(cdt, v);
+}
+
+void ErdChannels::assign_all(const Cdt& cdt) {
+    for (auto& m : models_) m->assign_all(cdt);
+}
+
+void ErdChannels::fit(const Cdt& cdt, int iterations, WedgeFitStats* stats) {
+    *stats = WedgeFitStats();
+    for (std::size_t c = 0; c < models_.size(); ++c) {
+        WedgeFitStats s;
+        fit_wedge_values(cdt, planes_[c], iterations, models_[c].get(), &s);
+        stats->iterations = s.iterations > stats->iterations ? s.iterations : stats->iterations;
+        stats->sse_before += s.sse_before;
+        stats->sse_after += s.sse_after;
+    }
+}
+
+void ErdChannels::to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const {
+    const std::size_t C = models_.size();
+    Model one;
+    for (std::size_t c = 0; c < C; ++c) {
+        models_[c]->to_model(cdt, width, height, maxval, c == 0 ? out : &one);
+        const Model& m = c == 0 ? *out : one;
+        if (c == 0) {
+            out->channels = int(C);
+            std::vector<double> values(C * m.values.size());
+            std::vector<std::array<double, 3>> corners(C * m.corner_values.size());
+            for (std::size_t i = 0; i < m.values.size(); ++i) values[i * C] = m.values[i];
+            for (std::size_t i = 0; i < m.corner_values.size(); ++i) corners[i * C] = m.corner_values[i];
+            out->values = std::move(values);
+            out->corner_values = std::move(corners);
+            continue;
+        }
+        for (std::size_t i = 0; i < m.values.size(); ++i) out->values[i * C + c] = m.values[i];
+        for (std::size_t i = 0; i < m.corner_values.size(); ++i) out->corner_values[i * C + c] = m.corner_values[i];
+    }
+}
+
+}  // namespace erd

@@ -1,0 +1,62 @@
+// The ERD model of a colour image (issue 17): one triangulation, one value per channel at every
+// wedge. Channel c's wedge values are those of an ErdModel (algorithms/model/erd_model.h) on
+// channel c's plane, so each channel's line search, values and least-squares refit are the gray
+// ones on that plane; the wedges themselves (ids, counts, order) depend on the triangulation
+// alone and are the same in every channel. The refit decouples by channel: the approximating
+// function of one channel depends on that channel's values only, so fitting each channel on its
+// own is the joint least-squares fit.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "algorithms/imaging/colour.h"
+#include "algorithms/imaging/image.h"
+#include "algorithms/methods/greedy.h"
+#include "algorithms/methods/result.h"
+#include "algorithms/model/erd_model.h"
+#include "algorithms/model/model.h"
+#include "kernel/cdt.h"
+
+namespace erd {
+
+class ErdChannels {
+public:
+    // image: the colour samples (its planes are copied). shared_position: every wedge takes its
+    // value in all channels at one line-search position, from the MMSODD combined as `density`
+    // says (ColourChoices::shared_wedge_position); otherwise each channel searches its own MMSODD.
+    ErdChannels(const Image& image, const WedgeValueOptions& options, bool shared_position, ColourDensity density);
+
+    int channels() const { return int(models_.size()); }
+    const ErdModel& channel(int c) const { return *models_[std::size_t(c)]; }
+
+    void assign_vertex(const Cdt& cdt, VertInd v);
+    void assign_all(const Cdt& cdt);
+    // fit_wedge_values on every channel; the stats add the channels' squared errors.
+    void fit(const Cdt& cdt, int iterations, WedgeFitStats* stats);
+    // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).
+    void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
+
+private:
+    std::vector<Image> planes_;  // sized once: the models keep references into it
+    std::vector<std::unique_ptr<ErdModel>> models_;
+};
+
+// ERDGPI's greedy model in colour: each channel's plane through its wedge values.
+class ColourErdGreedyModel : public GreedyModel {
+public:
+    explicit ColourErdGreedyModel(ErdChannels& model) : model_(model) {}
+    SpanPlane face_plane(const Cdt& cdt, FaceInd f) const override { return model_.channel(0).face_plane(cdt, f); }
+    int channels() const override { return model_.channels(); }
+    SpanPlane channel_face_plane(const Cdt& cdt, FaceInd f, int c) const override {
+        return model_.channel(c).face_plane(cdt, f);
+    }
+    Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>*) override {
+        model_.assign_vertex(cdt, v);  // as ErdGreedyModel: only v's wedges are new
+        return Status::success();
+    }
+
+private:
+    ErdChannels& model_;
+};
+
+}  // namespace erd

@@ -1,0 +1,108 @@
+// eval_colour: one colour run of a method through the library, for tools/eval_colour.sh and
+// bench/run.sh (the erd program reads colour files once the colour readers are in cli/).
+//
+//   eval_colour [flags] METHOD DENSITY IMAGE.ppm
+//     --luma               run the gray method on the image's luma (the cost baseline)
+//     --max-channel        greedy candidate by the largest channel error (ColourChoices)
+//     --density sum|max|luma   ED/ERDED MMSODD over the channels
+//     --shared             one wedge line-search position for all channels
+//     --luma-greedy        ERDGPI's greedy loop on the luma (the cheap alternative)
+//     --fit N              wedge refit iterations (GenerateOptions::wedge_fit)
+// Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
+// the model's reconstruction, made channel by channel with the gray reconstruction.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "algorithms/imaging/colour.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/reconstruct.h"
+
+namespace {
+
+// A P6 8-bit reader for the test images alone (no comments, maxval 255).
+bool read_p6(const char* path, erd::Image* im) {
+    FILE* f = std::fopen(path, "rb");
+    if (!f) return false;
+    int w = 0, h = 0, mv = 0;
+    const bool ok = std::fscanf(f, "P6 %d %d %d", &w, &h, &mv) == 3 && mv == 255 && w > 0 && h > 0 && std::fgetc(f) != EOF;
+    if (ok) {
+        *im = erd::Image(w, h, 255, 3);
+        std::vector<unsigned char> buf(im->samples.size());
+        if (std::fread(buf.data(), 1, buf.size(), f) != buf.size()) w = 0;
+        for (std::size_t i = 0; i < buf.size(); ++i) im->samples[i] = buf[i];
+    }
+    std::fclose(f);
+    return ok && w > 0;
+}
+
+// Squared error of channel c of m against channel c of im, by the gray reconstruction.
+double channel_sse(const erd::Model& m, const erd::Image& im, int c) {
+    erd::Model g = m;
+    const std::size_t C = std::size_t(m.channels);
+    g.channels = 1;
+    g.values.resize(m.vertices.size());
+    for (std::size_t v = 0; v < g.values.size(); ++v) g.values[v] = m.values[v * C + std::size_t(c)];
+    if (!m.corner_values.empty()) {
+        g.corner_values.resize(m.faces.size());
+        for (std::size_t f = 0; f < m.faces.size(); ++f) g.corner_values[f] = m.corner_values[f * C + std::size_t(c)];
+    }
+    erd::Image rec;
+    if (!erd::reconstruct(g, erd::supersampled(g), &rec)) return -1;
+    double s = 0;
+    for (std::size_t i = 0; i < rec.samples.size(); ++i) {
+        const double e = double(rec.samples[i]) - double(im.samples[i * std::size_t(im.channels) + std::size_t(c)]);
+        s += e * e;
+    }
+    return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    erd::GenerateOptions o;
+    bool luma = false;
+    int i = 1;
+    for (; i < argc && argv[i][0] == '-' && argv[i][1] == '-'; ++i) {
+        const std::string a = argv[i];
+        if (a == "--luma") luma = true;
+        else if (a == "--max-channel") o.colour.max_channel_error = true;
+        else if (a == "--shared") o.colour.shared_wedge_position = true;
+        else if (a == "--luma-greedy") o.colour.greedy_on_luma = true;
+        else if (a == "--fit" && i + 1 < argc) o.wedge_fit = std::atoi(argv[++i]);
+        else if (a == "--density" && i + 1 < argc) {
+            const std::string d = argv[++i];
+            o.colour.density = d == "max" ? erd::ColourDensity::max : d == "luma" ? erd::ColourDensity::luma : erd::ColourDensity::sum;
+        } else {
+            std::fprintf(stderr, "eval_colour: unknown flag %s\n", argv[i]);
+            return 2;
+        }
+    }
+    if (argc - i != 3) {
+        std::fprintf(stderr, "usage: eval_colour [flags] METHOD DENSITY IMAGE.ppm\n");
+        return 2;
+    }
+    const erd::MethodInfo* method = erd::find_method(argv[i]);
+    erd::Image im;
+    if (!method || !read_p6(argv[i + 2], &im)) {
+        std::fprintf(stderr, "eval_colour: unknown method or unreadable P6 image\n");
+        return 2;
+    }
+    if (luma) im = erd::luma_of(im);
+    o.density = std::atof(argv[i + 1]);
+    o.density_given = true;
+    erd::GenerateResult r;
+    const erd::Status st = method->run(im, o, &r);
+    if (!st) {
+        std::fprintf(stderr, "eval_colour: %s\n", st.message.c_str());
+        return 1;
+    }
+    double sse = 0;
+    for (int c = 0; c < im.channels; ++c) sse += channel_sse(r.model, im, c);
+    const double mse = sse / (double(im.pixels()) * im.channels);
+    std::printf("%.4f %zu\n", 10.0 * std::log10(255.0 * 255.0 / mse), r.model.size());
+    return 0;
+}
