@@ -165,3 +165,33 @@ done
 for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pgm"; done
 rm -f "$OUT"/synth*.pgm "$OUT"/height*.pgm "$OUT"/scale.*
 # ---------------------------------------------------------------------------------------------
+# ---------------------------------------------------------------------------------------------
+# colour (issue 17): each method on kodim03 (768 x 512) at 1% in colour beside the same method on
+# the image's luma, side by side in one run: whole process of tools/eval_colour.cpp --no-psnr
+# (read the P6, mesh; the library's methods, until the erd program reads colour), CPU medians,
+# peak RSS, and with CALLGRIND=1 the instruction counts. Targets: colour <= 1.6x the CPU time
+# (instructions) and <= 1.5x the peak memory of gray.
+COLOUR_IMG=$IMAGES/color/kodim03.ppm
+if [[ -f $COLOUR_IMG && -f $(dirname "$ERD")/liberd.a ]]; then
+    EVC=$(dirname "$ERD")/eval_colour
+    if ${CXX:-g++} -O2 -std=c++17 -I. tools/eval_colour.cpp "$(dirname "$ERD")/liberd.a" -o "$EVC"; then
+        for m in gpi ed erded erdgpi; do
+            read -r _ gcpu grss < <("$TIMEIT" "$RUNS" "$EVC" --no-psnr --luma "$m" 1 "$COLOUR_IMG" || echo "- - -")
+            read -r _ ccpu crss < <("$TIMEIT" "$RUNS" "$EVC" --no-psnr "$m" 1 "$COLOUR_IMG" || echo "- - -")
+            ir=""
+            if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
+                gi=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EVC" --no-psnr --luma "$m" 1 "$COLOUR_IMG" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
+                ci=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EVC" --no-psnr "$m" 1 "$COLOUR_IMG" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
+                ir=$(awk -v g="$gi" -v c="$ci" 'BEGIN { printf "  instr gray %.0fM colour %.0fM = %.2fx", g / 1e6, c / 1e6, c / g }')
+            fi
+            printf 'colour %-7s kodim03 1%%: cpu gray %6s ms colour %6s ms = %sx  rss gray %6s KB colour %6s KB = %sx%s\n' \
+                "$m" "$gcpu" "$ccpu" "$(awk -v g="$gcpu" -v c="$ccpu" 'BEGIN { if (g > 0) printf "%.2f", c / g }')" \
+                "$grss" "$crss" "$(awk -v g="$grss" -v c="$crss" 'BEGIN { if (g > 0) printf "%.2f", c / g }')" "$ir"
+        done
+    else
+        echo "colour: tools/eval_colour.cpp did not build; skipped"
+    fi
+else
+    echo "colour: $COLOUR_IMG or $(dirname "$ERD")/liberd.a missing; skipped"
+fi
+# ---------------------------------------------------------------------------------------------

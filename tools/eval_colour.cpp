@@ -3,11 +3,12 @@
 //
 //   eval_colour [flags] METHOD DENSITY IMAGE.ppm
 //     --luma               run the gray method on the image's luma (the cost baseline)
-//     --max-channel        greedy candidate by the largest channel error (ColourChoices)
+//     --sum-channels       greedy candidate by the sum of squared channel errors (ColourChoices)
 //     --density sum|max|luma   ED/ERDED MMSODD over the channels
 //     --shared             one wedge line-search position for all channels
 //     --luma-greedy        ERDGPI's greedy loop on the luma (the cheap alternative)
 //     --fit N              wedge refit iterations (GenerateOptions::wedge_fit)
+//     --no-psnr            stop after the method (bench/run.sh: load and mesh only); prints N
 // Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
 // the model's reconstruction, made channel by channel with the gray reconstruction.
 #include <cmath>
@@ -64,12 +65,13 @@ double channel_sse(const erd::Model& m, const erd::Image& im, int c) {
 
 int main(int argc, char** argv) {
     erd::GenerateOptions o;
-    bool luma = false;
+    bool luma = false, measure = true;
     int i = 1;
     for (; i < argc && argv[i][0] == '-' && argv[i][1] == '-'; ++i) {
         const std::string a = argv[i];
         if (a == "--luma") luma = true;
-        else if (a == "--max-channel") o.colour.max_channel_error = true;
+        else if (a == "--no-psnr") measure = false;
+        else if (a == "--sum-channels") o.colour.max_channel_error = false;
         else if (a == "--shared") o.colour.shared_wedge_position = true;
         else if (a == "--luma-greedy") o.colour.greedy_on_luma = true;
         else if (a == "--fit" && i + 1 < argc) o.wedge_fit = std::atoi(argv[++i]);
@@ -99,6 +101,10 @@ int main(int argc, char** argv) {
     if (!st) {
         std::fprintf(stderr, "eval_colour: %s\n", st.message.c_str());
         return 1;
+    }
+    if (!measure) {
+        std::printf("%zu\n", r.model.size());
+        return 0;
     }
     double sse = 0;
     for (int c = 0; c < im.channels; ++c) sse += channel_sse(r.model, im, c);

@@ -29,7 +29,7 @@ run_case() {
     local v=$1 img=$2 d=$3 m=${1%%+*} flags=()
     case $v in
         *+luma) flags=(--luma-greedy) ;;
-        *+max) flags=(--max-channel) ;;
+        *+sum) flags=(--sum-channels) ;;
         *+dmax) flags=(--density max) ;;
         *+dluma) flags=(--density luma) ;;
         *+shared) flags=(--shared) ;;
@@ -47,7 +47,7 @@ echo "eval_colour: ${#cases[@]} cases, $JOBS at a time"
 printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"$OUT/colour_raw.txt"
 if [[ ${CHOICES:-0} == 1 ]]; then
     cases=()
-    for v in gpi+max erdgpi+max ed+dmax ed+dluma erded+dmax erded+dluma erdgpi+shared erded+shared erdgpi+nofit erded+nofit; do
+    for v in gpi+sum erdgpi+sum ed+dmax ed+dluma erded+dmax erded+dluma erdgpi+shared erded+shared erdgpi+nofit erded+nofit; do
         for img in "${imgs[@]}"; do cases+=("$v $img 1"); done
     done
     printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"$OUT/colour_choices.txt"

@@ -25,10 +25,16 @@ void ErdChannels::assign_all(const Cdt& cdt) {
 }
 
 void ErdChannels::fit(const Cdt& cdt, int iterations, WedgeFitStats* stats) {
-    *stats = WedgeFitStats();
+    std::vector<const Image*> planes;
+    std::vector<ErdModel*> models;
     for (std::size_t c = 0; c < models_.size(); ++c) {
-        WedgeFitStats s;
-        fit_wedge_values(cdt, planes_[c], iterations, models_[c].get(), &s);
+        planes.push_back(&planes_[c]);
+        models.push_back(models_[c].get());
+    }
+    std::vector<WedgeFitStats> each;
+    fit_wedge_values(cdt, planes, iterations, models, &each);
+    *stats = WedgeFitStats();
+    for (const WedgeFitStats& s : each) {
         stats->iterations = s.iterations > stats->iterations ? s.iterations : stats->iterations;
         stats->sse_before += s.sse_before;
         stats->sse_after += s.sse_after;

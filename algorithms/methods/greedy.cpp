@@ -24,7 +24,7 @@ const char* to_string(GreedyStop s) {
 
 namespace {
 
-constexpr int kMaxChannels = 4;  // the colour scan's per-channel arrays
+constexpr int kMaxChannels = 3;  // the colour scan's per-channel arrays (RGB)
 
 // Per-face bookkeeping: the face's squared-error sum over the pixels it owns and its candidate.
 struct FaceState {
@@ -74,6 +74,36 @@ inline void step_span(std::int32_t x0, std::int32_t x1, double v, double dv, Vis
         v += dv;
     }
     for (; x <= x1; ++x, v += dv) visit(x, v);
+}
+
+// The colour scan of one span (Refiner::rescan_colour), C = 3 channels: the sum of the squared
+// channel errors and the candidate by their largest (ByMax) or their sum. Round: values rounded
+// and clamped as reconstruction writes them.
+template <bool Round, bool ByMax>
+inline bool scan_colour(const std::uint16_t* s, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
+                        double* v, const double* dv, double maxval, double* sum, double* best, std::int32_t* bx) {
+    double acc = 0.0, b = *best;
+    bool moved = false;
+    for (std::int32_t x = x0; x <= x1; ++x, s += 3) {
+        double e2 = 0.0, m2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double a = Round ? double(rounded<Rounding::clamp>(v[c], maxval)) : v[c];
+            const double e = double(s[c]) - a, ec = e * e;
+            e2 += ec;
+            if (ByMax) m2 = ec > m2 ? ec : m2;
+            v[c] += dv[c];
+        }
+        acc += e2;
+        const double metric = ByMax ? m2 : e2;
+        if (metric > b && !banned[x]) {
+            b = metric;
+            *bx = x;
+            moved = true;
+        }
+    }
+    *sum += acc;
+    *best = b;
+    return moved;
 }
 
 // Squared errors in 32 bits: |sample - r| <= 65535, and 65535^2 < 2^32.
@@ -468,23 +498,9 @@ private:
                 }
                 const std::uint16_t* s = &image_.samples[(std::size_t(j) * width + std::size_t(lo)) * std::size_t(C)];
                 const std::uint8_t* banned = &banned_[std::size_t(j) * width];
-                for (std::int32_t x = lo; x <= hi; ++x, s += C) {
-                    double e2 = 0.0, m2 = 0.0;
-                    for (int c = 0; c < C; ++c) {
-                        const double a = round ? double(rounded<Rounding::clamp>(v[c], maxval)) : v[c];
-                        const double e = double(s[c]) - a, ec = e * e;
-                        e2 += ec;
-                        m2 = ec > m2 ? ec : m2;
-                        v[c] += dv[c];
-                    }
-                    sum += e2;
-                    const double metric = by_max ? m2 : e2;
-                    if (metric > best && !banned[x]) {
-                        best = metric;
-                        bx = x;
-                        by = j;
-                    }
-                }
+                const auto scan = round ? (by_max ? scan_colour<true, true> : scan_colour<true, false>)
+                                        : (by_max ? scan_colour<false, true> : scan_colour<false, false>);
+                if (scan(s, banned, lo, hi, v, dv, maxval, &sum, &best, &bx)) by = j;
             }
         }
         if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
@@ -543,7 +559,7 @@ Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const Gre
     *stats = GreedyStats();
     if (cdt.max_x() != 2 * (image.width - 1) || cdt.max_y() != 2 * (image.height - 1))
         return Status::failure("greedy_refine: triangulation and image sizes differ");
-    if (model.channels() != image.channels || image.channels < 1 || image.channels > kMaxChannels)
+    if (model.channels() != image.channels || (image.channels != 1 && image.channels != kMaxChannels))
         return Status::failure("greedy_refine: the model's and the image's channel counts differ");
     if (image.channels == 1) {
         Refiner r(cdt, image, model, options);

@@ -21,9 +21,9 @@ namespace erd {
 // The defaults are the measured choices (docs/DECISIONS.md "Colour methods"); the other values
 // are kept for that measurement (tools/eval_colour.sh). Gray images ignore all of it.
 struct ColourChoices {
-    // Greedy candidate (GPI, ERDGPI): the pixel with the largest sum of squared channel errors
-    // (false) or the largest single channel error (true). Faces are keyed on the sum either way.
-    bool max_channel_error = false;
+    // Greedy candidate (GPI, ERDGPI): the pixel with the largest single channel error (true) or
+    // the largest sum of squared channel errors (false). Faces are keyed on the sum either way.
+    bool max_channel_error = true;
     ColourDensity density = ColourDensity::sum;  // ED's and ERDED's MMSODD over the channels
     // Wedge values: each channel's own line search on its own MMSODD (false), or one position
     // per wedge from the MMSODD combined as `density` says, read in every channel (true).

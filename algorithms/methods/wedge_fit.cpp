@@ -33,12 +33,14 @@ struct FaceSystem {
     }
 };
 
-// Assembles the face systems of every face that owns at least one pixel.
-std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const ErdModel& model) {
+// Assembles the face systems of every face that owns at least one pixel, for each of the N
+// images (one, or the channel planes of a colour image: their Gram matrices are the same, made
+// once); faces[k] holds image k's.
+template <int N>
+void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces) {
     const Lattice lattice = Lattice::pixels();
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
-    std::vector<FaceSystem> faces;
-    faces.reserve(cdt.face_count());
+    for (int k = 0; k < N; ++k) faces[k].reserve(cdt.face_count());
     std::vector<Span> spans;
     for (FaceInd f = 0; f < cdt.face_count(); ++f) {
         const EdgeInd e = 3 * f;
@@ -52,34 +54,40 @@ std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const E
         // small integer stepped by 2, and dropping l1's "0 +" changes at most the sign of a zero
         // weight, which no sum below can see (the sums start at +0, and +0 + -0 = +0).
         const double gx0 = l0.gx, gx1 = l1.gx;
-        double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0 = 0, h1 = 0, h2 = 0;
-        std::uint64_t bb = 0;  // sum b^2 in integers: exact, and what the double sum gave while exact
+        double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0[N] = {}, h1[N] = {}, h2[N] = {};
+        std::uint64_t bb[N] = {};  // sum b^2 in integers: exact, and what the double sum gave while exact
         for (const Span& sp : spans) {
             const double Y = double(2 * sp.y);
             const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
-            const std::uint16_t* px = &image.samples[std::size_t(sp.y) * std::size_t(image.width)];
+            const std::uint16_t* px[N];
+            for (int k = 0; k < N; ++k) px[k] = &images[k]->samples[std::size_t(sp.y) * std::size_t(images[k]->width)];
             double a = double(2 * sp.x_begin) - l0.x0;
             for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, a += 2.0) {
                 const double w0 = (1.0 + gx0 * a) + t0, w1 = gx1 * a + t1;
-                const double w2 = 1.0 - w0 - w1, b = double(px[i]);
+                const double w2 = 1.0 - w0 - w1;
                 g00 += w0 * w0;
                 g01 += w0 * w1;
                 g02 += w0 * w2;
                 g11 += w1 * w1;
                 g12 += w1 * w2;
                 g22 += w2 * w2;
-                h0 += b * w0;
-                h1 += b * w1;
-                h2 += b * w2;
-                bb += std::uint64_t(px[i]) * px[i];
+                for (int k = 0; k < N; ++k) {
+                    const double b = double(px[k][i]);
+                    h0[k] += b * w0;
+                    h1[k] += b * w1;
+                    h2[k] += b * w2;
+                    bb[k] += std::uint64_t(px[k][i]) * px[k][i];
+                }
             }
         }
-        faces.push_back({{model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1), model.corner_entry(cdt, e + 2)},
-                         {g00, g01, g02, g11, g12, g22},
-                         {h0, h1, h2},
-                         double(bb)});
+        const std::uint32_t entry[3] = {model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1),
+                                        model.corner_entry(cdt, e + 2)};
+        for (int k = 0; k < N; ++k)
+            faces[k].push_back({{entry[0], entry[1], entry[2]},
+                                {g00, g01, g02, g11, g12, g22},
+                                {h0[k], h1[k], h2[k]},
+                                double(bb[k])});
     }
-    return faces;
 }
 
 double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>& x) {
@@ -88,10 +96,9 @@ double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>
     return sse > 0 ? sse : 0.0;  // an exact fit can leave a rounding residue below zero
 }
 
-}  // namespace
-
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats) {
-    const std::vector<FaceSystem> faces = face_systems(cdt, image, *model);
+// The CGLS refit of model's values from its face systems.
+void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterations, ErdModel* model,
+           WedgeFitStats* stats) {
     const std::size_t n = model->entry_count();
 
     // out = A^T A v, assembled from the face Gram matrices.
@@ -153,6 +160,28 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
         stats->iterations = it;
         stats->sse_after = total_sse(faces, x);
     }
+}
+
+}  // namespace
+
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats) {
+    std::vector<FaceSystem> faces;
+    const Image* one = &image;
+    face_systems<1>(cdt, &one, *model, &faces);
+    solve(faces, image, iterations, model, stats);
+}
+
+void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, int iterations,
+                      const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats) {
+    stats->assign(planes.size(), WedgeFitStats());
+    if (planes.size() != 3 || models.size() != 3) {
+        for (std::size_t c = 0; c < planes.size() && c < models.size(); ++c)
+            fit_wedge_values(cdt, *planes[c], iterations, models[c], &(*stats)[c]);
+        return;
+    }
+    std::vector<FaceSystem> faces[3];
+    face_systems<3>(cdt, planes.data(), *models[0], faces);
+    for (std::size_t c = 0; c < 3; ++c) solve(faces[c], *planes[c], iterations, models[c], &(*stats)[c]);
 }
 
 }  // namespace erd

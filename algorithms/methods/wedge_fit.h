@@ -10,6 +10,7 @@
 // A value no pixel depends on keeps its thesis value. Results are clamped to [0, maxval].
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "algorithms/model/erd_model.h"
 #include "algorithms/imaging/image.h"
@@ -20,5 +21,10 @@ namespace erd {
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats);
+
+// The same for the channels of a colour image on one triangulation (models[c] on planes[c], all
+// with the same wedges): each channel's refit as above, the pixel pass shared.
+void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, int iterations,
+                      const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats);
 
 }  // namespace erd
