@@ -11,6 +11,7 @@
 #include <string>
 
 #include "algorithms/imaging/colour.h"
+#include "algorithms/imaging/mmsodd.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/reconstruct.h"
 #include "tests/erd_check.h"
@@ -116,6 +117,8 @@ TEST_CASE("colour methods: luma plane and combined MMSODD", "[colour][imaging]")
     const Image c = colour_synthetic(20, 16, 1);
     const Grid<double> sum = colour_mmsodd(c, 3, ColourDensity::sum), mx = colour_mmsodd(c, 3, ColourDensity::max);
     const Grid<double> r = colour_mmsodd(channel_plane(c, 0), 3, ColourDensity::sum);
+    CHECK(mmsodd_channel(c, 0, 3).data == r.data);
+    CHECK(mmsodd_channel(c, 2, 5).data == mmsodd(channel_plane(c, 2), 5).data);
     for (std::size_t i = 0; i < sum.size(); ++i) {
         CHECK(mx.data[i] >= r.data[i]);
         CHECK(sum.data[i] >= mx.data[i]);

@@ -13,7 +13,8 @@
 # supersampled approximation) for the reproduction targets, and
 # "erd default" (our least-squares wedge refit, alpha in [0.75, 1], edge radius 1 pixel).
 # Variant names: METHOD (erd default) and METHOD+thesis. tools/eval_startup.sh (Table 3.4) and
-# tools/eval_hard.sh (hard-edged pictures, issue 15) run last.
+# tools/eval_hard.sh (hard-edged pictures, issue 15) and tools/eval_colour.sh (colour images,
+# issue 17) run last.
 set -u
 ERD=${1:-build/erd}
 IMAGES=${2:-../shared/images}
@@ -183,4 +184,6 @@ echo "eval: wrote $RESULTS"
 [[ -x tools/eval_startup.sh || -f tools/eval_startup.sh ]] && bash tools/eval_startup.sh "$ERD" "$IMAGES"
 # The hard-edged table (issue 15): its own marked section too.
 bash tools/eval_hard.sh "$ERD" "$IMAGES"
+# The colour table (issue 17): its own marked section too.
+bash tools/eval_colour.sh "$(dirname "$ERD")" "$IMAGES"
 grep -E "^(## |Met|Median)" "$RESULTS"

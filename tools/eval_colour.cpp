@@ -8,6 +8,7 @@
 //     --shared             one wedge line-search position for all channels
 //     --luma-greedy        ERDGPI's greedy loop on the luma (the cheap alternative)
 //     --fit N              wedge refit iterations (GenerateOptions::wedge_fit)
+//     --real               greedy errors against the real-valued planes (round_values off)
 //     --no-psnr            stop after the method (bench/run.sh: load and mesh only); prints N
 // Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
 // the model's reconstruction, made channel by channel with the gray reconstruction.
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
         const std::string a = argv[i];
         if (a == "--luma") luma = true;
         else if (a == "--no-psnr") measure = false;
+        else if (a == "--real") o.round_values = false;
         else if (a == "--sum-channels") o.colour.max_channel_error = false;
         else if (a == "--shared") o.colour.shared_wedge_position = true;
         else if (a == "--luma-greedy") o.colour.greedy_on_luma = true;

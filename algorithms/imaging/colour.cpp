@@ -20,9 +20,9 @@ Image luma_of(const Image& im) {
 Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity how) {
     if (im.channels == 1) return mmsodd(im, smoothing_order);
     if (how == ColourDensity::luma) return mmsodd(luma_of(im), smoothing_order);
-    Grid<double> d = mmsodd(channel_plane(im, 0), smoothing_order);
+    Grid<double> d = mmsodd_channel(im, 0, smoothing_order);
     for (int c = 1; c < im.channels; ++c) {
-        const Grid<double> dc = mmsodd(channel_plane(im, c), smoothing_order);
+        const Grid<double> dc = mmsodd_channel(im, c, smoothing_order);
         for (std::size_t i = 0; i < d.size(); ++i)
             d.data[i] = how == ColourDensity::sum ? d.data[i] + dc.data[i] : std::max(d.data[i], dc.data[i]);
     }

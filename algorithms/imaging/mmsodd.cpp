@@ -18,9 +18,10 @@ double mmsodd_value(double fxx, double fyy, double fxy) {
 
 namespace {
 
-// The zero-border MMSODD of a w x h row-major array of samples (double or 16-bit integers).
+// The zero-border MMSODD of a w x h row-major array of samples (double or 16-bit integers),
+// sample (x, y) at samples[(y*w + x) * stride] (stride > 1: one channel of interleaved samples).
 template <class T>
-Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<double>& b) {
+Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<double>& b, std::size_t stride = 1) {
     Grid<double> out(w, h);
     if (w <= 0 || h <= 0) return out;
 
@@ -45,8 +46,9 @@ Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<doubl
     int next = 0;  // the next input row to smooth along x
     for (int j = -1; j <= h; ++j) {
         for (; next < h && next <= j + c; ++next) {
-            const T* row = samples + std::size_t(next) * std::size_t(w);
-            std::copy(row, row + w, padded.begin() + c + 1);
+            const T* row = samples + std::size_t(next) * std::size_t(w) * stride;
+            if (stride == 1) std::copy(row, row + w, padded.begin() + c + 1);
+            else for (int x = 0; x < w; ++x) padded[std::size_t(x + c + 1)] = double(row[std::size_t(x) * stride]);
             // Smoothed sample x - 1 = sum_k b[k] f(x - 1 + c - k) = sum_k b[k] padded[x + 2c - k].
             for (int k = 0; k < span; ++k) src[std::size_t(k)] = padded.data() + 2 * c - k;
             weighted_rows(src.data(), b.data(), span, hrow(next), int(ew));
@@ -106,6 +108,11 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border) 
 
 Grid<double> mmsodd(const Image& im, int smoothing_order) {
     return mmsodd_zero(im.samples.data(), im.width, im.height, smoothing_taps(smoothing_order));
+}
+
+Grid<double> mmsodd_channel(const Image& im, int channel, int smoothing_order) {
+    return mmsodd_zero(im.samples.data() + channel, im.width, im.height, smoothing_taps(smoothing_order),
+                       std::size_t(im.channels));
 }
 
 }  // namespace erd

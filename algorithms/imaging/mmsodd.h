@@ -24,6 +24,10 @@ Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border =
 // mmsodd(to_grid(im), smoothing_order) without the image-sized copy in doubles.
 Grid<double> mmsodd(const Image& im, int smoothing_order);
 
+// The same on channel `channel` of a colour image: mmsodd(channel_plane(im, channel), order)
+// without the plane's copy.
+Grid<double> mmsodd_channel(const Image& im, int channel, int smoothing_order);
+
 // The MMSODD by its definition: the passes above with whole-image filters, any border, four
 // image-sized temporaries. mmsodd() serves Border::replicate with it; tests use it as the
 // reference for the one-sweep form of the zero border.

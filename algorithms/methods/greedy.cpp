@@ -81,20 +81,24 @@ inline void step_span(std::int32_t x0, std::int32_t x1, double v, double dv, Vis
 // and clamped as reconstruction writes them.
 template <bool Round, bool ByMax>
 inline bool scan_colour(const std::uint16_t* s, const std::uint8_t* banned, std::int32_t x0, std::int32_t x1,
-                        double* v, const double* dv, double maxval, double* sum, double* best, std::int32_t* bx) {
+                        const double* v, const double* dv, double maxval, double* sum, double* best, std::int32_t* bx) {
+    // The running values in locals (not through v, which the stores to *sum could alias).
+    double v0 = v[0], v1 = v[1], v2 = v[2];
+    const double d0 = dv[0], d1 = dv[1], d2 = dv[2];
     double acc = 0.0, b = *best;
     bool moved = false;
+    const auto sq = [maxval](std::uint16_t sample, double a) {
+        const double e = Round ? double(std::int32_t(sample) - rounded<Rounding::clamp>(a, maxval)) : double(sample) - a;
+        return e * e;
+    };
     for (std::int32_t x = x0; x <= x1; ++x, s += 3) {
-        double e2 = 0.0, m2 = 0.0;
-        for (int c = 0; c < 3; ++c) {
-            const double a = Round ? double(rounded<Rounding::clamp>(v[c], maxval)) : v[c];
-            const double e = double(s[c]) - a, ec = e * e;
-            e2 += ec;
-            if (ByMax) m2 = ec > m2 ? ec : m2;
-            v[c] += dv[c];
-        }
-        acc += e2;
-        const double metric = ByMax ? m2 : e2;
+        const double e0 = sq(s[0], v0), e1 = sq(s[1], v1), e2 = sq(s[2], v2);
+        v0 += d0;
+        v1 += d1;
+        v2 += d2;
+        const double t = (e0 + e1) + e2;
+        acc += t;
+        const double metric = ByMax ? std::max(std::max(e0, e1), e2) : t;
         if (metric > b && !banned[x]) {
             b = metric;
             *bx = x;
@@ -381,6 +385,19 @@ private:
         return s;
     }
 
+    // Calls row(j, lo, hi) for each row j of the pixels the triangle a, b, c owns, columns lo..hi.
+    template <class Row>
+    void owned_rows(LatticePoint a, LatticePoint b, LatticePoint c, Row&& row) const {
+        OwnedRows rows(Lattice::pixels(), domain_, a, b, c);
+        for (RowRun part; rows.next(&part);) {
+            for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                std::int64_t lo64, hi64;
+                run.columns(&lo64, &hi64);
+                if (lo64 <= hi64) row(std::int32_t(run.j), std::int32_t(lo64), std::int32_t(hi64));
+            }
+        }
+    }
+
     // Scans the pixels face f owns against the model's plane: new sum and candidate.
     void rescan(FaceInd f) {
         if (channels_ > 1) return rescan_colour(f);
@@ -406,20 +423,13 @@ private:
         const std::uint8_t* const banned = banned_.data();
         const std::size_t width = std::size_t(image_.width);
         auto walk = [&](auto with_value, auto&& scan_row) {
-            OwnedRows rows(Lattice::pixels(), domain_, p[0], p[1], p[2]);
-            for (RowRun part; rows.next(&part);) {
-                for (RowRun run = part; run.j <= run.j_end; run.step()) {
-                    std::int64_t lo64, hi64;
-                    run.columns(&lo64, &hi64);
-                    if (lo64 > hi64) continue;
-                    const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
-                    const std::size_t row = std::size_t(j) * width;
-                    if constexpr (decltype(with_value)::value)
-                        scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
-                    else
-                        scan_row(samples + row, banned + row, j, lo, hi);
-                }
-            }
+            owned_rows(p[0], p[1], p[2], [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+                const std::size_t row = std::size_t(j) * width;
+                if constexpr (decltype(with_value)::value)
+                    scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+                else
+                    scan_row(samples + row, banned + row, j, lo, hi);
+            });
         };
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
@@ -484,25 +494,18 @@ private:
         const std::size_t width = std::size_t(image_.width);
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
-        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
-        for (RowRun part; rows.next(&part);) {
-            for (RowRun run = part; run.j <= run.j_end; run.step()) {
-                std::int64_t lo64, hi64;
-                run.columns(&lo64, &hi64);
-                if (lo64 > hi64) continue;
-                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
-                double v[kMaxChannels], dv[kMaxChannels];
-                for (int c = 0; c < C; ++c) {
-                    v[c] = planes[c].at(double(2 * lo), double(2 * j));
-                    dv[c] = 2.0 * planes[c].gx;
-                }
-                const std::uint16_t* s = &image_.samples[(std::size_t(j) * width + std::size_t(lo)) * std::size_t(C)];
-                const std::uint8_t* banned = &banned_[std::size_t(j) * width];
-                const auto scan = round ? (by_max ? scan_colour<true, true> : scan_colour<true, false>)
-                                        : (by_max ? scan_colour<false, true> : scan_colour<false, false>);
-                if (scan(s, banned, lo, hi, v, dv, maxval, &sum, &best, &bx)) by = j;
+        owned_rows(p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            double v[kMaxChannels], dv[kMaxChannels];
+            for (int c = 0; c < C; ++c) {
+                v[c] = planes[c].at(double(2 * lo), double(2 * j));
+                dv[c] = 2.0 * planes[c].gx;
             }
-        }
+            const std::uint16_t* s = &image_.samples[(std::size_t(j) * width + std::size_t(lo)) * std::size_t(C)];
+            const std::uint8_t* banned = &banned_[std::size_t(j) * width];
+            const auto scan = round ? (by_max ? scan_colour<true, true> : scan_colour<true, false>)
+                                    : (by_max ? scan_colour<false, true> : scan_colour<false, false>);
+            if (scan(s, banned, lo, hi, v, dv, maxval, &sum, &best, &bx)) by = j;
+        });
         if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
         settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
     }
