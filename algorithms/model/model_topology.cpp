@@ -82,17 +82,14 @@ Status build_topology(const Model& m, ModelTopology* t) {
     return Status::success();
 }
 
-double corner_value(const Model& m, std::uint32_t h, int c) {
-    const std::size_t f = h / 3, k = h % 3, C = std::size_t(m.channels);
-    if (m.kind == ModelKind::erd && f * C < m.corner_values.size()) return m.corner_values[f * C + std::size_t(c)][k];
-    return m.values[std::size_t(m.faces[f][k]) * C + std::size_t(c)];
-}
-
 bool is_discontinuity(const Model& m, const ModelTopology& t, std::uint32_t h) {
     if (m.kind != ModelKind::erd) return false;
     const std::uint32_t o = t.twin[h];
     if (o == kNoHalfEdge) return false;
     // h runs u->w in one face, o runs w->u in the other; a jump in any channel counts.
+    if (m.channels == 1)
+        return corner_value(m, h) != corner_value(m, ModelTopology::next(o)) ||
+               corner_value(m, ModelTopology::next(h)) != corner_value(m, o);
     for (int c = 0; c < m.channels; ++c)
         if (corner_value(m, h, c) != corner_value(m, ModelTopology::next(o), c) ||
             corner_value(m, ModelTopology::next(h), c) != corner_value(m, o, c))
@@ -104,7 +101,7 @@ VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t
     const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1];
     if (b == e) return {0, m.values[std::size_t(v) * std::size_t(m.channels) + std::size_t(channel)]};
     bool uniform = true;
-    for (int c = 0; c < m.channels && uniform; ++c) {
+    for (int c = 0; c < m.channels && uniform; ++c) {  // every channel: the wedges are those of all of them
         const double first = corner_value(m, t.corners[b], c);
         for (std::uint32_t i = b + 1; i < e && uniform; ++i) uniform = corner_value(m, t.corners[i], c) == first;
     }

@@ -37,7 +37,11 @@ Status build_topology(const Model& m, ModelTopology* t);
 
 // Value in channel c of face h/3 at the vertex where half-edge (corner) h starts: values for a
 // basic model, corner_values for an ERD model.
-double corner_value(const Model& m, std::uint32_t h, int c = 0);
+inline double corner_value(const Model& m, std::uint32_t h, int c = 0) {
+    const std::size_t f = h / 3, k = h % 3, C = std::size_t(m.channels);
+    if (m.kind == ModelKind::erd && f * C < m.corner_values.size()) return m.corner_values[f * C + std::size_t(c)][k];
+    return m.values[std::size_t(m.faces[f][k]) * C + std::size_t(c)];
+}
 
 // True when half-edge h and its twin separate different values in some channel (ERD models
 // only; false on the border and for basic models). All channels share the discontinuities.

@@ -453,7 +453,7 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const std::vector<std::uint32_t> band_faces = group_by_band(m.faces.size(), nb, face_bands, &face_first);
     const std::vector<LateTerm> late = late_terms(m, p);
     const std::vector<std::uint32_t> band_late =
-        group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn(late[i].sample / C / W / band); }, &late_first);
+        group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn((C == 1 ? late[i].sample : late[i].sample / C) / W / band); }, &late_first);
     const std::size_t plane = band * W;
     std::vector<double> acc(plane * C);
     std::vector<Span> spans;
@@ -466,12 +466,14 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
             // The band's sub-rows only: a face spanning several bands is scanned in pieces.
             scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans, std::int32_t(4 * row0),
                           std::int32_t(4 * (row0 + rows) - 1));
-            for (std::size_t c = 0; c < C; ++c)
-                add_spans(p.planes[f * C + c], spans.data(), spans.size(), acc.data() + c * plane, W, row0);
+            if (C == 1) add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
+            else
+                for (std::size_t c = 0; c < C; ++c) add_spans(p.planes[f * C + c], spans.data(), spans.size(), acc.data() + c * plane, W, row0);
         }
         for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) {
             const LateTerm& t = late[band_late[k]];
-            acc[(t.sample % C) * plane + t.sample / C - row0 * W] += t.add;
+            if (C == 1) acc[t.sample - row0 * W] += t.add;
+            else acc[(t.sample % C) * plane + t.sample / C - row0 * W] += t.add;
         }
         std::uint16_t* dst = out->samples.data() + row0 * W * C;
         const auto finish = [&](std::size_t c, auto stride) {
