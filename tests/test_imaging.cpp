@@ -472,7 +472,7 @@ TEST_CASE("Douglas-Peucker keeps exactly the expected points", "[imaging]") {
         Polyline zig;
         std::size_t kept = 0;
     } job;
-    for (int i = 0; i < 10000; ++i) job.zig.push_back({i, (i % 2) * i});
+    for (int i = 0; i < 10000; ++i) job.zig.push_back({i, (i % 2) * (i + 4)});
     pthread_attr_t attr;
     pthread_attr_init(&attr);
     REQUIRE(pthread_attr_setstacksize(&attr, 128 * 1024) == 0);
