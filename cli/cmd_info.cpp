@@ -52,13 +52,12 @@ static int run_info(const Args& args, const Reporter& rep) {
     if (args.has("json")) {
         JsonObject j;
         j.str("file", path).str("format", format_key(fmt)).integer("width", im.width).integer("height", im.height);
-        j.integer("maxval", im.maxval).integer("bits", im.bits()).integer("channels", im.channels).integer("min", lo).integer("max", hi).num("mean", mean);
+        j.integer("maxval", im.maxval).integer("bits", im.bits()).integer("min", lo).integer("max", hi).num("mean", mean);
         std::printf("%s\n", j.text().c_str());
     } else {
-        std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\nmaxval:  %u\nbits:    %d\nchannels: %d (%s)\n"
+        std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\nmaxval:  %u\nbits:    %d\n"
                     "samples: min %u, max %u, mean %.4f\n",
-                    escape_name(path).c_str(), format_name(fmt), im.width, im.height, im.pixels(), im.maxval, im.bits(), im.channels,
-                    im.channels == 3 ? "RGB" : "gray", lo, hi, mean);
+                    escape_name(path).c_str(), format_name(fmt), im.width, im.height, im.pixels(), im.maxval, im.bits(), lo, hi, mean);
     }
     return 0;
 }
