@@ -182,9 +182,10 @@ std::uint16_t to_sample(double v, double maxval) {
 }
 
 // Moves the points of lattice l on discontinuity edges to the mean of the two sides:
-// set(i, j, c, mean, owner_value) is called for each point and channel c. Along the edge each side is the linear
-// interpolation of its corner values at the endpoints, computed from the exact fraction t of the
-// way along the edge, so that e.g. sides 73 and 54 give exactly 63.5 (which rounds up).
+// set(i, j, c, mean, owner_value) is called for each point and channel c. Along the edge each
+// side is the linear interpolation of its corner values at the endpoints, computed from the exact
+// fraction t of the way along the edge, so that e.g. sides 73 and 54 give exactly 63.5 (which
+// rounds up).
 template <class Set>
 void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Set set) {
     if (m.kind != ModelKind::erd) return;
