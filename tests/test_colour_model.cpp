@@ -18,6 +18,7 @@
 #include "algorithms/output/render.h"
 #include "api/erd.h"
 #include "tests/erd_check.h"
+#include "tests/erd_run.h"
 
 using namespace erd;
 using erd::test::check_model;
@@ -336,4 +337,21 @@ TEST_CASE("API: colour views in, colour reconstructions out", "[colour][api]") {
     c.stride = 7;
     rgb[5] = 300;
     CHECK(api::psnr(c, c, &db).message == "original: sample 300 at (1,0) channel 2 exceeds maxval 255");
+}
+
+TEST_CASE("colour CLI: a colour .erd on stdin reads as from a file (the stream framer)", "[colour]") {
+    if (!erd_test::need_binary()) return;
+    const Model m = colourise(gray_model("erdgpi", 300), kOffsets);
+    std::string text;
+    REQUIRE(write_model(m, &text).ok());
+    REQUIRE(text.size() > 4 * 4096);  // past the framer's first trial parses
+    erd_test::TempDir d;
+    erd_test::spit(d.file("c.erd"), text);
+    const erd_test::RunResult file = erd_test::run_erd("reconstruct " + erd_test::sh_quote(d.file("c.erd")));
+    const erd_test::RunResult in = erd_test::run_erd("reconstruct < " + erd_test::sh_quote(d.file("c.erd")));
+    CHECK(file.status == 0);
+    CHECK(in.status == 0);
+    CHECK(in.err.empty());
+    CHECK(in.out == file.out);
+    CHECK(file.out.rfind("P6\n48 40\n255\n", 0) == 0);
 }
