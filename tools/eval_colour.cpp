@@ -11,7 +11,7 @@
 //     --real               greedy errors against the real-valued planes (round_values off)
 //     --no-psnr            stop after the method (bench/run.sh: load and mesh only); prints N
 // Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
-// the model's reconstruction, made channel by channel with the gray reconstruction.
+// the model's reconstruction.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,27 +39,6 @@ bool read_p6(const char* path, erd::Image* im) {
     }
     std::fclose(f);
     return ok && w > 0;
-}
-
-// Squared error of channel c of m against channel c of im, by the gray reconstruction.
-double channel_sse(const erd::Model& m, const erd::Image& im, int c) {
-    erd::Model g = m;
-    const std::size_t C = std::size_t(m.channels);
-    g.channels = 1;
-    g.values.resize(m.vertices.size());
-    for (std::size_t v = 0; v < g.values.size(); ++v) g.values[v] = m.values[v * C + std::size_t(c)];
-    if (!m.corner_values.empty()) {
-        g.corner_values.resize(m.faces.size());
-        for (std::size_t f = 0; f < m.faces.size(); ++f) g.corner_values[f] = m.corner_values[f * C + std::size_t(c)];
-    }
-    erd::Image rec;
-    if (!erd::reconstruct(g, erd::supersampled(g), &rec)) return -1;
-    double s = 0;
-    for (std::size_t i = 0; i < rec.samples.size(); ++i) {
-        const double e = double(rec.samples[i]) - double(im.samples[i * std::size_t(im.channels) + std::size_t(c)]);
-        s += e * e;
-    }
-    return s;
 }
 
 }  // namespace
@@ -108,9 +87,17 @@ int main(int argc, char** argv) {
         std::printf("%zu\n", r.model.size());
         return 0;
     }
+    erd::Image rec;
+    if (!erd::reconstruct(r.model, erd::supersampled(r.model), &rec) || rec.samples.size() != im.samples.size()) {
+        std::fprintf(stderr, "eval_colour: reconstruction failed\n");
+        return 1;
+    }
+    // The colour MSE by hand until algorithms/model/metrics compares colour images (colour-io).
     double sse = 0;
-    for (int c = 0; c < im.channels; ++c) sse += channel_sse(r.model, im, c);
-    const double mse = sse / (double(im.pixels()) * im.channels);
-    std::printf("%.4f %zu\n", 10.0 * std::log10(255.0 * 255.0 / mse), r.model.size());
+    for (std::size_t k = 0; k < im.samples.size(); ++k) {
+        const double e = double(im.samples[k]) - double(rec.samples[k]);
+        sse += e * e;
+    }
+    std::printf("%.4f %zu\n", 10.0 * std::log10(255.0 * 255.0 * double(im.samples.size()) / sse), r.model.size());
     return 0;
 }

@@ -197,7 +197,7 @@ void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions
 
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
     Status st = run(image, options, true, result);
-    // Colour keeps the first run: the comparison reconstructs gray models only.
+    // Colour keeps the first run until metrics' psnr compares colour images (issue 17, colour-io).
     if (!st || result->model.edges != EdgeKind::hard || image.channels > 1) return st;
     GenerateResult exact;
     if (!(st = run(image, options, false, &exact))) return st;
