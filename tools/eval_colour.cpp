@@ -9,6 +9,8 @@
 //     --luma-greedy        ERDGPI's greedy loop on the luma (the cheap alternative)
 //     --fit N              wedge refit iterations (GenerateOptions::wedge_fit)
 //     --real               greedy errors against the real-valued planes (round_values off)
+//     --verify             also check the mesh: the CDT of its points and constraints verifies and
+//                          has its faces, every wedge's faces carry one value in every channel
 //     --no-psnr            stop after the method (bench/run.sh: load and mesh only); prints N
 // Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
 // the model's reconstruction.
@@ -16,12 +18,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "algorithms/imaging/colour.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/reconstruct.h"
+#include "kernel/cdt.h"
 
 namespace {
 
@@ -41,16 +45,58 @@ bool read_p6(const char* path, erd::Image* im) {
     return ok && w > 0;
 }
 
+// The CDT of m's points and constraints verifies and has m's faces; in every channel each wedge's
+// faces carry one corner value (ERD models). Returns the first problem, or "".
+std::string verify(const erd::Model& m) {
+    erd::Cdt cdt;
+    std::vector<erd::VertInd> ids;
+    std::string why;
+    if (!cdt.reset(2 * m.width - 2, 2 * m.height - 2) || !cdt.insert_points(m.vertices, &ids)) return "rebuild failed";
+    for (const auto& c : m.constraints) {
+        erd::ConstraintReport rep;
+        if (!cdt.insert_constraint(ids[c[0]], ids[c[1]], &rep) || rep.dropped_crossing) return "constraint refused";
+    }
+    if (!cdt.verify(&why)) return why;
+    if (cdt.face_count() != m.faces.size() || cdt.vertex_count() != m.vertices.size()) return "face or vertex count";
+    // Model face and corner of (point of corner, point of next corner).
+    std::map<std::pair<std::uint64_t, std::uint64_t>, std::pair<std::size_t, int>> corner;
+    const auto key = [](erd::LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); };
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+        for (int i = 0; i < 3; ++i)
+            corner[{key(m.vertices[m.faces[f][std::size_t(i)]]), key(m.vertices[m.faces[f][std::size_t((i + 1) % 3)]])}] = {f, i};
+    if (m.kind != erd::ModelKind::erd) return "";
+    const std::size_t C = std::size_t(m.channels);
+    std::vector<erd::Wedge> wedges;
+    for (erd::VertInd v = 0; v < cdt.vertex_count(); ++v) {
+        cdt.wedges(v, &wedges);
+        for (const erd::Wedge& w : wedges) {
+            erd::EdgeInd e = w.first;
+            std::vector<double> ref;
+            for (std::uint32_t k = 0; k < w.count; ++k, e = cdt.rot_next(e)) {
+                const auto it = corner.find({key(cdt.point(cdt.org(e))), key(cdt.point(cdt.dest(e)))});
+                if (it == corner.end()) return "a face of the rebuilt CDT is not in the model";
+                const auto [f, i] = it->second;
+                std::vector<double> z(C);
+                for (std::size_t c = 0; c < C; ++c) z[c] = m.corner_values[f * C + c][std::size_t(i)];
+                if (k == 0) ref = z;
+                else if (z != ref) return "a wedge's faces carry different values";
+            }
+        }
+    }
+    return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     erd::GenerateOptions o;
-    bool luma = false, measure = true;
+    bool luma = false, measure = true, check = false;
     int i = 1;
     for (; i < argc && argv[i][0] == '-' && argv[i][1] == '-'; ++i) {
         const std::string a = argv[i];
         if (a == "--luma") luma = true;
         else if (a == "--no-psnr") measure = false;
+        else if (a == "--verify") check = true;
         else if (a == "--real") o.round_values = false;
         else if (a == "--sum-channels") o.colour.max_channel_error = false;
         else if (a == "--shared") o.colour.shared_wedge_position = true;
@@ -82,6 +128,13 @@ int main(int argc, char** argv) {
     if (!st) {
         std::fprintf(stderr, "eval_colour: %s\n", st.message.c_str());
         return 1;
+    }
+    if (check) {
+        const std::string why = verify(r.model);
+        if (!why.empty()) {
+            std::fprintf(stderr, "eval_colour: the mesh does not verify: %s\n", why.c_str());
+            return 1;
+        }
     }
     if (!measure) {
         std::printf("%zu\n", r.model.size());

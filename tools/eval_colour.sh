@@ -3,7 +3,7 @@
 # (../shared/images/color: Kodak kodim01-06, house) at 0.5, 1 and 2%, the ERD gains, and ERDGPI
 # against "mesh the luma, then fit the colours" (ColourChoices::greedy_on_luma). Runs
 # tools/eval_colour.cpp (the library, channel by channel reconstruction) until the erd program
-# reads colour. CHOICES=1 also measures the alternatives of docs/DECISIONS.md "Colour methods"
+# reads colour. Every mesh is verified (eval_colour --verify). CHOICES=1 also measures the alternatives of docs/DECISIONS.md "Colour methods"
 # at 1% (written to out/eval/colour_choices.txt, not to RESULTS.md).
 # Usage: tools/eval_colour.sh BUILD_DIR IMAGES_DIR
 set -u
@@ -35,7 +35,7 @@ run_case() {
         *+shared) flags=(--shared) ;;
         *+nofit) flags=(--fit 0) ;;
     esac
-    echo "$v $img $d $("$EVAL" "${flags[@]}" "$m" "$d" "$IMAGES/color/$img.ppm" 2>/dev/null || echo "failed -")"
+    echo "$v $img $d $("$EVAL" --verify "${flags[@]}" "$m" "$d" "$IMAGES/color/$img.ppm" 2>/dev/null || echo "failed -")"
 }
 export -f run_case
 export EVAL IMAGES
@@ -80,7 +80,9 @@ section=$OUT/colour_section.md
     g2=$(awk '{ p[$1 " " $2 " " $3] = $4 } END { for (c in p) if (c ~ /^erded /) { split(c, f, " "); print p[c] - p["ed " f[2] " " f[3]] } }' "$OUT/colour_raw.txt" | median)
     g3=$(awk '{ p[$1 " " $2 " " $3] = $4 } END { for (c in p) if (c ~ /^erdgpi /) { split(c, f, " "); print p[c] - p["erdgpi+luma " f[2] " " f[3]] } }' "$OUT/colour_raw.txt" | median)
     echo "Medians over the ${#imgs[@]} images x 3 densities: ERDGPI - GPI $g1 dB (target >= +2.0),"
-    echo "ERDED - ED $g2 dB (target >= +3.0), ERDGPI - luma mesh $g3 dB."
+    echo "ERDED - ED $g2 dB (target >= +3.0), ERDGPI - luma mesh $g3 dB. Meshes that verify (--verify: the CDT"
+    echo "of their points and constraints verifies and has their faces; each wedge one value per channel):"
+    echo "$(awk '$4 != "failed"' "$OUT/colour_raw.txt" | wc -l) of $(wc -l <"$OUT/colour_raw.txt")."
     echo "<!-- /colour -->"
 } >"$section"
 put_section colour "$section" "$RESULTS"
