@@ -385,19 +385,6 @@ private:
         return s;
     }
 
-    // Calls row(j, lo, hi) for each row j of the pixels the triangle a, b, c owns, columns lo..hi.
-    template <class Row>
-    void owned_rows(LatticePoint a, LatticePoint b, LatticePoint c, Row&& row) const {
-        OwnedRows rows(Lattice::pixels(), domain_, a, b, c);
-        for (RowRun part; rows.next(&part);) {
-            for (RowRun run = part; run.j <= run.j_end; run.step()) {
-                std::int64_t lo64, hi64;
-                run.columns(&lo64, &hi64);
-                if (lo64 <= hi64) row(std::int32_t(run.j), std::int32_t(lo64), std::int32_t(hi64));
-            }
-        }
-    }
-
     // Scans the pixels face f owns against the model's plane: new sum and candidate.
     void rescan(FaceInd f) {
         if (channels_ > 1) return rescan_colour(f);
@@ -423,13 +410,20 @@ private:
         const std::uint8_t* const banned = banned_.data();
         const std::size_t width = std::size_t(image_.width);
         auto walk = [&](auto with_value, auto&& scan_row) {
-            owned_rows(p[0], p[1], p[2], [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
-                const std::size_t row = std::size_t(j) * width;
-                if constexpr (decltype(with_value)::value)
-                    scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
-                else
-                    scan_row(samples + row, banned + row, j, lo, hi);
-            });
+            OwnedRows rows(Lattice::pixels(), domain_, p[0], p[1], p[2]);
+            for (RowRun part; rows.next(&part);) {
+                for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                    std::int64_t lo64, hi64;
+                    run.columns(&lo64, &hi64);
+                    if (lo64 > hi64) continue;
+                    const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
+                    const std::size_t row = std::size_t(j) * width;
+                    if constexpr (decltype(with_value)::value)
+                        scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+                    else
+                        scan_row(samples + row, banned + row, j, lo, hi);
+                }
+            }
         };
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
@@ -481,7 +475,8 @@ private:
     // rescan for a colour image: every channel's plane by point evaluation, stepped along each
     // span (rounded and clamped as reconstruction writes it when round_values). The candidate
     // metric is the sum of squared channel errors or the largest squared channel error.
-    void rescan_colour(FaceInd f) {
+    // Kept out of rescan: inlined, it costs the gray scan registers.
+    [[gnu::noinline]] void rescan_colour(FaceInd f) {
         stamp_[f] = generation_;
         total_ -= faces_[f].sum;
         const int C = channels_;
@@ -494,7 +489,10 @@ private:
         const std::size_t width = std::size_t(image_.width);
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
-        owned_rows(p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+        // The owned pixels as spans (the ownership rule of OwnedRows, which the gray scan walks).
+        scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_);
+        for (const Span& sp : spans_) {
+            const std::int32_t j = sp.y, lo = sp.x_begin, hi = sp.x_end;
             double v[kMaxChannels], dv[kMaxChannels];
             for (int c = 0; c < C; ++c) {
                 v[c] = planes[c].at(double(2 * lo), double(2 * j));
@@ -505,7 +503,7 @@ private:
             const auto scan = round ? (by_max ? scan_colour<true, true> : scan_colour<true, false>)
                                     : (by_max ? scan_colour<false, true> : scan_colour<false, false>);
             if (scan(s, banned, lo, hi, v, dv, maxval, &sum, &best, &bx)) by = j;
-        });
+        }
         if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
         settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
     }
