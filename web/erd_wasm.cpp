@@ -83,7 +83,7 @@ int erd_mesh(const std::uint8_t* pixels, int w, int h, const char* method, doubl
     erd::api::GenerateInfo info;
     if (st) st = erd::api::generate(m, view, opt, &model, &info);
     for (const erd::StageTime& s : info.stages) add_timing(s.name, s.seconds * 1000);
-    add_timing("generate", ms_since(t0));
+    add_timing("generate, all stages", ms_since(t0));
     erd::Image approx;
     auto t1 = Clock::now();
     if (st) erd_post_progress("reconstruction", 0);

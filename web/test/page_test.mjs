@@ -20,7 +20,10 @@ const web = path.dirname(path.dirname(fileURLToPath(import.meta.url)));
 const server = spawn('python3', ['-m', 'http.server', port, '--bind', '127.0.0.1', '--directory', web], {stdio: 'ignore'});
 let code = 1;
 try {
-    await new Promise((r) => setTimeout(r, 800));
+    for (let i = 0; i < 100; ++i) {  // until the server answers (at most 5 s)
+        if (await fetch(`http://127.0.0.1:${port}/index.html`).then((r) => r.ok, () => false)) break;
+        await new Promise((r) => setTimeout(r, 50));
+    }
     const browser = await chromium.launch({executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox']});
     const page = await browser.newPage({viewport: {width: 1280, height: 800}, acceptDownloads: true});
     page.on('pageerror', (e) => console.error('page error:', e.message));
