@@ -116,23 +116,8 @@ std::string plane_paint(const Pt p[3], const double z[3], int channel, std::unor
 }  // namespace
 
 Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string* out) {
+    if (Status st = check_triangulation(m); !st) return st;  // 1 or 3 channels, values of every channel
     const int C = m.channels;
-    if (C != 1 && C != 3) return Status::bad_input("a vector picture needs 1 or 3 channels, not " + std::to_string(C));
-    if (m.values.size() != m.vertices.size() * std::size_t(C) ||
-        (m.kind == ModelKind::erd && m.corner_values.size() != m.faces.size() * std::size_t(C)))
-        return Status::bad_input("model has values for another number of vertices, faces or channels");
-    if (C == 1) {
-        if (Status st = check_triangulation(m); !st) return st;
-    } else {
-        // check_triangulation reads one channel: the mesh is checked on channel 0's values.
-        Model shape = m;
-        shape.channels = 1;
-        shape.values.clear();
-        for (std::size_t v = 0; v < m.vertices.size(); ++v) shape.values.push_back(m.values[v * 3]);
-        shape.corner_values.clear();
-        for (std::size_t f = 0; f < m.corner_values.size(); f += 3) shape.corner_values.push_back(m.corner_values[f]);
-        if (Status st = check_triangulation(shape); !st) return st;
-    }
     if (!(o.scale > 0) || !std::isfinite(o.scale)) return Status::bad_input("scale must be a positive finite number");
     int cx = o.crop_x, cy = o.crop_y, cw = o.crop_w, ch = o.crop_h;
     if (cw == 0 || ch == 0) {
@@ -197,10 +182,7 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
             for (int k = 0; k < 3; ++k) {
                 p[k] = at[fc[std::size_t(k)]];
                 q[k] = drawn[fc[std::size_t(k)]];
-                z[k] = (C == 1 ? corner_value(m, std::uint32_t(3 * f + std::size_t(k)))
-                        : m.kind == ModelKind::erd ? m.corner_values[f * 3 + std::size_t(c)][std::size_t(k)]
-                                                   : m.values[std::size_t(fc[std::size_t(k)]) * 3 + std::size_t(c)]) *
-                       level;
+                z[k] = corner_value(m, std::uint32_t(3 * f + std::size_t(k)), c) * level;
             }
             double lo = std::min({q[0].u, q[1].u, q[2].u}), hi = std::max({q[0].u, q[1].u, q[2].u});
             double top = std::min({q[0].v, q[1].v, q[2].v}), bottom = std::max({q[0].v, q[1].v, q[2].v});
