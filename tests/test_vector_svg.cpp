@@ -182,3 +182,28 @@ TEST_CASE("render --vector: options that do not go with it are refused", "[vecto
     CHECK(c.find("width=\"32\" height=\"24\" viewBox=\"7.5 3.5 16 12\" shape-rendering=\"crispEdges\"") != std::string::npos);
     CHECK(c.find("<use") == std::string::npos);
 }
+
+TEST_CASE("render --vector: colour model files become three screened layers", "[vector][colour]") {
+    REQUIRE(binary_available());
+    TempDir dir;
+    // 3x3 pixels, a basic model and an ERD model (a jump in blue across the diagonal), by hand.
+    const std::string basic = "erd-header 1\nchannels 3\nend\n255\n5\n0 0 255 0 0\n4 0 0 255 0\n0 4 0 0 255\n4 4 255 255 255\n"
+                              "2 2 10 20 30\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n";
+    const std::string erd = "erd-header 1\nchannels 3\nend\n255\n5\n0 0 10 11 12\n4 0 20 21 22\n0 4 30 31 32\n4 4 40 41 42\n"
+                            "2 2 25 26 25\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n4\n4 0 25 26 10\n4 1 25 26 10\n4 2 25 26 40\n4 3 25 26 40\n";
+    for (const auto& [name, text] : {std::pair<std::string, std::string>{"c.model", basic}, {"c.erd", erd}}) {
+        INFO(name);
+        spit(dir.file(name), text);
+        RunResult r = run_erd("render " + sh_quote(dir.file(name)) + " -o " + sh_quote(dir.file("c.svg")) + " --vector");
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        erd::Model m;
+        REQUIRE(erd::read_model(text, name == "c.erd" ? erd::ModelFileKind::erd : erd::ModelFileKind::basic, &m).ok());
+        REQUIRE(m.channels == 3);
+        std::string lib;
+        REQUIRE(erd::render_vector_svg(m, erd::VectorSvgOptions{}, &lib).ok());
+        const std::string svg = slurp(dir.file("c.svg"));
+        CHECK(svg == lib);
+        check_planes(m, svg, 1);
+    }
+}

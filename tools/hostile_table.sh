@@ -241,8 +241,6 @@ case_ "colour .erd: two values on a wedge line" 2 reconstruct c_wedge.erd -o r.p
 case_ "colour .erd: channels 4" 2 reconstruct c_four.erd -o r.ppm
 case_ "colour .erd: channels 2" 2 reconstruct c_two.erd -o r.ppm
 case_ "colour .erd: channels given twice" 2 reconstruct c_twice.erd -o r.ppm
-colour_erd '2 2 25 26 27' '0\n' > c_good.erd
-case_ "colour .erd: drawn by a gray-only part" 2 render --vector c_good.erd -o r.svg
 case_ "generate --edges blurry" 2 generate -q -m erdgpi --edges blurry -i step.pgm -o o.erd -n 20
 case_ "psnr: sizes differ" 2 psnr small.pgm other.pgm
 
