@@ -143,21 +143,38 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     // soft-edged and basic exports stay as they were.
     const std::string kind = erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "";
     std::size_t facets = 0;
+    // Progress over the text lines (vertices, then faces), about every 1%.
+    const std::size_t lines = pos.size() + face_idx.size(), every = lines / 100 + 1;
+    const auto tick = [&](std::size_t i) {
+        if (options.progress && i % every == 0) options.progress("export", double(i) / double(lines));
+    };
     if (options.format == MeshFormat::stl) {
         for (auto& t : face_idx) std::swap(t[1], t[2]);
         write_stl(pos, face_idx, options.base, out, &facets);
     } else if (options.format == MeshFormat::obj) {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
-        for (const auto& p : pos) append(out, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
-        for (const auto& t : face_idx) append_face(out, "f %u %u %u\n", t[0] + 1, t[2] + 1, t[1] + 1);
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+            tick(i);
+            append(out, "v %.9g %.9g %.9g\n", pos[i][0], pos[i][1], pos[i][2]);
+        }
+        for (std::size_t i = 0; i < face_idx.size(); ++i) {
+            tick(pos.size() + i);
+            append_face(out, "f %u %u %u\n", face_idx[i][0] + 1, face_idx[i][2] + 1, face_idx[i][1] + 1);
+        }
     } else {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         out->append("element vertex " + std::to_string(pos.size()) + "\nproperty double x\nproperty double y\nproperty double z\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
-        for (const auto& p : pos) append(out, "%.9g %.9g %.9g\n", p[0], p[1], p[2]);
-        for (const auto& t : face_idx) append_face(out, "3 %u %u %u\n", t[0], t[2], t[1]);
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+            tick(i);
+            append(out, "%.9g %.9g %.9g\n", pos[i][0], pos[i][1], pos[i][2]);
+        }
+        for (std::size_t i = 0; i < face_idx.size(); ++i) {
+            tick(pos.size() + i);
+            append_face(out, "3 %u %u %u\n", face_idx[i][0], face_idx[i][2], face_idx[i][1]);
+        }
     }
     if (counts) {
         counts->vertices = pos.size();
