@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/outputs.h"
@@ -62,18 +63,15 @@ TEST_CASE("--progress off a terminal: lines with increasing percentages for ever
     REQUIRE(r.status == 0);
     auto s = progress_lines(r.err, "generate");
     for (const char* stage : {"initial mesh", "greedy insertion", "wedge refit"}) require_increasing(s, stage);
-    r = run_in(t, "reconstruct m.erd -o rec.pgm --progress");
-    REQUIRE(r.status == 0);
-    require_increasing(progress_lines(r.err, "reconstruct"), "reconstruct");
-    r = run_in(t, "render m.erd -o pic.png --progress");
-    REQUIRE(r.status == 0);
-    require_increasing(progress_lines(r.err, "render"), "render");
-    r = run_in(t, "export m.erd -o m.obj --progress");
-    REQUIRE(r.status == 0);
-    require_increasing(progress_lines(r.err, "export"), "export");
-    r = run_in(t, "edges in.pgm -o e.pgm --progress");
-    REQUIRE(r.status == 0);
-    require_increasing(progress_lines(r.err, "edges"), "edges");
+    const std::pair<const char*, const char*> runs[] = {{"reconstruct", "reconstruct m.erd -o rec.pgm"},
+                                                         {"render", "render m.erd -o pic.png"},
+                                                         {"export", "export m.erd -o m.obj"},
+                                                         {"edges", "edges in.pgm -o e.pgm"}};
+    for (const auto& [sub, args] : runs) {
+        r = run_in(t, std::string(args) + " --progress");
+        REQUIRE(r.status == 0);
+        require_increasing(progress_lines(r.err, sub), sub);
+    }
     // Without --progress off a terminal, and under -q: none.
     r = run_in(t, "reconstruct m.erd -o rec.pgm");
     CHECK(progress_lines(r.err, "reconstruct").empty());

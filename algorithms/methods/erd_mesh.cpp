@@ -29,7 +29,7 @@ public:
 private:
     static constexpr double kSelection = 4.0 / 6.0;  // 4 units of selection before 2 of insertion
     void report(double f) {
-        if (hook_ && hook_.report_cancelled("initial mesh", f)) cancelled_ = true;
+        if (hook_ && !cancelled_ && hook_.report_cancelled("initial mesh", f)) cancelled_ = true;
     }
     ProgressHook hook_;
     double planned_, done_ = 0;
@@ -49,6 +49,7 @@ public:
 
     void detect(double beta, double r) override {
         progress_->selection(0.0);
+        if (progress_->cancelled()) return;  // the selection then ends at once (count 0)
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
@@ -58,6 +59,7 @@ public:
     }
 
     std::size_t count(int l, double eps) override {
+        if (progress_->cancelled()) return 0;
         const std::vector<Polyline>* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
         // Hard edges: the side-keeping curves when they fit the budget, else plain Douglas-Peucker
         // on the same cracks (docs/DECISIONS.md "Hard edges").
