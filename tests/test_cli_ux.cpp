@@ -153,3 +153,20 @@ TEST_CASE("a commit whose second move fails puts the first old file back", "[out
         CHECK(slurp(b) == "new b\n");
     }
 }
+
+TEST_CASE("a P5 with CR LF after maxval and data after the raster reads the same from a pipe", "[cli][framing]") {
+    REQUIRE(erd_test::binary_available());
+    TempDir t;
+    // Found by fuzz_framing: the file's rule (one byte more than the raster: the LF is the
+    // separator's pair) needs to see whether the stream ends there.
+    using namespace std::string_literals;
+    for (const std::string& body : {"P5\r\n2 1\r\n255\r\n\x02\xb0" "4#trailing"s, "P5\r\n2 1\r\n255\r\n\x02\xb0"s,
+                                    "P5\n2 1\n255\r\n\x02\xb0\x07"s}) {
+        spit(t.file("f.pgm"), body);
+        const auto r = erd_test::run_shell("cat " + erd_test::sh_quote(t.file("f.pgm")) + " | " + erd_test::sh_quote(erd_test::erd_bin()) +
+                                           " psnr " + erd_test::sh_quote(t.file("f.pgm")) + " -");
+        INFO(r.err);
+        CHECK(r.status == 0);
+        CHECK(r.out == "inf\n");
+    }
+}
