@@ -32,7 +32,7 @@ public:
     void assign_vertex(const Cdt& cdt, VertInd v);
     void assign_all(const Cdt& cdt);
     // fit_wedge_values on every channel; the stats add the channels' squared errors.
-    void fit(const Cdt& cdt, int iterations, WedgeFitStats* stats);
+    void fit(const Cdt& cdt, int iterations, WedgeFitStats* stats, const ProgressHook& progress = {});
     // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 

@@ -10,7 +10,7 @@
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
-#include "algorithms/methods/progress.h"
+#include "kernel/progress.h"
 #include "algorithms/methods/result.h"
 #include "kernel/status.h"
 

@@ -145,6 +145,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
+    mo.progress = options.progress;
     st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
@@ -176,7 +177,7 @@ void finish_erd_stats(InitialMesh* mesh, const ErdModel* model, StageTimer* time
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result) {
     if (options.wedge_fit > 0) {
-        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
+        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
     }
@@ -187,7 +188,7 @@ void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
     if (options.wedge_fit > 0) {
-        model->fit(cdt, options.wedge_fit, &result->stats.wedge_fit);
+        model->fit(cdt, options.wedge_fit, &result->stats.wedge_fit, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
     }

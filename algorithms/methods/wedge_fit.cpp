@@ -98,7 +98,7 @@ double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>
 
 // The CGLS refit of model's values from its face systems.
 void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterations, ErdModel* model,
-           WedgeFitStats* stats) {
+           WedgeFitStats* stats, const ProgressHook& progress) {
     const std::size_t n = model->entry_count();
 
     // out = A^T A v, assembled from the face Gram matrices.
@@ -136,6 +136,7 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterati
     double gamma = dot(s, s);
     int it = 0;
     for (; it < iterations && gamma > 1e-12; ++it) {
+        progress("wedge refit", 0.5 + 0.5 * double(it) / double(iterations));
         for (std::size_t i = 0; i < n; ++i) ps[i] = scale[i] * p[i];
         normal_times(ps, &q);
         const double pq = dot(ps, q);  // |A S p|^2
@@ -164,24 +165,32 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterati
 
 }  // namespace
 
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats) {
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
+                      ProgressHook progress) {
+    progress("wedge refit", 0.0);
     std::vector<FaceSystem> faces;
     const Image* one = &image;
     face_systems<1>(cdt, &one, *model, &faces);
-    solve(faces, image, iterations, model, stats);
+    progress("wedge refit", 0.5);
+    solve(faces, image, iterations, model, stats, progress);
 }
 
 void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, int iterations,
-                      const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats) {
+                      const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats,
+                      ProgressHook progress) {
     stats->assign(planes.size(), WedgeFitStats());
     if (planes.size() != 3 || models.size() != 3) {
         for (std::size_t c = 0; c < planes.size() && c < models.size(); ++c)
-            fit_wedge_values(cdt, *planes[c], iterations, models[c], &(*stats)[c]);
+            fit_wedge_values(cdt, *planes[c], iterations, models[c], &(*stats)[c], c + 1 == planes.size() ? progress : ProgressHook());
         return;
     }
+    progress("wedge refit", 0.0);
     std::vector<FaceSystem> faces[3];
     face_systems<3>(cdt, planes.data(), *models[0], faces);
-    for (std::size_t c = 0; c < 3; ++c) solve(faces[c], *planes[c], iterations, models[c], &(*stats)[c]);
+    progress("wedge refit", 0.5);
+    // The progress of the last channel's iterations stands for all three (it must not go back).
+    for (std::size_t c = 0; c < 3; ++c)
+        solve(faces[c], *planes[c], iterations, models[c], &(*stats)[c], c == 2 ? progress : ProgressHook());
 }
 
 }  // namespace erd

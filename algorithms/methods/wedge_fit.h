@@ -16,15 +16,19 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
+#include "kernel/progress.h"
 
 namespace erd {
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats);
+// progress: "wedge refit", half for the pass over the pixels, half for the iterations.
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
+                      ProgressHook progress = {});
 
 // The same for the channels of a colour image on one triangulation (models[c] on planes[c], all
 // with the same wedges): each channel's refit as above, the pixel pass shared.
 void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, int iterations,
-                      const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats);
+                      const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats,
+                      ProgressHook progress = {});
 
 }  // namespace erd
