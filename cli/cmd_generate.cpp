@@ -62,9 +62,14 @@ const CommandLine kGenerate = {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
         {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
+        {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.1)"},
+        {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
+        {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
+        {0, "flips", "K", "ERD: K rounds of data-dependent flips of unconstrained edges, each followed by a refit (default 1; also ED/GPI --optimize)"},
+        {0, "optimize", nullptr, "ED, GPI: least-squares vertex values (ours, beyond the thesis)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
@@ -160,6 +165,11 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
             *st = Status::bad_input("--edges: '" + e + "' is not hard, soft or auto");
     }
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
+    if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
+    if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
+    if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
+    if (a.has("optimize")) o->optimize = true;
+    if (a.has("flips")) o->flips = int(a.integer("flips", 0, 0, 64, st));
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
     if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
     if (st->ok() && o->alpha_max < o->alpha_min)

@@ -43,6 +43,14 @@ struct GenerateOptions {
     std::uint64_t seed = 1;      // random selection (-f 0): fixed seed, deterministic output
     int wedge_fit = 6;           // ERD (ours, beyond the thesis): CGLS iterations of the least-squares
                                  // refit of all wedge values after refinement; 0 = the thesis's values
+    double wedge_prior = 0.1;    // ERD refit: weight of each line-search value, in pixel observations
+    double wedge_bounds = 0.5;  // ERD refit: clamp each value into its pixels' sample range
+                                 // widened by this fraction of it; < 0: off
+                                 // (algorithms/methods/wedge_fit.h WedgeFitOptions)
+    int refit_stages = 0;        // ERDGPI (ours): refit the wedge values this many times during
+                                 // refinement, so later insertions see the refitted errors
+    int flips = 1;               // ERD (ours): rounds of data-dependent flips + refit after the refit
+    bool optimize = false;       // ED, GPI (--optimize, ours): least-squares vertex values
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
     EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "algorithms/imaging/edge_kind.h"
+#include "algorithms/methods/optimize.h"
 #include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/reconstruct.h"
@@ -46,6 +47,7 @@ Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode 
 
 void set_thesis_preset(GenerateOptions* o) {
     o->wedge_fit = 0;
+    o->flips = 0;
     o->alpha_min = 1.0;
     o->alpha_max = 1.5;
     o->edge_zero_radius = 0;
@@ -142,12 +144,31 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     return Status::success();
 }
 
-void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
-                       ErdModel* model, StageTimer* timer, GenerateResult* result) {
+WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
+    WedgeFitOptions f;
+    f.iterations = options.wedge_fit;
+    f.prior_weight = options.wedge_prior;
+    f.support_bounds = options.wedge_bounds;
+    return f;
+}
+
+void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdModel* model, StageTimer* timer, GenerateResult* result,
+                       const std::vector<double>* line_search_values) {
     if (options.wedge_fit > 0) {
-        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
+        std::vector<double> kept;  // the line-search values, for the refit after the flips
+        if (options.flips && !line_search_values) {
+            for (std::size_t i = 0; i < model->entry_count(); ++i) kept.push_back(model->entry_value(i));
+            line_search_values = &kept;
+        }
+        fit_wedge_values(cdt, image, wedge_fit_options(options), model, &result->stats.wedge_fit,
+                         line_search_values);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
+        if (options.flips) {
+            optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit);
+            timer->lap("flips");
+        }
     }
     model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     result->achieved = result->model.size();

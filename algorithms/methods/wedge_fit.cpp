@@ -1,5 +1,6 @@
 #include "algorithms/methods/wedge_fit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -18,6 +19,7 @@ struct FaceSystem {
     double g[6];
     double h[3];
     double bb;
+    std::uint16_t lo, hi;  // smallest and largest sample among the face's pixels
 
     // (G v)_i for the face's values v = (a, b, c).
     void gram_times(double a, double b, double c, double out[3]) const {
@@ -54,6 +56,7 @@ std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const E
         const double gx0 = l0.gx, gx1 = l1.gx;
         double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0 = 0, h1 = 0, h2 = 0;
         std::uint64_t bb = 0;  // sum b^2 in integers: exact, and what the double sum gave while exact
+        std::uint16_t lo = 0xffff, hi = 0;
         for (const Span& sp : spans) {
             const double Y = double(2 * sp.y);
             const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
@@ -72,12 +75,14 @@ std::vector<FaceSystem> face_systems(const Cdt& cdt, const Image& image, const E
                 h1 += b * w1;
                 h2 += b * w2;
                 bb += std::uint64_t(px[i]) * px[i];
+                lo = px[i] < lo ? px[i] : lo;
+                hi = px[i] > hi ? px[i] : hi;
             }
         }
         faces.push_back({{model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1), model.corner_entry(cdt, e + 2)},
                          {g00, g01, g02, g11, g12, g22},
                          {h0, h1, h2},
-                         double(bb)});
+                         double(bb), lo, hi});
     }
     return faces;
 }
@@ -91,10 +96,18 @@ double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>
 }  // namespace
 
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats) {
+    WedgeFitOptions o;
+    o.iterations = iterations;
+    fit_wedge_values(cdt, image, o, model, stats);
+}
+
+void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
+                      WedgeFitStats* stats, const std::vector<double>* prior) {
     const std::vector<FaceSystem> faces = face_systems(cdt, image, *model);
     const std::size_t n = model->entry_count();
+    const double lambda = options.prior_weight > 0 ? options.prior_weight : 0.0;
 
-    // out = A^T A v, assembled from the face Gram matrices.
+    // out = (A^T A + lambda I) v, assembled from the face Gram matrices.
     auto normal_times = [&](const std::vector<double>& v, std::vector<double>* out) {
         std::fill(out->begin(), out->end(), 0.0);
         for (const FaceSystem& fs : faces) {
@@ -102,6 +115,8 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
             fs.gram_times(v[fs.entry[0]], v[fs.entry[1]], v[fs.entry[2]], gv);
             for (int j = 0; j < 3; ++j) (*out)[fs.entry[j]] += gv[j];
         }
+        if (lambda > 0)
+            for (std::size_t i = 0; i < v.size(); ++i) (*out)[i] += lambda * v[i];
     };
     auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
         double t = 0;
@@ -111,27 +126,29 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
 
     // Jacobi preconditioning: solve for y with x = x0 + S y, S = diag(1 / |column of A|), so the
     // values of big and small faces converge at the same rate (10 steps then do what 30 did).
-    std::vector<double> scale(n, 0.0);
+    std::vector<double> scale(n, lambda);
     for (const FaceSystem& fs : faces)
         for (int j = 0; j < 3; ++j) scale[fs.entry[j]] += fs.g[j == 0 ? 0 : j == 1 ? 3 : 5];
     for (double& c : scale) c = c > 1e-12 ? 1.0 / std::sqrt(c) : 0.0;
 
-    std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(n);
+    std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(n), x0(n);
     for (std::size_t i = 0; i < n; ++i) x[i] = model->entry_value(i);
+    // The value each one is drawn towards and bounded around: its line-search value.
+    for (std::size_t i = 0; i < n; ++i) x0[i] = prior && i < prior->size() ? (*prior)[i] : x[i];
     if (stats) stats->sse_before = total_sse(faces, x);
-    // s = S A^T (b - A x0), the residual of the preconditioned normal equations at y = 0.
+    // s = S (A^T b + lambda x0 - (A^T A + lambda I) x), the preconditioned residual at y = 0.
     normal_times(x, &q);
     std::fill(s.begin(), s.end(), 0.0);
     for (const FaceSystem& fs : faces)
         for (int j = 0; j < 3; ++j) s[fs.entry[j]] += fs.h[j];
-    for (std::size_t i = 0; i < n; ++i) s[i] = scale[i] * (s[i] - q[i]);
+    for (std::size_t i = 0; i < n; ++i) s[i] = scale[i] * (s[i] + lambda * x0[i] - q[i]);
     p = s;
     double gamma = dot(s, s);
     int it = 0;
-    for (; it < iterations && gamma > 1e-12; ++it) {
+    for (; it < options.iterations && gamma > 1e-12; ++it) {
         for (std::size_t i = 0; i < n; ++i) ps[i] = scale[i] * p[i];
         normal_times(ps, &q);
-        const double pq = dot(ps, q);  // |A S p|^2
+        const double pq = dot(ps, q);  // |A S p|^2 (+ lambda |S p|^2)
         if (pq <= 0) break;
         const double alpha = gamma / pq;
         for (std::size_t i = 0; i < n; ++i) {
@@ -143,10 +160,27 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
         gamma = g2;
         for (std::size_t i = 0; i < n; ++i) p[i] = s[i] + beta * p[i];
     }
-    const double hi = double(image.maxval);
+    // Bounds: [0, maxval], and with support_bounds the range of the samples the value reaches
+    // (every pixel of the faces it is a corner of) widened to take in its line-search value.
+    std::vector<double> lo(n, 0.0), hi(n, double(image.maxval));
+    if (options.support_bounds >= 0) {
+        std::vector<double> a(n), b(n);
+        for (std::size_t i = 0; i < n; ++i) a[i] = b[i] = x0[i];
+        for (const FaceSystem& fs : faces)
+            for (int j = 0; j < 3; ++j) {
+                const std::uint32_t k = fs.entry[j];
+                if (double(fs.lo) < a[k]) a[k] = double(fs.lo);
+                if (double(fs.hi) > b[k]) b[k] = double(fs.hi);
+            }
+        for (std::size_t i = 0; i < n; ++i) {
+            const double m = options.support_bounds * (b[i] - a[i]);
+            lo[i] = std::max(lo[i], a[i] - m);
+            hi[i] = std::min(hi[i], b[i] + m);
+        }
+    }
     for (std::size_t i = 0; i < n; ++i) {
         const double v = x[i] + scale[i] * y[i];
-        x[i] = v < 0 ? 0.0 : (v > hi ? hi : v);
+        x[i] = v < lo[i] ? lo[i] : (v > hi[i] ? hi[i] : v);
         model->set_entry_value(i, x[i]);
     }
     if (stats) {
