@@ -38,7 +38,8 @@ private:
 
 }  // namespace
 
-void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats) {
+void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
+                      const std::vector<FaceInd>* seed_faces) {
     FlipStats st;
     TriangleError tri_error(image, *cdt);
     const std::size_t nf = cdt->face_count();
@@ -54,12 +55,20 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
     };
     std::vector<EdgeInd> work;
     std::vector<std::uint8_t> queued(3 * nf, 0);
-    for (EdgeInd e = 3 * EdgeInd(nf); e-- > 0;) {
-        const EdgeInd t = cdt->twin(e);
-        if (t != noEdge && e < t && !cdt->constrained(e)) {
-            work.push_back(e);
-            queued[e] = 1;
+    auto enqueue = [&](EdgeInd k) {
+        const EdgeInd tk = cdt->twin(k);
+        if (tk == noEdge || cdt->constrained(k)) return;
+        const EdgeInd key = k < tk ? k : tk;
+        if (!queued[key]) {
+            queued[key] = 1;
+            work.push_back(key);
         }
+    };
+    if (seed_faces) {
+        for (FaceInd f : *seed_faces)
+            for (EdgeInd k = 3 * f; k < 3 * f + 3; ++k) enqueue(k);
+    } else {
+        for (EdgeInd e = 3 * EdgeInd(nf); e-- > 0;) enqueue(e);
     }
     while (!work.empty() && st.flips < max_flips) {
         const EdgeInd e = work.back();
@@ -86,16 +95,11 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
         const FaceInd f1 = face_of(diag), f2 = face_of(cdt->twin(diag));
         face_sse[f1] = s1;  // f1 = (c,a,d), f2 = (d,b,c)
         face_sse[f2] = s2;
+        st.changed.push_back(f1);
+        st.changed.push_back(f2);
         for (FaceInd f : {f1, f2})
-            for (EdgeInd k = 3 * f; k < 3 * f + 3; ++k) {
-                const EdgeInd tk = cdt->twin(k);
-                if (tk == noEdge || cdt->constrained(k) || k == diag || tk == diag) continue;
-                const EdgeInd key = k < tk ? k : tk;
-                if (!queued[key]) {
-                    queued[key] = 1;
-                    work.push_back(key);
-                }
-            }
+            for (EdgeInd k = 3 * f; k < 3 * f + 3; ++k)
+                if (k != diag && cdt->twin(k) != diag) enqueue(k);
     }
     if (stats) *stats = st;
 }

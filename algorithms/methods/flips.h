@@ -8,6 +8,7 @@
 // it stops early after max_flips flips.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/erd_model.h"
@@ -20,11 +21,14 @@ struct FlipStats {
     std::size_t tested = 0;     // flippable edges whose two diagonals were compared
     double sse_before = 0.0;    // squared error of the touched quadrilaterals before / after
     double sse_after = 0.0;
+    std::vector<FaceInd> changed;  // faces a flip rewrote (with repeats)
 };
 
 // Flips edges of *cdt (values from model, which keeps its wedge values) while a flip lowers the
-// squared error. Edges are visited from a work list seeded with every edge; a flip puts the four
-// outer edges of its quadrilateral back on it.
-void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats);
+// squared error. Edges are visited from a work list seeded with every edge of the faces in
+// *seed_faces (every edge when it is null); a flip puts the four outer edges of its
+// quadrilateral back on it.
+void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
+                      const std::vector<FaceInd>* seed_faces = nullptr);
 
 }  // namespace erd

@@ -8,9 +8,13 @@ namespace erd {
 
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
                        const std::vector<double>* line_search, WedgeFitStats* stats) {
+    // Round 1 tries every edge; later rounds (after a refit moved the values) only the edges of
+    // the faces the previous round flipped, where the refit moved the most.
+    std::vector<FaceInd> seed;
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
-        improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs);
+        improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed);
+        seed = std::move(fs.changed);
         if (fs.flips == 0) break;
         if (options.wedge_fit > 0) {
             WedgeFitStats again;
