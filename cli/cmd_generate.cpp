@@ -65,7 +65,7 @@ const CommandLine kGenerate = {
         {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
         {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
-        {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.1)"},
+        {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
         {0, "flips", "K", "ERD: K rounds of data-dependent flips of unconstrained edges, each followed by a refit (default 1; also ED/GPI --optimize)"},

@@ -43,7 +43,7 @@ struct GenerateOptions {
     std::uint64_t seed = 1;      // random selection (-f 0): fixed seed, deterministic output
     int wedge_fit = 6;           // ERD (ours, beyond the thesis): CGLS iterations of the least-squares
                                  // refit of all wedge values after refinement; 0 = the thesis's values
-    double wedge_prior = 0.1;    // ERD refit: weight of each line-search value, in pixel observations
+    double wedge_prior = 0.01;    // ERD refit: weight of each line-search value, in pixel observations
     double wedge_bounds = 0.5;  // ERD refit: clamp each value into its pixels' sample range
                                  // widened by this fraction of it; < 0: off
                                  // (algorithms/methods/wedge_fit.h WedgeFitOptions)

@@ -144,6 +144,19 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     return Status::success();
 }
 
+namespace {
+
+// True when a's point-evaluated reconstruction has a higher PSNR than b's (false on any error).
+bool better_reconstruction(const Image& image, const Model& a, const Model& b) {
+    Image ra, rb;
+    double pa = 0, pb = 0;
+    if (!reconstruct(a, false, &ra) || !psnr(image, ra, &pa) || !reconstruct(b, false, &rb) || !psnr(image, rb, &pb))
+        return false;
+    return pa > pb;
+}
+
+}  // namespace
+
 WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
     WedgeFitOptions f;
     f.iterations = options.wedge_fit;
@@ -166,11 +179,23 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
         if (options.flips) {
+            // Hard edges are reconstructed by rounded point evaluation, and near-lossless
+            // pictures (above 65 dB) can lose by flips that lower the real-valued error: keep
+            // the flipped model only when its reconstruction is at least as good.
+            const bool guard = result->model.edges == EdgeKind::hard;
+            Model before;
+            if (guard) {
+                before = result->model;  // keeps the fields to_model leaves alone (edges)
+                model->to_model(cdt, image.width, image.height, image.maxval, &before);
+            }
             optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit);
+            model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+            if (guard && better_reconstruction(image, before, result->model)) result->model = std::move(before);
             timer->lap("flips");
         }
     }
-    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    if (!(options.wedge_fit > 0 && options.flips))
+        model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     result->achieved = result->model.size();
     result->stats.has_erd = true;
     ErdStepStats& s = result->stats.erd;
