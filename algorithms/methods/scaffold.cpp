@@ -138,6 +138,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
+    mo.progress = options.progress;
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
@@ -175,7 +176,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             line_search_values = &kept;
         }
         fit_wedge_values(cdt, image, wedge_fit_options(options), model, &result->stats.wedge_fit,
-                         line_search_values);
+                         line_search_values, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
         if (options.flips) {

@@ -95,15 +95,18 @@ double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>
 
 }  // namespace
 
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats) {
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
+                      ProgressHook progress) {
     WedgeFitOptions o;
     o.iterations = iterations;
-    fit_wedge_values(cdt, image, o, model, stats);
+    fit_wedge_values(cdt, image, o, model, stats, nullptr, progress);
 }
 
 void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
-                      WedgeFitStats* stats, const std::vector<double>* prior) {
+                      WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress) {
+    progress("wedge refit", 0.0);
     const std::vector<FaceSystem> faces = face_systems(cdt, image, *model);
+    progress("wedge refit", 0.5);
     const std::size_t n = model->entry_count();
     const double lambda = options.prior_weight > 0 ? options.prior_weight : 0.0;
 
@@ -146,6 +149,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
     double gamma = dot(s, s);
     int it = 0;
     for (; it < options.iterations && gamma > 1e-12; ++it) {
+        progress("wedge refit", 0.5 + 0.5 * double(it) / double(options.iterations));
         for (std::size_t i = 0; i < n; ++i) ps[i] = scale[i] * p[i];
         normal_times(ps, &q);
         const double pq = dot(ps, q);  // |A S p|^2 (+ lambda |S p|^2)

@@ -16,11 +16,14 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
+#include "kernel/progress.h"
 
 namespace erd {
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats);
+// progress: "wedge refit", half for the pass over the pixels, half for the iterations.
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
+                      ProgressHook progress = {});
 
 // The refit's regularisation (docs/DECISIONS.md "Wedge refit bounds"). It minimises
 //   sum over pixels (approximation - sample)^2 + prior_weight * sum over values (z - z_ls)^2
@@ -37,6 +40,6 @@ struct WedgeFitOptions {
 // As above with options. `prior`, when given, holds z_ls for the first prior->size() entries
 // (the values start from the model's current ones); other entries use their current value.
 void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
-                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr);
+                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr, ProgressHook progress = {});
 
 }  // namespace erd
