@@ -42,7 +42,8 @@ const CommandLine kGenerate = {
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
-        {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin)"},
+        {'i', "input", "FILE", "input image, PGM, PPM, PNG or JPEG (default and - : stdin)"},
+        {0, "gray", nullptr, "colour input: mesh its BT.601 luma (0.299 R + 0.587 G + 0.114 B) without a warning"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
         {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
@@ -213,6 +214,9 @@ static int run_generate(const Args& a, const Reporter& rep) {
     std::string warning;
     st = read_image(in, &image, &warning);
     if (!st) return rep.fail(st);
+    // The one place where generate decides what a colour image becomes: its luma, until the
+    // methods take colour (issue 17); with a warning unless --gray asked for it.
+    to_gray(in, &image, a.has("gray"), &warning);
     rep.warn(warning);
     const double read_seconds = seconds_since(t0);
 

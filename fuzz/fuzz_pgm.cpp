@@ -1,4 +1,4 @@
-// libFuzzer target for our PGM reader (cli/image_io.h decode_pgm), and through decode_image the
+// libFuzzer target for our PGM reader (cli/image_io.h decode_pnm), and through decode_image the
 // format detection and the "what is this file" messages.
 //
 // Checks beyond "no crash": a failure is one non-empty line with Code::input; a success is a
@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     limits.max_pixels = std::int64_t(1) << 20;  // keeps every run fast; the logic is the same
     erd::Image im;
     std::string warning;
-    erd::Status s = erd::cli::decode_pgm(data, size, &im, &warning, limits);
+    erd::Status s = erd::cli::decode_pnm(data, size, &im, &warning, limits);
     if (!s.ok()) {
         if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
         return 0;
@@ -29,10 +29,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (std::uint16_t v : im.samples)
         if (v > im.maxval) std::abort();
     for (bool plain : {false, true}) {
-        std::string bytes = erd::cli::encode_pgm(im, plain);
+        std::string bytes = erd::cli::encode_pnm(im, plain);
         erd::Image back;
         std::string w;
-        if (!erd::cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &back, &w, limits).ok())
+        if (!erd::cli::decode_pnm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &back, &w, limits).ok())
             std::abort();
         if (back.width != im.width || back.height != im.height || back.maxval != im.maxval || back.samples != im.samples ||
             !w.empty())

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/luma.h"
 #include "cli/image_io.h"
 #include "tests/erd_run.h"
 
@@ -93,17 +94,17 @@ std::vector<Bad> bad_pgms() {
     return {
         {"1 empty", "", "empty file"},
         {"1 one byte", "P", "file too short (1 byte)"},
-        {"2 P1", "P1\n1 1\n1\n", "a PBM bitmap (P1, plain), not a PGM"},
-        {"2 P4", "P4\n8 1\n\x01", "a PBM bitmap (P4, raw), not a PGM"},
-        {"2 P3", "P3\n1 1 255\n1 2 3\n", "a PPM colour image (P3, plain), not a PGM"},
-        {"2 P6", "P6\n1 1 255\nabc", "a PPM colour image (P6, raw), not a PGM"},
-        {"2 P7", "P7\nWIDTH 1\nHEIGHT 1\n", "a PAM image (P7), not a PGM"},
+        {"2 P1", "P1\n1 1\n1\n", "a PBM bitmap (P1, plain): erd reads PGM (P2, P5), PPM (P3, P6), PNG and JPEG"},
+        {"2 P4", "P4\n8 1\n\x01", "a PBM bitmap (P4, raw): erd reads PGM"},
+        {"2 P6 truncated", "P6\n2 1 255\nabc", "raster truncated: expected 6 bytes (2 x 1 x 3 x 1), found 3"},
+        {"2 P3 too few", "P3\n1 1 255\n1 2\n", "only 2 of 3 samples before the end of the file (plain PPM)"},
+        {"2 P7", "P7\nWIDTH 1\nHEIGHT 1\n", "a PAM image (P7): erd reads PGM"},
         {"2 lower p5", "p5\n1 1 255\n\x01", "magic 'p5' is lower case"},
         {"2 lower p2", "p2\n1 1 255\n1\n", "magic 'p2' is lower case"},
         {"2 P9", "P9\n1 1 255\n", "unknown netpbm magic 'P9'"},
-        {"2 GIF", "GIF89a\x01\x00\x01\x00", "a GIF file, not a PGM"},
-        {"2 JPEG", "\xff\xd8\xff\xe0\x00\x10JFIF", "a JPEG file, not a PGM"},
-        {"2 text", "hello world\n", "not a PGM or PNG file (it starts with 'hello')"},
+        {"2 GIF", "GIF89a\x01\x00\x01\x00", "a GIF file: erd reads PGM"},
+        {"2 JPEG", "\xff\xd8\xff\xe0\x00\x10JFIF", "JPEG truncated: the file ends inside the FFE0 marker"},
+        {"2 text", "hello world\n", "not an image erd reads (it starts with 'hello'"},
         {"3 eof after magic", "P5", "end of file inside the header, after the magic"},
         {"3 eof before width", "P5\n", "end of file inside the header, before the width"},
         {"3 eof after height", "P5\n1 1", "end of file inside the header, after the height"},
@@ -241,7 +242,7 @@ TEST_CASE("PGM round trips keep size, maxval and samples exactly", "[io]") {
             for (std::size_t i = 0; i < im.samples.size(); ++i) im.samples[i] = std::uint16_t((i * 7919u + 13u) % (mv + 1));
             im.samples[0] = std::uint16_t(mv);
             im.samples[1] = 0;
-            std::string bytes = erd::cli::encode_pgm(im, plain);
+            std::string bytes = erd::cli::encode_pnm(im, plain);
             CHECK(bytes.substr(0, 2) == (plain ? "P2" : "P5"));
             if (!plain) CHECK(bytes.size() == std::to_string(mv).size() + 8 + 21 * (mv > 255 ? 2 : 1));
             Image back;
@@ -261,7 +262,7 @@ TEST_CASE("PGM round trips keep size, maxval and samples exactly", "[io]") {
 TEST_CASE("plain PGM lines stay within 70 characters", "[io]") {
     Image im(40, 2, 65535);
     for (auto& v : im.samples) v = 65535;
-    std::string bytes = erd::cli::encode_pgm(im, true);
+    std::string bytes = erd::cli::encode_pnm(im, true);
     std::size_t start = 0, longest = 0;
     for (std::size_t i = 0; i < bytes.size(); ++i)
         if (bytes[i] == '\n') { longest = std::max(longest, i - start); start = i + 1; }
@@ -271,11 +272,11 @@ TEST_CASE("plain PGM lines stay within 70 characters", "[io]") {
 
 TEST_CASE("16-bit PGM samples are big-endian", "[io]") {
     Image im = make(2, 1, 1000, {0x0102, 999});
-    std::string bytes = erd::cli::encode_pgm(im, false);
+    std::string bytes = erd::cli::encode_pnm(im, false);
     CHECK(bytes == std::string("P5\n2 1\n1000\n\x01\x02\x03\xe7", 16));
 }
 
-TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour to BT.601 luma, alpha, palette", "[io]") {
+TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour kept, alpha dropped, palette", "[io]") {
     SECTION("8-bit gray through encode_png") {
         Image im = make(3, 2, 255, {0, 1, 127, 128, 254, 255});
         std::string bytes;
@@ -305,23 +306,26 @@ TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour to BT.601 luma, alph
         CHECK(back.samples == v);
         CHECK(w.empty());
     }
-    SECTION("8-bit RGB becomes BT.601 luma with a warning") {
+    SECTION("8-bit RGB stays colour, without a warning") {
         std::string rgb = std::string("\xff\x00\x00\x00\xff\x00\x00\x00\xff\x0a\x0a\x0a", 12);
         Image back;
         std::string w;
         REQUIRE(decode(make_png(4, 1, 8, 2, rgb), &back, &w).ok());
-        // (299 R + 587 G + 114 B + 500) / 1000, by hand: 76, 150, 29, 10.
-        CHECK(back.samples == std::vector<std::uint16_t>{76, 150, 29, 10});
+        CHECK(back.channels == 3);
+        CHECK(back.samples == std::vector<std::uint16_t>{255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 10, 10});
         CHECK(back.maxval == 255);
-        CHECK_THAT(w, Catch::Contains("BT.601 luma"));
+        CHECK(w.empty());
+        // (299 R + 587 G + 114 B + 500) / 1000, by hand: 76, 150, 29, 10 (what --gray gives).
+        CHECK(erd::luma(back).samples == std::vector<std::uint16_t>{76, 150, 29, 10});
     }
-    SECTION("16-bit RGB becomes 16-bit luma") {
+    SECTION("16-bit RGB stays 16-bit colour") {
         Image back;
         std::string w;
         REQUIRE(decode(make_png(1, 1, 16, 2, be16s({65535, 0, 0})), &back, &w).ok());
         CHECK(back.maxval == 65535);
-        CHECK(back.samples == std::vector<std::uint16_t>{19595});
-        CHECK_THAT(w, Catch::Contains("luma"));
+        CHECK(back.channels == 3);
+        CHECK(back.samples == std::vector<std::uint16_t>{65535, 0, 0});
+        CHECK(erd::luma(back).samples == std::vector<std::uint16_t>{19595});
     }
     SECTION("gray + alpha keeps gray, warns about alpha") {
         Image back;
@@ -331,31 +335,34 @@ TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour to BT.601 luma, alph
         CHECK_THAT(w, Catch::Contains("alpha channel ignored"));
         CHECK_THAT(w, !Catch::Contains("luma"));
     }
-    SECTION("RGBA: luma and alpha warnings") {
+    SECTION("RGBA: colour kept, one alpha warning") {
         Image back;
         std::string w;
         REQUIRE(decode(make_png(1, 1, 8, 6, std::string("\x00\xff\x00\x80", 4)), &back, &w).ok());
-        CHECK(back.samples == std::vector<std::uint16_t>{150});
-        CHECK_THAT(w, Catch::Contains("luma"));
-        CHECK_THAT(w, Catch::Contains("alpha"));
+        CHECK(back.samples == std::vector<std::uint16_t>{0, 255, 0});
+        CHECK(w == "PNG alpha channel ignored (erd meshes the colour or gray channels only)");
     }
     SECTION("palette image") {
         Image back;
         std::string w;
         std::string plte = std::string("\x00\x00\x00\x40\x40\x40\xff\x00\x00", 9);
         REQUIRE(decode(make_png(3, 1, 8, 3, std::string("\x00\x01\x02", 3), plte), &back, &w).ok());
-        CHECK(back.samples == std::vector<std::uint16_t>{0, 64, 76});
+        CHECK(back.channels == 3);
+        CHECK(back.samples == std::vector<std::uint16_t>{0, 0, 0, 64, 64, 64, 255, 0, 0});
     }
     SECTION("1-bit gray is scaled to 0/255") {
         Image back;
         REQUIRE(decode(make_png(8, 1, 1, 0, std::string("\xa0", 1)), &back).ok());
         CHECK(back.samples == std::vector<std::uint16_t>{255, 0, 255, 0, 0, 0, 0, 0});
     }
-    SECTION("maxval above 255 cannot go to PNG") {
+    SECTION("maxval above 255 goes to 16-bit PNG, samples kept, read back as maxval 65535") {
         std::string bytes;
-        erd::Status s = erd::cli::encode_png(make(1, 1, 1000, {5}), &bytes);
-        CHECK(s.code == erd::Code::input);
-        CHECK_THAT(s.message, Catch::Contains("PNG output needs maxval <= 255"));
+        REQUIRE(erd::cli::encode_png(make(2, 1, 1000, {5, 1000}), &bytes).ok());
+        CHECK(bytes[24] == 16);  // IHDR bit depth
+        Image back;
+        REQUIRE(decode(bytes, &back).ok());
+        CHECK(back.maxval == 65535);
+        CHECK(back.samples == std::vector<std::uint16_t>{5, 1000});
     }
 }
 
@@ -413,7 +420,7 @@ TEST_CASE("format is detected by content, not by name", "[io][cli]") {
     std::string png;
     REQUIRE(erd::cli::encode_png(im, &png).ok());
     spit(dir.file("really_png.pgm"), png);
-    spit(dir.file("really_pgm.png"), erd::cli::encode_pgm(im, false));
+    spit(dir.file("really_pgm.png"), erd::cli::encode_pnm(im, false));
     RunResult a = run_erd("info --json " + sh_quote(dir.file("really_png.pgm")));
     CHECK(a.status == 0);
     CHECK_THAT(a.out, Catch::Contains("\"format\":\"png\""));
@@ -446,11 +453,13 @@ TEST_CASE("write_image and read_image round trip through files for every output 
         CHECK(back.maxval == k.im->maxval);
         CHECK(back.samples == k.im->samples);
     }
-    // A 16-bit image refused as PNG leaves no file.
-    erd::Status s = erd::cli::write_image(dir.file("no.png"), im16);
-    CHECK(s.code == erd::Code::input);
-    CHECK_THAT(s.message, Catch::Contains("no.png: PNG output needs maxval <= 255"));
-    CHECK_FALSE(exists(dir.file("no.png")));
+    // A 16-bit image goes to a 16-bit PNG (maxval 65535 on reading: a PNG has no maxval).
+    REQUIRE(erd::cli::write_image(dir.file("wide.png"), im16).ok());
+    Image back;
+    std::string w;
+    REQUIRE(erd::cli::read_image(dir.file("wide.png"), &back, &w).ok());
+    CHECK(back.maxval == 65535);
+    CHECK(back.samples == im16.samples);
 }
 
 TEST_CASE("erd synth writes every kind and erd info reads them back", "[io][cli]") {
@@ -482,11 +491,11 @@ TEST_CASE("erd synth writes every kind and erd info reads them back", "[io][cli]
     REQUIRE(erd::cli::read_image(dir.file("f.png"), &f, &w).ok());
     CHECK(a.samples == b.samples);
     CHECK(a.samples == f.samples);
-    // 16 bits cannot go to PNG: exit 2, message, no file.
-    RunResult bad = run_erd("synth --bits 16 -o " + sh_quote(dir.file("g.png")));
-    CHECK(bad.status == 2);
-    CHECK_THAT(bad.err, Catch::Contains("PNG output needs maxval <= 255"));
-    CHECK_FALSE(exists(dir.file("g.png")));
+    // 16 bits go to a 16-bit PNG.
+    RunResult wide = run_erd("synth -q --bits 16 -o " + sh_quote(dir.file("g.png")));
+    CHECK(wide.status == 0);
+    RunResult info = run_erd("info --json " + sh_quote(dir.file("g.png")));
+    CHECK_THAT(info.out, Catch::Contains("\"format\":\"png\",\"width\":256,\"height\":256,\"maxval\":65535,\"bits\":16"));
 }
 
 TEST_CASE("erd info reads stdin with -", "[io][cli]") {
