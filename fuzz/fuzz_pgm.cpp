@@ -24,7 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (im.width < 1 || im.height < 1 || im.width > limits.max_side || im.height > limits.max_side) std::abort();
     if (std::int64_t(im.width) * im.height > limits.max_pixels) std::abort();
-    if (im.samples.size() != std::size_t(im.width) * std::size_t(im.height)) std::abort();
+    if (im.channels != 1 && im.channels != 3) std::abort();
+    if (im.samples.size() != im.pixels() * std::size_t(im.channels)) std::abort();
     if (im.maxval < 1 || im.maxval > 65535) std::abort();
     for (std::uint16_t v : im.samples)
         if (v > im.maxval) std::abort();
@@ -34,7 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::string w;
         if (!erd::cli::decode_pnm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &back, &w, limits).ok())
             std::abort();
-        if (back.width != im.width || back.height != im.height || back.maxval != im.maxval || back.samples != im.samples ||
+        if (back.width != im.width || back.height != im.height || back.maxval != im.maxval || back.channels != im.channels ||
+            back.samples != im.samples ||
             !w.empty())
             std::abort();
     }
