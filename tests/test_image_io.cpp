@@ -10,6 +10,7 @@
 
 #include "algorithms/imaging/luma.h"
 #include "cli/image_io.h"
+#include "tests/png_util.h"
 #include "tests/erd_run.h"
 
 using erd::Image;
@@ -31,56 +32,6 @@ Image make(int w, int h, std::uint32_t maxval, std::vector<std::uint16_t> v) {
     Image im(w, h, maxval);
     im.samples = std::move(v);
     return im;
-}
-
-// ---- a minimal PNG writer (stored deflate blocks), so tests can make PNG kinds stb cannot write
-std::uint32_t crc32(const std::string& s) {
-    std::uint32_t c = 0xffffffffu;
-    for (unsigned char b : s) {
-        c ^= b;
-        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-    }
-    return c ^ 0xffffffffu;
-}
-std::string be32(std::uint32_t v) {
-    return std::string{char(v >> 24), char((v >> 16) & 0xff), char((v >> 8) & 0xff), char(v & 0xff)};
-}
-std::string chunk(const std::string& type, const std::string& data) {
-    return be32(std::uint32_t(data.size())) + type + data + be32(crc32(type + data));
-}
-// rows: the unfiltered bytes of every row, concatenated (filter byte 0 is added here).
-std::string make_png(std::uint32_t w, std::uint32_t h, int depth, int ctype, const std::string& rows,
-                     const std::string& plte = "") {
-    std::string raw;
-    std::size_t row_bytes = h ? rows.size() / h : 0;
-    for (std::uint32_t y = 0; y < h; ++y) raw += '\0' + rows.substr(y * row_bytes, row_bytes);
-    std::string z = "\x78\x01";
-    std::size_t i = 0;
-    do {
-        std::size_t n = std::min<std::size_t>(65535, raw.size() - i);
-        bool last = i + n == raw.size();
-        z += char(last ? 1 : 0);
-        z += char(n & 0xff);
-        z += char(n >> 8);
-        z += char(~n & 0xff);
-        z += char((~n >> 8) & 0xff);
-        z += raw.substr(i, n);
-        i += n;
-    } while (i < raw.size());
-    std::uint32_t a = 1, b = 0;
-    for (unsigned char c : raw) { a = (a + c) % 65521; b = (b + a) % 65521; }
-    z += be32(b << 16 | a);
-    std::string ihdr = be32(w) + be32(h) + char(depth) + char(ctype) + std::string("\0\0\0", 3);
-    std::string png = "\x89PNG\r\n\x1a\n";
-    png += chunk("IHDR", ihdr);
-    if (!plte.empty()) png += chunk("PLTE", plte);
-    png += chunk("IDAT", z) + chunk("IEND", "");
-    return png;
-}
-std::string be16s(std::vector<std::uint16_t> v) {
-    std::string s;
-    for (auto x : v) { s += char(x >> 8); s += char(x & 0xff); }
-    return s;
 }
 
 // ---- ../shared/spec/INPUTS.md PGM cases 1-12: bytes and the fragment the one-line message must contain
@@ -577,7 +528,14 @@ TEST_CASE("docs/hostile_images.md is the table this test generates (ERD_REGENERA
     row("PNG pixels above the budget", make_png(17000, 17000, 8, 0, std::string(17000, '\0')));
     row("PNG small file, huge image", make_png(8000, 8000, 16, 6, std::string(64, '\0')));
     row("PNG truncated after IHDR", make_png(4, 4, 8, 0, std::string(16, '\x07')).substr(0, 33));
-    row("PNG colour (warning)", make_png(1, 1, 8, 2, std::string("\x10\x20\x30", 3)));
+    row("PNG colour (kept)", make_png(1, 1, 8, 2, std::string("\x10\x20\x30", 3)));
+    row("PNG RGBA (alpha warning)", make_png(1, 1, 8, 6, std::string("\x10\x20\x30\x40", 4)));
+    row("PPM P6 truncated", "P6\n4 4 255\nabcdef");
+    row("PPM maxval 0", std::string("P6\n1 1 0\n\0\0\0", 12));
+    row("PPM 16-bit, odd byte count", std::string("P6\n1 1 65535\n\0\1\0\2\0", 18));
+    row("PPM P3 sample above maxval", "P3 1 1 9 1 2 10\n");
+    row("JPEG start marker only", "\xff\xd8");
+    row("JPEG truncated in a segment", "\xff\xd8\xff\xe0\x00\x10JFIF");
     const std::string path = "docs/hostile_images.md";
     if (!have_input(exists(path), path + " not found from the current folder; run the tests from the repository root")) return;
     if (regenerate_requested()) {
