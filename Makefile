@@ -166,7 +166,9 @@ ERD_ALIASES := ywb gpi erd_ed erd_gpi imgsyn imgsyn_aa Cal_PSNR
 ERD_PC_VERSION ?= 0.1.0
 # The public headers: api/erd.h and every header it includes, directly or not, as the compiler
 # finds them (so the list follows api/erd.h). `make public-headers` prints it.
-PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h)))
+# The image-I/O library's headers (imageio/, for build/liberd_imageio.a) and theirs are public too.
+IMAGEIO_PUBLIC := imageio/image_file.h imageio/image_format.h imageio/jpeg.h imageio/png.h imageio/pnm.h
+PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h $(IMAGEIO_PUBLIC))))
 
 .PHONY: install install-aliases uninstall public-headers embedded
 public-headers:
@@ -178,8 +180,6 @@ install: $(BUILD)/erd $(BUILD)/liberd.a $(BUILD)/liberd_imageio.a
 	install -m 755 $(BUILD)/erd $(DESTDIR)$(BINDIR)/erd
 	install -m 644 $(BUILD)/liberd.a $(DESTDIR)$(LIBDIR)/liberd.a
 	install -m 644 $(BUILD)/liberd_imageio.a $(DESTDIR)$(LIBDIR)/liberd_imageio.a
-	for h in imageio/image_format.h imageio/image_file.h imageio/pnm.h imageio/png.h imageio/jpeg.h algorithms/imaging/image.h; do \
-	  install -D -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/erd/$$h || exit 1; done
 	for h in $(PUBLIC_HDR); do install -D -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/erd/$$h || exit 1; done
 	printf '%s\n' '// erd public API: see api/erd.h. Compile with `pkg-config --cflags erd`.' \
 	  '#pragma once' '#include "api/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
