@@ -4,7 +4,17 @@
 
 namespace erd::imageio {
 
-static const char kHex[] = "0123456789abcdef";
+// c as itself when printable ASCII (space included when `space`), else as \xNN.
+static void put_byte(std::string* s, unsigned char c, bool space) {
+    static const char hex[] = "0123456789abcdef";
+    if (c >= (space ? 0x20 : 0x21) && c < 0x7f) {
+        *s += char(c);
+        return;
+    }
+    *s += "\\x";
+    *s += hex[c >> 4];
+    *s += hex[c & 15];
+}
 
 std::string show(const unsigned char* data, std::size_t size, std::size_t i, std::size_t max_chars) {
     std::string s;
@@ -12,13 +22,7 @@ std::string show(const unsigned char* data, std::size_t size, std::size_t i, std
     for (; k < size && k - i < max_chars; ++k) {
         unsigned char c = data[k];
         if (k > i && (is_space(c) || c == '#')) return s;
-        if (c >= 0x21 && c < 0x7f) {
-            s += char(c);
-        } else {
-            s += "\\x";
-            s += kHex[c >> 4];
-            s += kHex[c & 15];
-        }
+        put_byte(&s, c, false);
     }
     // Cut short in the middle of a token: say so.
     if (k < size && !is_space(data[k]) && data[k] != '#') s += "...";
@@ -27,15 +31,7 @@ std::string show(const unsigned char* data, std::size_t size, std::size_t i, std
 
 std::string printable(const std::string& why) {
     std::string out;
-    for (unsigned char c : why) {
-        if (c >= 0x20 && c < 0x7f) {
-            out += char(c);
-        } else {
-            out += "\\x";
-            out += kHex[c >> 4];
-            out += kHex[c & 15];
-        }
-    }
+    for (unsigned char c : why) put_byte(&out, c, true);
     return out;
 }
 
