@@ -16,6 +16,7 @@ static const char* format_key(ImageFormat f) {
         case ImageFormat::pgm_raw: return "pgm-raw";
         case ImageFormat::ppm_plain: return "ppm-plain";
         case ImageFormat::ppm_raw: return "ppm-raw";
+        case ImageFormat::pam: return "pam";
         case ImageFormat::png: return "png";
         case ImageFormat::jpeg: return "jpeg";
         case ImageFormat::unknown: break;
@@ -27,7 +28,7 @@ const CommandLine kInfo = {
     "info",
     "erd info IMAGE [--json]",
     "Prints the size, channels, maxval, bits per sample, format and sample range of a PGM\n"
-    "(P2, P5), PPM (P3, P6), PNG or JPEG file (\"-\" reads stdin). The format is recognised\n"
+    "(P2, P5), PPM (P3, P6), PAM (P7), PNG or JPEG file (\"-\" reads stdin). The format is recognised\n"
     "from the content, not the name; a colour file whose channels are all equal is gray.",
     {
         {0, "json", nullptr, "one JSON object on stdout"},

@@ -34,6 +34,7 @@ struct ImageFrame {
         *total = UINT64_MAX;
         if (n >= 1 && d[0] == 0x89) return png(d, n, total);
         if (n >= 3 && d[0] == 0xff && d[1] == 0xd8 && d[2] == 0xff) return Status::success();  // JPEG: to the end
+        if (n >= 2 && d[0] == 'P' && d[1] == '7') return pam(d, n, total);
         if (!header_done) {
             if (n >= 2 && (d[0] != 'P' || (d[1] != '2' && d[1] != '3' && d[1] != '5' && d[1] != '6'))) {
                 *total = n;  // not an image: the decoder says what it is
@@ -77,6 +78,20 @@ struct ImageFrame {
                 *total = pos + 1;
                 return Status::success();
             }
+        }
+        return Status::success();
+    }
+
+    // PAM: the header, then its declared raster.
+    Status pam(const unsigned char* d, std::size_t n, std::uint64_t* total) {
+        PamHeader h;
+        Status s = pam_header(d, n, limits, &h);
+        if (s) {
+            *total = h.raster + h.w * h.h * h.depth * (h.maxval < 256 ? 1 : 2);
+        } else if (s.message.compare(0, 11, "end of file") != 0) {
+            *total = n;  // bad already
+        } else if (n >= kMaxStreamHeader) {
+            return Status::bad_input("no complete PAM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
         }
         return Status::success();
     }

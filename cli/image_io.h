@@ -1,5 +1,5 @@
 // Image files for the erd program: the codecs are the image-I/O part of the library (imageio/:
-// PGM, PPM, PNG, JPEG), whose names are brought in here; this adds the file handling of
+// PGM, PPM, PAM, PNG, JPEG), whose names are brought in here; this adds the file handling of
 // cli/fileio.h (standard input, streams framed by their header, atomic writes) and prefixes
 // every message with the path.
 #pragma once
@@ -8,6 +8,7 @@
 #include "algorithms/imaging/image.h"
 #include "imageio/image_format.h"
 #include "imageio/jpeg.h"
+#include "imageio/pam.h"
 #include "imageio/png.h"
 #include "imageio/pnm.h"
 #include "kernel/status.h"
@@ -16,6 +17,7 @@ namespace erd::cli {
 
 using imageio::decode_image;
 using imageio::decode_jpeg;
+using imageio::decode_pam;
 using imageio::decode_png;
 using imageio::decode_pnm;
 using imageio::detect_format;
@@ -25,6 +27,8 @@ using imageio::format_name;
 using imageio::ImageFormat;
 using imageio::ImageLimits;
 using imageio::pad_png_palette;
+using imageio::pam_header;
+using imageio::PamHeader;
 using imageio::pnm_header;
 using imageio::PnmHeader;
 

@@ -1,5 +1,5 @@
-// libFuzzer target for our PGM reader (cli/image_io.h decode_pnm), and through decode_image the
-// format detection and the "what is this file" messages.
+// libFuzzer target for our netpbm readers (imageio/pnm.h decode_pnm: PGM, PPM; imageio/pam.h
+// decode_pam for "P7" inputs) and the "what is this file" messages.
 //
 // Checks beyond "no crash": a failure is one non-empty line with Code::input; a success is a
 // well-formed image (sizes within the limits, every sample <= maxval) that survives an
@@ -17,7 +17,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     limits.max_pixels = std::int64_t(1) << 20;  // keeps every run fast; the logic is the same
     erd::Image im;
     std::string warning;
-    erd::Status s = erd::cli::decode_pnm(data, size, &im, &warning, limits);
+    const bool pam = size >= 2 && data[0] == 'P' && data[1] == '7';
+    erd::Status s = pam ? erd::cli::decode_pam(data, size, &im, &warning, limits)
+                        : erd::cli::decode_pnm(data, size, &im, &warning, limits);
     if (!s.ok()) {
         if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
         return 0;

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "imageio/jpeg.h"
+#include "imageio/pam.h"
 #include "imageio/png.h"
 #include "imageio/pnm.h"
 
@@ -14,6 +15,7 @@ const char* format_name(ImageFormat f) {
         case ImageFormat::pgm_raw: return "PGM (P5, raw)";
         case ImageFormat::ppm_plain: return "PPM (P3, plain)";
         case ImageFormat::ppm_raw: return "PPM (P6, raw)";
+        case ImageFormat::pam: return "PAM (P7)";
         case ImageFormat::png: return "PNG";
         case ImageFormat::jpeg: return "JPEG";
         case ImageFormat::unknown: break;
@@ -29,6 +31,7 @@ ImageFormat detect_format(const unsigned char* data, std::size_t size) {
             case '3': return ImageFormat::ppm_plain;
             case '5': return ImageFormat::pgm_raw;
             case '6': return ImageFormat::ppm_raw;
+            case '7': return ImageFormat::pam;
             default: break;
         }
     }
@@ -43,6 +46,7 @@ Status decode_image(const unsigned char* data, std::size_t size, Image* out, std
     if (format) *format = f;
     if (f == ImageFormat::png) return decode_png(data, size, out, warning, limits);
     if (f == ImageFormat::jpeg) return decode_jpeg(data, size, out, warning, limits);
+    if (f == ImageFormat::pam) return decode_pam(data, size, out, warning, limits);
     // decode_pnm also explains what an unknown file is.
     return decode_pnm(data, size, out, warning, limits);
 }
@@ -65,7 +69,7 @@ Status encode_image(const Image& im, ImageFormat format, std::string* bytes) {
         case ImageFormat::png: return encode_png(im, bytes);
         case ImageFormat::pgm_plain: case ImageFormat::ppm_plain: *bytes = encode_pnm(im, true); return Status::success();
         case ImageFormat::pgm_raw: case ImageFormat::ppm_raw: *bytes = encode_pnm(im, false); return Status::success();
-        case ImageFormat::jpeg: case ImageFormat::unknown: break;
+        case ImageFormat::pam: case ImageFormat::jpeg: case ImageFormat::unknown: break;
     }
     return Status::failure(std::string("no writer for ") + format_name(format));
 }

@@ -1,5 +1,5 @@
 // erd's optional image-I/O part (build/liberd_imageio.a; docs/architecture.md): PGM and PPM by our
-// own readers, PNG and JPEG through the fenced stb glue (third_party/stb_glue.h), PNG written with
+// own readers (and PAM), PNG and JPEG through the fenced stb glue (third_party/stb_glue.h), PNG written with
 // zlib. The core library (kernel/, algorithms/, api/) never includes it, so an application that
 // has its own images needs neither stb nor zlib.
 //
@@ -16,9 +16,10 @@
 
 namespace erd::imageio {
 
-enum class ImageFormat { unknown, pgm_plain, pgm_raw, ppm_plain, ppm_raw, png, jpeg };
+enum class ImageFormat { unknown, pgm_plain, pgm_raw, ppm_plain, ppm_raw, pam, png, jpeg };
 
-// "PGM (P2, plain)", "PGM (P5, raw)", "PPM (P3, plain)", "PPM (P6, raw)", "PNG", "JPEG", "unknown".
+// "PGM (P2, plain)", "PGM (P5, raw)", "PPM (P3, plain)", "PPM (P6, raw)", "PAM (P7)", "PNG", "JPEG",
+// "unknown".
 const char* format_name(ImageFormat f);
 
 // Size limits, checked before any allocation. Defaults are those of algorithms/imaging/image.h
@@ -28,7 +29,7 @@ struct ImageLimits {
     std::int64_t max_pixels = kMaxImagePixels;
 };
 
-// Detects the format from the magic bytes (P2, P3, P5, P6, the PNG signature, FF D8 FF).
+// Detects the format from the magic bytes (P2, P3, P5, P6, P7, the PNG signature, FF D8 FF).
 ImageFormat detect_format(const unsigned char* data, std::size_t size);
 
 // Detects the format and decodes. Colour stays colour (channels 3, interleaved); a colour image
@@ -43,7 +44,7 @@ Status decode_image(const unsigned char* data, std::size_t size, Image* out, std
 ImageFormat format_for_name(const std::string& name, bool plain = false);
 
 // Encodes an image as `format` (pgm_* and ppm_* are the same choice: the channels decide; JPEG
-// is not written). The image must be valid: checked, Code::failure when not.
+// and PAM are not written). The image must be valid: checked, Code::failure when not.
 Status encode_image(const Image& im, ImageFormat format, std::string* bytes);
 
 }  // namespace erd::imageio

@@ -57,7 +57,7 @@ Status check_pixels(const std::string& what, std::uint64_t w, std::uint64_t h, c
 static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
 std::string wrong_magic(const unsigned char* d, std::size_t n) {
-    static const char* kReads = "erd reads PGM (P2, P5), PPM (P3, P6), PNG and JPEG";
+    static const char* kReads = "erd reads PGM (P2, P5), PPM (P3, P6), PAM (P7), PNG and JPEG";
     if (n == 0) return "empty file";
     if (n == 1) return "file too short (1 byte) to be an image";
     const char* what = nullptr;
@@ -65,7 +65,6 @@ std::string wrong_magic(const unsigned char* d, std::size_t n) {
         switch (d[1]) {
             case '1': what = "a PBM bitmap (P1, plain)"; break;
             case '4': what = "a PBM bitmap (P4, raw)"; break;
-            case '7': what = "a PAM image (P7)"; break;
             case 'F': what = "a PFM colour float image (PF)"; break;
             case 'f': what = "a PFM gray float image (Pf)"; break;
             default: break;

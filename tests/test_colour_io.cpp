@@ -57,6 +57,33 @@ TEST_CASE("PPM P6 and P3, 8- and 16-bit, round trip exactly", "[io][colour]") {
     }
 }
 
+TEST_CASE("PAM (P7): gray, RGB, alpha dropped with a warning, 16-bit; bad headers one line", "[io][colour]") {
+    Image im;
+    std::string w;
+    ImageFormat f;
+    REQUIRE(decode(std::string("P7\nWIDTH 2\nHEIGHT 1\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n\1\2\3\377\4\5\6\1"),
+                   &im, &w, &f).ok());
+    CHECK(f == ImageFormat::pam);
+    CHECK(im.channels == 3);
+    CHECK(im.samples == std::vector<std::uint16_t>{1, 2, 3, 4, 5, 6});
+    CHECK(w == "PAM alpha channel ignored (erd meshes the colour or gray channels only)");
+    REQUIRE(decode(std::string("P7\n# c\nWIDTH 1\nHEIGHT 2\nDEPTH 1\nMAXVAL 1000\nENDHDR\n\x03\xe8\x00\x07", 55), &im, &w).ok());
+    CHECK(im.channels == 1);
+    CHECK(im.maxval == 1000);
+    CHECK(im.samples == std::vector<std::uint16_t>{1000, 7});
+    struct Bad { const char* bytes; const char* fragment; };
+    for (const Bad& b : {Bad{"P7\nWIDTH 2\nHEIGHT 1\nDEPTH 1\nMAXVAL 255\nENDHDR\n\1", "raster truncated: expected 2 bytes"},
+                         Bad{"P7\nWIDTH 1\nHEIGHT 1\nDEPTH 5\nMAXVAL 255\nENDHDR\n\1\1\1\1\1", "PAM DEPTH 5"},
+                         Bad{"P7\nWIDTH 1\nDEPTH 1\nMAXVAL 255\nENDHDR\n\1", "PAM header has no HEIGHT line"},
+                         Bad{"P7\nWIDTH 1\nHEIGHT 1\nDEPTH 1\nMAXVAL 255\n", "no ENDHDR line"},
+                         Bad{"P7\nWIDTH x1\nHEIGHT 1\nDEPTH 1\nMAXVAL 255\nENDHDR\n", "junk where the PAM WIDTH belongs"}}) {
+        INFO(b.bytes);
+        erd::Status s = decode(b.bytes, &im);
+        CHECK(s.code == erd::Code::input);
+        CHECK_THAT(s.message, Catch::Contains(b.fragment));
+    }
+}
+
 TEST_CASE("16-bit P6 samples are big-endian, interleaved R G B", "[io][colour]") {
     Image im(1, 1, 1000, 3);
     im.samples = {0x0102, 999, 0};

@@ -171,7 +171,7 @@ cat <<'EOF'
 EOF
 : > empty.pgm
 printf 'P' > one.pgm
-printf 'P7\nWIDTH 1\nHEIGHT 1\n' > p7.pgm
+printf 'P1\n1 1\n1\n' > p1.pgm
 printf 'P5\n4 4' > eofhdr.pgm
 printf 'P5\n+4 4 255\n' > junk.pgm
 printf 'P5\n4294967297 1 255\n\001' > wrap.pgm
@@ -187,7 +187,7 @@ printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\001\206\240\000\001\206\240\01
 printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\000\000\004\000\000\000\004\010\000\000\000\000\000\000\000\000\000\000\000\000IDAT' > trunc.png
 case_ "1 empty file" 2 info empty.pgm
 case_ "1 one byte" 2 info one.pgm
-case_ "2 other magic (P7)" 2 info p7.pgm
+case_ "2 other magic (P1)" 2 info p1.pgm
 case_ "3 end of file in header" 2 info eofhdr.pgm
 case_ "4 junk number (+4)" 2 info junk.pgm
 case_ "5 width 2^32+1" 2 info wrap.pgm
@@ -351,7 +351,7 @@ case_ "--max-memory too large" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 
 cat <<'EOF'
 
 ## Colour and JPEG inputs (issues 17, 20)
-Colour stays colour (PPM P3/P6, PNG RGB/RGBA, JPEG); `erd generate` meshes its luma until the
+Colour stays colour (PPM P3/P6, PAM, PNG RGB/RGBA, JPEG); `erd generate` meshes its luma until the
 methods take colour, with one warning line unless `--gray` is given. JPEG seeds are
 fuzz/corpus/fuzz_jpeg (fuzz/make_jpeg_seeds.sh).
 | case | command | exit | message |
@@ -371,6 +371,10 @@ case_ "PPM truncated P6 raster" 2 info trunc6.ppm
 case_ "PPM maxval 0" 2 info max0.ppm
 case_ "PPM 16-bit P6, odd byte count" 2 info odd16.ppm
 case_ "PPM plain P3, too few samples" 2 info few3.ppm
+printf 'P7\nWIDTH 4\nHEIGHT 4\nDEPTH 3\nMAXVAL 255\nENDHDR\nabc' > trunc.pam
+printf 'P7\nWIDTH 1\nHEIGHT 1\nDEPTH 5\nMAXVAL 255\nENDHDR\n\001\001\001\001\001' > depth5.pam
+case_ "PAM truncated raster" 2 info trunc.pam
+case_ "PAM DEPTH 5" 2 info depth5.pam
 case_ "PPM 1x1 (info)" 0 info 1x1.ppm
 case_ "PPM 1x1 (generate)" 2 generate -q -m gpi -i 1x1.ppm -o o.model -n 4
 case_ "PPM 1x5 (generate)" 2 generate -q -m gpi -i 1x5.ppm -o o.model -n 4
