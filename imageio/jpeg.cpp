@@ -36,6 +36,24 @@ const char* unsupported_frame(unsigned m) {
 constexpr std::uint64_t kMaxSamplesPerByte = 4096;
 constexpr std::uint64_t kFreeSamples = std::uint64_t(1) << 22;
 
+// A DHT segment's tables (payload p, len bytes): each a class/id byte, 16 code counts summing to
+// at most 256, then that many symbols. stb 2.27 builds its tables from counts summing above 256
+// and writes past its 257-entry array (found by fuzz_jpeg: fuzz/corpus/fuzz_jpeg/
+// regress_dht_over_256), so they are refused here first.
+Status check_dht(const unsigned char* p, std::size_t len) {
+    std::size_t i = 0;
+    while (i < len) {
+        if (len - i < 17) return Status::bad_input("JPEG corrupt: Huffman table (DHT) cut short");
+        if ((p[i] >> 4) > 1 || (p[i] & 15) > 3) return Status::bad_input("JPEG corrupt: Huffman table (DHT) with a bad class or id");
+        std::size_t n = 0;
+        for (std::size_t k = 1; k <= 16; ++k) n += p[i + k];
+        if (n > 256) return Status::bad_input("JPEG corrupt: Huffman table (DHT) with " + std::to_string(n) + " codes (at most 256)");
+        if (len - i - 17 < n) return Status::bad_input("JPEG corrupt: Huffman table (DHT) longer than its segment");
+        i += 17 + n;
+    }
+    return Status::success();
+}
+
 }  // namespace
 
 Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& limits, JpegHeader* hd) {
@@ -57,6 +75,8 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
         if (len < 2) return Status::bad_input("JPEG corrupt: marker " + hex2(m) + " has length " + std::to_string(len));
         if (pos + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
         const unsigned char* s = d + pos + 2;
+        if (m == 0xc4)
+            if (Status st = check_dht(s, len - 2); !st) return st;
         if (const char* kind = unsupported_frame(m))
             return Status::bad_input(std::string("JPEG is ") + kind + " (frame marker " + hex2(m) +
                                      "): erd reads baseline and progressive Huffman JPEG; convert it to PNG");
@@ -92,9 +112,19 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
     // In entropy-coded data every FF byte is followed by 00 or a marker, so FF D9 after the first
     // scan is the end-of-image marker; a file without it was cut short (stb would decode the
     // missing part as flat gray without a word).
+    // The Huffman tables between the scans of a progressive file are checked the same way (FF C4
+    // is a marker there too).
     bool end = false;
-    for (std::size_t k = pos; k + 1 < n; ++k)
-        if (d[k] == 0xff && d[k + 1] == 0xd9) { end = true; break; }
+    for (std::size_t k = pos; k + 1 < n; ++k) {
+        if (d[k] != 0xff) continue;
+        if (d[k + 1] == 0xd9) { end = true; break; }
+        if (d[k + 1] != 0xc4) continue;
+        if (k + 4 > n) return Status::bad_input("JPEG truncated: the file ends inside the FFC4 marker");
+        const std::size_t len = std::size_t(d[k + 2]) << 8 | d[k + 3];
+        if (len < 2 || k + 2 + len > n) return Status::bad_input("JPEG truncated: the file ends inside the FFC4 segment");
+        if (Status st = check_dht(d + k + 4, len - 2); !st) return st;
+        k += 1 + len;
+    }
     if (!end) return Status::bad_input("JPEG truncated: no end-of-image marker (FF D9) after the image data");
     const std::uint64_t samples = std::uint64_t(hd->width) * std::uint64_t(hd->height) * std::uint64_t(hd->components);
     if (samples > kMaxSamplesPerByte * std::uint64_t(n) + kFreeSamples)

@@ -160,7 +160,8 @@ TEST_CASE("JPEG seeds: gray, colour 4:2:0 and 4:4:4, progressive 1xN, equal chan
     struct Bad { const char* file; const char* fragment; };
     for (const Bad& b : {Bad{"truncated.jpg", "JPEG truncated: no end-of-image marker"},
                          Bad{"cmyk_8x8.jpg", "JPEG has 4 components (CMYK or YCCK)"},
-                         Bad{"progressive_huge.jpg", "JPEG 16000 x 16000 in 549 bytes is more than 4096 samples a byte"}}) {
+                         Bad{"progressive_huge.jpg", "JPEG 16000 x 16000 in 549 bytes is more than 4096 samples a byte"},
+                         Bad{"regress_dht_over_256", "Huffman table (DHT) with 2023 codes (at most 256)"}}) {
         INFO(b.file);
         Image im;
         erd::Status s = decode(slurp(d + b.file), &im);

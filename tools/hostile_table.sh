@@ -409,6 +409,8 @@ cp "$J/truncated.jpg" "$J/progressive_huge.jpg" "$J/cmyk_8x8.jpg" "$J/progressiv
 case_ "JPEG truncated" 2 info truncated.jpg
 case_ "JPEG progressive, 16000x16000 in 549 bytes" 2 info progressive_huge.jpg
 case_ "JPEG CMYK" 2 info cmyk_8x8.jpg
+cp "$J/regress_dht_over_256" dht.jpg
+case_ "JPEG Huffman table of 2023 codes (stb overflow)" 2 info dht.jpg
 case_ "JPEG progressive 1x7 (info)" 0 info progressive_1x7.jpg
 case_ "JPEG progressive 1x7 (generate)" 2 generate -q -m gpi -i progressive_1x7.jpg -o o.model -n 4
 case_ "JPEG start marker only" 2 info soi.jpg
