@@ -47,7 +47,8 @@ const CommandLine kGenerate = {
     "Each image is meshed on its own; one that fails is reported and the others go on (exit 1).",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
-        {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin); repeat it or name a folder for many"},
+        {'i', "input", "FILE", "input image, PGM, PPM, PAM, PNG or JPEG (default and - : stdin); repeat it or name a folder for many"},
+        {0, "gray", nullptr, "colour input: mesh its BT.601 luma (0.299 R + 0.587 G + 0.114 B) without a warning"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
         {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
@@ -225,6 +226,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     std::string warning;
     st = read_image(in, &image, &warning);
     if (!st) return rep.fail(st);
+    // The one place where generate decides what a colour image becomes: its luma, until the
+    // methods take colour (issue 17); with a warning unless --gray asked for it.
+    to_gray(in, &image, a.has("gray"), &warning);
     rep.warn(warning);
     const double read_seconds = seconds_since(t0);
 
