@@ -136,6 +136,8 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
+    mo.constraints = &options.constraints;
+    mo.detect = options.detect;
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
