@@ -257,6 +257,8 @@ static int run_generate(const Args& a, const Reporter& rep) {
     GenerateResult res;
     st = method->run(image, opt, &res);
     progress.finish();
+    if (!st && st.code == Code::input && !constraints_in.empty() && st.message.rfind("constraints: ", 0) == 0)
+        return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message.substr(13)));
     if (!st) return rep.fail(st.code == Code::input ? Status::bad_input(in + ": " + st.message) : st);
     for (const StageTime& s : res.stages) {
         char buf[128];

@@ -11,6 +11,8 @@
 
 #include "algorithms/imaging/synth.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/model/model_io.h"
+#include "tests/erd_run.h"
 
 using namespace erd;
 
@@ -143,4 +145,40 @@ TEST_CASE("user constraints: duplicates merge, crossings and outside points are 
         for (int x = 0; x <= 94; x += 2) many.back().push_back({x, y});
     }
     CHECK(status(many).code == Code::input);
+}
+
+TEST_CASE("generate --constraints: in the .tri; bad files and other methods refused in one line", "[erd][constraints][cli]") {
+    using namespace erd_test;
+    if (!need_binary()) return;
+    TempDir dir;
+    // A 24 x 18 gray ramp (P5).
+    std::string pgm = "P5\n24 18\n255\n";
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 24; ++x) pgm += char(x * 10 + (x > 12 ? 60 : 0));
+    spit(dir.file("in.pgm"), pgm);
+    spit(dir.file("c.poly"), "erd-polylines 1\n1\n3 4 4 20 30 40 30\n");
+    const std::string base = "generate -i " + sh_quote(dir.file("in.pgm")) + " -n 40 -q -x 2 ";
+    RunResult r = run_erd(base + "--method erdgpi --no-detect --constraints " + sh_quote(dir.file("c.poly")) +
+                          " -o " + sh_quote(dir.file("m.erd")) + " -t " + sh_quote(dir.file("m.tri")));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    Model tri;
+    REQUIRE(read_triangulation(slurp(dir.file("m.tri")), &tri).ok());
+    CHECK(has_segment(tri, {4, 4}, {20, 30}));
+    CHECK(has_segment(tri, {20, 30}, {40, 30}));
+    // Each bad case: exit 2 and one line on stderr.
+    spit(dir.file("bad.poly"), "erd-polylines 1\n1\n2 4 4 20\n");
+    spit(dir.file("out.poly"), "erd-polylines 1\n1\n2 4 4 60 4\n");
+    for (const std::string& args :
+         {"--method erdgpi --constraints " + sh_quote(dir.file("bad.poly")),
+          "--method erded --constraints " + sh_quote(dir.file("out.poly")),
+          "--method erdgpi --constraints " + sh_quote(dir.file("missing.poly")),
+          "--method gpi --constraints " + sh_quote(dir.file("c.poly"))}) {
+        const std::string out = dir.file(args.rfind("--method gpi", 0) == 0 ? "x.model" : "x.erd");
+        RunResult b = run_erd(base + args + " -o " + sh_quote(out));
+        INFO(args << ": " << b.err);
+        CHECK(b.status == 2);
+        CHECK((b.err.find(".poly") != std::string::npos || b.err.find("--constraints") != std::string::npos));
+        CHECK(!exists(out));
+    }
 }
