@@ -53,7 +53,7 @@ void simplify_into(const Polyline& line, double epsilon, Accept accept, Scratch*
         stack.push_back({first, at});
     }
     out->clear();
-    out->reserve(kept);
+    out->reserve(polyline_capacity(kept));
     for (std::size_t i = 0; i < n; ++i)
         if (keep[i]) out->push_back(line[i]);
 }

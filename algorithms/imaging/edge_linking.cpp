@@ -69,13 +69,14 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     const std::uint8_t reach = limit >= 2 ? std::uint8_t(limit - 1) : limit;
     // The number of main neighbours of each main point, for the climbs below: counted here from
     // the rings the search reads anyway, and kept up to date as points become main (one ring
-    // per added point instead of one per main point).
-    std::unique_ptr<std::uint8_t[]> main_nb(new std::uint8_t[n]());
+    // per added point instead of one per main point). Kept in `back`, which is read only at
+    // points that are not main (a chain ends at the first main point).
+    std::uint8_t* main_nb = back.get();
     auto became_main = [&](std::uint32_t i) {
         std::uint32_t nb[8];
         sp->ring(i, nb);
         for (const std::uint32_t j : nb)
-            if (j != kNoPoint) ++main_nb[j];
+            if (j != kNoPoint && (flag[j] & kMain)) ++main_nb[j];
     };
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const std::uint32_t i = queue[head];

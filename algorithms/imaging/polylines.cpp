@@ -52,8 +52,8 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
     };
     // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
     // no free link left, or the start again.
-    // Each line is traced into one scratch buffer and copied out at its exact size (one allocation
-    // a line instead of a growing vector's several: a noisy image traces many short lines).
+    // Each line is traced into one scratch buffer and copied out (one allocation a line instead of
+    // a growing vector's several: a noisy image traces many short lines).
     Polyline line;
     auto run = [&](std::uint32_t start, int d) {
         line.assign(1, point(start));
@@ -67,7 +67,9 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
             d = free_link(cur);
             if (d < 0) break;
         }
-        out.emplace_back(line.begin(), line.end());
+        out.emplace_back();
+        out.back().reserve(polyline_capacity(line.size()));
+        out.back().assign(line.begin(), line.end());
     };
 
     for (std::uint32_t i = 0; i < n; ++i) {
