@@ -99,7 +99,7 @@ std::size_t distinct_points(const std::vector<Polyline>& polylines) {
     return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
 
-Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped) {
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped, bool refuse_crossing) {
     // Points first (the kernel orders a batch along a Hilbert curve), then the segments. Nobody
     // reads the batch's change report, so the kernel skips that bookkeeping.
     std::vector<LatticePoint> pts;
@@ -108,11 +108,15 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
     Status st = cdt->insert_points(pts, &ids, false);
     if (!st.ok()) return st;
     std::size_t k = 0;
-    for (const Polyline& pl : polylines) {
+    for (std::size_t p = 0; p < polylines.size(); ++p) {
+        const Polyline& pl = polylines[p];
         for (std::size_t i = 0; i + 1 < pl.size(); ++i) {
             ConstraintReport rep;
             st = cdt->insert_constraint(ids[k + i], ids[k + i + 1], &rep);
             if (!st.ok()) return st;
+            if (refuse_crossing && rep.dropped_crossing)
+                return Status::bad_input("constraints: segment " + std::to_string(i) + " of polyline " + std::to_string(p) +
+                                         " crosses another constraint segment (split both at a common point)");
             *dropped += rep.dropped_crossing;
         }
         k += pl.size();
@@ -133,30 +137,6 @@ Status check_constraints(const std::vector<Polyline>& user, int width, int heigh
                                          " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ") lies outside 0.." +
                                          std::to_string(mx) + " x 0.." + std::to_string(my) + " (doubled coordinates)");
         }
-    return Status::success();
-}
-
-// Inserts the user polylines first, refusing a segment that crosses an earlier one (a crossing
-// has no lattice point to split at, and keeping either would depend on the file's order).
-Status insert_user(const std::vector<Polyline>& user, Cdt* cdt) {
-    std::vector<LatticePoint> pts;
-    for (const Polyline& pl : user) pts.insert(pts.end(), pl.begin(), pl.end());
-    std::vector<VertInd> ids;
-    Status st = cdt->insert_points(pts, &ids, false);
-    if (!st.ok()) return st;
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < user.size(); ++i) {
-        const Polyline& pl = user[i];
-        for (std::size_t j = 0; j + 1 < pl.size(); ++j) {
-            ConstraintReport rep;
-            st = cdt->insert_constraint(ids[k + j], ids[k + j + 1], &rep);
-            if (!st.ok()) return st;
-            if (rep.dropped_crossing)
-                return Status::bad_input("constraints: segment " + std::to_string(j) + " of polyline " + std::to_string(i) +
-                                         " crosses another constraint segment (split both at a common point)");
-        }
-        k += pl.size();
-    }
     return Status::success();
 }
 
@@ -256,7 +236,10 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     out->dropped_crossing = 0;
     if (!user.empty()) {
         // User segments first: a detected piece crossing one is the one dropped.
-        if (!(st = insert_user(user, cdt)).ok()) return st;
+        // A crossing has no lattice point to split at, and keeping either segment would depend on
+        // the file's order: refused.
+        std::size_t none = 0;
+        if (!(st = insert_polylines(user, cdt, &none, true)).ok()) return st;
         if (out->edges.width == 2 * image.width - 1 && out->edges.height == 2 * image.height - 1)
             mark_constraints(user, &out->edges);
     }

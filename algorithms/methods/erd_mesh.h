@@ -62,8 +62,10 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
                           Cdt* cdt, InitialMesh* out);
 
 // Inserts P and E of the given polylines into cdt (points already there are shared). Adds the
-// refused constraint pieces (crossing an earlier constrained edge) to *dropped.
-Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped);
+// refused constraint pieces (crossing an earlier constrained edge) to *dropped, or with
+// refuse_crossing fails (Code::input, naming the segment) at the first one.
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped,
+                        bool refuse_crossing = false);
 
 // Distinct points of a set of polylines (they share end points at junctions).
 std::size_t distinct_points(const std::vector<Polyline>& polylines);
