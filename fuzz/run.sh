@@ -2,6 +2,7 @@
 # Builds every fuzz/fuzz_*.cpp with libFuzzer + ASan + UBSan and runs each for SECONDS.
 # Prints "PASS name execs corpus" or "FAIL name" per target.
 # Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). FUZZ_BUILD=dir (default build-fuzz).
+# FUZZ_SHORT_SECONDS=S caps the targets named in FUZZ_SHORT (default fuzz_framing) at S seconds.
 set -u
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
@@ -27,10 +28,13 @@ for src in $targets; do
     mkdir -p "$corpus"
     seeds=fuzz/corpus/$name
     dict=""; [[ -f fuzz/$name.dict ]] && dict="-dict=fuzz/$name.dict"
-    if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$SECONDS_EACH" \
+    secs=$SECONDS_EACH
+    # FUZZ_SHORT_SECONDS caps the targets of FUZZ_SHORT (make test's smoke runs keep them short).
+    [[ " ${FUZZ_SHORT:-fuzz_framing} " == *" $name "* && -n ${FUZZ_SHORT_SECONDS:-} ]] && (( secs > FUZZ_SHORT_SECONDS )) && secs=$FUZZ_SHORT_SECONDS
+    if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$secs" \
         -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
         execs=$(grep -E 'stat::number_of_executed_units' $B/$name.log | awk '{print $2}')
-        echo "PASS $name execs=$execs corpus=$(ls "$corpus" | wc -l) seconds=$SECONDS_EACH"
+        echo "PASS $name execs=$execs corpus=$(ls "$corpus" | wc -l) seconds=$secs"
     else
         echo "FAIL $name"; grep -E 'ERROR|SUMMARY|Test unit written' $B/$name.log | head -5; status=1
     fi

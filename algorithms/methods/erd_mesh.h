@@ -17,6 +17,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/polylines.h"
 #include "kernel/cdt.h"
+#include "kernel/progress.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -40,6 +41,8 @@ struct InitialMeshOptions {
     // User constraints (GenerateOptions::constraints; may be null) and whether to detect edges.
     const std::vector<Polyline>* constraints = nullptr;
     bool detect = true;
+    // "initial mesh" with the fraction done: each edge detection, each count, the insertion.
+    ProgressHook progress;
 };
 
 struct InitialMesh {

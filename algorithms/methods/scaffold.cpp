@@ -138,6 +138,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.hard_fallback = hard_fallback;
     mo.constraints = &options.constraints;
     mo.detect = options.detect;
+    mo.progress = options.progress;
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
@@ -147,7 +148,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result) {
     if (options.wedge_fit > 0) {
-        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
+        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
     }
