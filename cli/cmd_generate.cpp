@@ -80,6 +80,8 @@ const CommandLine kGenerate = {
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
         {0, "aa-errors", "0|1", "ERDGPI: refinement errors against the 4x4-supersampled approximation (default 0; thesis 1)"},
+        {0, "constraints", "FILE", "ERD: polylines (erd-polylines 1, doubled coordinates, as -p writes) kept as constrained edges"},
+        {0, "no-detect", nullptr, "ERD: no edge detection; the --constraints are the only constrained edges"},
         {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
@@ -206,6 +208,13 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     parse_options(a, &opt, &exit_mode, &st);
     if (!st) return rep.usage(st.message);
 
+    if ((a.has("constraints") || a.has("no-detect")) && method->model != ModelKind::erd)
+        return rep.usage(std::string("--constraints and --no-detect are for the ERD methods (erded, erdgpi), not ") + method->name);
+    opt.detect = !a.has("no-detect");
+    const std::string constraints_in = a.str("constraints");
+    if (a.has("constraints") && constraints_in.empty()) return rep.usage("empty --constraints file name");
+    if (constraints_in == "-" && a.str("input", "-") == "-") return rep.usage("the image and --constraints cannot both come from stdin");
+
     std::size_t max_memory = 0;
     const bool have_cap = a.has("max-memory");
     if (have_cap && !(st = parse_memory_size(a.str("max-memory"), &max_memory))) return rep.usage(st.message);
@@ -216,7 +225,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     if (!poly.empty()) outs.push_back(poly);
     if (!stats_out.empty()) outs.push_back(stats_out);
     Outputs outputs;
-    st = outputs.check(outs, {in});
+    std::vector<std::string> ins = {in};
+    if (!constraints_in.empty()) ins.push_back(constraints_in);
+    st = outputs.check(outs, ins);
     if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message) : rep.fail(st);
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
@@ -230,6 +241,12 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     // methods take colour (issue 17); with a warning unless --gray asked for it.
     to_gray(in, &image, a.has("gray"), &warning);
     rep.warn(warning);
+    if (!constraints_in.empty()) {
+        std::string text;
+        if (!(st = read_file(constraints_in, &text))) return rep.fail(st);
+        if (!(st = read_polylines(text, &opt.constraints)))
+            return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message));
+    }
     const double read_seconds = seconds_since(t0);
 
     // Same checks the methods make, here first so the message names the flags.
@@ -256,6 +273,8 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     GenerateResult res;
     st = method->run(image, opt, &res);
     progress.finish();
+    if (!st && st.code == Code::input && !constraints_in.empty() && st.message.rfind("constraints: ", 0) == 0)
+        return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message.substr(13)));
     if (!st) return rep.fail(st.code == Code::input ? Status::bad_input(in + ": " + st.message) : st);
     for (const StageTime& s : res.stages) {
         char buf[128];

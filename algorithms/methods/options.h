@@ -11,6 +11,7 @@
 #include "algorithms/model/model.h"
 #include "kernel/progress.h"
 #include "algorithms/methods/result.h"
+#include "kernel/lattice.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -58,6 +59,13 @@ struct GenerateOptions {
                                  // edge pixel (ours; the thesis's "edge pixels" is 0)
     bool supersampled_errors = false;  // ERDGPI: refinement errors against the 4x4-supersampled
                                  // approximation (the thesis's, --thesis); false: point evaluation
+    // ERD: user constraints (breaklines, --constraints), polylines in doubled coordinates (the -p
+    // format), kept as constrained edges beside the detected ones, or alone with detect = false
+    // (--no-detect). Policy (docs/DECISIONS.md "User constraints"): points outside the image, or
+    // two user segments crossing, are refused; duplicate and overlapping segments merge; a detected
+    // piece crossing a user segment is dropped.
+    std::vector<std::vector<LatticePoint>> constraints;
+    bool detect = true;
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages
 };

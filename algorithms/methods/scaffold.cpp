@@ -138,6 +138,8 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
+    mo.constraints = &options.constraints;
+    mo.detect = options.detect;
     mo.progress = options.progress;
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
