@@ -1,7 +1,8 @@
 # erd: build, test, fuzz, bench, eval.  `make help` lists the targets.
 #
 # Layout: kernel/ + algorithms/*/ + api/ -> build/liberd.a (standard library only);
-#         cli/ + third_party/stb glue -> build/erd; tests/ -> build/erd_tests.
+#         imageio/ + third_party/stb glue -> build/liberd_imageio.a (image files; stb, zlib);
+#         cli/ -> build/erd; tests/ -> build/erd_tests.
 # Every source directory is globbed, so adding a file needs no Makefile edit.
 
 CXX       ?= g++
@@ -23,15 +24,18 @@ IMAGES    ?= ../shared/images
 FUZZ_SECONDS ?= 300
 
 LIB_SRC   := $(sort $(wildcard kernel/*.cpp algorithms/*/*.cpp api/*.cpp))
+IMAGEIO_SRC := $(sort $(wildcard imageio/*.cpp))
 CLI_SRC   := $(sort $(wildcard cli/*.cpp))
 TEST_SRC  := $(sort $(wildcard tests/*.cpp))
 LIB_OBJ   := $(LIB_SRC:%.cpp=$(BUILD)/%.o)
-CLI_OBJ   := $(CLI_SRC:%.cpp=$(BUILD)/%.o) $(BUILD)/third_party/stb_glue.o
+IMAGEIO_OBJ := $(IMAGEIO_SRC:%.cpp=$(BUILD)/%.o) $(BUILD)/third_party/stb_glue.o
+CLI_OBJ   := $(CLI_SRC:%.cpp=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.cpp=$(BUILD)/%.o) $(BUILD)/third_party/catch_main.o
 
 # System headers from Debian packages; `make deps` installs them when missing.
 CATCH_HDR := /usr/include/catch2/catch.hpp
 STB_HDR   := /usr/include/stb/stb_image.h
+ZLIB_HDR  := /usr/include/zlib.h
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
 .PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate
@@ -52,7 +56,7 @@ help:
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
-	@echo "make deps       apt-get install catch2 libstb-dev when their headers are missing"
+	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev when their headers are missing"
 	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
 	@echo "make python-test  the Python package's pytest suite"
@@ -65,11 +69,11 @@ help:
 	@echo "make clean-embedded  remove build-embedded only"
 	@echo "make help       this list"
 
-deps: $(CATCH_HDR) $(STB_HDR)
-$(CATCH_HDR) $(STB_HDR):
-	@echo "installing Debian packages catch2 libstb-dev" >&2
-	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev >/dev/null 2>&1 || \
-	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev >/dev/null; }
+deps: $(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR)
+$(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR):
+	@echo "installing Debian packages catch2 libstb-dev zlib1g-dev" >&2
+	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev >/dev/null 2>&1 || \
+	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev >/dev/null; }
 	@touch -c $@
 
 $(BUILD)/liberd.a: $(LIB_OBJ)
@@ -81,14 +85,20 @@ $(BUILD)/liberd.a: $(LIB_OBJ)
 # dynamic loader, PLT calls or shared-library pages at run time, a fixed cost of every run
 # (docs/DECISIONS.md "Build flags").
 ERD_LINK  ?= -static
-$(BUILD)/erd: $(CLI_OBJ) $(BUILD)/liberd.a
-	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) -lpthread
+$(BUILD)/liberd_imageio.a: $(IMAGEIO_OBJ)
+	@mkdir -p $(@D)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/erd: $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a
+	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) -lz -lpthread
 
 # Tests link the CLI objects too (all but main) so readers and writers are tested in process.
-$(BUILD)/erd_tests: $(TEST_OBJ) $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(BUILD)/liberd.a
-	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lpthread
+$(BUILD)/erd_tests: $(TEST_OBJ) $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lz -lpthread
 
 $(BUILD)/third_party/stb_glue.o: $(STB_HDR)
+$(BUILD)/imageio/png.o: $(ZLIB_HDR)
 $(BUILD)/third_party/catch_main.o: $(CATCH_HDR)
 $(TEST_OBJ): $(CATCH_HDR)
 
@@ -156,17 +166,20 @@ ERD_ALIASES := ywb gpi erd_ed erd_gpi imgsyn imgsyn_aa Cal_PSNR
 ERD_PC_VERSION ?= 0.1.0
 # The public headers: api/erd.h and every header it includes, directly or not, as the compiler
 # finds them (so the list follows api/erd.h). `make public-headers` prints it.
-PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h)))
+# The image-I/O library's headers (imageio/, for build/liberd_imageio.a) and theirs are public too.
+IMAGEIO_PUBLIC := imageio/image_file.h imageio/image_format.h imageio/jpeg.h imageio/pam.h imageio/png.h imageio/pnm.h
+PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h $(IMAGEIO_PUBLIC))))
 
 .PHONY: install install-aliases uninstall public-headers embedded
 public-headers:
 	@printf '%s\n' $(PUBLIC_HDR)
 
-install: $(BUILD)/erd $(BUILD)/liberd.a
+install: $(BUILD)/erd $(BUILD)/liberd.a $(BUILD)/liberd_imageio.a
 	@test -n "$(PUBLIC_HDR)" || { echo "make install: $(CXX) -MM api/erd.h found no headers" >&2; exit 1; }
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(INCLUDEDIR)/erd
 	install -m 755 $(BUILD)/erd $(DESTDIR)$(BINDIR)/erd
 	install -m 644 $(BUILD)/liberd.a $(DESTDIR)$(LIBDIR)/liberd.a
+	install -m 644 $(BUILD)/liberd_imageio.a $(DESTDIR)$(LIBDIR)/liberd_imageio.a
 	for h in $(PUBLIC_HDR); do install -D -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/erd/$$h || exit 1; done
 	printf '%s\n' '// erd public API: see api/erd.h. Compile with `pkg-config --cflags erd`.' \
 	  '#pragma once' '#include "api/erd.h"' > $(DESTDIR)$(INCLUDEDIR)/erd/erd.h
@@ -182,7 +195,7 @@ install-aliases: install
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/erd $(addprefix $(DESTDIR)$(BINDIR)/,$(ERD_ALIASES)) \
-	  $(DESTDIR)$(LIBDIR)/liberd.a $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc $(DESTDIR)$(MANDIR)/man1/erd.1 \
+	  $(DESTDIR)$(LIBDIR)/liberd.a $(DESTDIR)$(LIBDIR)/liberd_imageio.a $(DESTDIR)$(LIBDIR)/pkgconfig/erd.pc $(DESTDIR)$(MANDIR)/man1/erd.1 \
 	  $(patsubst %,$(DESTDIR)$(MANDIR)/man1/%.1,$(ERD_ALIASES))
 	rm -rf $(DESTDIR)$(INCLUDEDIR)/erd
 

@@ -139,8 +139,11 @@ if [[ -n ${HMM_SRC:-} ]]; then
 fi
 # scale_case LABEL IMAGE: one line per method: CPU ms, peak RSS in bytes per pixel, the ratio to
 # hmm (or to GPI), and the B/px verdict.
+# Extra generate flags after IMAGE (the ERD methods take them; e.g. --edges soft: synth is measured
+# hard, and its noise under Canny is the heaviest step 1 there is).
 scale_case() {
-    local label=$1 img=$2 w h px n m wall cpu rss gcpu="" hcpu="" ref bpx verdict
+    local label=$1 img=$2 w h px n m wall cpu rss gcpu="" hcpu="" ref bpx verdict extra
+    shift 2
     read -r w h < <("$ERD" info "$img" | awk '/^size:/ { print $2, $4 }')
     px=$((w * h)); n=$(( (px + 50) / 100 ))
     if [[ -n $HMM ]]; then
@@ -149,7 +152,8 @@ scale_case() {
         else printf 'scale %-16s %-7s cpu %8s ms  %6s B/px\n' "$label" hmm "$hcpu" "$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')"; fi
     fi
     for m in gpi ed erded erdgpi; do
-        read -r wall cpu rss < <("$TIMEIT" "$SCALE_RUNS" "$ERD" generate --method "$m" -q -x 2 -n "$n" -i "$img" -o "$OUT/scale.$m" || echo "- - -")
+        extra=(); [[ $m == erd* ]] && extra=("$@")
+        read -r wall cpu rss < <("$TIMEIT" "$SCALE_RUNS" "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -n "$n" -i "$img" -o "$OUT/scale.$m" || echo "- - -")
         [[ $m == gpi ]] && gcpu=$cpu
         ref=${hcpu:-$gcpu}
         bpx=$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')
@@ -159,7 +163,8 @@ scale_case() {
     done
 }
 for s in $SCALE_SIZES; do
-    "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/synth$s.pgm" && scale_case "synth $s" "$OUT/synth$s.pgm"
+    "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/synth$s.pgm" && scale_case "synth $s" "$OUT/synth$s.pgm" &&
+        scale_case "synth $s soft" "$OUT/synth$s.pgm" --edges soft
     "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/height$s.pgm" && scale_case "height16 $s" "$OUT/height$s.pgm"
 done
 for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pgm"; done

@@ -73,6 +73,7 @@ const CommandLine kEdges = {
         {'p', "polylines", "FILE", "simplified polylines, format erd-polylines 1 (doubled coordinates)"},
         {0, "draw-polylines", "FILE", "picture of the simplified polylines (half-pixel grid, black on white)"},
         {0, "over-image", nullptr, "draw the polylines over a lightened copy of the image"},
+        {0, "gray", nullptr, "colour input: detect edges on its BT.601 luma without a warning"},
         {'b', "beta", "X", "fraction of half-pixel grid points at or above tau_high (default 0.055)"},
         {'r', "ratio", "X", "tau_low = r * tau_high (default 0.4)"},
         {'e', "tolerance", "X", "Douglas-Peucker tolerance in pixels, as erd generate -e (default 1)"},
@@ -110,6 +111,7 @@ static int run_edges(const Args& args, const Reporter& rep) {
     Image im;
     std::string warning;
     if (!(st = read_image(in, &im, &warning))) return rep.fail(st);
+    to_gray(in, &im, args.has("gray"), &warning);
     rep.warn(warning);
 
     EdgePolylineResult chain;

@@ -47,7 +47,8 @@ const CommandLine kGenerate = {
     "Each image is meshed on its own; one that fails is reported and the others go on (exit 1).",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
-        {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin); repeat it or name a folder for many"},
+        {'i', "input", "FILE", "input image, PGM, PPM, PAM, PNG or JPEG (default and - : stdin); repeat it or name a folder for many"},
+        {0, "gray", nullptr, "colour input: mesh its BT.601 luma (0.299 R + 0.587 G + 0.114 B) instead of the colour image"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
         {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
@@ -67,13 +68,20 @@ const CommandLine kGenerate = {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
         {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
+        {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
+        {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
+        {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
+        {0, "flips", "K", "ERD: K rounds of data-dependent flips of unconstrained edges, each followed by a refit (default 1; also ED/GPI --optimize)"},
+        {0, "optimize", nullptr, "ED, GPI: least-squares vertex values (ours, beyond the thesis)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
         {0, "edge-zero-radius", "R", "ERDED: zero the density within R pixels of edge pixels (default 1; thesis 0)"},
         {0, "aa-errors", "0|1", "ERDGPI: refinement errors against the 4x4-supersampled approximation (default 0; thesis 1)"},
+        {0, "constraints", "FILE", "ERD: polylines (erd-polylines 1, doubled coordinates, as -p writes) kept as constrained edges"},
+        {0, "no-detect", nullptr, "ERD: no edge detection; the --constraints are the only constrained edges"},
         {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
@@ -167,6 +175,11 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
             *st = Status::bad_input("--edges: '" + e + "' is not hard, soft or auto");
     }
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
+    if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
+    if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
+    if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
+    if (a.has("optimize")) o->optimize = true;
+    if (a.has("flips")) o->flips = int(a.integer("flips", 0, 0, 64, st));
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
     if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
     if (st->ok() && o->alpha_max < o->alpha_min)
@@ -195,6 +208,13 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     parse_options(a, &opt, &exit_mode, &st);
     if (!st) return rep.usage(st.message);
 
+    if ((a.has("constraints") || a.has("no-detect")) && method->model != ModelKind::erd)
+        return rep.usage(std::string("--constraints and --no-detect are for the ERD methods (erded, erdgpi), not ") + method->name);
+    opt.detect = !a.has("no-detect");
+    const std::string constraints_in = a.str("constraints");
+    if (a.has("constraints") && constraints_in.empty()) return rep.usage("empty --constraints file name");
+    if (constraints_in == "-" && a.str("input", "-") == "-") return rep.usage("the image and --constraints cannot both come from stdin");
+
     std::size_t max_memory = 0;
     const bool have_cap = a.has("max-memory");
     if (have_cap && !(st = parse_memory_size(a.str("max-memory"), &max_memory))) return rep.usage(st.message);
@@ -205,7 +225,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     if (!poly.empty()) outs.push_back(poly);
     if (!stats_out.empty()) outs.push_back(stats_out);
     Outputs outputs;
-    st = outputs.check(outs, {in});
+    std::vector<std::string> ins = {in};
+    if (!constraints_in.empty()) ins.push_back(constraints_in);
+    st = outputs.check(outs, ins);
     if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message) : rep.fail(st);
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
@@ -215,7 +237,16 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     std::string warning;
     st = read_image(in, &image, &warning);
     if (!st) return rep.fail(st);
+    // The one place where generate decides what a colour image becomes: the methods take colour
+    // (issue 17), so it passes through; --gray meshes its luma instead.
+    if (a.has("gray")) to_gray(in, &image, true, &warning);
     rep.warn(warning);
+    if (!constraints_in.empty()) {
+        std::string text;
+        if (!(st = read_file(constraints_in, &text))) return rep.fail(st);
+        if (!(st = read_polylines(text, &opt.constraints)))
+            return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message));
+    }
     const double read_seconds = seconds_since(t0);
 
     // Same checks the methods make, here first so the message names the flags.
@@ -242,6 +273,8 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     GenerateResult res;
     st = method->run(image, opt, &res);
     progress.finish();
+    if (!st && st.code == Code::input && !constraints_in.empty() && st.message.rfind("constraints: ", 0) == 0)
+        return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message.substr(13)));
     if (!st) return rep.fail(st.code == Code::input ? Status::bad_input(in + ": " + st.message) : st);
     for (const StageTime& s : res.stages) {
         char buf[128];

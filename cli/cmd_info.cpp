@@ -14,7 +14,11 @@ static const char* format_key(ImageFormat f) {
     switch (f) {
         case ImageFormat::pgm_plain: return "pgm-plain";
         case ImageFormat::pgm_raw: return "pgm-raw";
+        case ImageFormat::ppm_plain: return "ppm-plain";
+        case ImageFormat::ppm_raw: return "ppm-raw";
+        case ImageFormat::pam: return "pam";
         case ImageFormat::png: return "png";
+        case ImageFormat::jpeg: return "jpeg";
         case ImageFormat::unknown: break;
     }
     return "unknown";
@@ -23,8 +27,9 @@ static const char* format_key(ImageFormat f) {
 const CommandLine kInfo = {
     "info",
     "erd info IMAGE [--json]",
-    "Prints the size, maxval, bits per sample, format and sample range of a PGM (P2, P5)\n"
-    "or PNG file (\"-\" reads stdin). The format is recognised from the content, not the name.",
+    "Prints the size, channels, maxval, bits per sample, format and sample range of a PGM\n"
+    "(P2, P5), PPM (P3, P6), PAM (P7), PNG or JPEG file (\"-\" reads stdin). The format is recognised\n"
+    "from the content, not the name; a colour file whose channels are all equal is gray.",
     {
         {0, "json", nullptr, "one JSON object on stdout"},
     },
@@ -53,11 +58,13 @@ static int run_info(const Args& args, const Reporter& rep) {
         JsonObject j;
         j.str("file", path).str("format", format_key(fmt)).integer("width", im.width).integer("height", im.height);
         j.integer("maxval", im.maxval).integer("bits", im.bits()).integer("min", lo).integer("max", hi).num("mean", mean);
+        j.integer("channels", im.channels);
         std::printf("%s\n", j.text().c_str());
     } else {
-        std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\nmaxval:  %u\nbits:    %d\n"
-                    "samples: min %u, max %u, mean %.4f\n",
-                    escape_name(path).c_str(), format_name(fmt), im.width, im.height, im.pixels(), im.maxval, im.bits(), lo, hi, mean);
+        std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\n", escape_name(path).c_str(), format_name(fmt),
+                    im.width, im.height, im.pixels());
+        if (im.channels == 3) std::printf("channels: 3 (RGB, colour)\n");
+        std::printf("maxval:  %u\nbits:    %d\nsamples: min %u, max %u, mean %.4f\n", im.maxval, im.bits(), lo, hi, mean);
     }
     return 0;
 }

@@ -14,12 +14,15 @@ namespace erd::cli {
 
 const CommandLine kPsnr = {
     "psnr",
-    "erd psnr ORIGINAL APPROX [--json]",
+    "erd psnr ORIGINAL APPROX [--channels] [--gray] [--json]",
     "Prints the PSNR of APPROX against ORIGINAL in dB with 4 decimals (\"inf\" when they are\n"
     "identical). Peak = 2^p - 1 with p = ceil(log2(maxval + 1)) of the original; PSNR =\n"
-    "10 log10(peak^2 / MSE). Both images must have the same size and maxval.",
+    "10 log10(peak^2 / MSE). Both images must have the same size, maxval and channels; for\n"
+    "colour the MSE is averaged over the three channels and all pixels.",
     {
         {0, "json", nullptr, "{\"mse\":..,\"peak\":..,\"psnr\":..} on stdout (psnr null when identical)"},
+        {0, "channels", nullptr, "colour: also the PSNR of each channel, a second line \"R x G y B z\" (JSON: \"channels\":[..])"},
+        {0, "gray", nullptr, "compare the BT.601 luma of colour images (a colour and a gray image then compare)"},
     },
     "no warnings", 2, 2, "expected ORIGINAL and APPROX",
 };
@@ -32,21 +35,42 @@ static int run_psnr(const Args& args, const Reporter& rep) {
     Image orig, approx;
     std::string warning;
     Status st;
+    const bool gray = args.has("gray");
     if (!(st = read_image(a, &orig, &warning))) return rep.fail(st);
+    if (gray) to_gray(a, &orig, true, &warning);
     rep.warn(warning);
     if (!(st = read_image(b, &approx, &warning))) return rep.fail(st);
+    if (gray) to_gray(b, &approx, true, &warning);
     rep.warn(warning);
 
-    double e = 0, p = 0;
-    if (!(st = mse(orig, approx, &e)) || !(st = psnr(orig, approx, &p)))
-        return rep.fail(Status::bad_input(a + " and " + b + ": " + st.message));
+    double e = 0, p = 0, per[3] = {0, 0, 0};
+    if (!(st = mse(orig, approx, &e)) || !(st = psnr(orig, approx, &p)) || !(st = channel_mse(orig, approx, per))) {
+        std::string msg = a + " and " + b + ": " + st.message;
+        if (st.message.find("colour and the other gray") != std::string::npos) msg += " (--gray compares their luma)";
+        return rep.fail(Status::bad_input(msg));
+    }
     const double peak = psnr_peak(orig.maxval);
+    const bool channels = args.has("channels") && orig.channels == 3;
     if (args.has("json")) {
-        std::printf("%s\n", JsonObject().num("mse", e).num("peak", peak).num("psnr", p).text().c_str());
-    } else if (std::isinf(p)) {
-        std::printf("inf\n");
-    } else {
-        std::printf("%.4f\n", p);
+        JsonObject j;
+        j.num("mse", e).num("peak", peak).num("psnr", p);
+        if (channels) {
+            std::string list;
+            for (int c = 0; c < 3; ++c) list += (c ? "," : "[") + json_number(psnr_of_mse(per[c], orig.maxval));
+            j.raw("channels", list + "]");
+        }
+        std::printf("%s\n", j.text().c_str());
+        return 0;
+    }
+    std::printf(std::isinf(p) ? "inf\n" : "%.4f\n", p);
+    if (channels) {
+        // The three on a second line, so the first stays the one number scripts read.
+        for (int c = 0; c < 3; ++c) {
+            const double pc = psnr_of_mse(per[c], orig.maxval);
+            if (std::isinf(pc)) std::printf("%s%c inf", c ? " " : "", "RGB"[c]);
+            else std::printf("%s%c %.4f", c ? " " : "", "RGB"[c], pc);
+        }
+        std::printf("\n");
     }
     return 0;
 }

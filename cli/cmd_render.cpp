@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/luma.h"
 #include "algorithms/model/reconstruct.h"
 #include "algorithms/output/render.h"
 #include "algorithms/output/vector_svg.h"
@@ -16,7 +17,6 @@
 #include "cli/image_io.h"
 #include "cli/model_file.h"
 #include "cli/output_format.h"
-#include "third_party/stb_glue.h"
 
 namespace erd::cli {
 
@@ -38,18 +38,13 @@ static std::string base64(const std::vector<unsigned char>& in) {
 
 // PNG bytes of an RGB picture, stored as gray when all three channels agree (a third the size).
 static Status encode_rgb_png(const RgbImage& im, std::vector<unsigned char>* png) {
-    bool gray = true;
-    for (std::size_t i = 0; gray && i < im.pixels.size(); i += 3)
-        gray = im.pixels[i] == im.pixels[i + 1] && im.pixels[i] == im.pixels[i + 2];
-    bool ok;
-    if (gray) {
-        std::vector<unsigned char> g(im.pixels.size() / 3);
-        for (std::size_t i = 0; i < g.size(); ++i) g[i] = im.pixels[3 * i];
-        ok = stb::png_encode(g.data(), im.width, im.height, 1, png);
-    } else {
-        ok = stb::png_encode(im.pixels.data(), im.width, im.height, 3, png);
-    }
-    return ok ? Status::success() : Status::failure("PNG encoding failed");
+    Image rgb(im.width, im.height, 255, 3);
+    for (std::size_t i = 0; i < rgb.samples.size(); ++i) rgb.samples[i] = im.pixels[i];
+    gray_if_channels_equal(&rgb);
+    std::string bytes;
+    Status st = encode_png(rgb, &bytes);
+    if (st) png->assign(bytes.begin(), bytes.end());
+    return st;
 }
 
 // "X,Y,W,H" in pixels: four decimal integers, X, Y >= 0, W, H > 0, each below 2^31.
@@ -166,6 +161,7 @@ static int run_render(const Args& args, const Reporter& rep) {
         Image im;
         st = read_image(path, &im, &warning);
         if (!st) return rep.fail(st);
+        to_gray(path, &im, false, &warning);
         rep.warn(warning);
         if (im.width != m.width || im.height != m.height)
             return rep.fail(Status::bad_input(path + ": image is " + std::to_string(im.width) + "x" + std::to_string(im.height) +

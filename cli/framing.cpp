@@ -23,7 +23,7 @@ const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 struct ImageFrame {
     ImageLimits limits;
     bool header_done = false;
-    PgmHeader hd;
+    PnmHeader hd;
     std::size_t pos = 0;        // P2: next byte to scan; PNG: next chunk
     bool in_comment = false, in_token = false;
     std::uint64_t samples = 0;  // P2: samples seen
@@ -33,32 +33,34 @@ struct ImageFrame {
         const std::size_t n = so_far.size();
         *total = UINT64_MAX;
         if (n >= 1 && d[0] == 0x89) return png(d, n, total);
+        if (n >= 3 && d[0] == 0xff && d[1] == 0xd8 && d[2] == 0xff) return Status::success();  // JPEG: to the end
+        if (n >= 2 && d[0] == 'P' && d[1] == '7') return pam(d, n, total);
         if (!header_done) {
-            if (n >= 2 && (d[0] != 'P' || (d[1] != '2' && d[1] != '5'))) {
+            if (n >= 2 && (d[0] != 'P' || (d[1] != '2' && d[1] != '3' && d[1] != '5' && d[1] != '6'))) {
                 *total = n;  // not an image: the decoder says what it is
                 return Status::success();
             }
-            Status s = pgm_header(d, n, limits, &hd);
+            Status s = pnm_header(d, n, limits, &hd);
             if (!s) {
                 if (s.message.compare(0, 11, "end of file") != 0) *total = n;  // bad already
                 else if (n >= kMaxStreamHeader)
-                    return Status::bad_input("no complete PGM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
+                    return Status::bad_input("no complete PGM/PPM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
                 return Status::success();
             }
             header_done = true;
             pos = hd.sep + 1;
             if (!hd.plain) {
                 const std::uint64_t bps = hd.maxval < 256 ? 1 : 2;
-                // "maxval\r\n": decode_pgm takes the LF as the separator's pair only when the file
+                // "maxval\r\n": decode_pnm takes the LF as the separator's pair only when the file
                 // ends one byte after the raster, so two bytes more are read: the stream then shows
                 // whether it ends there, as a file's size would (found by fuzz_framing).
                 const bool crlf = d[hd.sep] == '\r' && !(hd.sep + 1 < n && d[hd.sep + 1] != '\n');
-                *total = hd.sep + 1 + hd.w * hd.h * bps + (crlf ? 2 : 0);
+                *total = hd.sep + 1 + hd.w * hd.h * std::uint64_t(hd.channels) * bps + (crlf ? 2 : 0);
                 return Status::success();
             }
         }
-        // P2: count the samples; a byte no plain PGM holds ends the reading.
-        const std::uint64_t want = hd.w * hd.h;
+        // P2/P3: count the samples; a byte no plain PGM or PPM holds ends the reading.
+        const std::uint64_t want = hd.w * hd.h * std::uint64_t(hd.channels);
         for (; pos < n; ++pos) {
             const unsigned char c = d[pos];
             if (in_comment) {
@@ -79,6 +81,20 @@ struct ImageFrame {
                 *total = pos + 1;
                 return Status::success();
             }
+        }
+        return Status::success();
+    }
+
+    // PAM: the header, then its declared raster.
+    Status pam(const unsigned char* d, std::size_t n, std::uint64_t* total) {
+        PamHeader h;
+        Status s = pam_header(d, n, limits, &h);
+        if (s) {
+            *total = h.raster + h.w * h.h * h.depth * (h.maxval < 256 ? 1 : 2);
+        } else if (s.message.compare(0, 11, "end of file") != 0) {
+            *total = n;  // bad already
+        } else if (n >= kMaxStreamHeader) {
+            return Status::bad_input("no complete PAM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
         }
         return Status::success();
     }
@@ -138,43 +154,6 @@ Framer model_framer(bool triangulation) {
         if (!s && s.message.find("ends early") == std::string::npos && s.message != "empty file") *total = so_far.size();
         return Status::success();
     };
-}
-
-Status pad_png_palette(const unsigned char* d, std::size_t n, unsigned char fill, bool* short_palette, std::string* padded,
-                       std::size_t* entries) {
-    *short_palette = false;
-    if (n < 33 || std::memcmp(d, kPng, 8) != 0 || std::memcmp(d + 12, "IHDR", 4) != 0) return Status::success();
-    const unsigned depth = d[24], colour = d[25];
-    if (colour != 3 || depth == 0 || depth > 8) return Status::success();
-    const std::size_t need = std::size_t(1) << depth;
-    std::size_t pos = 8, plte = 0, plte_len = 0;
-    while (pos + 12 <= n) {
-        const std::uint64_t len = be32(d + pos);
-        if (len > n - pos - 12) break;
-        if (std::memcmp(d + pos + 4, "PLTE", 4) == 0 && plte == 0) {
-            plte = pos;
-            plte_len = std::size_t(len);
-        }
-        if (std::memcmp(d + pos + 4, "tRNS", 4) == 0 && plte != 0 && len > plte_len / 3)
-            return Status::bad_input("PNG tRNS chunk has " + std::to_string(len) + " entries, more than the " +
-                                     std::to_string(plte_len / 3) + " of its palette");
-        if (std::memcmp(d + pos + 4, "IEND", 4) == 0) break;
-        pos += std::size_t(12 + len);
-    }
-    if (plte == 0 || plte_len % 3 != 0 || plte_len / 3 >= need) return Status::success();  // stb judges the rest
-    *short_palette = true;
-    *entries = plte_len / 3;
-    // The same file with a longer PLTE (stb does not check CRCs, so the old one is kept).
-    const std::size_t new_len = 3 * need;
-    padded->assign(reinterpret_cast<const char*>(d), plte + 8);
-    (*padded)[plte] = char(new_len >> 24);
-    (*padded)[plte + 1] = char(new_len >> 16 & 0xff);
-    (*padded)[plte + 2] = char(new_len >> 8 & 0xff);
-    (*padded)[plte + 3] = char(new_len & 0xff);
-    padded->append(reinterpret_cast<const char*>(d + plte + 8), plte_len);
-    padded->append(new_len - plte_len, char(fill));
-    padded->append(reinterpret_cast<const char*>(d + plte + 8 + plte_len), n - plte - 8 - plte_len);
-    return Status::success();
 }
 
 }  // namespace erd::cli

@@ -1,5 +1,5 @@
-// libFuzzer target for our PGM reader (cli/image_io.h decode_pgm), and through decode_image the
-// format detection and the "what is this file" messages.
+// libFuzzer target for our netpbm readers (imageio/pnm.h decode_pnm: PGM, PPM; imageio/pam.h
+// decode_pam for "P7" inputs) and the "what is this file" messages.
 //
 // Checks beyond "no crash": a failure is one non-empty line with Code::input; a success is a
 // well-formed image (sizes within the limits, every sample <= maxval) that survives an
@@ -17,24 +17,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     limits.max_pixels = std::int64_t(1) << 20;  // keeps every run fast; the logic is the same
     erd::Image im;
     std::string warning;
-    erd::Status s = erd::cli::decode_pgm(data, size, &im, &warning, limits);
+    const bool pam = size >= 2 && data[0] == 'P' && data[1] == '7';
+    erd::Status s = pam ? erd::cli::decode_pam(data, size, &im, &warning, limits)
+                        : erd::cli::decode_pnm(data, size, &im, &warning, limits);
     if (!s.ok()) {
         if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
         return 0;
     }
     if (im.width < 1 || im.height < 1 || im.width > limits.max_side || im.height > limits.max_side) std::abort();
     if (std::int64_t(im.width) * im.height > limits.max_pixels) std::abort();
-    if (im.samples.size() != std::size_t(im.width) * std::size_t(im.height)) std::abort();
+    if (im.channels != 1 && im.channels != 3) std::abort();
+    if (im.samples.size() != im.pixels() * std::size_t(im.channels)) std::abort();
     if (im.maxval < 1 || im.maxval > 65535) std::abort();
     for (std::uint16_t v : im.samples)
         if (v > im.maxval) std::abort();
     for (bool plain : {false, true}) {
-        std::string bytes = erd::cli::encode_pgm(im, plain);
+        std::string bytes = erd::cli::encode_pnm(im, plain);
         erd::Image back;
         std::string w;
-        if (!erd::cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &back, &w, limits).ok())
+        if (!erd::cli::decode_pnm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &back, &w, limits).ok())
             std::abort();
-        if (back.width != im.width || back.height != im.height || back.maxval != im.maxval || back.samples != im.samples ||
+        if (back.width != im.width || back.height != im.height || back.maxval != im.maxval || back.channels != im.channels ||
+            back.samples != im.samples ||
             !w.empty())
             std::abort();
     }

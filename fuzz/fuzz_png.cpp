@@ -1,4 +1,4 @@
-// libFuzzer target for the fenced PNG reader (cli/image_io.h decode_png over third_party/stb_glue):
+// libFuzzer target for the fenced PNG reader (imageio/png.h decode_png over third_party/stb_glue):
 // Debian's stb_image 2.27 compiled PNG-only with a byte budget. Anything that gets past our IHDR
 // and size checks reaches stb, so this is where its known weaknesses would show.
 //
@@ -23,12 +23,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     if (im.width < 1 || im.height < 1 || std::int64_t(im.width) * im.height > limits.max_pixels) std::abort();
-    if (im.samples.size() != std::size_t(im.width) * std::size_t(im.height)) std::abort();
+    if (im.channels != 1 && im.channels != 3) std::abort();
+    if (im.samples.size() != im.pixels() * std::size_t(im.channels)) std::abort();
     if (im.maxval != 255 && im.maxval != 65535) std::abort();
     for (std::uint16_t v : im.samples)
         if (v > im.maxval) std::abort();
-    // 8-bit results must survive our PNG writer unchanged.
-    if (im.maxval == 255) {
+    // 8- and 16-bit results, gray and colour, must survive our PNG writer unchanged.
+    {
         std::string bytes;
         if (!erd::cli::encode_png(im, &bytes).ok()) std::abort();
         erd::Image back;

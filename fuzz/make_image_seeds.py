@@ -30,6 +30,12 @@ def pgm_seeds():
     put("fuzz_pgm", "truncated", b"P5\n4 4 255\nabc")
     put("fuzz_pgm", "maxval_small", b"P5 2 2 3\n\x00\x01\x02\x03")
     put("fuzz_pgm", "ppm", b"P6\n1 1 255\nabc")
+    put("fuzz_pgm", "p6_8bit", b"P6\n2 2 255\n" + bytes(range(10, 22)))
+    put("fuzz_pgm", "p6_16bit", b"P6\n1 2 1000\n" + struct.pack(">6H", 0, 999, 1000, 5, 6, 7))
+    put("fuzz_pgm", "p3_8bit", b"P3\n# plain\n2 1\n255\n1 2 3 4 5 6\n")
+    put("fuzz_pgm", "p6_gray_equal", b"P6 2 1 255\n\x05\x05\x05\x09\x09\x09")
+    put("fuzz_pgm", "p7_rgba", b"P7\nWIDTH 2\nHEIGHT 1\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n" + bytes(range(8)))
+    put("fuzz_pgm", "p6_16bit_odd", b"P6\n1 1 65535\n\x00\x01\x00\x02\x00")
 
 
 def png(w, h, depth, ctype, rows, plte=b"", trns=b"", interlace=0):

@@ -15,8 +15,8 @@ mkdir -p $B
 # Library and CLI objects (all but main) with coverage instrumentation; rebuilt when sources change.
 # FUZZ_NOBUILD=1: use the objects already in $B (lets two runs share one build dir safely).
 [[ -n ${FUZZ_NOBUILD:-} ]] || make -s -j2 BUILD=$B CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-    $B/liberd.a $(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o || { echo "FAIL build"; exit 1; }
-objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o $B/liberd.a"
+    $B/liberd.a $B/liberd_imageio.a $(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") || { echo "FAIL build"; exit 1; }
+objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/liberd_imageio.a $B/liberd.a -lz"
 status=0
 if [[ $# -gt 0 ]]; then targets=$(printf 'fuzz/%s.cpp ' "$@"); else targets=$(ls fuzz/fuzz_*.cpp); fi
 for src in $targets; do

@@ -196,10 +196,23 @@ public:
     // constrained edges), and the constrained Delaunay condition (with the tie rule) on every
     // unconstrained interior edge. On failure returns false and describes the first problem.
     bool verify(std::string* why) const;
+    // verify() without the constrained Delaunay condition: for a triangulation that flip_edge
+    // made data-dependent on purpose.
+    bool verify_topology(std::string* why) const;
+
+    // Data-dependent flips (algorithms/methods/flips.h). True when e is an unconstrained interior
+    // edge whose two faces form a strictly convex quadrilateral (so both flipped faces are
+    // positive). flip_edge flips such an edge (see the picture at the top) and returns the new
+    // diagonal d->c, or noEdge (nothing changed) when it cannot. The result is no longer the
+    // constrained Delaunay triangulation: later insertions keep a valid triangulation but
+    // verify() then fails; use verify_topology().
+    bool can_flip(EdgeInd e) const;
+    EdgeInd flip_edge(EdgeInd e);
 
 private:
     struct Pair { VertInd a, b; };
 
+    bool verify_checks(std::string* why, bool delaunay) const;
     void begin_change();
     // Marks f destroyed (if it existed before the call) and created, once per call.
     void touch(FaceInd f) {

@@ -140,7 +140,11 @@ bool fail(std::string* why, const std::string& msg) {
 std::string es(std::size_t e) { return std::to_string(e); }
 }  // namespace
 
-bool Cdt::verify(std::string* why) const {
+bool Cdt::verify(std::string* why) const { return verify_checks(why, true); }
+
+bool Cdt::verify_topology(std::string* why) const { return verify_checks(why, false); }
+
+bool Cdt::verify_checks(std::string* why, bool delaunay) const {
     const std::size_t nf = face_count(), nv = points_.size(), ne = 3 * nf;
     if (nv < 4 || nf < 2) return fail(why, "not initialised");
     if (vert_.size() < ne || twin_.size() != vert_.size() || flags_.size() != vert_.size() || out_.size() != nv ||
@@ -192,7 +196,7 @@ bool Cdt::verify(std::string* why) const {
         if (std::adjacent_find(pts.begin(), pts.end()) != pts.end()) return fail(why, "duplicate vertex");
     }
     // Constrained Delaunay condition with the tie rule.
-    for (EdgeInd e = 0; e < ne; ++e)
+    for (EdgeInd e = 0; delaunay && e < ne; ++e)
         if (is_illegal(e)) return fail(why, "edge " + es(e) + " violates the constrained Delaunay condition");
     // Every constraint piece present as a chain of collinear constrained edges.
     for (const Pair& s : segments_) {

@@ -35,9 +35,10 @@ class BuildExt(build_ext):
         super().build_extension(ext)
 
 
-sources = files("kernel/*.cpp", "algorithms/*/*.cpp", "api/*.cpp", "cli/*.cpp",
+sources = files("kernel/*.cpp", "algorithms/*/*.cpp", "api/*.cpp", "imageio/*.cpp", "cli/*.cpp",
                 "third_party/stb_glue.cpp", "python/src/*.cpp")
-headers = files("kernel/*.h", "algorithms/*/*.h", "api/*.h", "cli/*.h", "third_party/*.h", "python/src/*.h")
+headers = files("kernel/*.h", "algorithms/*/*.h", "api/*.h", "imageio/*.h", "cli/*.h", "third_party/*.h",
+                "python/src/*.h")
 
 
 def needs_recompile(obj, src):
@@ -59,6 +60,7 @@ ext = Pybind11Extension(
     include_dirs=[ROOT],
     depends=headers,
     define_macros=[("ERD_CLI_NO_MAIN", "1")],
+    libraries=["z"],
     extra_compile_args=["-O2", "-fno-math-errno", "-fno-trapping-math", "-fno-wrapv", "-MMD"],
     cxx_std=17,
 )

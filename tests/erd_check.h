@@ -1,20 +1,84 @@
 // check_model: an ERD model is what the kernel makes of its points and constraints (verify()
-// passes, the same faces) and every face corner carries the value of the wedge it lies in.
+// passes, the same faces, or a triangulation of them that flips made: check_flipped_model) and
+// every face corner carries the value of the wedge it lies in.
 #pragma once
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cstdint>
+#include <algorithm>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "algorithms/model/model.h"
+#include "algorithms/model/model_topology.h"
 #include "kernel/cdt.h"
 
 namespace erd::test {
 
 inline std::uint64_t key(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
+
+// The model's faces are the CDT's (as point sets).
+inline bool same_faces(const Cdt& cdt, const Model& m) {
+    std::vector<std::array<std::uint64_t, 3>> a, b;
+    auto rotated = [](std::array<std::uint64_t, 3> t) {
+        while (!(t[0] < t[1] && t[0] < t[2])) t = {t[1], t[2], t[0]};
+        return t;
+    };
+    for (FaceInd f = 0; f < cdt.face_count(); ++f)
+        a.push_back(rotated({key(cdt.point(cdt.face_vertex(f, 0))), key(cdt.point(cdt.face_vertex(f, 1))),
+                             key(cdt.point(cdt.face_vertex(f, 2)))}));
+    for (const auto& f : m.faces)
+        b.push_back(rotated({key(m.vertices[f[0]]), key(m.vertices[f[1]]), key(m.vertices[f[2]])}));
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    return a == b;
+}
+
+// A model whose faces are not the CDT's (data-dependent flips, algorithms/methods/flips.h):
+// its faces are positive, tile the rectangle and form one fan around every vertex, every
+// constraint piece of the CDT is one of its edges, and around every vertex consecutive faces
+// not separated by a constrained edge carry the same corner value (one value per wedge).
+inline void check_flipped_model(const Cdt& cdt, const std::vector<VertInd>& ids, const Model& m) {
+    std::int64_t area = 0;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& f : m.faces) {
+        const LatticePoint a = m.vertices[f[0]], b = m.vertices[f[1]], c = m.vertices[f[2]];
+        const std::int64_t o = std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(c.x - a.x) * (b.y - a.y);
+        REQUIRE(o > 0);
+        area += o;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t u = f[std::size_t(k)], w = f[std::size_t((k + 1) % 3)];
+            edges.insert({std::min(u, w), std::max(u, w)});
+        }
+    }
+    REQUIRE(area == 2 * std::int64_t(cdt.max_x()) * cdt.max_y());
+    std::vector<std::uint32_t> model_index(cdt.vertex_count(), 0);
+    for (std::size_t i = 0; i < ids.size(); ++i) model_index[ids[i]] = std::uint32_t(i);
+    std::vector<std::array<VertInd, 2>> cons;
+    cdt.export_constraints(&cons);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> constrained;
+    for (const auto& c : cons) {
+        const std::uint32_t u = model_index[c[0]], w = model_index[c[1]];
+        constrained.insert({std::min(u, w), std::max(u, w)});
+        REQUIRE(edges.count({std::min(u, w), std::max(u, w)}) == 1);
+    }
+    ModelTopology t;
+    REQUIRE(build_topology(m, &t).ok());
+    std::vector<std::uint32_t> fan;
+    for (std::uint32_t v = 0; v < m.vertices.size(); ++v) {
+        bool closed = false;
+        REQUIRE(vertex_fan(t, v, &fan, &closed).ok());
+        for (std::size_t i = 0; i + 1 < fan.size() + (closed ? 1 : 0); ++i) {
+            const std::uint32_t h = fan[i], g = fan[(i + 1) % fan.size()];
+            const std::uint32_t w = m.faces[h / 3][(h % 3 + 1) % 3];  // the edge v-w between them
+            if (constrained.count({std::min(v, w), std::max(v, w)})) continue;
+            CHECK(corner_value(m, h) == corner_value(m, g));
+        }
+    }
+}
 
 // Rebuilds the CDT of an ERD model from its points and constraints, checks it with verify(),
 // checks that its faces are the model's faces, and that every face corner carries the value of
@@ -40,6 +104,10 @@ inline void check_model(const Model& m) {
     INFO(why);
     REQUIRE(cdt.verify(&why));
     REQUIRE(cdt.face_count() == m.faces.size());
+    if (!same_faces(cdt, m)) {
+        check_flipped_model(cdt, ids, m);
+        return;
+    }
 
     // Model faces by their point triple (rotated to start at the smallest key).
     std::map<std::array<std::uint64_t, 3>, std::size_t> face_of_points;

@@ -369,7 +369,7 @@ TEST_CASE("synth is deterministic: same bytes twice, seeds differ, library agree
     REQUIRE(run_erd("synth -q -W 64 -H 48 --seed 7 -o " + sh_quote(f1)).status == 0);
     REQUIRE(run_erd("synth -q -W 64 -H 48 --seed 7 -o " + sh_quote(f2)).status == 0);
     CHECK(slurp(f1) == slurp(f2));
-    CHECK(slurp(f1) == erd::cli::encode_pgm(a, false));
+    CHECK(slurp(f1) == erd::cli::encode_pnm(a, false));
     // stdout carries the data when -o - is given.
     RunResult s = run_erd("synth -q -W 64 -H 48 --seed 7 -o -");
     CHECK(s.out == slurp(f1));

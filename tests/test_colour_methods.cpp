@@ -52,6 +52,7 @@ GenerateResult run(const char* method, const Image& im, double density) {
     GenerateOptions o;
     o.density = density;
     o.density_given = true;
+    o.flips = 0;  // colour does not flip yet (DECISIONS.md "Colour methods"): gray compared without
     GenerateResult r;
     const Status st = find_method(method)->run(im, o, &r);
     INFO(st.message);

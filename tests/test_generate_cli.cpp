@@ -20,7 +20,7 @@ std::string textured_pgm() {
     for (int y = 0; y < 18; ++y)
         for (int x = 0; x < 24; ++x)
             im.at(x, y) = std::uint16_t(std::lround(100 + 60 * std::sin(x / 3.0) * std::cos(y / 4.0) + (x > 11 ? 40 : 0)));
-    return erd::cli::encode_pgm(im, false);
+    return erd::cli::encode_pnm(im, false);
 }
 
 // An exact plane: GPI stops at the four corners.
@@ -28,7 +28,7 @@ std::string planar_pgm() {
     erd::Image im(20, 10, 255);
     for (int y = 0; y < 10; ++y)
         for (int x = 0; x < 20; ++x) im.at(x, y) = std::uint16_t(10 + 5 * x + 3 * y);
-    return erd::cli::encode_pgm(im, false);
+    return erd::cli::encode_pnm(im, false);
 }
 
 }  // namespace
@@ -71,8 +71,8 @@ TEST_CASE("generate: reconstruct reproduces the samples at every vertex", "[gene
     REQUIRE(r.status == 0);
     erd::Image orig, rec;
     std::string w = slurp(dir.file("r.pgm"));
-    REQUIRE(erd::cli::decode_pgm(reinterpret_cast<const unsigned char*>(pgm.data()), pgm.size(), &orig, nullptr).ok());
-    REQUIRE(erd::cli::decode_pgm(reinterpret_cast<const unsigned char*>(w.data()), w.size(), &rec, nullptr).ok());
+    REQUIRE(erd::cli::decode_pnm(reinterpret_cast<const unsigned char*>(pgm.data()), pgm.size(), &orig, nullptr).ok());
+    REQUIRE(erd::cli::decode_pnm(reinterpret_cast<const unsigned char*>(w.data()), w.size(), &rec, nullptr).ok());
     erd::Model model;
     REQUIRE(erd::read_model(slurp(dir.file("m.model")), erd::ModelFileKind::basic, &model).ok());
     for (erd::LatticePoint p : model.vertices) REQUIRE(rec.at(p.x / 2, p.y / 2) == orig.at(p.x / 2, p.y / 2));

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/luma.h"
 #include "cli/image_io.h"
+#include "tests/png_util.h"
 #include "tests/erd_run.h"
 
 using erd::Image;
@@ -32,56 +34,6 @@ Image make(int w, int h, std::uint32_t maxval, std::vector<std::uint16_t> v) {
     return im;
 }
 
-// ---- a minimal PNG writer (stored deflate blocks), so tests can make PNG kinds stb cannot write
-std::uint32_t crc32(const std::string& s) {
-    std::uint32_t c = 0xffffffffu;
-    for (unsigned char b : s) {
-        c ^= b;
-        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-    }
-    return c ^ 0xffffffffu;
-}
-std::string be32(std::uint32_t v) {
-    return std::string{char(v >> 24), char((v >> 16) & 0xff), char((v >> 8) & 0xff), char(v & 0xff)};
-}
-std::string chunk(const std::string& type, const std::string& data) {
-    return be32(std::uint32_t(data.size())) + type + data + be32(crc32(type + data));
-}
-// rows: the unfiltered bytes of every row, concatenated (filter byte 0 is added here).
-std::string make_png(std::uint32_t w, std::uint32_t h, int depth, int ctype, const std::string& rows,
-                     const std::string& plte = "") {
-    std::string raw;
-    std::size_t row_bytes = h ? rows.size() / h : 0;
-    for (std::uint32_t y = 0; y < h; ++y) raw += '\0' + rows.substr(y * row_bytes, row_bytes);
-    std::string z = "\x78\x01";
-    std::size_t i = 0;
-    do {
-        std::size_t n = std::min<std::size_t>(65535, raw.size() - i);
-        bool last = i + n == raw.size();
-        z += char(last ? 1 : 0);
-        z += char(n & 0xff);
-        z += char(n >> 8);
-        z += char(~n & 0xff);
-        z += char((~n >> 8) & 0xff);
-        z += raw.substr(i, n);
-        i += n;
-    } while (i < raw.size());
-    std::uint32_t a = 1, b = 0;
-    for (unsigned char c : raw) { a = (a + c) % 65521; b = (b + a) % 65521; }
-    z += be32(b << 16 | a);
-    std::string ihdr = be32(w) + be32(h) + char(depth) + char(ctype) + std::string("\0\0\0", 3);
-    std::string png = "\x89PNG\r\n\x1a\n";
-    png += chunk("IHDR", ihdr);
-    if (!plte.empty()) png += chunk("PLTE", plte);
-    png += chunk("IDAT", z) + chunk("IEND", "");
-    return png;
-}
-std::string be16s(std::vector<std::uint16_t> v) {
-    std::string s;
-    for (auto x : v) { s += char(x >> 8); s += char(x & 0xff); }
-    return s;
-}
-
 // ---- ../shared/spec/INPUTS.md PGM cases 1-12: bytes and the fragment the one-line message must contain
 struct Bad {
     const char* id;
@@ -93,17 +45,17 @@ std::vector<Bad> bad_pgms() {
     return {
         {"1 empty", "", "empty file"},
         {"1 one byte", "P", "file too short (1 byte)"},
-        {"2 P1", "P1\n1 1\n1\n", "a PBM bitmap (P1, plain), not a PGM"},
-        {"2 P4", "P4\n8 1\n\x01", "a PBM bitmap (P4, raw), not a PGM"},
-        {"2 P3", "P3\n1 1 255\n1 2 3\n", "a PPM colour image (P3, plain), not a PGM"},
-        {"2 P6", "P6\n1 1 255\nabc", "a PPM colour image (P6, raw), not a PGM"},
-        {"2 P7", "P7\nWIDTH 1\nHEIGHT 1\n", "a PAM image (P7), not a PGM"},
+        {"2 P1", "P1\n1 1\n1\n", "a PBM bitmap (P1, plain): erd reads PGM (P2, P5), PPM (P3, P6), PAM (P7), PNG and JPEG"},
+        {"2 P4", "P4\n8 1\n\x01", "a PBM bitmap (P4, raw): erd reads PGM"},
+        {"2 P6 truncated", "P6\n2 1 255\nabc", "raster truncated: expected 6 bytes (2 x 1 x 3 x 1), found 3"},
+        {"2 P3 too few", "P3\n1 1 255\n1 2\n", "only 2 of 3 samples before the end of the file (plain PPM)"},
+        {"2 P7 without ENDHDR", "P7\nWIDTH 1\nHEIGHT 1\n", "end of file inside the header (no ENDHDR line)"},
         {"2 lower p5", "p5\n1 1 255\n\x01", "magic 'p5' is lower case"},
         {"2 lower p2", "p2\n1 1 255\n1\n", "magic 'p2' is lower case"},
         {"2 P9", "P9\n1 1 255\n", "unknown netpbm magic 'P9'"},
-        {"2 GIF", "GIF89a\x01\x00\x01\x00", "a GIF file, not a PGM"},
-        {"2 JPEG", "\xff\xd8\xff\xe0\x00\x10JFIF", "a JPEG file, not a PGM"},
-        {"2 text", "hello world\n", "not a PGM or PNG file (it starts with 'hello')"},
+        {"2 GIF", "GIF89a\x01\x00\x01\x00", "a GIF file: erd reads PGM"},
+        {"2 JPEG", "\xff\xd8\xff\xe0\x00\x10JFIF", "JPEG truncated: the file ends inside the FFE0 marker"},
+        {"2 text", "hello world\n", "not an image erd reads (it starts with 'hello'"},
         {"3 eof after magic", "P5", "end of file inside the header, after the magic"},
         {"3 eof before width", "P5\n", "end of file inside the header, before the width"},
         {"3 eof after height", "P5\n1 1", "end of file inside the header, after the height"},
@@ -241,7 +193,7 @@ TEST_CASE("PGM round trips keep size, maxval and samples exactly", "[io]") {
             for (std::size_t i = 0; i < im.samples.size(); ++i) im.samples[i] = std::uint16_t((i * 7919u + 13u) % (mv + 1));
             im.samples[0] = std::uint16_t(mv);
             im.samples[1] = 0;
-            std::string bytes = erd::cli::encode_pgm(im, plain);
+            std::string bytes = erd::cli::encode_pnm(im, plain);
             CHECK(bytes.substr(0, 2) == (plain ? "P2" : "P5"));
             if (!plain) CHECK(bytes.size() == std::to_string(mv).size() + 8 + 21 * (mv > 255 ? 2 : 1));
             Image back;
@@ -261,7 +213,7 @@ TEST_CASE("PGM round trips keep size, maxval and samples exactly", "[io]") {
 TEST_CASE("plain PGM lines stay within 70 characters", "[io]") {
     Image im(40, 2, 65535);
     for (auto& v : im.samples) v = 65535;
-    std::string bytes = erd::cli::encode_pgm(im, true);
+    std::string bytes = erd::cli::encode_pnm(im, true);
     std::size_t start = 0, longest = 0;
     for (std::size_t i = 0; i < bytes.size(); ++i)
         if (bytes[i] == '\n') { longest = std::max(longest, i - start); start = i + 1; }
@@ -271,11 +223,11 @@ TEST_CASE("plain PGM lines stay within 70 characters", "[io]") {
 
 TEST_CASE("16-bit PGM samples are big-endian", "[io]") {
     Image im = make(2, 1, 1000, {0x0102, 999});
-    std::string bytes = erd::cli::encode_pgm(im, false);
+    std::string bytes = erd::cli::encode_pnm(im, false);
     CHECK(bytes == std::string("P5\n2 1\n1000\n\x01\x02\x03\xe7", 16));
 }
 
-TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour to BT.601 luma, alpha, palette", "[io]") {
+TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour kept, alpha dropped, palette", "[io]") {
     SECTION("8-bit gray through encode_png") {
         Image im = make(3, 2, 255, {0, 1, 127, 128, 254, 255});
         std::string bytes;
@@ -305,23 +257,26 @@ TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour to BT.601 luma, alph
         CHECK(back.samples == v);
         CHECK(w.empty());
     }
-    SECTION("8-bit RGB becomes BT.601 luma with a warning") {
+    SECTION("8-bit RGB stays colour, without a warning") {
         std::string rgb = std::string("\xff\x00\x00\x00\xff\x00\x00\x00\xff\x0a\x0a\x0a", 12);
         Image back;
         std::string w;
         REQUIRE(decode(make_png(4, 1, 8, 2, rgb), &back, &w).ok());
-        // (299 R + 587 G + 114 B + 500) / 1000, by hand: 76, 150, 29, 10.
-        CHECK(back.samples == std::vector<std::uint16_t>{76, 150, 29, 10});
+        CHECK(back.channels == 3);
+        CHECK(back.samples == std::vector<std::uint16_t>{255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 10, 10});
         CHECK(back.maxval == 255);
-        CHECK_THAT(w, Catch::Contains("BT.601 luma"));
+        CHECK(w.empty());
+        // (299 R + 587 G + 114 B + 500) / 1000, by hand: 76, 150, 29, 10 (what --gray gives).
+        CHECK(erd::luma(back).samples == std::vector<std::uint16_t>{76, 150, 29, 10});
     }
-    SECTION("16-bit RGB becomes 16-bit luma") {
+    SECTION("16-bit RGB stays 16-bit colour") {
         Image back;
         std::string w;
         REQUIRE(decode(make_png(1, 1, 16, 2, be16s({65535, 0, 0})), &back, &w).ok());
         CHECK(back.maxval == 65535);
-        CHECK(back.samples == std::vector<std::uint16_t>{19595});
-        CHECK_THAT(w, Catch::Contains("luma"));
+        CHECK(back.channels == 3);
+        CHECK(back.samples == std::vector<std::uint16_t>{65535, 0, 0});
+        CHECK(erd::luma(back).samples == std::vector<std::uint16_t>{19595});
     }
     SECTION("gray + alpha keeps gray, warns about alpha") {
         Image back;
@@ -331,31 +286,34 @@ TEST_CASE("PNG round trips and kinds: 8/16-bit gray, colour to BT.601 luma, alph
         CHECK_THAT(w, Catch::Contains("alpha channel ignored"));
         CHECK_THAT(w, !Catch::Contains("luma"));
     }
-    SECTION("RGBA: luma and alpha warnings") {
+    SECTION("RGBA: colour kept, one alpha warning") {
         Image back;
         std::string w;
         REQUIRE(decode(make_png(1, 1, 8, 6, std::string("\x00\xff\x00\x80", 4)), &back, &w).ok());
-        CHECK(back.samples == std::vector<std::uint16_t>{150});
-        CHECK_THAT(w, Catch::Contains("luma"));
-        CHECK_THAT(w, Catch::Contains("alpha"));
+        CHECK(back.samples == std::vector<std::uint16_t>{0, 255, 0});
+        CHECK(w == "PNG alpha channel ignored (erd meshes the colour or gray channels only)");
     }
     SECTION("palette image") {
         Image back;
         std::string w;
         std::string plte = std::string("\x00\x00\x00\x40\x40\x40\xff\x00\x00", 9);
         REQUIRE(decode(make_png(3, 1, 8, 3, std::string("\x00\x01\x02", 3), plte), &back, &w).ok());
-        CHECK(back.samples == std::vector<std::uint16_t>{0, 64, 76});
+        CHECK(back.channels == 3);
+        CHECK(back.samples == std::vector<std::uint16_t>{0, 0, 0, 64, 64, 64, 255, 0, 0});
     }
     SECTION("1-bit gray is scaled to 0/255") {
         Image back;
         REQUIRE(decode(make_png(8, 1, 1, 0, std::string("\xa0", 1)), &back).ok());
         CHECK(back.samples == std::vector<std::uint16_t>{255, 0, 255, 0, 0, 0, 0, 0});
     }
-    SECTION("maxval above 255 cannot go to PNG") {
+    SECTION("maxval above 255 goes to 16-bit PNG, samples kept, read back as maxval 65535") {
         std::string bytes;
-        erd::Status s = erd::cli::encode_png(make(1, 1, 1000, {5}), &bytes);
-        CHECK(s.code == erd::Code::input);
-        CHECK_THAT(s.message, Catch::Contains("PNG output needs maxval <= 255"));
+        REQUIRE(erd::cli::encode_png(make(2, 1, 1000, {5, 1000}), &bytes).ok());
+        CHECK(bytes[24] == 16);  // IHDR bit depth
+        Image back;
+        REQUIRE(decode(bytes, &back).ok());
+        CHECK(back.maxval == 65535);
+        CHECK(back.samples == std::vector<std::uint16_t>{5, 1000});
     }
 }
 
@@ -413,7 +371,7 @@ TEST_CASE("format is detected by content, not by name", "[io][cli]") {
     std::string png;
     REQUIRE(erd::cli::encode_png(im, &png).ok());
     spit(dir.file("really_png.pgm"), png);
-    spit(dir.file("really_pgm.png"), erd::cli::encode_pgm(im, false));
+    spit(dir.file("really_pgm.png"), erd::cli::encode_pnm(im, false));
     RunResult a = run_erd("info --json " + sh_quote(dir.file("really_png.pgm")));
     CHECK(a.status == 0);
     CHECK_THAT(a.out, Catch::Contains("\"format\":\"png\""));
@@ -446,11 +404,13 @@ TEST_CASE("write_image and read_image round trip through files for every output 
         CHECK(back.maxval == k.im->maxval);
         CHECK(back.samples == k.im->samples);
     }
-    // A 16-bit image refused as PNG leaves no file.
-    erd::Status s = erd::cli::write_image(dir.file("no.png"), im16);
-    CHECK(s.code == erd::Code::input);
-    CHECK_THAT(s.message, Catch::Contains("no.png: PNG output needs maxval <= 255"));
-    CHECK_FALSE(exists(dir.file("no.png")));
+    // A 16-bit image goes to a 16-bit PNG (maxval 65535 on reading: a PNG has no maxval).
+    REQUIRE(erd::cli::write_image(dir.file("wide.png"), im16).ok());
+    Image back;
+    std::string w;
+    REQUIRE(erd::cli::read_image(dir.file("wide.png"), &back, &w).ok());
+    CHECK(back.maxval == 65535);
+    CHECK(back.samples == im16.samples);
 }
 
 TEST_CASE("erd synth writes every kind and erd info reads them back", "[io][cli]") {
@@ -482,11 +442,11 @@ TEST_CASE("erd synth writes every kind and erd info reads them back", "[io][cli]
     REQUIRE(erd::cli::read_image(dir.file("f.png"), &f, &w).ok());
     CHECK(a.samples == b.samples);
     CHECK(a.samples == f.samples);
-    // 16 bits cannot go to PNG: exit 2, message, no file.
-    RunResult bad = run_erd("synth --bits 16 -o " + sh_quote(dir.file("g.png")));
-    CHECK(bad.status == 2);
-    CHECK_THAT(bad.err, Catch::Contains("PNG output needs maxval <= 255"));
-    CHECK_FALSE(exists(dir.file("g.png")));
+    // 16 bits go to a 16-bit PNG.
+    RunResult wide = run_erd("synth -q --bits 16 -o " + sh_quote(dir.file("g.png")));
+    CHECK(wide.status == 0);
+    RunResult info = run_erd("info --json " + sh_quote(dir.file("g.png")));
+    CHECK_THAT(info.out, Catch::Contains("\"format\":\"png\",\"width\":256,\"height\":256,\"maxval\":65535,\"bits\":16"));
 }
 
 TEST_CASE("erd info reads stdin with -", "[io][cli]") {
@@ -568,7 +528,14 @@ TEST_CASE("docs/hostile_images.md is the table this test generates (ERD_REGENERA
     row("PNG pixels above the budget", make_png(17000, 17000, 8, 0, std::string(17000, '\0')));
     row("PNG small file, huge image", make_png(8000, 8000, 16, 6, std::string(64, '\0')));
     row("PNG truncated after IHDR", make_png(4, 4, 8, 0, std::string(16, '\x07')).substr(0, 33));
-    row("PNG colour (warning)", make_png(1, 1, 8, 2, std::string("\x10\x20\x30", 3)));
+    row("PNG colour (kept)", make_png(1, 1, 8, 2, std::string("\x10\x20\x30", 3)));
+    row("PNG RGBA (alpha warning)", make_png(1, 1, 8, 6, std::string("\x10\x20\x30\x40", 4)));
+    row("PPM P6 truncated", "P6\n4 4 255\nabcdef");
+    row("PPM maxval 0", std::string("P6\n1 1 0\n\0\0\0", 12));
+    row("PPM 16-bit, odd byte count", std::string("P6\n1 1 65535\n\0\1\0\2\0", 18));
+    row("PPM P3 sample above maxval", "P3 1 1 9 1 2 10\n");
+    row("JPEG start marker only", "\xff\xd8");
+    row("JPEG truncated in a segment", "\xff\xd8\xff\xe0\x00\x10JFIF");
     const std::string path = "docs/hostile_images.md";
     if (!have_input(exists(path), path + " not found from the current folder; run the tests from the repository root")) return;
     if (regenerate_requested()) {

@@ -68,7 +68,7 @@ TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[output
     erd::Image im(50, 50, 255);
     for (int y = 0; y < 50; ++y)
         for (int x = 0; x < 50; ++x) im.at(x, y) = std::uint16_t(x + y < 49 ? 90 : 60);
-    spit(dir.file("d.pgm"), erd::cli::encode_pgm(im, false));
+    spit(dir.file("d.pgm"), erd::cli::encode_pnm(im, false));
     r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("d.png")) + " --over " +
                 sh_quote(dir.file("d.pgm")));
     REQUIRE(r.status == 0);
@@ -88,7 +88,7 @@ TEST_CASE("erd render: SVG elements, PNG size, backgrounds and errors", "[output
 
     // Errors: wrong size background, two backgrounds, bad crop, bad extension.
     erd::Image small(10, 10, 255);
-    spit(dir.file("s.pgm"), erd::cli::encode_pgm(small, false));
+    spit(dir.file("s.pgm"), erd::cli::encode_pnm(small, false));
     r = run_erd("render " + sh_quote(dir.file("d.erd")) + " -o " + sh_quote(dir.file("x.png")) + " --over " + sh_quote(dir.file("s.pgm")));
     CHECK(r.status == 2);
     CHECK(r.err.find("10x10") != std::string::npos);
@@ -104,7 +104,7 @@ TEST_CASE("erd generate --stats -: one JSON object with the run's facts", "[outp
     using namespace erd_test;
     TempDir dir;
     erd::Image im = wave_disc_image();
-    spit(dir.file("in.pgm"), erd::cli::encode_pgm(im, false));
+    spit(dir.file("in.pgm"), erd::cli::encode_pnm(im, false));
     for (const char* method : {"gpi", "erdgpi"}) {
         INFO(method);
         bool erd_kind = std::string(method) == "erdgpi";
@@ -194,7 +194,7 @@ TEST_CASE("erd render draws a -t triangulation file with the method's constraine
     using namespace erd_test;
     TempDir dir;
     erd::Image im = wave_disc_image();
-    spit(dir.file("in.pgm"), erd::cli::encode_pgm(im, false));
+    spit(dir.file("in.pgm"), erd::cli::encode_pnm(im, false));
     RunResult r = run_erd("generate -m erdgpi -i " + sh_quote(dir.file("in.pgm")) + " -n 60 -o " + sh_quote(dir.file("m.erd")) +
                           " -t " + sh_quote(dir.file("m.tri")) + " -q");
     INFO(r.err);

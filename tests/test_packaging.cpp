@@ -44,8 +44,8 @@ struct AliasDir {
         sp.height = h;
         erd::Image im;
         REQUIRE(erd::synth(sp, &im));
-        spit(dir.file("img.pnm"), erd::cli::encode_pgm(im, true));
-        spit(dir.file("img.pgm"), erd::cli::encode_pgm(im, false));
+        spit(dir.file("img.pnm"), erd::cli::encode_pnm(im, true));
+        spit(dir.file("img.pgm"), erd::cli::encode_pnm(im, false));
     }
     RunResult run(const std::string& cmd) const { return run_in(dir.path, "PATH=" + sh_quote(dir.file("bin")) + ":\"$PATH\" " + cmd); }
     std::string read(const std::string& name) const { return slurp(dir.file(name)); }
@@ -179,7 +179,7 @@ TEST_CASE("thesis exit modes -x 0/1/2 through gpi: exit 3 and the exact lines", 
     // A constant image: greedy insertion has nothing to refine, so 20 points cannot be reached.
     erd::Image flat(16, 16, 255);
     for (auto& s : flat.samples) s = 100;
-    spit(d.dir.file("flat.pnm"), erd::cli::encode_pgm(flat, true));
+    spit(d.dir.file("flat.pnm"), erd::cli::encode_pnm(flat, true));
 
     RunResult m0 = d.run("gpi -i flat.pnm -n 20 -o m0.model");
     CHECK(m0.status == 3);

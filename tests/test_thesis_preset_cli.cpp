@@ -45,10 +45,10 @@ TEST_CASE("generate --thesis is the thesis's settings; our defaults differ; flag
         INFO(m);
         const std::string thesis = gen(m, "--thesis", m + "-t.erd");
         const std::string spelled =
-            gen(m, "--wedge-fit 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1", m + "-s.erd");
+            gen(m, "--wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1", m + "-s.erd");
         const std::string ours = gen(m, "", m + "-d.erd");
         const std::string ours_spelled =
-            gen(m, "--thesis --wedge-fit 6 --alpha-min 0.75 --alpha-max 1 --edge-zero-radius 1 --edges auto --aa-errors 0", m + "-o.erd");
+            gen(m, "--thesis --wedge-fit 6 --flips 1 --alpha-min 0.75 --alpha-max 1 --edge-zero-radius 1 --edges auto --aa-errors 0", m + "-o.erd");
         CHECK(!thesis.empty());
         CHECK(thesis == spelled);
         CHECK(thesis != ours);
@@ -66,7 +66,7 @@ TEST_CASE("generate rejects a reversed or out-of-range line-search range and ref
     spit(img, scene_pgm());
     const std::string base = "generate -q -m erdgpi -i " + sh_quote(img) + " -n 60 -o " + sh_quote(dir.file("x.erd"));
     for (const char* bad : {"--alpha-min 1.5 --alpha-max 1", "--alpha-min -1", "--alpha-max 100",
-                            "--wedge-fit -1", "--edge-zero-radius -2", "--alpha-min x"}) {
+                            "--wedge-fit -1", "--edge-zero-radius -2", "--alpha-min x", "--flips -1", "--wedge-prior -1"}) {
         INFO(bad);
         const RunResult r = run_erd(base + " " + bad);
         CHECK(r.status == 2);

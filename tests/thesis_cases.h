@@ -41,7 +41,7 @@ inline bool read_thesis_image(const std::string& name, Image* im) {
     const std::string path = std::string(dir && *dir ? dir : "../shared/images") + "/" + name + ".pgm";
     std::string bytes;
     const bool ok = cli::read_file(path, &bytes).ok() &&
-                    cli::decode_pgm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), im, nullptr).ok();
+                    cli::decode_pnm(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), im, nullptr).ok();
     return erd_test::have_input(ok, path + " not readable (set ERD_IMAGES)");
 }
 

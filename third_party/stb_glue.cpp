@@ -49,6 +49,7 @@ static inline void* stb_safe_memcpy(void* dst, const void* src, std::size_t n) {
 #define memcpy(d, s, n) stb_safe_memcpy(d, s, n)
 
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #define STBI_NO_STDIO
 #define STBI_NO_LINEAR
 #define STBI_NO_HDR
@@ -59,9 +60,6 @@ static inline void* stb_safe_memcpy(void* dst, const void* src, std::size_t n) {
 #define STBI_FREE(p) budget_free(p)
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
-#define STBI_WRITE_NO_STDIO
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -73,7 +71,6 @@ static inline void* stb_safe_memcpy(void* dst, const void* src, std::size_t n) {
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wdouble-promotion"
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
 #undef memcpy
 
@@ -102,37 +99,36 @@ static bool info_locked(const unsigned char* data, std::size_t size, int* w, int
     g_budget = kInfoBudget;
     g_used = 0;
     if (!stbi_info_from_memory(data, len, w, h, channels)) {
-        *why = reason("not a PNG");
+        *why = reason("not a PNG or JPEG");
         return false;
     }
     *is16 = stbi_is_16_bit_from_memory(data, len) != 0;
     return true;
 }
 
-bool png_info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
+bool info(const unsigned char* data, std::size_t size, int* w, int* h, int* channels, bool* is16, std::string* why) {
     std::lock_guard<std::mutex> lock(g_stb_mutex);
     return info_locked(data, size, w, h, channels, is16, why);
 }
 
-// Copies stb's interleaved pixels into gray, after checking they are the size png_info promised.
+// Copies stb's interleaved pixels, alpha dropped, after checking they are the size info promised.
 template <class T>
-static bool to_gray(const T* px, int w, int h, int got, PngImage* out, std::string* why) {
+static bool keep(const T* px, int w, int h, int got, Decoded* out, std::string* why) {
     if (w != out->width || h != out->height || got < 1 || got > 4) {
         *why = "decoder returned an unexpected size";
         return false;
     }
-    out->channels = got;
-    std::size_t n = std::size_t(w) * std::size_t(h);
-    out->gray.assign(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const T* p = px + i * std::size_t(got);
-        // Luma by BT.601 weights, rounded: (299 R + 587 G + 114 B) / 1000.
-        out->gray[i] = got >= 3 ? std::uint16_t((299u * p[0] + 587u * p[1] + 114u * p[2] + 500u) / 1000u) : std::uint16_t(p[0]);
-    }
+    out->file_channels = got;
+    out->channels = got >= 3 ? 3 : 1;
+    const std::size_t n = std::size_t(w) * std::size_t(h), c = std::size_t(out->channels), g = std::size_t(got);
+    out->samples.resize(n * c);
+    std::uint16_t* o = out->samples.data();
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < c; ++k) o[i * c + k] = std::uint16_t(px[i * g + k]);
     return true;
 }
 
-bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_bytes, PngImage* out, std::string* why) {
+bool decode(const unsigned char* data, std::size_t size, std::size_t budget_bytes, Decoded* out, std::string* why) {
     int w = 0, h = 0, ch = 0;
     bool is16 = false;
     std::lock_guard<std::mutex> lock(g_stb_mutex);
@@ -142,34 +138,22 @@ bool png_decode(const unsigned char* data, std::size_t size, std::size_t budget_
     int len = int(size), got = 0;
     out->width = w;
     out->height = h;
-    out->channels = ch;
     out->bits = is16 ? 16 : 8;
     bool ok = false;
     // 16-bit files go through stbi_load_16 only (INPUTS.md); 8-bit and lower through stbi_load.
     if (is16) {
         stbi_us* px = stbi_load_16_from_memory(data, len, &w, &h, &got, 0);
         if (!px) { *why = reason("decode failed"); return false; }
-        ok = to_gray(px, w, h, got, out, why);
+        ok = keep(px, w, h, got, out, why);
         stbi_image_free(px);
     } else {
         stbi_uc* px = stbi_load_from_memory(data, len, &w, &h, &got, 0);
         if (!px) { *why = reason("decode failed"); return false; }
-        ok = to_gray(px, w, h, got, out, why);
+        ok = keep(px, w, h, got, out, why);
         stbi_image_free(px);
     }
     g_budget = 0;
     return ok;
-}
-
-static void append(void* ctx, void* data, int size) {
-    auto* v = static_cast<std::vector<unsigned char>*>(ctx);
-    auto* b = static_cast<unsigned char*>(data);
-    v->insert(v->end(), b, b + size);
-}
-
-bool png_encode(const unsigned char* pixels, int w, int h, int channels, std::vector<unsigned char>* out) {
-    out->clear();
-    return stbi_write_png_to_func(append, out, w, h, channels, pixels, w * channels) != 0;
 }
 
 }  // namespace erd::stb

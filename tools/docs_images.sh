@@ -6,7 +6,10 @@
 #   mesh over the reconstruction, and the error map of the detail. PNGs go to docs/img/.
 #   Hard edges (issue 15): the `erd synth` drawing and cartoon at 320 x 240 and 1%, ERDGPI before
 #   (--edges soft) and after (the default, auto: hard), mesh over the reconstruction and error map.
-#   PARTS (default "bull hard") picks the parts.
+#   Mesh optimisation (issue 16, part "quality"): ERDGPI on bull 0.125% and lena 1%, before (the
+#   previous default: --flips 0 --wedge-prior 0 --wedge-bounds -1) and after (the default): a
+#   detail of the mesh over the reconstruction and its error map.
+#   PARTS (default "bull hard quality") picks the parts.
 # usage: tools/docs_images.sh ERD_BIN IMAGES_DIR [OUT_DIR]
 set -euo pipefail
 erd=${1:-build/erd}
@@ -20,7 +23,23 @@ if [ ! -x "$erd" ]; then echo "docs_images: no erd binary at $erd (run make firs
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-parts=${PARTS:-bull hard}
+parts=${PARTS:-bull hard quality}
+
+if [[ " $parts " == *" quality "* ]]; then
+    for c in "bull 0.125 260,40,320,240" "lena 1 200,180,200,200"; do
+        read -r name d box <<<"$c"
+        [ -f "$images/$name.pgm" ] || { echo "docs_images: $images/$name.pgm not found" >&2; exit 1; }
+        for when in before after; do
+            flags=(); [ "$when" = before ] && flags=(--flips 0 --wedge-prior 0 --wedge-bounds -1)
+            model="$tmp/q_${name}_$when.erd"
+            "$erd" generate -m erdgpi "${flags[@]}" -i "$images/$name.pgm" -d "$d" -x 1 -q -o "$model"
+            "$erd" reconstruct "$model" -q -o "$tmp/q_${name}_$when.pgm"
+            echo "docs_images: $name $d% ERDGPI $when: PSNR $("$erd" psnr "$images/$name.pgm" "$tmp/q_${name}_$when.pgm") dB" >&2
+            "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_mesh.png"
+            "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_error.png"
+        done
+    done
+fi
 
 if [[ " $parts " == *" hard "* ]]; then
     for kind in drawing cartoon; do

@@ -48,24 +48,37 @@ done
 if [[ ${#methods[@]} -eq 0 ]]; then echo "eval: no methods registered in $ERD"; exit 1; fi
 variants=()
 for m in "${methods[@]}"; do
-    case $m in erded|erdgpi) variants+=("$m+thesis" "$m") ;; *) variants+=("$m") ;; esac
+    case $m in
+        erded|erdgpi) variants+=("$m+thesis" "$m+previous" "$m") ;;
+        *) variants+=("$m" "$m+optimize") ;;
+    esac
 done
+# Flags of each variant suffix. "+previous" is the default before issue 16 (no flips, plain
+# least-squares refit), byte for byte; "+optimize" the ED/GPI option of issue 16.
+declare -A VFLAGS=([thesis]="--thesis" [previous]="--flips 0 --wedge-prior 0 --wedge-bounds -1" [optimize]="--optimize")  # as in run_case
 # Section title of a variant.
 title() {
     local v=$1 M
-    M=$(tr a-z A-Z <<<"${v%+thesis}")
+    M=$(tr a-z A-Z <<<"${v%%+*}")
     case $v in
         *+thesis) echo "$M, thesis method (--thesis)" ;;
-        erded|erdgpi) echo "$M, erd default (wedge refit, alpha 0.75-1, edge radius 1)" ;;
+        *+previous) echo "$M, previous default (no flips, plain refit: ${VFLAGS[previous]})" ;;
+        *+optimize) echo "$M --optimize (least-squares values, flips)" ;;
+        erded|erdgpi) echo "$M, erd default (regularised wedge refit, flips, alpha 0.75-1, edge radius 1)" ;;
         *) echo "$M" ;;
     esac
 }
 
 # One case -> one line "method image density N_requested N_got psnr seconds" on stdout.
 run_case() {
-    local v=$1 img=$2 d=$3 ext=model m=${1%+thesis} flags=()
+    local v=$1 img=$2 d=$3 ext=model m=${1%%+*} flags=()
     case $m in erded|erdgpi) ext=erd ;; esac
-    [[ $v == *+thesis ]] && flags=(--thesis)
+    # (run_case runs under xargs, where VFLAGS, an associative array, is not exported.)
+    case $v in
+        *+thesis) flags=(--thesis) ;;
+        *+previous) flags=(--flips 0 --wedge-prior 0 --wedge-bounds -1) ;;
+        *+optimize) flags=(--optimize) ;;
+    esac
     local base=$OUT/$img.$v.$d mesh log start end psnr got req
     mesh=$base.$ext
     log=$base.log
@@ -115,7 +128,7 @@ printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"
     echo "[0.75, 1] px, edge radius 1 px, point-evaluated ERDGPI errors; docs/DECISIONS.md \"ERD model and methods\")."
     echo
     for v in "${variants[@]}"; do
-        m=${v%+thesis}
+        m=${v%%+*}
         echo "## $(title "$v") (thesis Table ${TABLE[$m]})"
         echo
         echo "| image | density % | N | ours | thesis | diff | met | time s |"
@@ -156,7 +169,8 @@ printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"
     done
     # Gains of the ERD methods over our own baselines (issue 6; targets: ERDGPI - GPI median >= 1.0 dB,
     # ERDED - ED >= 3.0 dB), for both variants, and of our default over the thesis method.
-    for pair in "erdgpi+thesis gpi" "erdgpi gpi" "erded+thesis ed" "erded ed" "erdgpi erdgpi+thesis" "erded erded+thesis"; do
+    for pair in "erdgpi+thesis gpi" "erdgpi gpi" "erded+thesis ed" "erded ed" "erdgpi erdgpi+thesis" "erded erded+thesis" \
+                "erdgpi erdgpi+previous" "erded erded+previous" "gpi+optimize gpi" "ed+optimize ed"; do
         read -r a b <<<"$pair"
         grep -q "^$a " "$OUT/raw.txt" && grep -q "^$b " "$OUT/raw.txt" || continue
         A=$(title "$a"); B=$(title "$b")

@@ -171,7 +171,7 @@ cat <<'EOF'
 EOF
 : > empty.pgm
 printf 'P' > one.pgm
-printf 'P6\n1 1 255\nabc' > p6.pgm
+printf 'P1\n1 1\n1\n' > p1.pgm
 printf 'P5\n4 4' > eofhdr.pgm
 printf 'P5\n+4 4 255\n' > junk.pgm
 printf 'P5\n4294967297 1 255\n\001' > wrap.pgm
@@ -187,7 +187,7 @@ printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\001\206\240\000\001\206\240\01
 printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\000\000\004\000\000\000\004\010\000\000\000\000\000\000\000\000\000\000\000\000IDAT' > trunc.png
 case_ "1 empty file" 2 info empty.pgm
 case_ "1 one byte" 2 info one.pgm
-case_ "2 other magic (P6)" 2 info p6.pgm
+case_ "2 other magic (P1)" 2 info p1.pgm
 case_ "3 end of file in header" 2 info eofhdr.pgm
 case_ "4 junk number (+4)" 2 info junk.pgm
 case_ "5 width 2^32+1" 2 info wrap.pgm
@@ -364,6 +364,54 @@ case_ "usage error (render): one usage line" 2 render good.model
 case_ "--max-memory below the estimate" 1 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1M
 case_ "--max-memory not a size" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1e9
 case_ "--max-memory too large" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 99999999T
+
+cat <<'EOF'
+
+## Colour and JPEG inputs (issues 17, 20)
+Colour stays colour (PPM P3/P6, PAM, PNG RGB/RGBA, JPEG); `erd generate` meshes its luma until the
+methods take colour, with one warning line unless `--gray` is given. JPEG seeds are
+fuzz/corpus/fuzz_jpeg (fuzz/make_jpeg_seeds.sh).
+| case | command | exit | message |
+| --- | --- | --- | --- |
+EOF
+printf 'P6\n4 4 255\nabcdef' > trunc6.ppm
+printf 'P6\n1 1 0\n\000\000\000' > max0.ppm
+printf 'P6\n1 1 65535\n\000\001\000\002\000' > odd16.ppm
+printf 'P3\n2 1 255\n1 2 3 4 5\n' > few3.ppm
+printf 'P6\n1 1 255\n\012\024\036' > 1x1.ppm
+printf 'P6\n1 5 255\n\000\000\000\100\100\100\200\200\200\300\300\300\377\000\000' > 1x5.ppm
+printf 'P6\n2 2 255\n\011\011\011\022\022\022\033\033\033\044\044\044' > equal.ppm
+awk 'BEGIN { printf "P3\n16 16\n255\n"; for (y = 0; y < 16; y++) for (x = 0; x < 16; x++) printf "%d %d %d\n", x * 16, y * 16, (x > 7) * 200 }' > rgb.ppm
+J=$SRC/fuzz/corpus/fuzz_jpeg
+head -c 2 "$J/gray_8x8.jpg" > soi.jpg
+case_ "PPM truncated P6 raster" 2 info trunc6.ppm
+case_ "PPM maxval 0" 2 info max0.ppm
+case_ "PPM 16-bit P6, odd byte count" 2 info odd16.ppm
+case_ "PPM plain P3, too few samples" 2 info few3.ppm
+printf 'P7\nWIDTH 4\nHEIGHT 4\nDEPTH 3\nMAXVAL 255\nENDHDR\nabc' > trunc.pam
+printf 'P7\nWIDTH 1\nHEIGHT 1\nDEPTH 5\nMAXVAL 255\nENDHDR\n\001\001\001\001\001' > depth5.pam
+case_ "PAM truncated raster" 2 info trunc.pam
+case_ "PAM DEPTH 5" 2 info depth5.pam
+case_ "PPM 1x1 (info)" 0 info 1x1.ppm
+case_ "PPM 1x1 (generate)" 2 generate -q -m gpi -i 1x1.ppm -o o.model -n 4
+case_ "PPM 1x5 (generate)" 2 generate -q -m gpi -i 1x5.ppm -o o.model -n 4
+case_ "PPM with equal channels is gray: no warning" 0 generate -m gpi -i equal.ppm -o o.model -n 4 --psnr-report
+case_ "PPM colour: luma, one warning line (edges)" 0 edges rgb.ppm -o e.pgm
+case_ "PPM colour with --gray: no warning" 0 generate -m gpi --gray -i rgb.ppm -o o.model -n 20 --psnr-report
+cp "$SRC/fuzz/corpus/fuzz_png/rgba8" rgba.png
+cp "$SRC/fuzz/corpus/fuzz_png/palette" palette.png
+case_ "PNG RGBA: alpha ignored, one warning line" 0 info rgba.png
+case_ "PNG palette" 0 info palette.png
+case_ "psnr colour against gray" 2 psnr rgb.ppm step.pgm
+cp "$J/truncated.jpg" "$J/progressive_huge.jpg" "$J/cmyk_8x8.jpg" "$J/progressive_1x7.jpg" .
+case_ "JPEG truncated" 2 info truncated.jpg
+case_ "JPEG progressive, 16000x16000 in 549 bytes" 2 info progressive_huge.jpg
+case_ "JPEG CMYK" 2 info cmyk_8x8.jpg
+cp "$J/regress_dht_over_256" dht.jpg
+case_ "JPEG Huffman table of 2023 codes (stb overflow)" 2 info dht.jpg
+case_ "JPEG progressive 1x7 (info)" 0 info progressive_1x7.jpg
+case_ "JPEG progressive 1x7 (generate)" 2 generate -q -m gpi -i progressive_1x7.jpg -o o.model -n 4
+case_ "JPEG start marker only" 2 info soi.jpg
 
 cat <<'EOF'
 

@@ -17,15 +17,26 @@ static double distance2(LatticePoint p, LatticePoint a, LatticePoint b) {
     return ex * ex + ey * ey;
 }
 
-Polyline douglas_peucker(const Polyline& line, double epsilon) { return douglas_peucker(line, epsilon, PieceTest()); }
+namespace {
 
-Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& accept) {
+// Scratch of the stack and the keep flags, reused across the lines of one simplify_polylines call
+// (one allocation per line, not three: the lines of a noisy image are many and short).
+struct Scratch {
+    std::vector<char> keep;
+    std::vector<std::pair<std::size_t, std::size_t>> stack;
+};
+
+template <class Accept>
+void simplify_into(const Polyline& line, double epsilon, Accept accept, Scratch* sc, Polyline* out) {
     const std::size_t n = line.size();
-    if (n <= 2) return line;
+    if (n <= 2) { *out = line; return; }
     const double eps2 = epsilon > 0 ? epsilon * epsilon : 0.0;
-    std::vector<char> keep(n, 0);
+    std::vector<char>& keep = sc->keep;
+    keep.assign(n, 0);
     keep[0] = keep[n - 1] = 1;
-    std::vector<std::pair<std::size_t, std::size_t>> stack{{0, n - 1}};
+    std::size_t kept = 2;
+    auto& stack = sc->stack;
+    stack.assign(1, {0, n - 1});
     while (!stack.empty()) {
         const auto [first, last] = stack.back();
         stack.pop_back();
@@ -35,25 +46,46 @@ Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& 
             const double d = distance2(line[i], line[first], line[last]);
             if (d > best) { best = d; at = i; }  // first farthest point wins ties
         }
-        if (at == first || (!(best > eps2) && (!accept || accept(first, last)))) continue;
+        if (at == first || (!(best > eps2) && accept(first, last))) continue;
         keep[at] = 1;
+        ++kept;
         stack.push_back({at, last});
         stack.push_back({first, at});
     }
-    Polyline out;
+    out->clear();
+    out->reserve(polyline_capacity(kept));
     for (std::size_t i = 0; i < n; ++i)
-        if (keep[i]) out.push_back(line[i]);
+        if (keep[i]) out->push_back(line[i]);
+}
+
+}  // namespace
+
+Polyline douglas_peucker(const Polyline& line, double epsilon) {
+    Scratch sc;
+    Polyline out;
+    simplify_into(line, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &out);
+    return out;
+}
+
+Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& accept) {
+    Scratch sc;
+    Polyline out;
+    simplify_into(line, epsilon, [&](std::size_t first, std::size_t last) { return !accept || accept(first, last); },
+                  &sc, &out);
     return out;
 }
 
 std::vector<Polyline> simplify_polylines(const std::vector<Polyline>& lines, double epsilon, int min_points,
                                          LengthRule rule) {
     std::vector<Polyline> out;
+    Scratch sc;
+    Polyline s;
     for (const Polyline& line : lines) {
         if (rule == LengthRule::before_simplification && int(line.size()) < min_points) continue;
-        Polyline s = douglas_peucker(line, epsilon);
+        simplify_into(line, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &s);
         if (rule == LengthRule::after_simplification && int(s.size()) < min_points) continue;
         out.push_back(std::move(s));
+        s = Polyline();
     }
     return out;
 }

@@ -67,12 +67,28 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     // distances to sum to at most limit): it would find no meeting and reach nothing further,
     // and is not labelled at all. This outermost shell is the largest.
     const std::uint8_t reach = limit >= 2 ? std::uint8_t(limit - 1) : limit;
+    // The number of main neighbours of each main point, for the climbs below: counted here from
+    // the rings the search reads anyway, and kept up to date as points become main (one ring
+    // per added point instead of one per main point). Kept in `back`, which is read only at
+    // points that are not main (a chain ends at the first main point).
+    std::uint8_t* main_nb = back.get();
+    auto became_main = [&](std::uint32_t i) {
+        std::uint32_t nb[8];
+        sp->ring(i, nb);
+        for (const std::uint32_t j : nb)
+            if (j != kNoPoint && (flag[j] & kMain)) ++main_nb[j];
+    };
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const std::uint32_t i = queue[head];
         const std::uint32_t li = label[i];
         const std::uint8_t di = dist[i];
         std::uint32_t nb[8];
         sp->ring(i, nb);
+        if (head < sources) {
+            std::uint8_t c = 0;
+            for (const std::uint32_t j : nb) c += j != kNoPoint && (flag[j] & kMain);
+            main_nb[i] = c;
+        }
         for (int d = 0; d < 8; ++d) {
             const std::uint32_t j = nb[d];
             if (j == kNoPoint) continue;
@@ -100,6 +116,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         for (std::uint32_t i : {meetings[k].p, meetings[k].q})
             while (!(flag[i] & kMain)) {  // a reached point: its chain ends at a main point
                 flag[i] |= kMain;
+                became_main(i);
                 sp->mains.push_back(i);
                 ++added;
                 i = sp->points->neighbour(i, back[i]);
@@ -115,11 +132,8 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     std::vector<std::uint32_t> path;
     for (std::size_t s = 0; s < sources; ++s) {
         const std::uint32_t end = sp->mains[s];  // the climbs below append to mains
-        int neighbours = 0;
+        if (main_nb[end] != 1) continue;
         std::uint32_t nb[8];
-        sp->ring(end, nb);
-        for (const std::uint32_t j : nb) neighbours += j != kNoPoint && (flag[j] & kMain);
-        if (neighbours != 1) continue;
         const std::uint32_t own = label[end];
         path.clear();
         std::uint32_t cur = end;
@@ -142,6 +156,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         if (!joined || path.empty()) continue;
         for (const std::uint32_t i : path) {
             flag[i] |= kMain;
+            became_main(i);
             label[i] = own;
             sp->mains.push_back(i);
             ++added;

@@ -52,8 +52,11 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
     };
     // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
     // no free link left, or the start again.
+    // Each line is traced into one scratch buffer and copied out (one allocation a line instead of
+    // a growing vector's several: a noisy image traces many short lines).
+    Polyline line;
     auto run = [&](std::uint32_t start, int d) {
-        Polyline line{point(start)};
+        line.assign(1, point(start));
         std::uint32_t cur = start;
         for (;;) {
             used[cur] |= std::uint8_t(1u << d);
@@ -64,7 +67,9 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
             d = free_link(cur);
             if (d < 0) break;
         }
-        out.push_back(std::move(line));
+        out.emplace_back();
+        out.back().reserve(polyline_capacity(line.size()));
+        out.back().assign(line.begin(), line.end());
     };
 
     for (std::uint32_t i = 0; i < n; ++i) {

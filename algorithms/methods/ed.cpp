@@ -4,6 +4,7 @@
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/methods/exact_count.h"
+#include "algorithms/methods/optimize.h"
 #include "algorithms/methods/scaffold.h"
 #include "kernel/cdt.h"
 
@@ -55,6 +56,11 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     if (!st) return st;
     timer.lap("triangulate");
     finish_basic_method(cdt, image, &timer, result);
+    if (options.optimize) {
+        optimize_basic_model(&cdt, image, options, &result->model, &result->stats.wedge_fit);
+        result->stats.has_wedge_fit = true;
+        timer.lap("optimize");
+    }
     return Status::success();
 }
 

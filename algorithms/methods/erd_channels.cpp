@@ -24,7 +24,8 @@ void ErdChannels::assign_all(const Cdt& cdt) {
     for (auto& m : models_) m->assign_all(cdt);
 }
 
-void ErdChannels::fit(const Cdt& cdt, int iterations, WedgeFitStats* stats, const ProgressHook& progress) {
+void ErdChannels::fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats,
+                      const ProgressHook& progress) {
     std::vector<const Image*> planes;
     std::vector<ErdModel*> models;
     for (std::size_t c = 0; c < models_.size(); ++c) {
@@ -32,7 +33,7 @@ void ErdChannels::fit(const Cdt& cdt, int iterations, WedgeFitStats* stats, cons
         models.push_back(models_[c].get());
     }
     std::vector<WedgeFitStats> each;
-    fit_wedge_values(cdt, planes, iterations, models, &each, progress);
+    fit_wedge_values(cdt, planes, options, models, &each, nullptr, progress);
     *stats = WedgeFitStats();
     for (const WedgeFitStats& s : each) {
         stats->iterations = s.iterations > stats->iterations ? s.iterations : stats->iterations;

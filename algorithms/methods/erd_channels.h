@@ -13,6 +13,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/result.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/model.h"
 #include "kernel/cdt.h"
@@ -31,8 +32,9 @@ public:
 
     void assign_vertex(const Cdt& cdt, VertInd v);
     void assign_all(const Cdt& cdt);
-    // fit_wedge_values on every channel; the stats add the channels' squared errors.
-    void fit(const Cdt& cdt, int iterations, WedgeFitStats* stats, const ProgressHook& progress = {});
+    // fit_wedge_values on every channel with options, each channel drawn towards and bounded
+    // around its current (line-search) values; the stats add the channels' squared errors.
+    void fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats, const ProgressHook& progress = {});
     // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 

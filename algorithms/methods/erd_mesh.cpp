@@ -1,7 +1,10 @@
 #include "algorithms/methods/erd_mesh.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
+#include <string>
+#include <unordered_set>
 
 #include "algorithms/imaging/edge_polylines.h"
 
@@ -96,9 +99,34 @@ std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y))
 }  // namespace
 
 std::size_t distinct_points(const std::vector<Polyline>& polylines) {
-    std::vector<std::uint64_t> keys;
     std::size_t total = 0;
-    for (const Polyline& pl : polylines) total += pl.size();
+    std::int64_t max_x = -1, max_y = -1;
+    bool in_grid = true;  // all coordinates >= 0: a bit plane can count them
+    for (const Polyline& pl : polylines) {
+        total += pl.size();
+        for (LatticePoint p : pl) {
+            in_grid = in_grid && p.x >= 0 && p.y >= 0;
+            max_x = std::max<std::int64_t>(max_x, p.x);
+            max_y = std::max<std::int64_t>(max_y, p.y);
+        }
+    }
+    if (total == 0) return 0;
+    // Linear: one bit per grid point when that plane is no larger than the sorted keys would be
+    // (the parameter loop counts after every detection; sorting was a tenth of step 1 on noise).
+    const std::uint64_t cols = std::uint64_t(max_x) + 1, cells = cols * (std::uint64_t(max_y) + 1);
+    if (in_grid && cells / 64 <= total) {
+        std::vector<std::uint64_t> bits(std::size_t(cells / 64 + 1), 0);
+        std::size_t n = 0;
+        for (const Polyline& pl : polylines)
+            for (LatticePoint p : pl) {
+                const std::uint64_t q = std::uint64_t(p.y) * cols + std::uint64_t(p.x);
+                const std::uint64_t bit = std::uint64_t(1) << (q & 63u);
+                n += (bits[q >> 6] & bit) == 0;
+                bits[q >> 6] |= bit;
+            }
+        return n;
+    }
+    std::vector<std::uint64_t> keys;
     keys.reserve(total);
     for (const Polyline& pl : polylines)
         for (LatticePoint p : pl) keys.push_back(key_of(p));
@@ -108,7 +136,8 @@ std::size_t distinct_points(const std::vector<Polyline>& polylines) {
 
 namespace {
 
-Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped, StepProgress* progress) {
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped, StepProgress* progress,
+                        bool refuse_crossing) {
     // Points first (the kernel orders a batch along a Hilbert curve), then the segments. Nobody
     // reads the batch's change report, so the kernel skips that bookkeeping.
     std::vector<LatticePoint> pts;
@@ -118,7 +147,8 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
     if (!st.ok()) return st;
     std::size_t k = 0, done = 0;
     const std::size_t every = polylines.size() / 100 + 1;
-    for (const Polyline& pl : polylines) {
+    for (std::size_t p = 0; p < polylines.size(); ++p) {
+        const Polyline& pl = polylines[p];
         if (progress && done++ % every == 0) {
             progress->insertion(done, polylines.size() + 1);
             if (progress->cancelled()) return Status::failure(kCancelled);
@@ -127,6 +157,9 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
             ConstraintReport rep;
             st = cdt->insert_constraint(ids[k + i], ids[k + i + 1], &rep);
             if (!st.ok()) return st;
+            if (refuse_crossing && rep.dropped_crossing)
+                return Status::bad_input("constraints: segment " + std::to_string(i) + " of polyline " + std::to_string(p) +
+                                         " crosses another constraint segment (split both at a common point)");
             *dropped += rep.dropped_crossing;
         }
         k += pl.size();
@@ -134,52 +167,134 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
     return Status::success();
 }
 
+
+// Checks the user constraints against the image (doubled coordinates 0..2W-2 x 0..2H-2).
+Status check_constraints(const std::vector<Polyline>& user, int width, int height) {
+    const std::int64_t mx = 2 * std::int64_t(width) - 2, my = 2 * std::int64_t(height) - 2;
+    for (std::size_t i = 0; i < user.size(); ++i)
+        for (std::size_t k = 0; k < user[i].size(); ++k) {
+            const LatticePoint p = user[i][k];
+            if (p.x < 0 || p.x > mx || p.y < 0 || p.y > my)
+                return Status::bad_input("constraints: point " + std::to_string(k) + " of polyline " + std::to_string(i) +
+                                         " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ") lies outside 0.." +
+                                         std::to_string(mx) + " x 0.." + std::to_string(my) + " (doubled coordinates)");
+        }
+    return Status::success();
+}
+
+// Marks the lattice points along the user segments in the half-pixel edge map (ERDED zeroes its
+// density near edge points): the points nearest the segment, one per step of its longer axis.
+void mark_constraints(const std::vector<Polyline>& user, Grid<std::uint8_t>* edges) {
+    for (const Polyline& pl : user) {
+        for (std::size_t j = 0; j < pl.size(); ++j) {
+            const LatticePoint a = pl[j], b = j + 1 < pl.size() ? pl[j + 1] : pl[j];
+            const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
+            const std::int64_t steps = std::max(dx < 0 ? -dx : dx, dy < 0 ? -dy : dy);
+            for (std::int64_t t = 0; t <= steps; ++t) {
+                // Rounded half away from zero in exact integers: (2 d t + steps) / (2 steps).
+                auto at = [&](std::int64_t d) {
+                    if (steps == 0) return std::int64_t(0);
+                    const std::int64_t num = 2 * d * t, den = 2 * steps;
+                    return num >= 0 ? (num + steps) / den : -((-num + steps) / den);
+                };
+                const std::int64_t x = a.x + at(dx), y = a.y + at(dy);
+                if (x >= 0 && y >= 0 && x < edges->width && y < edges->height) (*edges)(int(x), int(y)) = 1;
+            }
+        }
+    }
+}
+
 }  // namespace
 
-Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped) {
-    return insert_polylines(polylines, cdt, dropped, nullptr);
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped, bool refuse_crossing) {
+    return insert_polylines(polylines, cdt, dropped, nullptr, refuse_crossing);
 }
 
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options, Cdt* cdt, InitialMesh* out) {
-    StepProgress progress(options.progress, options.request.simple >= 0 ? 1 : 2);
-    StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
-                           0.7 * double(options.target), &progress);
-    out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
-                                    counter);
-    counter.release_detector();
-    if (!counter.status().ok()) return counter.status();
-    if (progress.cancelled()) return Status::failure(kCancelled);
-    out->edges = counter.edges();
-    out->polylines = std::move(counter.kept());
-    out->constraint_points = out->params.constrained_points;
-
-    // Only for tiny N: keep whole polylines, longest first, while the mesh stays within N.
+    static const std::vector<Polyline> kNone;
+    const std::vector<Polyline>& user = options.constraints ? *options.constraints : kNone;
+    Status st = check_constraints(user, image.width, image.height);
+    if (!st.ok()) return st;
     const std::size_t budget = options.target > 4 ? options.target - 4 : 0;
+    // The user's points, which every mesh keeps.
+    std::unordered_set<std::uint64_t> seen;
+    for (const Polyline& pl : user)
+        for (LatticePoint p : pl) seen.insert(key_of(p));
+    if (seen.size() > budget)
+        return Status::bad_input("constraints: " + std::to_string(seen.size()) + " distinct points, more than the " +
+                                 std::to_string(budget) + " the mesh of N = " + std::to_string(options.target) +
+                                 " points has beside its corners");
+
+    StepProgress progress(options.progress, options.request.simple >= 0 ? 1 : 2);
+    if (options.detect) {
+        StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
+                               0.7 * double(options.target), &progress);
+        out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
+                                        counter);
+        counter.release_detector();
+        if (!counter.status().ok()) return counter.status();
+        if (progress.cancelled()) return Status::failure(kCancelled);
+        out->edges = counter.edges();
+        out->polylines = std::move(counter.kept());
+        out->constraint_points = out->params.constrained_points;
+    } else {
+        out->params = ErdParams();
+        out->edges = Grid<std::uint8_t>(2 * image.width - 1, 2 * image.height - 1, 0);
+        out->polylines.clear();
+        out->constraint_points = 0;
+    }
+    if (!user.empty()) {
+        for (const Polyline& pl : out->polylines)
+            for (LatticePoint p : pl) seen.insert(key_of(p));
+        out->constraint_points = seen.size();
+    }
+
+    // Only for tiny N: keep whole polylines, longest first, while the mesh stays within N (the
+    // user's are always kept).
     if (out->constraint_points > budget) {
         std::vector<std::size_t> order(out->polylines.size());
         std::iota(order.begin(), order.end(), std::size_t(0));
         std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
             return out->polylines[a].size() > out->polylines[b].size();
         });
+        // The kept points in a hash set, so each polyline costs its own size (not the kept ones').
         std::vector<Polyline> kept;
+        seen.clear();
+        for (const Polyline& pl : user)
+            for (LatticePoint p : pl) seen.insert(key_of(p));
+        std::vector<std::uint64_t> fresh;
         for (std::size_t i : order) {
-            kept.push_back(out->polylines[i]);
-            if (distinct_points(kept) > budget) {
-                kept.pop_back();
+            fresh.clear();
+            for (LatticePoint p : out->polylines[i])
+                if (seen.insert(key_of(p)).second) fresh.push_back(key_of(p));
+            if (seen.size() > budget) {
+                for (std::uint64_t k : fresh) seen.erase(k);
                 ++out->dropped_polylines;
+            } else {
+                kept.push_back(std::move(out->polylines[i]));
             }
         }
         out->polylines = std::move(kept);
-        out->constraint_points = distinct_points(out->polylines);
+        out->constraint_points = seen.size();
     }
 
-    Status st = cdt->reset(2 * image.width - 2, 2 * image.height - 2);
+    st = cdt->reset(2 * image.width - 2, 2 * image.height - 2);
     if (!st.ok()) return st;
     cdt->reserve(options.target + 4);
     out->dropped_crossing = 0;
-    st = insert_polylines(out->polylines, cdt, &out->dropped_crossing, &progress);
+    if (!user.empty()) {
+        // User segments first: a detected piece crossing one is the one dropped.
+        // A crossing has no lattice point to split at, and keeping either segment would depend on
+        // the file's order: refused.
+        std::size_t none = 0;
+        if (!(st = insert_polylines(user, cdt, &none, nullptr, true)).ok()) return st;
+        if (out->edges.width == 2 * image.width - 1 && out->edges.height == 2 * image.height - 1)
+            mark_constraints(user, &out->edges);
+    }
+    st = insert_polylines(out->polylines, cdt, &out->dropped_crossing, &progress, false);
     if (!st.ok()) return st;
     progress.insertion(1, 1);
+    out->polylines.insert(out->polylines.end(), user.begin(), user.end());
     out->n0 = cdt->vertex_count();
     return Status::success();
 }

@@ -38,6 +38,9 @@ struct InitialMeshOptions {
     // true = plain Douglas-Peucker on the same cracks at that beta; false = keep the side test
     // and let the selection shrink beta and grow l.
     bool hard_fallback = true;
+    // User constraints (GenerateOptions::constraints; may be null) and whether to detect edges.
+    const std::vector<Polyline>* constraints = nullptr;
+    bool detect = true;
     // "initial mesh" with the fraction done: each edge detection, each count, the insertion.
     ProgressHook progress;
 };
@@ -52,15 +55,20 @@ struct InitialMesh {
     std::size_t n0 = 0;                // vertices of the initial mesh (corners included)
 };
 
-// Builds the initial mesh of image into cdt (reset first).
+// Builds the initial mesh of image into cdt (reset first). User constraints (options.constraints)
+// go in first and are kept whole: a point outside the image, more distinct points than N - 4, or
+// two user segments crossing fail with Code::input; they are appended to out->polylines and
+// marked in out->edges.
 // The mesh never has more than max(4, N) vertices: if the polylines hold more points than that
 // (tiny N), whole polylines are left out, longest kept first.
 Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
                           Cdt* cdt, InitialMesh* out);
 
-// Inserts P and E of the given polylines (plus the corners, which reset() creates) into cdt,
-// which must hold only the four corners. Adds the refused constraint pieces to *dropped.
-Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped);
+// Inserts P and E of the given polylines into cdt (points already there are shared). Adds the
+// refused constraint pieces (crossing an earlier constrained edge) to *dropped, or with
+// refuse_crossing fails (Code::input, naming the segment) at the first one.
+Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::size_t* dropped,
+                        bool refuse_crossing = false);
 
 // Distinct points of a set of polylines (they share end points at junctions).
 std::size_t distinct_points(const std::vector<Polyline>& polylines);

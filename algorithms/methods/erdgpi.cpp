@@ -1,5 +1,8 @@
 #include "algorithms/methods/erdgpi.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/scaffold.h"
@@ -66,13 +69,33 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
     go.round_values = false;
     go.supersampled = options.supersampled_errors;
     result->stats.has_greedy = true;
+    // Staged refits (ours): refinement stops at K evenly spaced sizes between the initial mesh and
+    // N, the wedge values are refitted, and refinement goes on against the refitted errors. The
+    // line-search value of every wedge is kept, so each refit (and the last) is drawn towards
+    // and bounded around it (wedge_fit.h).
+    std::vector<double> line_search;
+    const bool staged = options.refit_stages > 0 && options.wedge_fit > 0;
+    const std::size_t n0 = cdt.vertex_count();
+    for (int k = 1; staged && k <= options.refit_stages; ++k) {
+        go.target_vertices = n0 + (std::size_t(n) - std::min(n0, std::size_t(n))) * std::size_t(k) /
+                                      std::size_t(options.refit_stages + 1);
+        if (cdt.vertex_count() < go.target_vertices) {
+            st = greedy_refine(cdt, image, greedy, go, &result->stats.greedy);
+            if (!st) return st;
+        }
+        for (std::size_t i = line_search.size(); i < model.entry_count(); ++i) line_search.push_back(model.entry_value(i));
+        fit_wedge_values(cdt, image, wedge_fit_options(options), &model, nullptr, &line_search);
+    }
+    go.target_vertices = std::size_t(n);
     if (cdt.vertex_count() < std::size_t(n)) {
         st = greedy_refine(cdt, image, greedy, go, &result->stats.greedy);
         if (!st) return st;
     }
     timer.lap("greedy insertion");
+    for (std::size_t i = line_search.size(); staged && i < model.entry_count(); ++i)
+        line_search.push_back(model.entry_value(i));
 
-    finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
+    finish_erd_method(cdt, image, options, &mesh, &model, &timer, result, staged ? &line_search : nullptr);
     return Status::success();
 }
 

@@ -1,5 +1,6 @@
 #include "algorithms/methods/gpi.h"
 
+#include "algorithms/methods/optimize.h"
 #include "algorithms/methods/scaffold.h"
 
 namespace erd {
@@ -59,6 +60,11 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     timer.lap("greedy insertion");
 
     finish_basic_method(cdt, image, &timer, result);
+    if (options.optimize) {
+        optimize_basic_model(&cdt, image, options, &result->model, &result->stats.wedge_fit);
+        result->stats.has_wedge_fit = true;
+        timer.lap("optimize");
+    }
     return Status::success();
 }
 

@@ -12,6 +12,7 @@
 #include "algorithms/model/model.h"
 #include "kernel/progress.h"
 #include "algorithms/methods/result.h"
+#include "kernel/lattice.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -61,6 +62,14 @@ struct GenerateOptions {
     std::uint64_t seed = 1;      // random selection (-f 0): fixed seed, deterministic output
     int wedge_fit = 6;           // ERD (ours, beyond the thesis): CGLS iterations of the least-squares
                                  // refit of all wedge values after refinement; 0 = the thesis's values
+    double wedge_prior = 0.01;    // ERD refit: weight of each line-search value, in pixel observations
+    double wedge_bounds = 0.5;  // ERD refit: clamp each value into its pixels' sample range
+                                 // widened by this fraction of it; < 0: off
+                                 // (algorithms/methods/wedge_fit.h WedgeFitOptions)
+    int refit_stages = 0;        // ERDGPI (ours): refit the wedge values this many times during
+                                 // refinement, so later insertions see the refitted errors
+    int flips = 1;               // ERD (ours): rounds of data-dependent flips + refit after the refit
+    bool optimize = false;       // ED, GPI (--optimize, ours): least-squares vertex values
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
     EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft
@@ -68,6 +77,13 @@ struct GenerateOptions {
                                  // edge pixel (ours; the thesis's "edge pixels" is 0)
     bool supersampled_errors = false;  // ERDGPI: refinement errors against the 4x4-supersampled
                                  // approximation (the thesis's, --thesis); false: point evaluation
+    // ERD: user constraints (breaklines, --constraints), polylines in doubled coordinates (the -p
+    // format), kept as constrained edges beside the detected ones, or alone with detect = false
+    // (--no-detect). Policy (docs/DECISIONS.md "User constraints"): points outside the image, or
+    // two user segments crossing, are refused; duplicate and overlapping segments merge; a detected
+    // piece crossing a user segment is dropped.
+    std::vector<std::vector<LatticePoint>> constraints;
+    bool detect = true;
 
     ColourChoices colour;        // colour images only (channels == 3)
 

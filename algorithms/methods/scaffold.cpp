@@ -8,6 +8,7 @@
 
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/edge_kind.h"
+#include "algorithms/methods/optimize.h"
 #include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/reconstruct.h"
@@ -47,6 +48,7 @@ Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode 
 
 void set_thesis_preset(GenerateOptions* o) {
     o->wedge_fit = 0;
+    o->flips = 0;
     o->alpha_min = 1.0;
     o->alpha_max = 1.5;
     o->edge_zero_radius = 0;
@@ -145,6 +147,8 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
+    mo.constraints = &options.constraints;
+    mo.detect = options.detect;
     mo.progress = options.progress;
     st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
@@ -153,6 +157,15 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
 }
 
 namespace {
+
+// True when a's point-evaluated reconstruction has a higher PSNR than b's (false on any error).
+bool better_reconstruction(const Image& image, const Model& a, const Model& b) {
+    Image ra, rb;
+    double pa = 0, pb = 0;
+    if (!reconstruct(a, false, &ra) || !psnr(image, ra, &pa) || !reconstruct(b, false, &rb) || !psnr(image, rb, &pb))
+        return false;
+    return pa > pb;
+}
 
 // The end of finish_erd_method once result->model is made: the step-1 facts and the wedge-value
 // counts (of `model`, channel 0 in colour), the polylines; stage "model".
@@ -174,21 +187,53 @@ void finish_erd_stats(InitialMesh* mesh, const ErdModel* model, StageTimer* time
 
 }  // namespace
 
-void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
-                       ErdModel* model, StageTimer* timer, GenerateResult* result) {
+WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
+    WedgeFitOptions f;
+    f.iterations = options.wedge_fit;
+    f.prior_weight = options.wedge_prior;
+    f.support_bounds = options.wedge_bounds;
+    return f;
+}
+
+void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdModel* model, StageTimer* timer, GenerateResult* result,
+                       const std::vector<double>* line_search_values) {
     if (options.wedge_fit > 0) {
-        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit, options.progress);
+        std::vector<double> kept;  // the line-search values, for the refit after the flips
+        if (options.flips && !line_search_values) {
+            for (std::size_t i = 0; i < model->entry_count(); ++i) kept.push_back(model->entry_value(i));
+            line_search_values = &kept;
+        }
+        fit_wedge_values(cdt, image, wedge_fit_options(options), model, &result->stats.wedge_fit,
+                         line_search_values, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
+        if (options.flips) {
+            // Hard edges are reconstructed by rounded point evaluation, and near-lossless
+            // pictures (above 65 dB) can lose by flips that lower the real-valued error: keep
+            // the flipped model only when its reconstruction is at least as good.
+            const bool guard = result->model.edges == EdgeKind::hard;
+            Model before;
+            if (guard) {
+                before = result->model;  // keeps the fields to_model leaves alone (edges)
+                model->to_model(cdt, image.width, image.height, image.maxval, &before);
+            }
+            optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit);
+            model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+            if (guard && better_reconstruction(image, before, result->model)) result->model = std::move(before);
+            timer->lap("flips");
+        }
     }
-    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    if (!(options.wedge_fit > 0 && options.flips))
+        model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     finish_erd_stats(mesh, model, timer, result);
 }
 
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
     if (options.wedge_fit > 0) {
-        model->fit(cdt, options.wedge_fit, &result->stats.wedge_fit, options.progress);
+        // As gray's refit (prior and support bounds per channel); no flips in colour yet.
+        model->fit(cdt, wedge_fit_options(options), &result->stats.wedge_fit, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
     }

@@ -14,6 +14,7 @@
 #include "algorithms/methods/erd_params.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/options.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/model.h"
 #include "kernel/cdt.h"
@@ -51,6 +52,8 @@ GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n);
 
 // Wedge-value options from the generate options (-w, -s, the line-search range).
 WedgeValueOptions wedge_options(const GenerateOptions& options);
+// The refit's options (iterations, prior weight, support bounds).
+WedgeFitOptions wedge_fit_options(const GenerateOptions& options);
 
 // Parameter flags (-b -r -l -e -S) as a request for the automatic selection.
 ErdParamRequest param_request(const GenerateOptions& options);
@@ -74,9 +77,13 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
 // The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the
 // least-squares refit (options.wedge_fit > 0, stage "wedge refit"), the ERD model into result,
 // the step-1 facts and the wedge-value counts, the polylines (moved out of *mesh); stage "model".
-void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
-                       ErdModel* model, StageTimer* timer, GenerateResult* result);
-// The same for a colour image: the refit per channel (ErdChannels::fit), the C-channel model.
+// line_search_values: the values the refit is drawn towards and bounded around when the model's
+// current values are not the line-search ones (ERDGPI's staged refits); nullptr: the current ones.
+void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+                       ErdModel* model, StageTimer* timer, GenerateResult* result,
+                       const std::vector<double>* line_search_values = nullptr);
+// The same for a colour image: the refit of every channel with the same options, drawn towards
+// each channel's current (line-search) values (ErdChannels::fit); no flips; the C-channel model.
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result);
 

@@ -1,5 +1,6 @@
 #include "algorithms/methods/wedge_fit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -18,6 +19,7 @@ struct FaceSystem {
     double g[6];
     double h[3];
     double bb;
+    std::uint16_t lo, hi;  // smallest and largest sample among the face's pixels
 
     // (G v)_i for the face's values v = (a, b, c).
     void gram_times(double a, double b, double c, double out[3]) const {
@@ -56,6 +58,8 @@ void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& mo
         const double gx0 = l0.gx, gx1 = l1.gx;
         double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0[N] = {}, h1[N] = {}, h2[N] = {};
         std::uint64_t bb[N] = {};  // sum b^2 in integers: exact, and what the double sum gave while exact
+        std::uint16_t lo[N], hi[N];
+        for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0;
         for (const Span& sp : spans) {
             const double Y = double(2 * sp.y);
             const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
@@ -72,11 +76,14 @@ void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& mo
                 g12 += w1 * w2;
                 g22 += w2 * w2;
                 for (int k = 0; k < N; ++k) {
-                    const double b = double(px[k][i]);
+                    const std::uint16_t v = px[k][i];
+                    const double b = double(v);
                     h0[k] += b * w0;
                     h1[k] += b * w1;
                     h2[k] += b * w2;
-                    bb[k] += std::uint64_t(px[k][i]) * px[k][i];
+                    bb[k] += std::uint64_t(v) * v;
+                    lo[k] = v < lo[k] ? v : lo[k];
+                    hi[k] = v > hi[k] ? v : hi[k];
                 }
             }
         }
@@ -86,7 +93,7 @@ void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& mo
             faces[k].push_back({{entry[0], entry[1], entry[2]},
                                 {g00, g01, g02, g11, g12, g22},
                                 {h0[k], h1[k], h2[k]},
-                                double(bb[k])});
+                                double(bb[k]), lo[k], hi[k]});
     }
 }
 
@@ -96,12 +103,14 @@ double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>
     return sse > 0 ? sse : 0.0;  // an exact fit can leave a rounding residue below zero
 }
 
-// The CGLS refit of model's values from its face systems.
-void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterations, ErdModel* model,
-           WedgeFitStats* stats, const ProgressHook& progress) {
+// The CGLS refit of model's values from its face systems (regularised as options says; prior as
+// for fit_wedge_values).
+void solve(const std::vector<FaceSystem>& faces, const Image& image, const WedgeFitOptions& options, ErdModel* model,
+           WedgeFitStats* stats, const std::vector<double>* prior, const ProgressHook& progress) {
     const std::size_t n = model->entry_count();
+    const double lambda = options.prior_weight > 0 ? options.prior_weight : 0.0;
 
-    // out = A^T A v, assembled from the face Gram matrices.
+    // out = (A^T A + lambda I) v, assembled from the face Gram matrices.
     auto normal_times = [&](const std::vector<double>& v, std::vector<double>* out) {
         std::fill(out->begin(), out->end(), 0.0);
         for (const FaceSystem& fs : faces) {
@@ -109,6 +118,8 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterati
             fs.gram_times(v[fs.entry[0]], v[fs.entry[1]], v[fs.entry[2]], gv);
             for (int j = 0; j < 3; ++j) (*out)[fs.entry[j]] += gv[j];
         }
+        if (lambda > 0)
+            for (std::size_t i = 0; i < v.size(); ++i) (*out)[i] += lambda * v[i];
     };
     auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
         double t = 0;
@@ -118,28 +129,30 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterati
 
     // Jacobi preconditioning: solve for y with x = x0 + S y, S = diag(1 / |column of A|), so the
     // values of big and small faces converge at the same rate (10 steps then do what 30 did).
-    std::vector<double> scale(n, 0.0);
+    std::vector<double> scale(n, lambda);
     for (const FaceSystem& fs : faces)
         for (int j = 0; j < 3; ++j) scale[fs.entry[j]] += fs.g[j == 0 ? 0 : j == 1 ? 3 : 5];
     for (double& c : scale) c = c > 1e-12 ? 1.0 / std::sqrt(c) : 0.0;
 
-    std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(n);
+    std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(n), x0(n);
     for (std::size_t i = 0; i < n; ++i) x[i] = model->entry_value(i);
+    // The value each one is drawn towards and bounded around: its line-search value.
+    for (std::size_t i = 0; i < n; ++i) x0[i] = prior && i < prior->size() ? (*prior)[i] : x[i];
     if (stats) stats->sse_before = total_sse(faces, x);
-    // s = S A^T (b - A x0), the residual of the preconditioned normal equations at y = 0.
+    // s = S (A^T b + lambda x0 - (A^T A + lambda I) x), the preconditioned residual at y = 0.
     normal_times(x, &q);
     std::fill(s.begin(), s.end(), 0.0);
     for (const FaceSystem& fs : faces)
         for (int j = 0; j < 3; ++j) s[fs.entry[j]] += fs.h[j];
-    for (std::size_t i = 0; i < n; ++i) s[i] = scale[i] * (s[i] - q[i]);
+    for (std::size_t i = 0; i < n; ++i) s[i] = scale[i] * (s[i] + lambda * x0[i] - q[i]);
     p = s;
     double gamma = dot(s, s);
     int it = 0;
-    for (; it < iterations && gamma > 1e-12; ++it) {
-        progress("wedge refit", 0.5 + 0.5 * double(it) / double(iterations));
+    for (; it < options.iterations && gamma > 1e-12; ++it) {
+        progress("wedge refit", 0.5 + 0.5 * double(it) / double(options.iterations));
         for (std::size_t i = 0; i < n; ++i) ps[i] = scale[i] * p[i];
         normal_times(ps, &q);
-        const double pq = dot(ps, q);  // |A S p|^2
+        const double pq = dot(ps, q);  // |A S p|^2 (+ lambda |S p|^2)
         if (pq <= 0) break;
         const double alpha = gamma / pq;
         for (std::size_t i = 0; i < n; ++i) {
@@ -151,10 +164,27 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterati
         gamma = g2;
         for (std::size_t i = 0; i < n; ++i) p[i] = s[i] + beta * p[i];
     }
-    const double hi = double(image.maxval);
+    // Bounds: [0, maxval], and with support_bounds the range of the samples the value reaches
+    // (every pixel of the faces it is a corner of) widened to take in its line-search value.
+    std::vector<double> lo(n, 0.0), hi(n, double(image.maxval));
+    if (options.support_bounds >= 0) {
+        std::vector<double> a(n), b(n);
+        for (std::size_t i = 0; i < n; ++i) a[i] = b[i] = x0[i];
+        for (const FaceSystem& fs : faces)
+            for (int j = 0; j < 3; ++j) {
+                const std::uint32_t k = fs.entry[j];
+                if (double(fs.lo) < a[k]) a[k] = double(fs.lo);
+                if (double(fs.hi) > b[k]) b[k] = double(fs.hi);
+            }
+        for (std::size_t i = 0; i < n; ++i) {
+            const double m = options.support_bounds * (b[i] - a[i]);
+            lo[i] = std::max(lo[i], a[i] - m);
+            hi[i] = std::min(hi[i], b[i] + m);
+        }
+    }
     for (std::size_t i = 0; i < n; ++i) {
         const double v = x[i] + scale[i] * y[i];
-        x[i] = v < 0 ? 0.0 : (v > hi ? hi : v);
+        x[i] = v < lo[i] ? lo[i] : (v > hi[i] ? hi[i] : v);
         model->set_entry_value(i, x[i]);
     }
     if (stats) {
@@ -167,21 +197,30 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, int iterati
 
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
                       ProgressHook progress) {
+    WedgeFitOptions o;
+    o.iterations = iterations;
+    fit_wedge_values(cdt, image, o, model, stats, nullptr, progress);
+}
+
+void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
+                      WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress) {
     progress("wedge refit", 0.0);
     std::vector<FaceSystem> faces;
     const Image* one = &image;
     face_systems<1>(cdt, &one, *model, &faces);
     progress("wedge refit", 0.5);
-    solve(faces, image, iterations, model, stats, progress);
+    solve(faces, image, options, model, stats, prior, progress);
 }
 
-void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, int iterations,
+void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, const WedgeFitOptions& options,
                       const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats,
-                      ProgressHook progress) {
+                      const std::vector<const std::vector<double>*>* priors, ProgressHook progress) {
     stats->assign(planes.size(), WedgeFitStats());
+    auto prior = [&](std::size_t c) { return priors && c < priors->size() ? (*priors)[c] : nullptr; };
     if (planes.size() != 3 || models.size() != 3) {
         for (std::size_t c = 0; c < planes.size() && c < models.size(); ++c)
-            fit_wedge_values(cdt, *planes[c], iterations, models[c], &(*stats)[c], c + 1 == planes.size() ? progress : ProgressHook());
+            fit_wedge_values(cdt, *planes[c], options, models[c], &(*stats)[c], prior(c),
+                             c + 1 == planes.size() ? progress : ProgressHook());
         return;
     }
     progress("wedge refit", 0.0);
@@ -190,7 +229,7 @@ void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, i
     progress("wedge refit", 0.5);
     // The progress of the last channel's iterations stands for all three (it must not go back).
     for (std::size_t c = 0; c < 3; ++c)
-        solve(faces[c], *planes[c], iterations, models[c], &(*stats)[c], c == 2 ? progress : ProgressHook());
+        solve(faces[c], *planes[c], options, models[c], &(*stats)[c], prior(c), c == 2 ? progress : ProgressHook());
 }
 
 }  // namespace erd

@@ -25,10 +25,28 @@ namespace erd {
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
                       ProgressHook progress = {});
 
+// The refit's regularisation (docs/DECISIONS.md "Wedge refit bounds"). It minimises
+//   sum over pixels (approximation - sample)^2 + prior_weight * sum over values (z - z_ls)^2
+// where z_ls is the value's line-search value (the thesis's): a value with little pixel support
+// stays near z_ls. With support_bounds each result is then clamped into the range of the samples
+// of the pixels it reaches (every pixel of the faces it is a corner of), widened to hold z_ls:
+// no value ends further from z_ls than the data it is fitted to.
+struct WedgeFitOptions {
+    int iterations = 6;         // CGLS steps
+    double prior_weight = 0.0;  // lambda, in pixel observations; 0: plain least squares
+    double support_bounds = -1.0;  // margin (fraction of the range) of the bounds; < 0: off
+};
+
+// As above with options. `prior`, when given, holds z_ls for the first prior->size() entries
+// (the values start from the model's current ones); other entries use their current value.
+void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
+                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr, ProgressHook progress = {});
+
 // The same for the channels of a colour image on one triangulation (models[c] on planes[c], all
-// with the same wedges): each channel's refit as above, the pixel pass shared.
-void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, int iterations,
+// with the same wedges): each channel's refit as above with the same options, the pixel pass
+// shared; (*priors)[c], when given, is channel c's `prior`.
+void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, const WedgeFitOptions& options,
                       const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats,
-                      ProgressHook progress = {});
+                      const std::vector<const std::vector<double>*>* priors = nullptr, ProgressHook progress = {});
 
 }  // namespace erd

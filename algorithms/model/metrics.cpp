@@ -13,13 +13,19 @@ double psnr_peak(std::uint32_t maxval) {
 }
 
 static Status check_pair(const Image& a, const Image& b) {
-    if (a.width <= 0 || a.height <= 0 || a.samples.size() != std::size_t(a.width) * std::size_t(a.height))
-        return Status::bad_input("the original image is empty or malformed");
-    if (b.width <= 0 || b.height <= 0 || b.samples.size() != std::size_t(b.width) * std::size_t(b.height))
-        return Status::bad_input("the approximation is empty or malformed");
+    auto malformed = [](const Image& im) {
+        return im.width <= 0 || im.height <= 0 || (im.channels != 1 && im.channels != 3) ||
+               im.samples.size() != im.pixels() * std::size_t(im.channels);
+    };
+    if (malformed(a)) return Status::bad_input("the original image is empty or malformed");
+    if (malformed(b)) return Status::bad_input("the approximation is empty or malformed");
     if (a.width != b.width || a.height != b.height)
         return Status::bad_input("sizes differ: " + std::to_string(a.width) + " x " + std::to_string(a.height) + " and " +
                                  std::to_string(b.width) + " x " + std::to_string(b.height));
+    if (a.channels != b.channels) {
+        auto kind = [](int c) { return std::to_string(c) + (c == 3 ? " (colour)" : " (gray)"); };
+        return Status::bad_input("one image is colour and the other gray: channels " + kind(a.channels) + " and " + kind(b.channels));
+    }
     if (a.maxval != b.maxval)
         return Status::bad_input("maxvals differ: " + std::to_string(a.maxval) + " and " + std::to_string(b.maxval));
     return Status::success();
@@ -38,16 +44,30 @@ Status mse(const Image& orig, const Image& approx, double* out) {
     return Status::success();
 }
 
+Status channel_mse(const Image& orig, const Image& approx, double out[3]) {
+    Status s = check_pair(orig, approx);
+    if (!s) return s;
+    const std::size_t c = std::size_t(orig.channels);
+    std::uint64_t sum[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < orig.samples.size(); ++i) {
+        std::int64_t d = std::int64_t(orig.samples[i]) - std::int64_t(approx.samples[i]);
+        sum[i % c] += std::uint64_t(d * d);
+    }
+    for (std::size_t k = 0; k < c; ++k) out[k] = double(sum[k]) / double(orig.pixels());
+    return Status::success();
+}
+
+double psnr_of_mse(double e, std::uint32_t maxval) {
+    if (e == 0) return std::numeric_limits<double>::infinity();
+    double peak = psnr_peak(maxval);
+    return 10.0 * std::log10(peak * peak / e);
+}
+
 Status psnr(const Image& orig, const Image& approx, double* out) {
     double e = 0;
     Status s = mse(orig, approx, &e);
     if (!s) return s;
-    if (e == 0) {
-        *out = std::numeric_limits<double>::infinity();
-        return Status::success();
-    }
-    double peak = psnr_peak(orig.maxval);
-    *out = 10.0 * std::log10(peak * peak / e);
+    *out = psnr_of_mse(e, orig.maxval);
     return Status::success();
 }
 

@@ -2,6 +2,8 @@
 //
 // The PSNR peak is 2^p - 1 with p = ceil(log2(maxval + 1)) of the ORIGINAL (../shared/spec/NOTES.md): a 12-bit
 // image with maxval 4095 gets peak 4095, an 8-bit image 255, one with maxval 200 also 255.
+// Colour (channels 3): the MSE is averaged over the three channels and all pixels, one number,
+// with the same peak (the convention of Kodak results).
 #pragma once
 #include "algorithms/imaging/image.h"
 #include "kernel/status.h"
@@ -11,9 +13,16 @@ namespace erd {
 // Peak value for PSNR of an image with this maxval: 2^bits - 1.
 double psnr_peak(std::uint32_t maxval);
 
-// Mean squared error over all samples. Fails (Code::input) when sizes differ, when the images
-// are empty, or when the maxvals differ (comparing 8-bit to 16-bit samples is meaningless).
+// Mean squared error over all samples (every channel of every pixel). Fails (Code::input) when
+// sizes or channel counts differ, when the images are empty, or when the maxvals differ
+// (comparing 8-bit to 16-bit samples is meaningless).
 Status mse(const Image& orig, const Image& approx, double* out);
+
+// The MSE of each channel alone: out[c] for c < channels (their mean is mse()). Same failures.
+Status channel_mse(const Image& orig, const Image& approx, double out[3]);
+
+// PSNR in dB of a mean squared error against an image of this maxval; +infinity for mse 0.
+double psnr_of_mse(double mse, std::uint32_t maxval);
 
 // PSNR in dB = 10 log10(peak^2 / mse); +infinity when the images are identical. Same failures as mse.
 Status psnr(const Image& orig, const Image& approx, double* out);

@@ -1,0 +1,34 @@
+// Data-dependent edge flips (ours, after Li and Adams 2013 and Yu, Morse and Sederberg 2001):
+// the triangulation of the final point set need not be the Delaunay one. An unconstrained
+// interior edge whose two faces form a strictly convex quadrilateral is flipped when the other
+// diagonal gives a smaller squared error of the model's planes over the quadrilateral's pixels
+// (point evaluation at the pixels each face owns, kernel/raster.h). Constrained edges, and so
+// every wedge, stay as they are; the corner values move with their vertices (an unconstrained
+// edge separates no wedges). Each flip lowers the whole-image squared error, so the loop ends;
+// it stops early after max_flips flips.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/erd_model.h"
+#include "kernel/cdt.h"
+
+namespace erd {
+
+struct FlipStats {
+    std::size_t flips = 0;      // flips made
+    std::size_t tested = 0;     // flippable edges whose two diagonals were compared
+    double sse_before = 0.0;    // squared error of the touched quadrilaterals before / after
+    double sse_after = 0.0;
+    std::vector<FaceInd> changed;  // faces a flip rewrote (with repeats)
+};
+
+// Flips edges of *cdt (values from model, which keeps its wedge values) while a flip lowers the
+// squared error. Edges are visited from a work list seeded with every edge of the faces in
+// *seed_faces (every edge when it is null); a flip puts the four outer edges of its
+// quadrilateral back on it.
+void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
+                      const std::vector<FaceInd>* seed_faces = nullptr);
+
+}  // namespace erd

@@ -1,0 +1,40 @@
+// libFuzzer target for the fenced JPEG reader (imageio/jpeg.h decode_jpeg over third_party/
+// stb_glue): our marker walk first (frame header, components, coding, end-of-image marker, the
+// samples-per-byte cap), then Debian's stb_image 2.27 with a byte budget. Seeds: fuzz/corpus/
+// fuzz_jpeg (fuzz/make_jpeg_seeds.sh), among them a truncated, a CMYK and a progressive huge one.
+//
+// Checks: failures are one line with Code::input; successes are well-formed 8-bit gray or RGB
+// images within the limits that survive our PNG writer unchanged.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "imageio/jpeg.h"
+#include "imageio/png.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    erd::imageio::ImageLimits limits;
+    limits.max_side = 2048;
+    limits.max_pixels = std::int64_t(1) << 18;
+    erd::Image im;
+    std::string warning;
+    erd::Status s = erd::imageio::decode_jpeg(data, size, &im, &warning, limits);
+    if (!s.ok()) {
+        if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
+        return 0;
+    }
+    if (im.width < 1 || im.height < 1 || std::int64_t(im.width) * im.height > limits.max_pixels) std::abort();
+    if (im.channels != 1 && im.channels != 3) std::abort();
+    if (im.samples.size() != im.pixels() * std::size_t(im.channels) || im.maxval != 255) std::abort();
+    for (std::uint16_t v : im.samples)
+        if (v > 255) std::abort();
+    std::string bytes;
+    if (!erd::imageio::encode_png(im, &bytes).ok()) std::abort();
+    erd::Image back;
+    std::string w;
+    if (!erd::imageio::decode_png(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &back, &w, limits).ok())
+        std::abort();
+    if (back.samples != im.samples || back.channels != im.channels) std::abort();
+    return 0;
+}

@@ -1,0 +1,77 @@
+#include "imageio/image_format.h"
+
+#include <cstring>
+
+#include "imageio/jpeg.h"
+#include "imageio/pam.h"
+#include "imageio/png.h"
+#include "imageio/pnm.h"
+
+namespace erd::imageio {
+
+const char* format_name(ImageFormat f) {
+    switch (f) {
+        case ImageFormat::pgm_plain: return "PGM (P2, plain)";
+        case ImageFormat::pgm_raw: return "PGM (P5, raw)";
+        case ImageFormat::ppm_plain: return "PPM (P3, plain)";
+        case ImageFormat::ppm_raw: return "PPM (P6, raw)";
+        case ImageFormat::pam: return "PAM (P7)";
+        case ImageFormat::png: return "PNG";
+        case ImageFormat::jpeg: return "JPEG";
+        case ImageFormat::unknown: break;
+    }
+    return "unknown";
+}
+
+ImageFormat detect_format(const unsigned char* data, std::size_t size) {
+    static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 2 && data[0] == 'P') {
+        switch (data[1]) {
+            case '2': return ImageFormat::pgm_plain;
+            case '3': return ImageFormat::ppm_plain;
+            case '5': return ImageFormat::pgm_raw;
+            case '6': return ImageFormat::ppm_raw;
+            case '7': return ImageFormat::pam;
+            default: break;
+        }
+    }
+    if (size >= 8 && std::memcmp(data, kPngSignature, 8) == 0) return ImageFormat::png;
+    if (size >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff) return ImageFormat::jpeg;
+    return ImageFormat::unknown;
+}
+
+Status decode_image(const unsigned char* data, std::size_t size, Image* out, std::string* warning, ImageFormat* format,
+                    const ImageLimits& limits) {
+    ImageFormat f = detect_format(data, size);
+    if (format) *format = f;
+    if (f == ImageFormat::png) return decode_png(data, size, out, warning, limits);
+    if (f == ImageFormat::jpeg) return decode_jpeg(data, size, out, warning, limits);
+    if (f == ImageFormat::pam) return decode_pam(data, size, out, warning, limits);
+    // decode_pnm also explains what an unknown file is.
+    return decode_pnm(data, size, out, warning, limits);
+}
+
+ImageFormat format_for_name(const std::string& name, bool plain) {
+    if (name.size() >= 4) {
+        std::string ext = name.substr(name.size() - 4);
+        for (auto& ch : ext) ch = char(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
+        if (ext == ".png") return ImageFormat::png;
+    }
+    return plain ? ImageFormat::pgm_plain : ImageFormat::pgm_raw;
+}
+
+Status encode_image(const Image& im, ImageFormat format, std::string* bytes) {
+    if (im.width <= 0 || im.height <= 0 || (im.channels != 1 && im.channels != 3) ||
+        im.samples.size() != im.pixels() * std::size_t(im.channels) || im.maxval < 1 || im.maxval > 65535)
+        return Status::failure("internal error: invalid image " + std::to_string(im.width) + " x " + std::to_string(im.height) +
+                               " x " + std::to_string(im.channels) + " maxval " + std::to_string(im.maxval));
+    switch (format) {
+        case ImageFormat::png: return encode_png(im, bytes);
+        case ImageFormat::pgm_plain: case ImageFormat::ppm_plain: *bytes = encode_pnm(im, true); return Status::success();
+        case ImageFormat::pgm_raw: case ImageFormat::ppm_raw: *bytes = encode_pnm(im, false); return Status::success();
+        case ImageFormat::pam: case ImageFormat::jpeg: case ImageFormat::unknown: break;
+    }
+    return Status::failure(std::string("no writer for ") + format_name(format));
+}
+
+}  // namespace erd::imageio

@@ -1,0 +1,162 @@
+// Data-dependent flips (algorithms/methods/flips.h), the flip primitive of the kernel, the
+// regularised wedge refit (algorithms/methods/wedge_fit.h) and --optimize (optimize.h).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "algorithms/methods/erd_mesh.h"
+#include "algorithms/methods/flips.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/methods/wedge_fit.h"
+#include "algorithms/model/erd_model.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/reconstruct.h"
+#include "kernel/cdt.h"
+#include "tests/erd_check.h"
+
+using namespace erd;
+
+namespace {
+
+// A smooth ramp with a diagonal step: the Delaunay diagonals ignore the step's direction.
+Image ridge(int w, int h) {
+    Image im(w, h, 255);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            im.at(x, y) = std::uint16_t((2 * x + y < w ? 40 : 190) + (x + 3 * y) % 23);
+    return im;
+}
+
+void random_points(Cdt* cdt, int count, std::uint32_t seed) {
+    for (int i = 0; i < count; ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        const LatticePoint p{std::int32_t(2 * ((seed >> 8) % std::uint32_t(cdt->max_x() / 2 + 1))),
+                             std::int32_t(2 * ((seed >> 20) % std::uint32_t(cdt->max_y() / 2 + 1)))};
+        VertInd v = 0;
+        REQUIRE(cdt->insert_point(p, &v).ok());
+    }
+}
+
+}  // namespace
+
+TEST_CASE("kernel flip_edge: unconstrained convex edges only; a flip twice is the identity", "[flips][kernel]") {
+    Cdt cdt;
+    REQUIRE(cdt.reset(40, 30).ok());
+    random_points(&cdt, 12, 7);
+    VertInd a = 0, b = 0;
+    REQUIRE(cdt.insert_point({4, 4}, &a).ok());
+    REQUIRE(cdt.insert_point({34, 26}, &b).ok());
+    REQUIRE(cdt.insert_constraint(a, b).ok());
+    const auto before = canonical_faces(cdt);
+    std::size_t flipped = 0;
+    for (EdgeInd e = 0; e < 3 * cdt.face_count(); ++e) {
+        if (cdt.constrained(e) || cdt.on_hull(e)) {
+            CHECK(!cdt.can_flip(e));
+            CHECK(cdt.flip_edge(e) == noEdge);
+            continue;
+        }
+        if (!cdt.can_flip(e)) continue;
+        const EdgeInd d = cdt.flip_edge(e);
+        REQUIRE(d != noEdge);
+        std::string why;
+        INFO(why);
+        REQUIRE(cdt.verify_topology(&why));
+        REQUIRE(cdt.can_flip(d));
+        REQUIRE(cdt.flip_edge(d) != noEdge);
+        ++flipped;
+    }
+    CHECK(flipped > 10);
+    CHECK(canonical_faces(cdt) == before);  // a flip of a flip restores the faces
+    std::string why;
+    CHECK(cdt.verify(&why));
+}
+
+TEST_CASE("data-dependent flips lower the squared error and keep constraints and wedges", "[flips]") {
+    const Image im = ridge(48, 40);
+    InitialMeshOptions mo;
+    mo.target = 150;
+    Cdt cdt;
+    InitialMesh mesh;
+    REQUIRE(build_initial_mesh(im, mo, &cdt, &mesh).ok());
+    random_points(&cdt, 60, 3);
+    std::vector<std::array<VertInd, 2>> cons_before, cons_after;
+    cdt.export_constraints(&cons_before);
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(cdt);
+    FlipStats fs;
+    improve_by_flips(&cdt, im, model, 100000, &fs);
+    CHECK(fs.flips > 0);
+    CHECK(fs.sse_after < fs.sse_before);
+    std::string why;
+    INFO(why);
+    CHECK(cdt.verify_topology(&why));
+    cdt.export_constraints(&cons_after);
+    CHECK(cons_after == cons_before);
+    Model m;
+    model.to_model(cdt, im.width, im.height, im.maxval, &m);
+    test::check_model(m);  // the flipped-faces path of check_model
+}
+
+TEST_CASE("regularised refit: values stay within their pixels' range and near a weakly supported line-search value",
+          "[flips][erd]") {
+    // A step image without constraints: plain least squares overshoots the step (values above
+    // the bright side's 200 or below the dark side's 20); the support bounds forbid it.
+    Image im(40, 30, 255);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) im.at(x, y) = std::uint16_t(x + y / 3 < 21 ? 20 : 200);
+    Cdt cdt;
+    REQUIRE(cdt.reset(78, 58).ok());
+    random_points(&cdt, 40, 11);
+    for (double bounds : {-1.0, 0.0}) {
+        ErdModel model(im, WedgeValueOptions{});
+        model.assign_all(cdt);
+        WedgeFitOptions o;
+        o.iterations = 30;
+        o.support_bounds = bounds;
+        fit_wedge_values(cdt, im, o, &model, nullptr);
+        double lo = 1e9, hi = -1e9;
+        for (std::size_t i = 0; i < model.entry_count(); ++i) {
+            lo = std::min(lo, model.entry_value(i));
+            hi = std::max(hi, model.entry_value(i));
+        }
+        INFO("bounds " << bounds << ": values in [" << lo << ", " << hi << "]");
+        if (bounds < 0) CHECK((lo < 19.5 || hi > 200.5));  // the overshoot the bounds remove
+        else CHECK((lo >= 20.0 && hi <= 200.0));
+    }
+    // The prior: a huge weight keeps every value at its line-search value.
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(cdt);
+    std::vector<double> start;
+    for (std::size_t i = 0; i < model.entry_count(); ++i) start.push_back(model.entry_value(i));
+    WedgeFitOptions o;
+    o.prior_weight = 1e9;
+    fit_wedge_values(cdt, im, o, &model, nullptr);
+    for (std::size_t i = 0; i < model.entry_count(); ++i) CHECK(model.entry_value(i) == Approx(start[i]).margin(1e-3));
+}
+
+TEST_CASE("gpi and ed --optimize: same points, exactly N, a better PSNR", "[flips][methods]") {
+    const Image im = ridge(64, 48);
+    for (const char* name : {"gpi", "ed"}) {
+        INFO(name);
+        const MethodInfo* m = find_method(name);
+        REQUIRE(m != nullptr);
+        GenerateOptions o;
+        o.density = 4;
+        o.density_given = true;
+        GenerateResult plain, opt;
+        REQUIRE(m->run(im, o, &plain).ok());
+        o.optimize = true;
+        REQUIRE(m->run(im, o, &opt).ok());
+        CHECK(opt.achieved == opt.requested);
+        CHECK(opt.model.vertices == plain.model.vertices);
+        Image a, b;
+        double pa = 0, pb = 0;
+        REQUIRE(reconstruct(plain.model, false, &a).ok());
+        REQUIRE(reconstruct(opt.model, false, &b).ok());
+        REQUIRE(psnr(im, a, &pa).ok());
+        REQUIRE(psnr(im, b, &pb).ok());
+        CHECK(pb > pa + 0.5);
+    }
+}
