@@ -368,8 +368,8 @@ case_ "--max-memory too large" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 
 cat <<'EOF'
 
 ## Colour and JPEG inputs (issues 17, 20)
-Colour stays colour (PPM P3/P6, PAM, PNG RGB/RGBA, JPEG); `erd generate` meshes its luma until the
-methods take colour, with one warning line unless `--gray` is given. JPEG seeds are
+Colour stays colour (PPM P3/P6, PAM, PNG RGB/RGBA, JPEG); `erd generate` meshes it in colour
+(`--gray`: its luma). JPEG seeds are
 fuzz/corpus/fuzz_jpeg (fuzz/make_jpeg_seeds.sh).
 | case | command | exit | message |
 | --- | --- | --- | --- |
