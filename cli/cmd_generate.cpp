@@ -20,10 +20,12 @@
 #include "algorithms/model/reconstruct.h"
 #include "api/erd.h"
 #include "cli/command_line.h"
+#include "cli/codec_output.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/memory_cap.h"
+#include "cli/model_file.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
 #include "cli/stats_json.h"
@@ -38,14 +40,15 @@ std::string methods_help();
 const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME [-i IMAGE] [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
-    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] [-q]",
+    "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] "
+    "[--step Q | --bpp B | --step-psnr P] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
         {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin)"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
-        {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
+        {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi), or .erdz (binary, either); - = stdout"},
         {'t', "triangulation", "FILE", "also write the triangulation (erd-triangulation 1)"},
         {'p', "polylines", "FILE", "also write the polylines (erd-polylines 1; none for ed, gpi)"},
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
@@ -73,6 +76,9 @@ const CommandLine kGenerate = {
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
+        {0, "step", "Q", ".erdz: value quantisation step (default 1)"},
+        {0, "bpp", "B", ".erdz: the finest step whose file has at most B bits per pixel"},
+        {0, "step-psnr", "P", ".erdz: the coarsest step whose decoded model reconstructs at P dB or more"},
     },
     "no summary or progress lines", 0, 0, nullptr,
     methods_help,
@@ -187,6 +193,8 @@ static int run_generate(const Args& a, const Reporter& rep) {
     int exit_mode = 0;
     Status st;
     parse_options(a, &opt, &exit_mode, &st);
+    CodecChoice codec;
+    parse_codec_options(a, &codec, &st);
     if (!st) return rep.usage(st.message);
 
     std::size_t max_memory = 0;
@@ -207,6 +215,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
     if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message) : rep.fail(st);
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
+    if (codec.given && !erdz_name(out)) return rep.usage("--step, --bpp and --step-psnr apply to .erdz outputs only");
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
@@ -259,9 +268,11 @@ static int run_generate(const Args& a, const Reporter& rep) {
     // Every output is staged (a temporary beside its target) and committed together at the end,
     // so a failure anywhere leaves every old file as it was (cli/outputs.h).
     t0 = std::chrono::steady_clock::now();
-    std::string bytes;
-    st = write_model(res.model, &bytes);
+    std::string bytes, codec_note;
+    codec.erdz.method = method->name;
+    st = model_bytes_for(out, res.model, &image, codec, &bytes, &codec_note);
     if (!st) return rep.fail(st);
+    if (!codec_note.empty()) rep.detail("erdz: " + codec_note);
     st = outputs.stage(out, bytes);
     if (!st) return rep.fail(st);
     if (!tri.empty()) {
