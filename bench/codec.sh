@@ -45,7 +45,7 @@ for c in $CASES; do
     if [[ -z ${swept[$img]:-} ]]; then
         swept[$img]=1
         for q in 2 4 6 8 10 12 15 20 25 30 40 50 60 70 80 90; do
-            cjpeg -quality $q -optimize -outfile "$W/$img.jpg" "$src"
+            cjpeg -quality $q -optimize -outfile "$W/$img.jpg" "$src" 2>/dev/null
             djpeg -pnm -outfile "$W/$img.jpg.pgm" "$W/$img.jpg"
             printf "%s\tjpeg\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.jpg") $px)" "$(psnr_of "$src" "$W/$img.jpg.pgm")" >>"$rd"
         done
@@ -56,15 +56,14 @@ for c in $CASES; do
         done
         for q in 0 2 5 10 15 20 30 40 50 60 70 80 90; do
             cwebp -quiet -q $q -m 6 "$src" -o "$W/$img.webp"
-            dwebp -quiet "$W/$img.webp" -pgm -o "$W/$img.webp.yuv"
-            # dwebp -pgm writes the Y plane above the U and V planes: keep the top H rows (Y).
-            python3 - "$W/$img.webp.yuv" "$W/$img.webp.pgm" <<'PY'
+            dwebp -quiet "$W/$img.webp" -ppm -o "$W/$img.webp.ppm"
+            # WebP decodes to RGB; a gray source comes back with R = G = B up to rounding: keep G.
+            python3 - "$W/$img.webp.ppm" "$W/$img.webp.pgm" <<'PY'
 import sys
 d = open(sys.argv[1], 'rb').read()
 magic, size, maxval, body = d.split(b'\n', 3)
-w, hp = map(int, size.split())
-h = (2 * hp) // 3  # the Y plane's rows: hp = h + ceil(h / 2)
-open(sys.argv[2], 'wb').write(b'P5\n%d %d\n255\n' % (w, h) + body[: w * h])
+w, h = map(int, size.split())
+open(sys.argv[2], 'wb').write(b'P5\n%d %d\n255\n' % (w, h) + body[1: 3 * w * h: 3])
 PY
             printf "%s\twebp\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.webp") $px)" "$(psnr_of "$src" "$W/$img.webp.pgm")" >>"$rd"
         done

@@ -1,7 +1,6 @@
 #include "algorithms/codec/erdz_rebuild.h"
 
 #include <algorithm>
-#include <utility>
 
 namespace erd::codec {
 
@@ -47,46 +46,52 @@ Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>&
     r->corner_unit.assign(nh, 0);
     r->unit_begin.assign(nv + 1, 0);
     std::uint32_t units = 0;
-    std::vector<Wedge> wedges;
+    // Units: one per vertex (basic), else one per wedge, as Cdt::wedges() counts them (a run of
+    // corners_around() between interior constrained edges; an interior vertex with one such edge
+    // has one wedge), without its per-call allocations.
     std::vector<EdgeInd> corners;
     for (std::uint32_t k = 0; k < nv; ++k) {
         const VertInd vert = r->order[k];
         r->unit_begin[k] = units;
-        if (!erd) {
-            cdt.corners_around(vert, &corners);
-            for (EdgeInd e : corners) r->corner_unit[e] = units;
-            ++units;
-            continue;
+        cdt.corners_around(vert, &corners);
+        std::uint32_t cuts = 0;
+        if (erd)
+            for (EdgeInd e : corners) cuts += cdt.constrained(e) && !cdt.on_hull(e);
+        const bool one = !erd || cuts == 0 || (cuts == 1 && !cdt.on_boundary(vert));
+        bool first = true;
+        for (EdgeInd e : corners) {
+            if (!first && !one && cdt.constrained(e) && !cdt.on_hull(e)) ++units;
+            first = false;
+            r->corner_unit[e] = units;
         }
-        cdt.wedges(vert, &wedges);
-        for (const Wedge& w : wedges) {
-            EdgeInd e = w.first;
-            for (std::uint32_t i = 0; i < w.count && e != noEdge; ++i) {
-                r->corner_unit[e] = units;
-                e = cdt.rot_next(e);
-            }
-            ++units;
-        }
+        ++units;
     }
     r->unit_begin[nv] = units;
 
-    // Neighbour lists: the units of the other two corners of each face a unit covers, unique.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> links;
-    links.reserve(2 * nh);
-    for (EdgeInd e = 0; e < nh; ++e) {
-        links.push_back({r->corner_unit[e], r->corner_unit[next_edge(e)]});
-        links.push_back({r->corner_unit[e], r->corner_unit[prev_edge(e)]});
-    }
-    std::sort(links.begin(), links.end());
-    links.erase(std::unique(links.begin(), links.end()), links.end());
+    // Neighbour lists: the units of the other two corners of each face a unit covers, unique
+    // (counted, filled, then each short list sorted).
     ValueGraph& g = r->graph;
     g.begin.assign(std::size_t(units) + 1, 0);
-    g.neighbour.resize(links.size());
-    for (std::size_t i = 0; i < links.size(); ++i) {
-        ++g.begin[links[i].first + 1];
-        g.neighbour[i] = links[i].second;
-    }
+    for (EdgeInd e = 0; e < nh; ++e) g.begin[r->corner_unit[e] + 1] += 2;
     for (std::size_t u = 0; u < units; ++u) g.begin[u + 1] += g.begin[u];
+    std::vector<std::uint32_t> raw(g.begin.back()), fill(g.begin.begin(), g.begin.end() - 1);
+    for (EdgeInd e = 0; e < nh; ++e) {
+        const std::uint32_t u = r->corner_unit[e];
+        raw[fill[u]++] = r->corner_unit[next_edge(e)];
+        raw[fill[u]++] = r->corner_unit[prev_edge(e)];
+    }
+    g.neighbour.clear();
+    g.neighbour.reserve(raw.size() / 2 + 1);
+    std::uint32_t start = 0;
+    for (std::size_t u = 0; u < units; ++u) {
+        const auto b0 = raw.begin() + g.begin[u], b1 = raw.begin() + g.begin[u + 1];
+        std::sort(b0, b1);
+        g.begin[u] = start;
+        for (auto it = b0; it != b1; ++it)
+            if (it == b0 || *it != *(it - 1)) g.neighbour.push_back(*it);
+        start = std::uint32_t(g.neighbour.size());
+    }
+    g.begin[units] = start;
     return Status::success();
 }
 
