@@ -147,9 +147,23 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     if (!(st = build_topology(m, &topo))) return st;
 
     // Constraints: the model's own and its discontinuities, then its edges the rebuild lacks.
+    // Discontinuities in any channel (corner values differ across the edge at either end).
+    const std::size_t C = std::size_t(m.channels);
     std::vector<EdgeKey> edges;
-    for (const ModelEdge& e : model_edges(m, topo))
-        if (e.constrained) edges.push_back(edge_key(m.vertices[e.a], m.vertices[e.b]));
+    for (const auto& c : m.constraints) {
+        if (c[0] >= m.vertices.size() || c[1] >= m.vertices.size()) return Status::bad_input("a constraint's vertex is out of range");
+        edges.push_back(edge_key(m.vertices[c[0]], m.vertices[c[1]]));
+    }
+    const auto corner = [&](std::uint32_t h, std::size_t c) { return m.corner_values[(h / 3) * C + c][h % 3]; };
+    for (std::uint32_t h = 0; m.kind == ModelKind::erd && h < topo.twin.size(); ++h) {
+        const std::uint32_t o = topo.twin[h];
+        if (o == kNoHalfEdge || o < h) continue;
+        bool jump = false;
+        for (std::size_t c = 0; c < C && !jump; ++c)
+            jump = corner(h, c) != corner(ModelTopology::next(o), c) || corner(ModelTopology::next(h), c) != corner(o, c);
+        if (jump)
+            edges.push_back(edge_key(m.vertices[m.faces[h / 3][h % 3]], m.vertices[m.faces[h / 3][(h % 3 + 1) % 3]]));
+    }
     std::vector<FaceKey> want(m.faces.size());
     for (std::size_t f = 0; f < m.faces.size(); ++f)
         want[f] = face_key(m.vertices[m.faces[f][0]], m.vertices[m.faces[f][1]], m.vertices[m.faces[f][2]]);
@@ -161,6 +175,7 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     codec::Lattice lat{m.width, m.height, false};
     for (;;) {
         std::sort(edges.begin(), edges.end());
+        edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
         split_points(m, edges, &free_points, &chains);
         lat.full = std::any_of(free_points.begin(), free_points.end(), [](LatticePoint p) { return p.x % 2 || p.y % 2; });
         codec::decoder_order(lat, &free_points);  // the decoder's input, in its order: the same CDT
@@ -193,7 +208,6 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     }
 
     // The values in the decoder's unit order, from the model vertex or face at the same place.
-    const std::size_t C = std::size_t(m.channels);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> vertex_at(m.vertices.size());
     for (std::uint32_t i = 0; i < m.vertices.size(); ++i) vertex_at[i] = {key(m.vertices[i]), i};
     std::sort(vertex_at.begin(), vertex_at.end());
