@@ -2,9 +2,9 @@
 # make codec-bench: erd as an image codec against JPEG (cjpeg), JPEG 2000 (opj_compress) and
 # WebP (cwebp), all from Debian packages (installed here with apt-get when missing).
 #
-# For each image and density: ERDGPI makes the mesh (.erd), `erd convert` writes it as .erdz at
-# steps 1 .. 8 (the RD points of erd) and at the coarsest step within 0.25 dB of step 1's PSNR
-# (`--step-psnr`, the table's row). Each other codec is swept over its quality / rate, decoded,
+# For each image and density: ERDGPI and GPI (METHODS=) make the mesh, `erd convert` writes it
+# as .erdz at steps 1 .. 8 (the RD points of erd) and at the coarsest step within 0.25 dB of
+# step 1's PSNR (`--step-psnr`, the table's rows). Each other codec is swept over its quality / rate, decoded,
 # and measured with `erd psnr`; its bpp at erd's PSNR is interpolated linearly in (PSNR, log bpp)
 # between the two sweep points around it ("<" / ">" when outside the sweep).
 # Outputs: OUT/rd.tsv (every point), OUT/table.md (the RESULTS.md table), OUT/rd.png (the plot).
@@ -68,21 +68,23 @@ PY
             printf "%s\twebp\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.webp") $px)" "$(psnr_of "$src" "$W/$img.webp.pgm")" >>"$rd"
         done
     fi
-    m=$W/$img-$d.erd
-    "$ERD" generate -q --method erdgpi -i "$src" -d "$d" -o "$m"
-    for s in 1 2 3 4 6 8; do
-        "$ERD" convert -q "$m" "$W/$img-$d-s$s.erdz" --step $s
-        "$ERD" reconstruct "$W/$img-$d-s$s.erdz" -o "$W/$img-$d-s$s.pgm"
-        printf "%s\terd\td%s-s%s\t%s\t%s\n" "$img" "$d" $s "$(bpp $(bits_of "$W/$img-$d-s$s.erdz") $px)" \
-            "$(psnr_of "$src" "$W/$img-$d-s$s.pgm")" >>"$rd"
+    for meth in ${METHODS:-erdgpi gpi}; do
+        ext=erd; [[ $meth == gpi || $meth == ed ]] && ext=model
+        base=$W/$img-$d-$meth
+        "$ERD" generate -q --method $meth -i "$src" -d "$d" -o "$base.$ext"
+        for s in 1 2 3 4 6 8; do
+            "$ERD" convert -q "$base.$ext" "$base-s$s.erdz" --step $s
+            "$ERD" reconstruct "$base-s$s.erdz" -o "$base-s$s.pgm"
+            printf "%s\terd-%s\td%s-s%s\t%s\t%s\n" "$img" $meth "$d" $s "$(bpp $(bits_of "$base-s$s.erdz") $px)" \
+                "$(psnr_of "$src" "$base-s$s.pgm")" >>"$rd"
+        done
+        p1=$(psnr_of "$src" "$base-s1.pgm")
+        target=$(python3 -c "print('%.4f' % ($p1 - 0.25))")
+        "$ERD" convert -q "$base.$ext" "$base.erdz" --step-psnr "$target" -i "$src"
+        "$ERD" reconstruct "$base.erdz" -o "$base.pgm"
+        "$ERD" info --json "$base.erdz" >"$base.json"
+        printf "%s\t%s\t%s\t%s\t%s\n" "$img" "$d" $meth "$(psnr_of "$src" "$base.pgm")" "$base.json" >>"$rows"
     done
-    p1=$(psnr_of "$src" "$W/$img-$d-s1.pgm")
-    target=$(python3 -c "print('%.4f' % ($p1 - 0.25))")
-    z=$W/$img-$d.erdz
-    "$ERD" convert -q "$m" "$z" --step-psnr "$target" -i "$src"
-    "$ERD" reconstruct "$z" -o "$W/$img-$d.pgm"
-    "$ERD" info --json "$z" >"$W/$img-$d.json"
-    printf "%s\t%s\t%s\t%s\n" "$img" "$d" "$(psnr_of "$src" "$W/$img-$d.pgm")" "$W/$img-$d.json" >>"$rows"
 done
 
 python3 bench/codec_table.py "$rd" "$rows" >"$OUT/table.md"
@@ -99,7 +101,7 @@ if [[ $RESULTS != none ]]; then
         echo
         echo "Written by \`make codec-bench\` on $(date -u '+%Y-%m-%d %H:%M') UTC, commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown);"
         echo "$(cjpeg -version 2>&1 | head -1 | sed 's/ (build.*//'), OpenJPEG $(opj_compress -h 2>&1 | grep -o 'openjp2 library v[0-9.]*' | head -1 | sed 's/.* v//'), cwebp $(cwebp -version 2>&1 | head -1)."
-        echo "erd: ERDGPI (default options) at the thesis's densities written as .erdz at the coarsest step on"
+        echo "erd: ERDGPI and GPI (default options) at the thesis's densities written as .erdz at the coarsest step on"
         echo "the grid 2^(i/4) within 0.25 dB of step 1 (\`erd convert --step-psnr\`); PSNR of its reconstruction"
         echo "(4x4 supersampled). The other codecs at that PSNR: JPEG \`cjpeg -optimize\` (quality 2-90),"
         echo "JPEG 2000 \`opj_compress -r\` (ratio 6-400, .j2k codestream), WebP \`cwebp -m 6\` (quality 0-90),"

@@ -34,10 +34,10 @@ def at_psnr(points, target):
     return 'n/a', None
 
 
-print('| image | density | step | PSNR (dB) | erd bpp | positions / edges / values | JPEG | JPEG 2000 | WebP |')
-print('| --- | --- | --- | --- | --- | --- | --- | --- | --- |')
+print('| image | density | method | step | PSNR (dB) | erd bpp | positions / edges / values | JPEG | JPEG 2000 | WebP |')
+print('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |')
 for line in open(rows_path).read().splitlines():
-    img, d, psnr, js = line.split('\t')
+    img, d, method, psnr, js = line.split('\t')
     j = json.load(open(js))
     px = j['width'] * j['height']
     psnr = float(psnr)
@@ -51,4 +51,5 @@ for line in open(rows_path).read().splitlines():
             mark = ' (erd %+.0f%%)' % (100.0 * (erd_bpp - ref) / ref) if b is not None else ' (erd smaller)' if erd_bpp < ref else ''
         cells.append(text + mark)
     sections = '%.4f / %.4f / %.4f' % (j['position_bits'] / px, j['edge_bits'] / px, j['value_bits'] / px)
-    print('| %s | %s%% | %g | %.2f | %.4f | %s | %s |' % (img, d, j['step'], psnr, erd_bpp, sections, ' | '.join(cells)))
+    print('| %s | %s%% | %s | %g | %.2f | %.4f | %s | %s |' % (img, d, method.upper(), j['step'], psnr, erd_bpp, sections,
+                                                            ' | '.join(cells)))
