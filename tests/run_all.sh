@@ -50,7 +50,15 @@ if ! make -s -j2 BUILD=build-o0 OPT=-O0 build-o0/erd >"$log/o0-build" 2>&1; then
 fi
 
 stage
-echo "== unit tests"
+# The unit tests use one core: the sanitizer build starts beside them and uses the rest.
+asan_build_pid=""
+if command -v clang++ >/dev/null; then
+    ( make -s -j2 asan >"$log/asan-build" 2>&1; echo $? >"$log/asan-build.rc" ) &
+    asan_build_pid=$!
+else
+    echo "clang++ missing" >"$log/asan-build"; echo 1 >"$log/asan-build.rc"
+fi
+echo "== unit tests (the ASan+UBSan build runs beside them)"
 ERD_BIN=build/erd ERD_IMAGES=$IMAGES build/erd_tests 2>&1 | tee "$log/unit" | tail -3
 count_catch "$log/unit" "${PIPESTATUS[0]}"
 
@@ -58,9 +66,10 @@ stage
 # The sanitized unit tests and the fuzz smoke runs each use one core: they run side by side (the
 # sanitized tests in the background, their result printed after the fuzz runs), which takes the
 # longer of the two instead of their sum on a 2-core machine.
-echo "== unit tests under ASan+UBSan (started; they run beside the fuzz smoke runs)"
+echo "== unit tests under ASan+UBSan (started once built; they run beside the fuzz smoke runs)"
+[[ -n $asan_build_pid ]] && wait "$asan_build_pid"
 asan_pid=""
-if command -v clang++ >/dev/null && make -s -j2 asan >"$log/asan-build" 2>&1; then
+if [[ $(cat "$log/asan-build.rc" 2>/dev/null) == 0 ]]; then
     ( ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ERD_BIN=build-asan/erd ERD_IMAGES=$IMAGES ERD_SANITIZED=1 build-asan/erd_tests >"$log/asan" 2>&1
       echo $? >"$log/asan.rc" ) &

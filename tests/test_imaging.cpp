@@ -2,6 +2,7 @@
 // thinning, polylines, douglas_peucker): hand-worked values. MMSODD and error diffusion:
 // test_error_diffusion.cpp.
 #include <catch2/catch.hpp>
+#include <pthread.h>
 
 #include <algorithm>
 #include <cmath>
@@ -463,8 +464,26 @@ TEST_CASE("Douglas-Peucker keeps exactly the expected points", "[imaging]") {
     CHECK(simplify_polylines(lines, 2.0, 5).size() == 1);
     CHECK(simplify_polylines(lines, 2.0, 4).size() == 2);
     CHECK(simplify_polylines(lines, 2.0, 4, LengthRule::after_simplification).size() == 1);
-    // Long lines need no recursion.
-    Polyline zig;
-    for (int i = 0; i < 200000; ++i) zig.push_back({i, (i % 2) * 3});
-    CHECK(douglas_peucker(zig, 1.0).size() == zig.size());
+    // Long lines need no recursion: a zigzag of growing amplitude keeps every point and splits
+    // next to the last point each time, 10000 levels deep (a recursive version's non-tail call),
+    // run on a thread with a 128 KiB stack, which such a version overflows (it does, at -O2).
+    // The zigzag costs n^2/2 distances: 10000 points, not more.
+    struct Job {
+        Polyline zig;
+        std::size_t kept = 0;
+    } job;
+    for (int i = 0; i < 10000; ++i) job.zig.push_back({i, (i % 2) * (i + 4)});
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    REQUIRE(pthread_attr_setstacksize(&attr, 128 * 1024) == 0);
+    pthread_t thread;
+    auto body = [](void* p) -> void* {
+        Job* j = static_cast<Job*>(p);
+        j->kept = douglas_peucker(j->zig, 1.0).size();
+        return nullptr;
+    };
+    REQUIRE(pthread_create(&thread, &attr, body, &job) == 0);
+    pthread_join(thread, nullptr);
+    pthread_attr_destroy(&attr);
+    CHECK(job.kept == job.zig.size());
 }

@@ -273,16 +273,25 @@ TEST_CASE("raster: RoundedPlane rounds half up exactly, stepped over its run", "
             std::int32_t i0 = xmin;
             while (i0 <= xmax && !inside(i0, j)) ++i0;
             if (i0 > xmax) continue;
+            // Every pixel is checked; the assertion is per row (Catch2's per-pixel assertions were
+            // most of the unit tests' time), naming the first pixel that differs.
             double v = rp.p_pixel(i0, j);
+            std::int64_t bad_pixel = -1, checked = 0;
             for (std::int32_t i = i0, k = 0; i <= xmax && inside(i, j) && k < rp.run && k < 3000; ++i, ++k, v += rp.dp) {
                 const std::int64_t want = erd_test::exact_rounded(p, z, 2 * std::int64_t(i), 2 * std::int64_t(j));
-                REQUIRE(want >= 0);
-                REQUIRE(want <= maxval);
-                INFO("face " << p[0].x << "," << p[0].y << " " << p[1].x << "," << p[1].y << " " << p[2].x << ","
-                             << p[2].y << " values " << z[0] << " " << z[1] << " " << z[2] << " pixel " << i << "," << j);
-                REQUIRE(std::int64_t(std::int32_t(v)) == want);
-                REQUIRE(std::int64_t(std::int32_t(rp.p_pixel(i, j))) == want);
+                const bool good = want >= 0 && want <= maxval && std::int64_t(std::int32_t(v)) == want &&
+                                  std::int64_t(std::int32_t(rp.p_pixel(i, j))) == want;
+                ++checked;
+                if (!good) {
+                    bad_pixel = i;
+                    break;
+                }
             }
+            INFO("face " << p[0].x << "," << p[0].y << " " << p[1].x << "," << p[1].y << " " << p[2].x << ","
+                         << p[2].y << " values " << z[0] << " " << z[1] << " " << z[2] << " row " << j
+                         << " first wrong pixel " << bad_pixel);
+            REQUIRE(checked >= 1);
+            REQUIRE(bad_pixel == -1);
         }
     }
     // pieces() with short runs: every column once, in order, each piece from an exact start.
