@@ -24,7 +24,7 @@ static const char* format_key(ImageFormat f) {
 
 const CommandLine kInfo = {
     "info",
-    "erd info FILE [--json]",
+    "erd info IMAGE|MODEL.erdz [--json]",
     "Prints the size, maxval, bits per sample, format and sample range of a PGM (P2, P5)\n"
     "or PNG file (\"-\" reads stdin). The format is recognised from the content, not the name.\n"
     "For an .erdz model (by name, or a file that starts with its magic): the header, the\n"
