@@ -113,6 +113,25 @@ void split_points(const Model& m, const std::vector<EdgeKey>& edges, std::vector
     }
 }
 
+void fill_info(const std::string& method, double step, bool full, std::size_t header, std::array<std::size_t, 3> sections,
+               std::size_t total, const std::vector<LatticePoint>& free_points, const std::vector<Chain>& chains,
+               std::size_t values, ErdzInfo* info) {
+    *info = ErdzInfo();
+    info->version = kVersion;
+    info->method = method;
+    info->step = step;
+    info->full_lattice = full;
+    info->header_bits = 8 * header;
+    info->position_bits = 8 * sections[0];
+    info->edge_bits = 8 * sections[1];
+    info->value_bits = 8 * sections[2];
+    info->total_bits = 8 * total;
+    info->free_points = free_points.size();
+    info->chains = chains.size();
+    for (const Chain& c : chains) info->chain_steps += c.size() - 1;
+    info->coded_values = values;
+}
+
 }  // namespace
 
 bool is_erdz(const std::string& bytes) { return bytes.size() >= 4 && std::memcmp(bytes.data(), kMagic, 4) == 0; }
@@ -263,22 +282,9 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
         header += o.size() - before_len;
         o += *s;
     }
-    if (info) {
-        *info = ErdzInfo();
-        info->version = kVersion;
-        info->method = options.method;
-        info->step = step;
-        info->full_lattice = lat.full;
-        info->header_bits = 8 * header;
-        info->position_bits = 8 * pos.size();
-        info->edge_bits = 8 * edg.size();
-        info->value_bits = 8 * val.size();
-        info->total_bits = 8 * o.size();
-        info->free_points = free_points.size();
-        info->chains = chains.size();
-        for (const Chain& c : chains) info->chain_steps += c.size() - 1;
-        info->coded_values = q.size();
-    }
+    if (info)
+        fill_info(options.method, step, lat.full, header, {pos.size(), edg.size(), val.size()}, o.size(), free_points,
+                  chains, q.size(), info);
     return Status::success();
 }
 
@@ -379,22 +385,9 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
         m.constraints.push_back({std::min(a, b), std::max(a, b)});
     }
     std::sort(m.constraints.begin(), m.constraints.end());
-    if (info) {
-        *info = ErdzInfo();
-        info->version = kVersion;
-        info->method = method;
-        info->step = step;
-        info->full_lattice = lat.full;
-        info->header_bits = 8 * header;
-        info->position_bits = 8 * sec[0].second;
-        info->edge_bits = 8 * sec[1].second;
-        info->value_bits = 8 * sec[2].second;
-        info->total_bits = 8 * bytes.size();
-        info->free_points = free_points.size();
-        info->chains = chains.size();
-        for (const Chain& c : chains) info->chain_steps += c.size() - 1;
-        info->coded_values = q.size();
-    }
+    if (info)
+        fill_info(method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second}, bytes.size(), free_points,
+                  chains, q.size(), info);
     return Status::success();
 }
 
