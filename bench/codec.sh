@@ -8,7 +8,8 @@
 # and measured with `erd psnr`; its bpp at erd's PSNR is interpolated linearly in (PSNR, log bpp)
 # between the two sweep points around it ("<" / ">" when outside the sweep).
 # Outputs: OUT/rd.tsv (every point), OUT/table.md (the RESULTS.md table), OUT/rd.png (the plot).
-# Usage: bench/codec.sh [OUT]   (ERD=build/erd, IMAGES=../shared/images, CASES="bull:0.125 ...")
+# Usage: bench/codec.sh [OUT]   (ERD=build/erd, IMAGES=../shared/images, CASES="bull:0.125 ...",
+# REUSE=1 keeps the JPEG / JPEG 2000 / WebP sweeps already in OUT/rd.tsv)
 set -eu
 cd "$(dirname "$0")/.."
 ERD=${ERD:-build/erd}
@@ -29,13 +30,20 @@ fi
 
 W=$OUT/work
 rd=$OUT/rd.tsv
-printf "image\tcodec\tsetting\tbpp\tpsnr\n" >"$rd"
+declare -A swept
+# REUSE=1: keep the other codecs' sweeps of an earlier run (they do not depend on erd).
+if [[ -n ${REUSE:-} && -f $rd ]]; then
+    awk -F'\t' 'NR == 1 || $2 !~ /^erd/' "$rd" >"$rd.keep"
+    for img in $(awk -F'\t' 'NR > 1 && $2 == "webp" { print $1 }' "$rd.keep" | sort -u); do swept[$img]=1; done
+    mv "$rd.keep" "$rd"
+else
+    printf "image\tcodec\tsetting\tbpp\tpsnr\n" >"$rd"
+fi
 psnr_of() { "$ERD" psnr "$1" "$2"; }
 bits_of() { echo $(( $(stat -c %s "$1") * 8 )); }
 pixels_of() { "$ERD" info --json "$1" | python3 -c 'import json,sys; j=json.load(sys.stdin); print(j["width"]*j["height"])'; }
 bpp() { python3 -c "print('%.5f' % ($1 / $2))"; }
 
-declare -A swept
 rows=$OUT/rows.tsv
 : >"$rows"
 for c in $CASES; do

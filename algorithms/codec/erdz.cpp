@@ -198,6 +198,7 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
         split_points(m, edges, &free_points, &chains);
         lat.full = std::any_of(free_points.begin(), free_points.end(), [](LatticePoint p) { return p.x % 2 || p.y % 2; });
         codec::decoder_order(lat, &free_points);  // the decoder's input, in its order: the same CDT
+        r = Rebuilt();  // a fresh kernel, as the decoder's: nothing carried over from the last round
         if (!(st = codec::rebuild(m.width, m.height, m.kind == ModelKind::erd, free_points, chains, &r)))
             return Status::bad_input("the model cannot be rebuilt: " + st.message);
         std::vector<FaceKey> got(r.cdt.face_count());

@@ -58,6 +58,21 @@ Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>&
         if (erd)
             for (EdgeInd e : corners) cuts += cdt.constrained(e) && !cdt.on_hull(e);
         const bool one = !erd || cuts == 0 || (cuts == 1 && !cdt.on_boundary(vert));
+        // An interior vertex's wedges are numbered from the constrained edge to the (y, x)-smallest
+        // neighbour, so the numbering depends on the triangulation alone, not on which half-edge
+        // the kernel's history left in out_edge().
+        if (!one && !cdt.on_boundary(vert)) {
+            std::size_t best = corners.size();
+            for (std::size_t i = 0; i < corners.size(); ++i) {
+                const EdgeInd e = corners[i];
+                if (!cdt.constrained(e) || cdt.on_hull(e)) continue;
+                const LatticePoint p = cdt.point(cdt.dest(e));
+                if (best == corners.size()) { best = i; continue; }
+                const LatticePoint q = cdt.point(cdt.dest(corners[best]));
+                if (p.y < q.y || (p.y == q.y && p.x < q.x)) best = i;
+            }
+            std::rotate(corners.begin(), corners.begin() + long(best), corners.end());
+        }
         bool first = true;
         for (EdgeInd e : corners) {
             if (!first && !one && cdt.constrained(e) && !cdt.on_hull(e)) ++units;
