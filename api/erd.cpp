@@ -26,17 +26,23 @@ Status copy_view(const ImageView& v, Image* out) {
         return Status::bad_input("image has more than " + std::to_string(kMaxImagePixels) + " pixels");
     if (v.maxval < 1 || v.maxval > 65535) return Status::bad_input("maxval " + std::to_string(v.maxval) + " outside 1..65535");
     if (!v.samples) return Status::bad_input("image view has no samples");
-    const std::size_t stride = v.stride ? v.stride : std::size_t(v.width);
-    if (stride < std::size_t(v.width)) return Status::bad_input("image view stride is smaller than its width");
-    *out = Image(v.width, v.height, v.maxval);
+    if (v.channels != 1 && v.channels != 3)
+        return Status::bad_input("image view has " + std::to_string(v.channels) + " channels (1 gray or 3 RGB)");
+    const std::size_t C = std::size_t(v.channels), row_samples = std::size_t(v.width) * C;
+    const std::size_t stride = v.stride ? v.stride : row_samples;
+    if (stride < row_samples)
+        return Status::bad_input(C == 1 ? "image view stride is smaller than its width"
+                                        : "image view stride is smaller than its width times its channels");
+    *out = Image(v.width, v.height, v.maxval, v.channels);
     for (int y = 0; y < v.height; ++y) {
         const std::uint16_t* row = v.samples + std::size_t(y) * stride;
-        for (int x = 0; x < v.width; ++x) {
-            if (row[x] > v.maxval)
-                return Status::bad_input("sample " + std::to_string(row[x]) + " at (" + std::to_string(x) + "," +
-                                         std::to_string(y) + ") exceeds maxval " + std::to_string(v.maxval));
+        for (std::size_t i = 0; i < row_samples; ++i) {
+            if (row[i] > v.maxval)
+                return Status::bad_input("sample " + std::to_string(row[i]) + " at (" + std::to_string(i / C) + "," +
+                                         std::to_string(y) + ")" + (C > 1 ? " channel " + std::to_string(i % C) : "") +
+                                         " exceeds maxval " + std::to_string(v.maxval));
         }
-        std::memcpy(&out->samples[std::size_t(y) * std::size_t(v.width)], row, std::size_t(v.width) * sizeof(std::uint16_t));
+        std::memcpy(&out->samples[std::size_t(y) * row_samples], row, row_samples * sizeof(std::uint16_t));
     }
     return Status::success();
 }
@@ -49,7 +55,8 @@ ImageView view_of(const Image& image) {
     v.height = image.height;
     v.maxval = image.maxval;
     v.samples = image.samples.data();
-    v.stride = std::size_t(image.width);
+    v.stride = std::size_t(image.width) * std::size_t(image.channels);
+    v.channels = image.channels;
     return v;
 }
 

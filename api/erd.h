@@ -6,6 +6,7 @@
 //
 //     #include "api/erd.h"
 //     erd::api::ImageView view{width, height, 255, samples};   // samples: uint16_t[width*height]
+//     // colour: {width, height, 255, rgb, 0, 3} with rgb: uint16_t[width*height*3], R G B per pixel
 //     erd::api::Options opt;                                   // thesis defaults: erdgpi, 3%
 //     opt.generate.density = 1.0;                              // percent of the pixels
 //     erd::Model model;
@@ -47,14 +48,17 @@
 
 namespace erd::api {
 
-// A read-only grayscale image owned by the caller: `height` rows of `width` samples, each in
-// [0, maxval], rows `stride` samples apart (0 means stride = width). Never retained by a call.
+// A read-only image owned by the caller: `height` rows of `width` pixels, each pixel `channels`
+// samples in [0, maxval] (1: gray; 3: RGB, interleaved R G B), rows `stride` samples apart (0
+// means stride = width * channels). Never retained by a call. A gray view is written as before,
+// {width, height, maxval, samples}; a colour one adds {..., stride, 3}.
 struct ImageView {
     int width = 0;
     int height = 0;
     std::uint32_t maxval = 255;  // 1 .. 65535
     const std::uint16_t* samples = nullptr;
     std::size_t stride = 0;
+    int channels = 1;  // 1 or 3
 };
 
 // A view of an erd::Image (valid while the image lives and is not resized).
@@ -107,19 +111,21 @@ struct GenerateInfo {
 std::size_t memory_estimate(Method m, int width, int height, const Options& options);
 
 // Meshes `image` with method `m`. *model receives the mesh (coordinates doubled, faces with
-// positive orientation; algorithms/model/model.h). The view is copied once into an erd::Image
-// (2 bytes per pixel) for the duration of the call. `info` may be null.
+// positive orientation; algorithms/model/model.h), with the view's channel count (a colour view
+// gives a colour model: Model::channels 3, values[v*3 + c]). The view is copied once into an
+// erd::Image (2 bytes per sample) for the duration of the call. `info` may be null.
 Status generate(Method m, const ImageView& image, const Options& options, Model* model,
                 GenerateInfo* info = nullptr);
 
-// Rasterises a model into *out (model's width, height and maxval): point evaluation at every
+// Rasterises a model into *out (model's width, height, maxval and channels): point evaluation at every
 // pixel (the thesis's imgsyn), or with `supersample` the mean of 4x4 sub-samples per pixel
 // (imgsyn_aa). Values rounded to the nearest integer and clamped to [0, maxval]. A model's own
 // reconstruction is supersample = supersampled(model): soft-edged ERD models only (model.h).
 Status reconstruct(const Model& model, bool supersample, Image* out);
 
 // PSNR of `approx` against `original` in dB, peak 2^p - 1 with p the bits per sample of the
-// original; +infinity when the images are equal. Code::input when sizes or maxvals differ.
+// original; +infinity when the images are equal. Code::input when sizes, maxvals or channel
+// counts differ.
 Status psnr(const ImageView& original, const ImageView& approx, double* db);
 
 // Rebuilds the constrained Delaunay triangulation of a model (its vertices and constrained

@@ -20,11 +20,11 @@ const CommandLine kReconstruct = {
     "evaluation at every pixel, the thesis's imgsyn) or an .erd (ERD model: 4x4 supersampling,\n"
     "imgsyn_aa, unless --no-aa or the file says \"edges hard\": then point evaluation); read from stdin when omitted or \"-\" (the kind is then told\n"
     "from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
-    "over the vertices).",
+    "over the vertices), and its channels: a colour model (header \"channels 3\") gives an RGB image.",
     {
-        {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), else PGM"},
+        {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), else PGM (PPM for colour)"},
         {0, "no-aa", nullptr, "point evaluation at the pixels also for a soft-edged .erd (default there: 4x4 supersampling)"},
-        {0, "plain", nullptr, "write plain PGM (P2), as the thesis's imgsyn did"},
+        {0, "plain", nullptr, "write plain PGM (P2; P3 for colour), as the thesis's imgsyn did"},
     },
     "no warnings", 0, 1, "expected at most one MODEL",
 };

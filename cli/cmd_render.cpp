@@ -167,21 +167,21 @@ static int run_render(const Args& args, const Reporter& rep) {
             return rep.fail(Status::bad_input(path + ": image is " + std::to_string(im.width) + "x" + std::to_string(im.height) +
                                               " but the model is " + std::to_string(m.width) + "x" + std::to_string(m.height)));
         if (args.has("over")) {
-            bg = gray_to_rgb(im);
+            bg = image_to_rgb(im);
         } else {
             Image approx;
             st = reconstruct(m, supersampled(m), &approx);
             if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
             approx.maxval = im.maxval;
             st = error_map(im, approx, error_max, &bg);
-            if (!st) return rep.fail(st);
+            if (!st) return rep.fail(Status::error(st.code, path + ": " + st.message));
         }
         have_bg = true;
     } else if (args.has("over-reconstruction")) {
         Image approx;
         st = reconstruct(m, supersampled(m), &approx);
         if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
-        bg = gray_to_rgb(approx);
+        bg = image_to_rgb(approx);
         have_bg = true;
     }
 

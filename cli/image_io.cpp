@@ -416,7 +416,8 @@ Status decode_image(const unsigned char* data, std::size_t size, Image* out, std
 }
 
 std::string encode_pgm(const Image& im, bool plain) {
-    std::string out = std::string(plain ? "P2\n" : "P5\n") + std::to_string(im.width) + " " + std::to_string(im.height) +
+    const char* magic = im.channels == 3 ? (plain ? "P3\n" : "P6\n") : (plain ? "P2\n" : "P5\n");  // samples are interleaved
+    std::string out = std::string(magic) + std::to_string(im.width) + " " + std::to_string(im.height) +
                       "\n" + std::to_string(im.maxval) + "\n";
     const std::size_t n = im.samples.size();
     if (plain) {
@@ -456,7 +457,7 @@ Status encode_png(const Image& im, std::string* out) {
     std::vector<unsigned char> px(im.samples.size());
     for (std::size_t k = 0; k < px.size(); ++k) px[k] = static_cast<unsigned char>(im.samples[k]);
     std::vector<unsigned char> bytes;
-    if (!stb::png_encode(px.data(), im.width, im.height, 1, &bytes)) return Status::failure("PNG encoding failed");
+    if (!stb::png_encode(px.data(), im.width, im.height, im.channels, &bytes)) return Status::failure("PNG encoding failed");
     out->assign(bytes.begin(), bytes.end());
     return Status::success();
 }
@@ -494,8 +495,8 @@ Status read_image(const std::string& path, Image* out, std::string* warning, Ima
 }
 
 Status encode_image(const std::string& path, const Image& im, const WriteOptions& options, std::string* bytes) {
-    if (im.width <= 0 || im.height <= 0 || im.samples.size() != std::size_t(im.width) * std::size_t(im.height) ||
-        im.maxval < 1 || im.maxval > 65535)
+    if (im.width <= 0 || im.height <= 0 || (im.channels != 1 && im.channels != 3) ||
+        im.samples.size() != im.pixels() * std::size_t(im.channels) || im.maxval < 1 || im.maxval > 65535)
         return Status::failure(escape_name(path) + ": internal error: invalid image " + std::to_string(im.width) + " x " +
                                std::to_string(im.height) + " maxval " + std::to_string(im.maxval));
     if (ends_with_png(path)) {

@@ -16,6 +16,7 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
     s.width = image.width;
     s.height = image.height;
     s.maxval = image.maxval;
+    s.channels = m.channels;
     s.erd = m.kind == ModelKind::erd;
     s.requested = result.requested;
     s.achieved = result.achieved;
@@ -51,7 +52,7 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
 std::string stats_json(const GenerateStats& s) {
     JsonObject j;
     j.str("method", s.method).str("model", s.erd ? "erd" : "basic");
-    j.object("image", JsonObject().integer("width", s.width).integer("height", s.height).integer("maxval", s.maxval));
+    j.object("image", JsonObject().integer("width", s.width).integer("height", s.height).integer("maxval", s.maxval).integer("channels", s.channels));
     j.object("points", JsonObject().integer("requested", (long long)s.requested).integer("achieved", (long long)s.achieved));
     j.integer("vertices", (long long)s.vertices).integer("faces", (long long)s.faces);
     j.integer("constrained_vertices", (long long)s.constrained_vertices);

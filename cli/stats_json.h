@@ -1,6 +1,6 @@
 // `erd generate --stats FILE`: one JSON object describing a run (what was asked, what was made,
 // the parameters chosen, time per stage, peak memory, PSNR). Keys, in this order:
-//   method, model ("basic" | "erd"), image {width, height, maxval},
+//   method, model ("basic" | "erd"), image {width, height, maxval, channels},
 //   points {requested, achieved}, vertices, faces, constrained_vertices, constrained_edges,
 //   dropped_constraints, parameters ({beta, r, l, epsilon, simple, edges} or null for ED/GPI),
 //   stop (greedy stop rule, or null), stages [{name, seconds}], total_seconds,
@@ -18,6 +18,7 @@ struct GenerateStats {
     std::string method;
     int width = 0, height = 0;
     std::uint32_t maxval = 0;
+    int channels = 1;  // the model's: 1 gray, 3 RGB
     bool erd = false;
     std::size_t requested = 0, achieved = 0;
     std::size_t vertices = 0, faces = 0;

@@ -23,8 +23,10 @@ void check_refusal(const erd::Status& s) {
 }
 
 void check_model(const erd::Model& m) {
-    if (m.width < 1 || m.height < 1 || m.values.size() != m.vertices.size()) std::abort();
-    if (m.kind == erd::ModelKind::erd && m.corner_values.size() != m.faces.size()) std::abort();
+    if (m.channels != 1 && m.channels != 3) std::abort();
+    const std::size_t C = std::size_t(m.channels);
+    if (m.width < 1 || m.height < 1 || m.values.size() != m.vertices.size() * C) std::abort();
+    if (m.kind == erd::ModelKind::erd && m.corner_values.size() != m.faces.size() * C) std::abort();
     for (const auto& f : m.faces) {
         for (std::uint32_t v : f)
             if (v >= m.vertices.size()) std::abort();
@@ -50,7 +52,8 @@ void run(const std::string& text, erd::ModelFileKind kind) {
             check_refusal(s);
             return;
         }
-        if (a[ss].width != m.width || a[ss].height != m.height || a[ss].samples.size() != std::size_t(m.width) * std::size_t(m.height))
+        if (a[ss].width != m.width || a[ss].height != m.height || a[ss].channels != m.channels ||
+            a[ss].samples.size() != std::size_t(m.width) * std::size_t(m.height) * std::size_t(m.channels))
             std::abort();
         for (std::uint16_t v : a[ss].samples)
             if (v > m.maxval) std::abort();
@@ -60,7 +63,11 @@ void run(const std::string& text, erd::ModelFileKind kind) {
     erd::Model r;
     if (!erd::read_model(out, m.kind == erd::ModelKind::erd ? erd::ModelFileKind::erd : erd::ModelFileKind::basic, &r).ok())
         std::abort();
-    if (r.vertices != m.vertices || r.faces != m.faces || r.corner_values != m.corner_values || r.maxval != m.maxval) std::abort();
+    if (r.vertices != m.vertices || r.faces != m.faces || r.corner_values != m.corner_values || r.maxval != m.maxval ||
+        r.channels != m.channels)
+        std::abort();
+    std::string again;
+    if (!erd::write_model(r, &again).ok() || again != out) std::abort();
     for (int ss = 0; ss < 2; ++ss) {
         erd::Image b;
         if (!erd::reconstruct(r, ss == 1, &b).ok() || b.samples != a[ss].samples) std::abort();

@@ -18,9 +18,14 @@ inline std::uint64_t key(LatticePoint p) { return (std::uint64_t(std::uint32_t(p
 
 // Rebuilds the CDT of an ERD model from its points and constraints, checks it with verify(),
 // checks that its faces are the model's faces, and that every face corner carries the value of
-// the wedge it lies in (faces of one wedge agree; the vertex value is the mean of its wedges).
+// the wedge it lies in (faces of one wedge agree; the vertex value is the mean of its wedges), in
+// every channel of a colour model.
 inline void check_model(const Model& m) {
     REQUIRE(m.kind == ModelKind::erd);
+    const std::size_t C = std::size_t(m.channels);
+    REQUIRE((C == 1 || C == 3));
+    REQUIRE(m.values.size() == m.vertices.size() * C);
+    REQUIRE(m.corner_values.size() == m.faces.size() * C);
     Cdt cdt;
     REQUIRE(cdt.reset(2 * m.width - 2, 2 * m.height - 2).ok());
     std::vector<VertInd> ids;
@@ -49,15 +54,15 @@ inline void check_model(const Model& m) {
         REQUIRE(area > 0);
         face_of_points[triple(key(a), key(b), key(c))] = f;
     }
-    // Corner value of model face f at its vertex with point p.
-    auto corner = [&](FaceInd cf, VertInd v) {
+    // Corner value in channel c of model face f at its vertex with point p.
+    auto corner = [&](FaceInd cf, VertInd v, std::size_t c) {
         const EdgeInd e = 3 * cf;
         const auto t = triple(key(cdt.point(cdt.org(e))), key(cdt.point(cdt.org(e + 1))), key(cdt.point(cdt.org(e + 2))));
         auto it = face_of_points.find(t);
         REQUIRE(it != face_of_points.end());
         const std::size_t f = it->second;
         for (int i = 0; i < 3; ++i)
-            if (m.vertices[m.faces[f][std::size_t(i)]] == cdt.point(v)) return m.corner_values[f][std::size_t(i)];
+            if (m.vertices[m.faces[f][std::size_t(i)]] == cdt.point(v)) return m.corner_values[f * C + c][std::size_t(i)];
         FAIL("vertex not in face");
         return 0.0;
     };
@@ -67,17 +72,19 @@ inline void check_model(const Model& m) {
     for (VertInd v = 0; v < cdt.vertex_count(); ++v) {
         cdt.wedges(v, &wedges);
         REQUIRE(!wedges.empty());
-        double sum = 0;
-        for (const Wedge& w : wedges) {
-            EdgeInd e = w.first;
-            const double z = corner(face_of(e), v);
-            for (std::uint32_t i = 0; i < w.count; ++i) {
-                CHECK(corner(face_of(e), v) == z);
-                e = cdt.rot_next(e);
+        for (std::size_t c = 0; c < C; ++c) {
+            double sum = 0;
+            for (const Wedge& w : wedges) {
+                EdgeInd e = w.first;
+                const double z = corner(face_of(e), v, c);
+                for (std::uint32_t i = 0; i < w.count; ++i) {
+                    CHECK(corner(face_of(e), v, c) == z);
+                    e = cdt.rot_next(e);
+                }
+                sum += z;
             }
-            sum += z;
+            CHECK(m.values[model_index[v] * C + c] == Approx(sum / double(wedges.size())));
         }
-        CHECK(m.values[model_index[v]] == Approx(sum / double(wedges.size())));
     }
 }
 

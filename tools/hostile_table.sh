@@ -224,6 +224,25 @@ case_ ".erd: ends early" 2 reconstruct short.erd -o r.pgm
 { printf 'erd-header 7\nend\n'; cat good.erd; } > version.erd
 case_ ".erd: unknown header key" 2 reconstruct key.erd -o r.pgm
 case_ ".erd: header version 7" 2 reconstruct version.erd -o r.pgm
+# Colour models (header "channels 3"): three values per vertex and wedge line, on the line.
+colour_erd() {  # $1: vertex 4's line, $2: the wedge lines with their count, $3: the channels line
+    printf 'erd-header 1\n%b\nend\n255\n5\n0 0 10 11 12\n4 0 20 21 22\n0 4 30 31 32\n4 4 40 41 42\n%b\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n%b' \
+        "${3:-channels 3}" "$1" "$2"
+}
+colour_erd '2 2 25 26' '0\n' > c_short.erd
+colour_erd '2 2 25 26 27 28' '0\n' > c_long.erd
+colour_erd '2 2 25 26 27' '2\n4 0 25 26\n4 1 25 26 27\n' > c_wedge.erd
+colour_erd '2 2 25 26 27' '0\n' 'channels 4' > c_four.erd
+colour_erd '2 2 25 26 27' '0\n' 'channels 2' > c_two.erd
+colour_erd '2 2 25 26 27' '0\n' 'channels 3\nchannels 3' > c_twice.erd
+case_ "colour .erd: two values on a vertex line" 2 reconstruct c_short.erd -o r.ppm
+case_ "colour .erd: four values on a vertex line" 2 reconstruct c_long.erd -o r.ppm
+case_ "colour .erd: two values on a wedge line" 2 reconstruct c_wedge.erd -o r.ppm
+case_ "colour .erd: channels 4" 2 reconstruct c_four.erd -o r.ppm
+case_ "colour .erd: channels 2" 2 reconstruct c_two.erd -o r.ppm
+case_ "colour .erd: channels given twice" 2 reconstruct c_twice.erd -o r.ppm
+colour_erd '2 2 25 26 27' '0\n' > c_good.erd
+case_ "colour .erd: drawn by a gray-only part" 2 render --vector c_good.erd -o r.svg
 case_ "generate --edges blurry" 2 generate -q -m erdgpi --edges blurry -i step.pgm -o o.erd -n 20
 case_ "psnr: sizes differ" 2 psnr small.pgm other.pgm
 

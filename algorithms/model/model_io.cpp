@@ -10,206 +10,14 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
-#include "algorithms/model/float_chars.h"
+#include "algorithms/model/model_tokens.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/predicates.h"
 
 namespace erd {
 namespace {
 
-// Values further from zero than this are refused: no approximating function of a 16-bit image
-// needs them, and they keep every plane computation far from overflow.
-constexpr double kMaxAbsValue = 1e9;
-// Largest doubled coordinate of an accepted image.
-constexpr std::int64_t kMaxDoubled = 2 * std::int64_t(kMaxImageSide) - 2;
-
-std::string show(std::string_view tok) {
-    std::string s;
-    for (char ch : tok.substr(0, 24)) {
-        const unsigned char u = static_cast<unsigned char>(ch);
-        if (u >= 32 && u < 127) {
-            s += ch;
-        } else {
-            static const char hex[] = "0123456789abcdef";
-            s += "\\x";
-            s += hex[u >> 4];
-            s += hex[u & 15];
-        }
-    }
-    if (tok.size() > 24) s += "...";
-    return s;
-}
-
-// What a token should be, for messages: text, or a callable building it (only on error, so the
-// hot path builds no strings).
-std::string str(const char* s) { return s; }
-template <class F>
-std::string str(const F& f) {
-    return f();
-}
-
-// Whitespace-separated tokens with '#' comments; tracks line numbers for messages.
-class Tokens {
-public:
-    explicit Tokens(const std::string& text) : s_(text) {}
-
-    // The next token, or false at the end of the text.
-    bool next(std::string_view* tok) {
-        skip();
-        if (pos_ >= s_.size()) return false;
-        line_ = cur_line_;
-        const std::size_t b = pos_;
-        while (pos_ < s_.size() && !space(s_[pos_]) && s_[pos_] != '#') ++pos_;
-        *tok = std::string_view(s_).substr(b, pos_ - b);
-        return true;
-    }
-    bool at_end() {
-        skip();
-        return pos_ >= s_.size();
-    }
-    // True when the next token is `word` (nothing is consumed).
-    bool peek_is(std::string_view word) {
-        skip();
-        return s_.compare(pos_, word.size(), word.data(), word.size()) == 0 &&
-               (pos_ + word.size() == s_.size() || space(s_[pos_ + word.size()]) || s_[pos_ + word.size()] == '#');
-    }
-    std::size_t remaining() {
-        skip();
-        return s_.size() - pos_;
-    }
-    int line() const { return line_; }
-    std::string where() const { return "line " + std::to_string(line_) + ": "; }
-
-    // Plain decimal digits, at most max_len of them (the common case, parsed without from_chars).
-    static bool digits(std::string_view t, std::size_t max_len, std::uint64_t* x) {
-        if (t.empty() || t.size() > max_len) return false;
-        std::uint64_t v = 0;
-        for (char c : t) {
-            if (c < '0' || c > '9') return false;
-            v = v * 10 + std::uint64_t(c - '0');
-        }
-        *x = v;
-        return true;
-    }
-
-    // Unsigned integer in [lo, hi].
-    template <class What>
-    Status uint(const What& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
-        std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
-        std::uint64_t x = 0;
-        if (digits(t, 18, &x) && x >= lo && x <= hi) {
-            *v = x;
-            return Status::success();
-        }
-        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
-        if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size())
-            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
-        if (r.ec == std::errc::result_out_of_range)
-            return Status::bad_input(where() + str(what) + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
-        if (x < lo || x > hi)
-            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
-                                     ".." + std::to_string(hi) + ")");
-        *v = x;
-        return Status::success();
-    }
-
-    // Signed integer (coordinates: a '-' gets "outside the image" rather than "junk").
-    template <class What>
-    Status sint(const What& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
-        std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
-        std::uint64_t u = 0;
-        if (digits(t, 18, &u) && std::int64_t(u) >= lo && std::int64_t(u) <= hi) {
-            *v = std::int64_t(u);
-            return Status::success();
-        }
-        std::int64_t x = 0;
-        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
-        if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size())
-            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
-        if (r.ec == std::errc::result_out_of_range)
-            return Status::bad_input(where() + str(what) + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
-        if (x < lo || x > hi)
-            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
-                                     ".." + std::to_string(hi) + ")");
-        *v = x;
-        return Status::success();
-    }
-
-    // A finite real of moderate size.
-    template <class What>
-    Status real(const What& what, double* v) {
-        std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
-        std::uint64_t u = 0;
-        if (digits(t, 9, &u)) {  // below 1e9: exact, in range
-            *v = double(u);
-            return Status::success();
-        }
-        double x = 0.0;
-        const char* b = t.data();
-        if (!t.empty() && t[0] == '+') ++b;  // from_chars refuses a leading '+'
-        const auto r = read_double(b, t.data() + t.size(), &x);
-        if (t.empty() || r.ptr != t.data() + t.size() || r.ec == std::errc::invalid_argument)
-            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
-        if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
-            return Status::bad_input(where() + str(what) + " '" + show(t) + "' is not a finite number");
-        if (std::fabs(x) > kMaxAbsValue)
-            return Status::bad_input(where() + str(what) + " " + show(t) + " out of range (|value| <= 1e9)");
-        *v = x;
-        return Status::success();
-    }
-
-private:
-    static bool space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
-    void skip() {
-        while (pos_ < s_.size()) {
-            const char c = s_[pos_];
-            if (c == '\n') {
-                ++cur_line_;
-                ++pos_;
-            } else if (space(c)) {
-                ++pos_;
-            } else if (c == '#') {
-                while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
-            } else {
-                break;
-            }
-        }
-    }
-    const std::string& s_;
-    std::size_t pos_ = 0;
-    int cur_line_ = 1;
-    int line_ = 1;
-};
-
-// A count of records of at least min_bytes bytes each (separator included) must fit in the rest
-// of the text: refuses absurd counts before anything is allocated.
-template <class What>
-Status count(Tokens& tk, const What& what, std::uint64_t lo, std::uint64_t min_bytes, std::uint64_t* n) {
-    if (Status s = tk.uint(what, lo, std::uint64_t(1) << 40, n); !s) return s;
-    if (*n > 0 && *n * min_bytes > tk.remaining() + 1)
-        return Status::bad_input(tk.where() + str(what) + " " + std::to_string(*n) +
-                                 " is more than the rest of the file holds (the file ends early or the count is wrong)");
-    return Status::success();
-}
-
-// Nothing may follow the last record: "unexpected 'X' after the last WHAT (check the counts)".
-Status expect_end(Tokens& tk, const char* what) {
-    if (tk.at_end()) return Status::success();
-    std::string_view t;
-    tk.next(&t);
-    return Status::bad_input(tk.where() + "unexpected '" + show(t) + "' after the last " + what + " (check the counts)");
-}
-
-// Room for at most 65536 records up front: a count that the rest of the file only "holds" as
-// whitespace costs nothing until its records actually arrive (vectors grow as they are read).
-template <class V>
-void reserve_arriving(V* v, std::uint64_t n) {
-    v->clear();
-    v->reserve(std::size_t(std::min<std::uint64_t>(n, std::uint64_t(1) << 16)));
-}
+using namespace model_text;
 
 std::string vname(std::size_t i) { return "vertex " + std::to_string(i); }
 
@@ -297,17 +105,21 @@ Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<in
     return Status::success();
 }
 
-// Assigns the corner values of an ERD model from its wedge lines (see model_io.h).
+// Assigns the corner values of an ERD model from its wedge lines (see model_io.h), in every
+// channel: a wedge line carries one value per channel, and the fan propagation below moves all
+// channels of a corner together.
 Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
-    const std::size_t nv = m->vertices.size(), nf = m->faces.size();
+    const std::size_t nv = m->vertices.size(), nf = m->faces.size(), C = std::size_t(m->channels);
     std::uint64_t nw = 0;
-    if (Status s = count(tk, "wedge count", 0, 6, &nw); !s) return s;
-    m->corner_values.assign(nf, {0.0, 0.0, 0.0});
+    if (Status s = count(tk, "wedge count", 0, 4 + 2 * C, &nw); !s) return s;
+    m->corner_values.assign(nf * C, {0.0, 0.0, 0.0});
+    // The value of corner h (half-edge 3f + k) in channel c.
+    const auto cv = [&](std::size_t h, std::size_t c) -> double& { return m->corner_values[h / 3 * C + c][h % 3]; };
     std::vector<std::uint8_t> set(3 * nf, 0);
     std::vector<std::uint8_t> listed(nv, 0);
+    double z[3] = {0.0, 0.0, 0.0};
     for (std::uint64_t i = 0; i < nw; ++i) {
         std::uint64_t v = 0, f = 0;
-        double z = 0.0;
         if (Status s = tk.uint([&] { return "vertex index of wedge line " + std::to_string(i); }, 0, std::uint64_t(1) << 40, &v); !s) return s;
         if (v >= nv)
             return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": vertex index " + std::to_string(v) +
@@ -316,7 +128,8 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
         if (f >= nf)
             return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face index " + std::to_string(f) +
                                      " out of range (" + std::to_string(nf) + " faces)");
-        if (Status s = tk.real([&] { return "wedge value of wedge line " + std::to_string(i); }, &z); !s) return s;
+        const auto record = [&] { return "wedge line " + std::to_string(i); };
+        if (Status s = channel_values(tk, record, "wedge value", m->channels, z); !s) return s;
         int k = -1;
         for (int c = 0; c < 3; ++c)
             if (m->faces[f][std::size_t(c)] == v) k = c;
@@ -324,40 +137,51 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
             return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": face " + std::to_string(f) +
                                      " is not incident on vertex " + std::to_string(v));
         const std::size_t h = 3 * f + std::size_t(k);
-        if (set[h] && m->corner_values[f][std::size_t(k)] != z)
+        bool same = true;
+        for (std::size_t c = 0; c < C; ++c) same = same && cv(h, c) == z[c];
+        if (set[h] && !same)
             return Status::bad_input(tk.where() + "wedge line " + std::to_string(i) + ": conflicting values for vertex " +
                                      std::to_string(v) + " in face " + std::to_string(f));
         set[h] = 1;
         listed[v] = 1;
-        m->corner_values[f][std::size_t(k)] = z;
+        for (std::size_t c = 0; c < C; ++c) cv(h, c) = z[c];
     }
     if (Status s = expect_end(tk, "wedge line"); !s) return s;
     std::vector<std::uint32_t> fan;
-    std::vector<int> known;
     for (std::uint32_t v = 0; v < nv; ++v) {
         const std::uint32_t b = topo.corner_begin[v], e = topo.corner_begin[v + 1];
         if (!listed[v]) {
-            for (std::uint32_t i = b; i < e; ++i) m->corner_values[topo.corners[i] / 3][topo.corners[i] % 3] = m->values[v];
+            for (std::uint32_t i = b; i < e; ++i)
+                for (std::size_t c = 0; c < C; ++c) cv(topo.corners[i], c) = m->values[v * C + c];
             continue;
         }
         bool complete = true;
         for (std::uint32_t i = b; i < e; ++i) complete = complete && set[topo.corners[i]];
         if (complete) continue;
-        // Propagate along the fan: a face takes the value of the nearest listed faces when both
-        // sides agree (or when only one side exists, at the open end of a border fan).
+        // Propagate along the fan: a face takes the values of the nearest listed faces when both
+        // sides agree (in every channel), or when only one side exists, at the open end of a
+        // border fan.
         bool closed = false;
         std::uint32_t missing = 0;
         for (std::uint32_t i = b; i < e; ++i)
             if (!set[topo.corners[i]]) missing = topo.corners[i] / 3;
-        const std::string undetermined = "the wedge of face " + std::to_string(missing) + " at vertex " + std::to_string(v) +
-                                         " is undetermined (give a wedge line for every face of a vertex with several wedges)";
-        if (!vertex_fan(topo, v, &fan, &closed)) return Status::bad_input(undetermined);
+        const auto undetermined = [&](std::uint32_t face) {
+            return Status::bad_input("the wedge of face " + std::to_string(face) + " at vertex " + std::to_string(v) +
+                                     " is undetermined (give a wedge line for every face of a vertex with several wedges)");
+        };
+        if (!vertex_fan(topo, v, &fan, &closed)) return undetermined(missing);
         const int n = int(fan.size());
-        std::vector<double> val(std::size_t(n), 0.0);
-        for (int i = 0; i < n; ++i) val[std::size_t(i)] = m->corner_values[fan[std::size_t(i)] / 3][fan[std::size_t(i)] % 3];
+        std::vector<double> val(std::size_t(n) * C, 0.0);
+        for (int i = 0; i < n; ++i)
+            for (std::size_t c = 0; c < C; ++c) val[std::size_t(i) * C + c] = cv(fan[std::size_t(i)], c);
+        const auto agree = [&](int x, int y) {
+            for (std::size_t c = 0; c < C; ++c)
+                if (val[std::size_t(x) * C + c] != val[std::size_t(y) * C + c]) return false;
+            return true;
+        };
         for (int i = 0; i < n; ++i) {
-            const std::uint32_t c = fan[std::size_t(i)];
-            if (set[c]) continue;
+            const std::uint32_t corner = fan[std::size_t(i)];
+            if (set[corner]) continue;
             int before = -1, after = -1;
             for (int d = 1; d < n; ++d) {
                 const int j = i - d;
@@ -377,21 +201,20 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
                     break;
                 }
             }
-            double z = 0.0;
-            if (before >= 0 && after >= 0 && val[std::size_t(before)] == val[std::size_t(after)]) z = val[std::size_t(before)];
-            else if (before >= 0 && after < 0) z = val[std::size_t(before)];
-            else if (after >= 0 && before < 0) z = val[std::size_t(after)];
-            else
-                return Status::bad_input("the wedge of face " + std::to_string(c / 3) + " at vertex " + std::to_string(v) +
-                                         " is undetermined (give a wedge line for every face of a vertex with several wedges)");
-            m->corner_values[c / 3][c % 3] = z;
+            int from = -1;
+            if (before >= 0 && after >= 0 && agree(before, after)) from = before;
+            else if (before >= 0 && after < 0) from = before;
+            else if (after >= 0 && before < 0) from = after;
+            else return undetermined(corner / 3);
+            for (std::size_t c = 0; c < C; ++c) cv(corner, c) = val[std::size_t(from) * C + c];
         }
         for (int i = 0; i < n; ++i) set[fan[std::size_t(i)]] = 1;
     }
     // The vertex value of a vertex with wedge lines is the mean of its wedge values; the
     // constraints are the edges across which values jump.
     for (std::uint32_t v = 0; v < nv; ++v)
-        if (listed[v]) m->values[v] = vertex_wedges(*m, topo, v).mean;
+        if (listed[v])
+            for (std::size_t c = 0; c < C; ++c) m->values[v * C + c] = vertex_wedges(*m, topo, v, int(c)).mean;
     m->constraints.clear();
     for (std::uint32_t h = 0; h < topo.twin.size(); ++h)
         if (topo.twin[h] != kNoHalfEdge && h < topo.twin[h] && is_discontinuity(*m, topo, h)) {
@@ -415,10 +238,21 @@ Status read_header(Tokens& tk, Model* m, int* edges_line) {
     if (version != 1)
         return Status::bad_input(tk.where() + "header version " + std::to_string(version) + " is not supported (this reader knows 1)");
     *edges_line = 0;
+    int channels_line = 0;
     for (;;) {
         if (!tk.next(&t)) return Status::bad_input("file ends early: expected a header key or 'end'");
         if (t == "end") return Status::success();
-        if (t != "edges") return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges)");
+        if (t == "channels") {
+            if (channels_line) return Status::bad_input(tk.where() + "header key 'channels' given twice");
+            channels_line = tk.line();
+            if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'channels' (1 or 3)");
+            if (t != "1" && t != "3")
+                return Status::bad_input(tk.where() + "channels must be 1 (gray) or 3 (RGB), found '" + show(t) + "'");
+            m->channels = t == "3" ? 3 : 1;
+            continue;
+        }
+        if (t != "edges")
+            return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges, channels)");
         if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
         *edges_line = tk.line();
         if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
@@ -426,6 +260,11 @@ Status read_header(Tokens& tk, Model* m, int* edges_line) {
             return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
         m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
     }
+}
+
+Status require_gray(const Model& m, const std::string& what) {
+    if (m.channels == 1) return Status::success();
+    return Status::bad_input("a colour model (channels " + std::to_string(m.channels) + "): " + what + " handles gray models only");
 }
 
 ModelFileKind model_kind_from_name(const std::string& name) {
@@ -456,19 +295,20 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     std::uint64_t maxval = 0, nv = 0;
     if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
     m.maxval = std::uint32_t(maxval);
-    if (Status s = count(tk, "vertex count", 4, 6, &nv); !s) return s;
+    if (Status s = count(tk, "vertex count", 4, 4 + 2 * std::uint64_t(m.channels), &nv); !s) return s;
+    const std::size_t C = std::size_t(m.channels);
     reserve_arriving(&m.vertices, nv);
-    reserve_arriving(&m.values, nv);
+    reserve_arriving(&m.values, nv * C);
     std::vector<int> vlines;
     reserve_arriving(&vlines, nv);
     for (std::uint64_t i = 0; i < nv; ++i) {
         std::int64_t x = 0, y = 0;
-        double value = 0.0;
+        double value[3] = {0.0, 0.0, 0.0};
         if (Status s = tk.sint([&] { return "x coordinate of " + vname(i); }, 0, kMaxDoubled, &x); !s) return s;
         if (Status s = tk.sint([&] { return "y coordinate of " + vname(i); }, 0, kMaxDoubled, &y); !s) return s;
-        if (Status s = tk.real([&] { return "value of " + vname(i); }, &value); !s) return s;
+        if (Status s = channel_values(tk, [&] { return vname(i); }, "value", m.channels, value); !s) return s;
         m.vertices.push_back(LatticePoint{std::int32_t(x), std::int32_t(y)});
-        m.values.push_back(value);
+        m.values.insert(m.values.end(), value, value + C);
         vlines.push_back(tk.line());
     }
     std::vector<int> flines;

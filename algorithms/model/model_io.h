@@ -29,10 +29,39 @@
 //
 // Header block (optional; a file without it is exactly the thesis's format). An extended file
 // starts with the line "erd-header 1", then one "key value..." line per key, then the line
-// "end", then the thesis's body unchanged. Keys: "edges hard|soft" (.erd only; Model::edges,
-// soft when absent). The writer adds the block only when it has something to say (edges hard).
-// A reader refuses a version other than 1, a key it does not know (naming it), and a key given
-// twice.
+// "end", then the thesis's body. Keys: "edges hard|soft" (.erd only; Model::edges, soft when
+// absent) and "channels 1|3" (Model::channels, 1 when absent). The writer adds the block only
+// when it has something to say (channels 3, edges hard; in that order). A reader refuses a
+// version other than 1, a key it does not know (naming it), and a key given twice.
+//
+// Colour (channels 3): the body is the thesis's with every value replaced by three, red green
+// blue, on the same line: vertex lines "x y r g b", wedge lines "vertex face r g b". A record's
+// values must all be on its line and nothing may follow them there, so a line with two or four
+// values is named ("line 9: vertex 4 has 2 values on its line, expected 3") instead of shifting
+// the records after it. An edge is a discontinuity when any channel jumps across it, and a vertex
+// needs wedge lines when any channel of a corner differs from its vertex line. A reader without
+// colour (erd before it) stops at the header with "unknown header key 'channels'".
+//
+//     erd-header 1
+//     channels 3
+//     end
+//     255
+//     5
+//     0 0 10 11 12          <- vertex 0 at (0, 0), doubled: R 10, G 11, B 12
+//     4 0 20 21 22
+//     0 4 30 31 32
+//     4 4 40 41 42
+//     2 2 25 26 25          <- vertex 4: ignored for its wedge lines, the mean of its wedges
+//     4
+//     0 1 4
+//     1 3 4
+//     3 2 4
+//     2 0 4
+//     4                     <- vertex 4 has two wedges, differing in blue only
+//     4 0 25 26 10
+//     4 1 25 26 10
+//     4 2 25 26 40
+//     4 3 25 26 40
 //
 // Every problem gives one Status (Code::input) whose message says what and where ("line 7: ...").
 // A model that passes the reader may still not be a triangulation of the image domain (overlaps,
@@ -70,6 +99,10 @@ Status write_triangulation(const Model& m, std::string* out);
 // coordinates of any image erd accepts (0 .. 2 kMaxImageSide - 2).
 Status read_polylines(const std::string& text, std::vector<std::vector<LatticePoint>>* out);
 void write_polylines(const std::vector<std::vector<LatticePoint>>& lines, std::string* out);
+
+// For a consumer of gray models only: Code::input "a colour model (channels 3): WHAT handles gray
+// models only" when m has more than one channel, success otherwise.
+Status require_gray(const Model& m, const std::string& what);
 
 // A value as the writers print it: an integer when integral, else the shortest decimal that
 // reads back to the same double.

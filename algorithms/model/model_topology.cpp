@@ -82,28 +82,30 @@ Status build_topology(const Model& m, ModelTopology* t) {
     return Status::success();
 }
 
-double corner_value(const Model& m, std::uint32_t h) {
-    const std::size_t f = h / 3, k = h % 3;
-    if (m.kind == ModelKind::erd && f < m.corner_values.size()) return m.corner_values[f][k];
-    return m.values[m.faces[f][k]];
-}
-
 bool is_discontinuity(const Model& m, const ModelTopology& t, std::uint32_t h) {
     if (m.kind != ModelKind::erd) return false;
     const std::uint32_t o = t.twin[h];
     if (o == kNoHalfEdge) return false;
-    // h runs u->w in one face, o runs w->u in the other.
-    return corner_value(m, h) != corner_value(m, ModelTopology::next(o)) ||
-           corner_value(m, ModelTopology::next(h)) != corner_value(m, o);
+    // h runs u->w in one face, o runs w->u in the other; a jump in any channel counts.
+    if (m.channels == 1)
+        return corner_value(m, h) != corner_value(m, ModelTopology::next(o)) ||
+               corner_value(m, ModelTopology::next(h)) != corner_value(m, o);
+    for (int c = 0; c < m.channels; ++c)
+        if (corner_value(m, h, c) != corner_value(m, ModelTopology::next(o), c) ||
+            corner_value(m, ModelTopology::next(h), c) != corner_value(m, o, c))
+            return true;
+    return false;
 }
 
-VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t v) {
+VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t v, int channel) {
     const std::uint32_t b = t.corner_begin[v], e = t.corner_begin[v + 1];
-    if (b == e) return {0, m.values[v]};
-    const double first = corner_value(m, t.corners[b]);
+    if (b == e) return {0, m.values[std::size_t(v) * std::size_t(m.channels) + std::size_t(channel)]};
     bool uniform = true;
-    for (std::uint32_t i = b + 1; i < e && uniform; ++i) uniform = corner_value(m, t.corners[i]) == first;
-    if (uniform) return {1, first};
+    for (int c = 0; c < m.channels && uniform; ++c) {  // every channel: the wedges are those of all of them
+        const double first = corner_value(m, t.corners[b], c);
+        for (std::uint32_t i = b + 1; i < e && uniform; ++i) uniform = corner_value(m, t.corners[i], c) == first;
+    }
+    if (uniform) return {1, corner_value(m, t.corners[b], channel)};
     // Runs of faces joined across edges that are not discontinuities (corners are sorted, so
     // the neighbour's local index is found by binary search).
     const std::uint32_t n = e - b;
@@ -124,7 +126,7 @@ VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t
     for (std::uint32_t i = 0; i < n; ++i)
         if (find_root(parent, i) == i) {
             ++w.count;
-            sum += corner_value(m, t.corners[b + i]);
+            sum += corner_value(m, t.corners[b + i], channel);
         }
     w.mean = sum / w.count;
     return w;

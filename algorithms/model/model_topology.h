@@ -35,21 +35,25 @@ struct ModelTopology {
 // faces); a third face on an undirected edge is caught the same way.
 Status build_topology(const Model& m, ModelTopology* t);
 
-// Value of face h/3 at the vertex where half-edge (corner) h starts: values[v] for a basic
-// model, corner_values for an ERD model.
-double corner_value(const Model& m, std::uint32_t h);
+// Value in channel c of face h/3 at the vertex where half-edge (corner) h starts: values for a
+// basic model, corner_values for an ERD model.
+inline double corner_value(const Model& m, std::uint32_t h, int c = 0) {
+    const std::size_t f = h / 3, k = h % 3, C = std::size_t(m.channels);
+    if (m.kind == ModelKind::erd && f * C < m.corner_values.size()) return m.corner_values[f * C + std::size_t(c)][k];
+    return m.values[std::size_t(m.faces[f][k]) * C + std::size_t(c)];
+}
 
-// True when half-edge h and its twin separate different values (ERD models only; false on the
-// border and for basic models).
+// True when half-edge h and its twin separate different values in some channel (ERD models
+// only; false on the border and for basic models). All channels share the discontinuities.
 bool is_discontinuity(const Model& m, const ModelTopology& t, std::uint32_t h);
 
-// The wedges of vertex v: their number and the mean of their values (the value of the
-// approximating function at v, thesis 3.3 case 2). Basic model: one wedge, values[v].
+// The wedges of vertex v: their number and the mean of their values in `channel` (the value of
+// the approximating function at v, thesis 3.3 case 2). Basic model: one wedge, its value.
 struct VertexWedges {
     int count = 0;
     double mean = 0.0;
 };
-VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t v);
+VertexWedges vertex_wedges(const Model& m, const ModelTopology& t, std::uint32_t v, int channel = 0);
 
 // One undirected edge of the mesh, a < b. Constrained when Model::constraints lists it or it is
 // a discontinuity: pictures draw these thick, exports cut the surface open along them.

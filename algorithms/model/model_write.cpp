@@ -19,10 +19,11 @@
 namespace erd {
 namespace {
 
-// Room for one record: three 20-digit integers or two integers and a value, with separators.
-constexpr std::size_t kRecordBytes = 96;
 // A value as put_value prints it is at most 24 characters ("-2.2250738585072014e-308").
 constexpr std::size_t kValueBytes = 32;
+// Room for one record: three 20-digit integers, or two integers and up to three values, with
+// separators.
+constexpr std::size_t kRecordBytes = 2 * 21 + 3 * (kValueBytes + 1);
 
 // Decimal digits of v at p; returns the end. The same text as std::to_string.
 char* put_uint(char* p, std::uint64_t v) {
@@ -71,7 +72,7 @@ char* put_value(char* p, double v) {
 
 // One output line at a time: each field is followed by a space, and end() turns the last space
 // into '\n' and appends the line (so a line has at least one field). A line holds at most
-// kRecordBytes: three integers, or two and a value, as the writers use it.
+// kRecordBytes: three integers, or two and up to three values, as the writers use it.
 class Lines {
 public:
     explicit Lines(std::string* out) : out_(out) {}
@@ -107,11 +108,15 @@ private:
 
 // Shared checks of the writers: indices, orientation, finite values.
 Status check_for_writing(const Model& m, bool values) {
-    const std::size_t nv = m.vertices.size();
-    if (values && m.values.size() != nv) return Status::failure("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices");
-    if (values && m.kind == ModelKind::erd && m.corner_values.size() != m.faces.size())
-        return Status::failure("ERD model has corner values for " + std::to_string(m.corner_values.size()) + " of " +
-                               std::to_string(m.faces.size()) + " faces");
+    const std::size_t nv = m.vertices.size(), C = std::size_t(m.channels);
+    if (values && m.channels != 1 && m.channels != 3)
+        return Status::failure("model has " + std::to_string(m.channels) + " channels (1 or 3 can be written)");
+    if (values && m.values.size() != nv * C)
+        return Status::failure("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices" +
+                               (C > 1 ? " in " + std::to_string(C) + " channels" : ""));
+    if (values && m.kind == ModelKind::erd && m.corner_values.size() != m.faces.size() * C)
+        return Status::failure("ERD model has " + std::to_string(m.corner_values.size()) + " corner value triples for " +
+                               std::to_string(m.faces.size()) + " faces" + (C > 1 ? " in " + std::to_string(C) + " channels" : ""));
     for (std::size_t f = 0; f < m.faces.size(); ++f)
         for (std::uint32_t v : m.faces[f])
             if (v >= nv) return Status::failure("face " + std::to_string(f) + ": vertex index out of range");
@@ -131,12 +136,13 @@ void put_faces(const std::vector<std::array<std::uint32_t, 3>>& faces, Lines* li
 }
 
 // The wedge lines of an .erd: for every vertex whose corners do not all carry its vertex-line
-// value (every vertex with wedges of different values), one line per corner in half-edge order.
-// Wedges that share one value need none (the vertex line gives it back), which keeps
-// write(read(write(m))) stable. Only the corners of each vertex are needed, not the twins, so
-// they are bucketed here (the order build_topology gives them) rather than by build_topology.
+// values (every vertex with wedges of different values), one line per corner in half-edge order,
+// with a value per channel. Wedges that share one value need none (the vertex line gives it
+// back), which keeps write(read(write(m))) stable. Only the corners of each vertex are needed,
+// not the twins, so they are bucketed here (the order build_topology gives them) rather than by
+// build_topology.
 void put_wedge_lines(const Model& m, std::string* o) {
-    const std::size_t nv = m.vertices.size(), nh = 3 * m.faces.size();
+    const std::size_t nv = m.vertices.size(), nh = 3 * m.faces.size(), C = std::size_t(m.channels);
     std::vector<std::uint32_t> begin(nv + 1, 0), corners(nh);
     for (const auto& f : m.faces)
         for (std::uint32_t v : f) ++begin[v + 1];
@@ -146,30 +152,44 @@ void put_wedge_lines(const Model& m, std::string* o) {
     std::string lines;
     Lines line(&lines);
     std::size_t nw = 0;
-    // A vertex's corners share its few wedge values: each distinct value is formatted once.
+    // A vertex's corners share its few wedge values: each distinct value (all channels) is
+    // formatted once.
     struct Formatted {
-        double value;
+        double value[3];
         std::size_t length;
-        char text[kValueBytes];
+        char text[3 * kValueBytes];
     };
     std::vector<Formatted> seen;
+    double z[3] = {0.0, 0.0, 0.0};
     for (std::uint32_t v = 0; v < nv; ++v) {
         const std::uint32_t b = begin[v], e = begin[v + 1];
         bool odd = false;
-        for (std::uint32_t i = b; i < e && !odd; ++i) odd = corner_value(m, corners[i]) != m.values[v];
+        for (std::uint32_t i = b; i < e && !odd; ++i)
+            for (std::size_t c = 0; c < C && !odd; ++c) odd = corner_value(m, corners[i], int(c)) != m.values[v * C + c];
         if (!odd) continue;
         seen.clear();
         for (std::uint32_t i = b; i < e; ++i) {
-            const std::uint32_t c = corners[i];
-            const double z = corner_value(m, c);
+            const std::uint32_t h = corners[i];
+            for (std::size_t c = 0; c < C; ++c) z[c] = corner_value(m, h, int(c));
+            // Finite values: == is identity up to the sign of 0, which prints "0" both ways.
+            const auto same = [&](const Formatted& x) {
+                for (std::size_t c = 0; c < C; ++c)
+                    if (x.value[c] != z[c]) return false;
+                return true;
+            };
             std::size_t k = 0;
-            while (k < seen.size() && seen[k].value != z) ++k;  // finite values: == is identity up to
-            if (k == seen.size()) {                              // the sign of 0, which prints "0" both ways
+            while (k < seen.size() && !same(seen[k])) ++k;
+            if (k == seen.size()) {
                 seen.emplace_back();
-                seen[k].value = z;
-                seen[k].length = std::size_t(put_value(seen[k].text, z) - seen[k].text);
+                char* p = seen[k].text;
+                for (std::size_t c = 0; c < C; ++c) {
+                    seen[k].value[c] = z[c];
+                    if (c > 0) *p++ = ' ';
+                    p = put_value(p, z[c]);
+                }
+                seen[k].length = std::size_t(p - seen[k].text);
             }
-            line.num(v).num(c / 3).chars(seen[k].text, seen[k].length).end();
+            line.num(v).num(h / 3).chars(seen[k].text, seen[k].length).end();
         }
         nw += e - b;
     }
@@ -187,18 +207,27 @@ std::string format_value(double v) {
 Status write_model(const Model& m, std::string* out) {
     if (Status s = check_for_writing(m, true); !s) return s;
     const bool erd = m.kind == ModelKind::erd;
+    const std::size_t C = std::size_t(m.channels);
     if (!erd)
         for (const LatticePoint& p : m.vertices)
             if (p.x % 2 != 0 || p.y % 2 != 0) return Status::failure("a basic model has a vertex off the pixel lattice");
     std::string o;
-    o.reserve(m.vertices.size() * 28 + m.faces.size() * 18);
+    o.reserve(m.vertices.size() * (20 + 8 * C) + m.faces.size() * 18);
     Lines line(&o);
-    if (erd && m.edges == EdgeKind::hard) o += "erd-header 1\nedges hard\nend\n";
+    const bool hard = erd && m.edges == EdgeKind::hard;
+    if (hard || C > 1) {
+        o += "erd-header 1\n";
+        if (C > 1) o += "channels " + std::to_string(C) + "\n";
+        if (hard) o += "edges hard\n";
+        o += "end\n";
+    }
     line.num(m.maxval).end();
     line.num(m.vertices.size()).end();
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {
         const LatticePoint p = m.vertices[i];
-        line.sint(erd ? p.x : p.x / 2).sint(erd ? p.y : p.y / 2).value(m.values[i]).end();
+        line.sint(erd ? p.x : p.x / 2).sint(erd ? p.y : p.y / 2);
+        for (std::size_t c = 0; c < C; ++c) line.value(m.values[i * C + c]);
+        line.end();
     }
     // Positive orientation (corner values follow their vertices).
     Model pos;
@@ -210,7 +239,8 @@ Status write_model(const Model& m, std::string* out) {
         for (std::size_t f = 0; f < pos.faces.size(); ++f)
             if (orient2d(pos.vertices[pos.faces[f][0]], pos.vertices[pos.faces[f][1]], pos.vertices[pos.faces[f][2]]) < 0) {
                 std::swap(pos.faces[f][1], pos.faces[f][2]);
-                if (erd) std::swap(pos.corner_values[f][1], pos.corner_values[f][2]);
+                if (erd)
+                    for (std::size_t c = 0; c < C; ++c) std::swap(pos.corner_values[f * C + c][1], pos.corner_values[f * C + c][2]);
             }
         mm = &pos;
     }

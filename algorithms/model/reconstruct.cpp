@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,8 +41,8 @@ struct Prepared {
     ModelTopology own;                     // built here unless the caller passes one
     const ModelTopology* topo = nullptr;   // own or the caller's
     RasterDomain dom;
-    std::vector<double> vertex_value;  // the function's value at each vertex (mean of wedges)
-    std::vector<SpanPlane> planes;     // per face, through its corner values
+    std::vector<double> vertex_value;  // the function's value at each vertex (mean of wedges), [v*C + c]
+    std::vector<SpanPlane> planes;     // per face and channel, through its corner values, [f*C + c]
 };
 
 // Checks m as check_triangulation() describes and sets up *p. `given` (may be null) is m's
@@ -54,13 +55,16 @@ Status prepare(const Model& m, bool count_pixels, const ModelTopology* given, Pr
         return Status::bad_input("image " + std::to_string(m.width) + " x " + std::to_string(m.height) + " is larger than the limit of " +
                                  std::to_string(kMaxImagePixels) + " pixels");
     if (m.maxval < 1 || m.maxval > 65535) return Status::bad_input("maxval " + std::to_string(m.maxval) + " out of range (1..65535)");
-    const std::size_t nv = m.vertices.size(), nf = m.faces.size();
-    if (m.values.size() != nv)
-        return Status::bad_input("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices");
+    if (m.channels != 1 && m.channels != 3)
+        return Status::bad_input("model has " + std::to_string(m.channels) + " channels (1 or 3)");
+    const std::size_t nv = m.vertices.size(), nf = m.faces.size(), C = std::size_t(m.channels);
+    if (m.values.size() != nv * C)
+        return Status::bad_input("model has " + std::to_string(m.values.size()) + " values for " + std::to_string(nv) + " vertices" +
+                                 (C > 1 ? " in " + std::to_string(C) + " channels" : ""));
     const bool erd = m.kind == ModelKind::erd;
-    if (erd && m.corner_values.size() != nf)
+    if (erd && m.corner_values.size() != nf * C)
         return Status::bad_input("ERD model has corner values for " + std::to_string(m.corner_values.size()) + " of " +
-                                 std::to_string(nf) + " faces");
+                                 std::to_string(nf * C) + (C > 1 ? " face channels" : " faces"));
     for (double z : m.values)
         if (!std::isfinite(z)) return Status::bad_input("model has a vertex value that is not a finite number");
     if (erd)
@@ -122,14 +126,19 @@ Status prepare(const Model& m, bool count_pixels, const ModelTopology* given, Pr
                                          std::to_string(i / std::size_t(m.width)) + ") is owned by " +
                                          (owned[i] == 0 ? "no face" : "several faces"));
     }
-    p->vertex_value.resize(nv);
-    for (std::uint32_t v = 0; v < nv; ++v) p->vertex_value[v] = erd ? vertex_wedges(m, topo, v).mean : m.values[v];
-    p->planes.resize(nf);
+    p->vertex_value.resize(nv * C);
+    for (std::uint32_t v = 0; v < nv; ++v)
+        for (std::size_t c = 0; c < C; ++c)
+            p->vertex_value[v * C + c] = erd ? vertex_wedges(m, topo, v, int(c)).mean : m.values[v * C + c];
+    p->planes.resize(nf * C);
     for (std::size_t f = 0; f < nf; ++f) {
         const auto& fc = m.faces[f];
         const std::uint32_t h = std::uint32_t(3 * f);
-        p->planes[f].set(m.vertices[fc[0]], corner_value(m, h), m.vertices[fc[1]], corner_value(m, h + 1), m.vertices[fc[2]],
-                         corner_value(m, h + 2));
+        for (std::size_t c = 0; c < C; ++c) {
+            const int k = int(c);
+            p->planes[f * C + c].set(m.vertices[fc[0]], corner_value(m, h, k), m.vertices[fc[1]], corner_value(m, h + 1, k),
+                                     m.vertices[fc[2]], corner_value(m, h + 2, k));
+        }
     }
     return Status::success();
 }
@@ -173,9 +182,10 @@ std::uint16_t to_sample(double v, double maxval) {
 }
 
 // Moves the points of lattice l on discontinuity edges to the mean of the two sides:
-// set(i, j, mean, owner_value) is called for each. Along the edge each side is the linear
-// interpolation of its corner values at the endpoints, computed from the exact fraction t of the
-// way along the edge, so that e.g. sides 73 and 54 give exactly 63.5 (which rounds up).
+// set(i, j, c, mean, owner_value) is called for each point and channel c. Along the edge each
+// side is the linear interpolation of its corner values at the endpoints, computed from the exact
+// fraction t of the way along the edge, so that e.g. sides 73 and 54 give exactly 63.5 (which
+// rounds up).
 template <class Set>
 void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Set set) {
     if (m.kind != ModelKind::erd) return;
@@ -187,17 +197,22 @@ void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Se
         const LatticePoint a = m.vertices[fc[0]], b = m.vertices[fc[1]], c = m.vertices[fc[2]];
         const LatticePoint u = m.vertices[fc[h % 3]], w = m.vertices[fc[(h + 1) % 3]];
         // h runs u->w in face f; its twin o runs w->u in the other face.
-        const double fu = corner_value(m, h), fw = corner_value(m, ModelTopology::next(h));
-        const double gu = corner_value(m, ModelTopology::next(o)), gw = corner_value(m, o);
+        double fu[3], fw[3], gu[3], gw[3];
+        for (int k = 0; k < m.channels; ++k) {
+            fu[k] = corner_value(m, h, k), fw[k] = corner_value(m, ModelTopology::next(h), k);
+            gu[k] = corner_value(m, ModelTopology::next(o), k), gw[k] = corner_value(m, o, k);
+        }
         const bool along_y = std::abs(std::int64_t(w.y) - u.y) >= std::abs(std::int64_t(w.x) - u.x);
         const std::int64_t u0 = std::int64_t(along_y ? u.y : u.x) * l.scale;
         const std::int64_t den = std::int64_t(along_y ? w.y : w.x) * l.scale - u0;
         for_each_on_segment(l, u, w, [&](std::int32_t i, std::int32_t j) {
             const std::int64_t num = (along_y ? l.fine_y(j) : l.fine_x(i)) - u0;
             const double r = double(den - num), q = double(num), d = double(den);
-            const double vf = (r * fu + q * fw) / d, vg = (r * gu + q * gw) / d;
             const bool f_owns = triangle_owns(l, p.dom, a, b, c, i, j);
-            set(i, j, 0.5 * (vf + vg), f_owns ? vf : vg);
+            for (int k = 0; k < m.channels; ++k) {
+                const double vf = (r * fu[k] + q * fw[k]) / d, vg = (r * gu[k] + q * gw[k]) / d;
+                set(i, j, k, 0.5 * (vf + vg), f_owns ? vf : vg);
+            }
         });
     }
 }
@@ -206,12 +221,12 @@ void fix_discontinuities(const Model& m, const Prepared& p, const Lattice& l, Se
 // [0, maxval] (kernel/raster.h RoundedPlane); false for any other face, which is evaluated in
 // doubles. Greedy refinement (algorithms/methods/greedy.cpp) makes the same choice per face, so
 // GPI's errors are exactly those of this reconstruction.
-bool exact_plane(const Model& m, std::size_t f, RoundedPlane* rp) {
+bool exact_plane(const Model& m, std::size_t f, int c, RoundedPlane* rp) {
     if (m.kind != ModelKind::basic) return false;
     const auto& fc = m.faces[f];
     std::int64_t z[3];
     for (int i = 0; i < 3; ++i) {
-        const double v = m.values[fc[i]];
+        const double v = m.values[std::size_t(fc[i]) * std::size_t(m.channels) + std::size_t(c)];
         if (!(v >= 0.0 && v <= double(m.maxval)) || v != std::floor(v)) return false;
         z[i] = std::int64_t(v);
     }
@@ -219,41 +234,51 @@ bool exact_plane(const Model& m, std::size_t f, RoundedPlane* rp) {
 }
 
 // Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
-// vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles).
+// vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles). A
+// face's spans are scanned once for all channels; channel c of pixel x of a row is row[x*C + c].
 void point_evaluation(const Model& m, const Prepared& p, Image* out) {
-    const std::size_t W = std::size_t(m.width);
+    const std::size_t W = std::size_t(m.width), C = std::size_t(m.channels);
     const double maxval = m.maxval;
     std::uint16_t* px = out->samples.data();
     const Lattice l = Lattice::pixels();
     std::vector<Span> spans;
     RoundedPlane rp;
+    // The spans of one face in one channel; `stride` is C, a constant 1 for gray so that its
+    // loops stay as they were.
+    const auto fill = [&](std::size_t f, std::size_t c, auto stride) {
+        if (exact_plane(m, f, int(c), &rp)) {
+            // p stepped from an exact start over each piece, truncated (kernel/raster.h).
+            for (const Span& s : spans) {
+                std::uint16_t* row = px + std::size_t(s.y) * W * stride + c;
+                rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
+                    for (std::int32_t x = first; x <= last; ++x, v += rp.dp) row[std::size_t(x) * stride] = std::uint16_t(std::int32_t(v));
+                });
+            }
+            return;
+        }
+        const SpanPlane& pl = p.planes[f * C + c];
+        const double dv = pl.step_x(l);
+        for (const Span& s : spans) {
+            std::uint16_t* row = px + std::size_t(s.y) * W * stride + c;
+            double v = pl.at(l, s.x_begin, s.y);
+            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[std::size_t(x) * stride] = to_sample(v, maxval);
+        }
+    };
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
         const auto& fc = m.faces[f];
         scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
-        if (exact_plane(m, f, &rp)) {
-            // p stepped from an exact start over each piece, truncated (kernel/raster.h).
-            for (const Span& s : spans) {
-                std::uint16_t* row = px + std::size_t(s.y) * W;
-                rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
-                    for (std::int32_t x = first; x <= last; ++x, v += rp.dp) row[x] = std::uint16_t(std::int32_t(v));
-                });
-            }
-            continue;
-        }
-        const SpanPlane& pl = p.planes[f];
-        const double dv = pl.step_x(l);
-        for (const Span& s : spans) {
-            std::uint16_t* row = px + std::size_t(s.y) * W;
-            double v = pl.at(l, s.x_begin, s.y);
-            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[x] = to_sample(v, maxval);
-        }
+        if (C == 1) fill(f, 0, std::integral_constant<std::size_t, 1>());
+        else
+            for (std::size_t c = 0; c < C; ++c) fill(f, c, C);
     }
-    fix_discontinuities(m, p, l, [&](std::int32_t i, std::int32_t j, double mean, double) {
-        px[std::size_t(j) * W + std::size_t(i)] = to_sample(mean, maxval);
+    fix_discontinuities(m, p, l, [&](std::int32_t i, std::int32_t j, int c, double mean, double) {
+        px[(std::size_t(j) * W + std::size_t(i)) * C + std::size_t(c)] = to_sample(mean, maxval);
     });
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
         const LatticePoint q = m.vertices[v];
-        if (q.x % 2 == 0 && q.y % 2 == 0) px[std::size_t(q.y / 2) * W + std::size_t(q.x / 2)] = to_sample(p.vertex_value[v], maxval);
+        if (q.x % 2 == 0 && q.y % 2 == 0)
+            for (std::size_t c = 0; c < C; ++c)
+                px[(std::size_t(q.y / 2) * W + std::size_t(q.x / 2)) * C + c] = to_sample(p.vertex_value[v * C + c], maxval);
     }
 }
 
@@ -342,15 +367,16 @@ void add_spans(const SpanPlane& pl, const Span* spans, std::size_t n, double* ac
     }
 }
 
-// One addition to a pixel's sum made after all faces' interior sub-samples.
+// One addition to a pixel's sum made after all faces' interior sub-samples; `sample` is the
+// pixel's index times C plus the channel (the index of its sample in the image).
 struct LateTerm {
-    std::size_t pixel;
+    std::size_t sample;
     double add;
 };
 
 // The clamped border sub-samples and the discontinuity corrections, in the order the sums take them.
 std::vector<LateTerm> late_terms(const Model& m, const Prepared& p) {
-    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height);
+    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height), C = std::size_t(m.channels);
     std::vector<LateTerm> late;
     std::vector<Span> spans;
     const std::int32_t mx = p.dom.max_x, my = p.dom.max_y;
@@ -364,22 +390,25 @@ std::vector<LateTerm> late_terms(const Model& m, const Prepared& p) {
             scan_triangle(cols, p.dom, a, b, c, &spans);
             for (const Span& s : spans)
                 for (std::int32_t i = s.x_begin; i <= s.x_end; ++i)
-                    late.push_back({std::size_t(s.y >> 2) * W + (i == 0 ? 0 : W - 1), 2.0 * p.planes[f].at(cols, i, s.y)});
+                    for (std::size_t k = 0; k < C; ++k)
+                        late.push_back({(std::size_t(s.y >> 2) * W + (i == 0 ? 0 : W - 1)) * C + k, 2.0 * p.planes[f * C + k].at(cols, i, s.y)});
         }
         if (touches_y(0) || touches_y(my)) {
             scan_triangle(rows, p.dom, a, b, c, &spans);
             for (const Span& s : spans)
                 for (std::int32_t i = s.x_begin; i <= s.x_end; ++i)
-                    late.push_back({(s.y == 0 ? 0 : H - 1) * W + std::size_t(i >> 2), 2.0 * p.planes[f].at(rows, i, s.y)});
+                    for (std::size_t k = 0; k < C; ++k)
+                        late.push_back({((s.y == 0 ? 0 : H - 1) * W + std::size_t(i >> 2)) * C + k, 2.0 * p.planes[f * C + k].at(rows, i, s.y)});
         }
     }
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
         const LatticePoint q = m.vertices[v];
         if ((q.x == 0 || q.x == mx) && (q.y == 0 || q.y == my))
-            late.push_back({(q.y == 0 ? 0 : H - 1) * W + (q.x == 0 ? 0 : W - 1), 4.0 * p.vertex_value[v]});
+            for (std::size_t c = 0; c < C; ++c)
+                late.push_back({((q.y == 0 ? 0 : H - 1) * W + (q.x == 0 ? 0 : W - 1)) * C + c, 4.0 * p.vertex_value[v * C + c]});
     }
-    fix_discontinuities(m, p, Lattice::supersample(), [&](std::int32_t i, std::int32_t j, double mean, double owner) {
-        late.push_back({std::size_t(j >> 2) * W + std::size_t(i >> 2), mean - owner});
+    fix_discontinuities(m, p, Lattice::supersample(), [&](std::int32_t i, std::int32_t j, int c, double mean, double owner) {
+        late.push_back({(std::size_t(j >> 2) * W + std::size_t(i >> 2)) * C + std::size_t(c), mean - owner});
     });
     return late;
 }
@@ -404,9 +433,10 @@ std::vector<std::uint32_t> group_by_band(std::size_t n, std::size_t nb, Bands ba
 
 // Supersampling band by band. Each pixel's sum takes exactly the additions, in exactly the order,
 // of a whole-image pass (faces in face order, then the late terms), so banding changes no bit.
+// The sums of channel c are plane c of the band's buffer; a face is scanned once for all of them.
 void supersampling(const Model& m, const Prepared& p, Image* out) {
-    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height);
-    const std::size_t band = std::max<std::size_t>(1, kBandBytes / (W * sizeof(double)));
+    const std::size_t W = std::size_t(m.width), H = std::size_t(m.height), C = std::size_t(m.channels);
+    const std::size_t band = std::max<std::size_t>(1, kBandBytes / (W * C * sizeof(double)));
     const std::size_t nb = (H + band - 1) / band;
     const Lattice l = Lattice::supersample();
     // The bands of the sub-sample rows j (pixel row j / 4) a face can own: fine y = phase + step * j
@@ -424,8 +454,9 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     const std::vector<std::uint32_t> band_faces = group_by_band(m.faces.size(), nb, face_bands, &face_first);
     const std::vector<LateTerm> late = late_terms(m, p);
     const std::vector<std::uint32_t> band_late =
-        group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn(late[i].pixel / W / band); }, &late_first);
-    std::vector<double> acc(band * W);
+        group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn((C == 1 ? late[i].sample : late[i].sample / C) / W / band); }, &late_first);
+    const std::size_t plane = band * W;
+    std::vector<double> acc(plane * C);
     std::vector<Span> spans;
     const double maxval = m.maxval;
     for (std::size_t b = 0; b < nb; ++b) {
@@ -436,21 +467,33 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
             // The band's sub-rows only: a face spanning several bands is scanned in pieces.
             scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans, std::int32_t(4 * row0),
                           std::int32_t(4 * (row0 + rows) - 1));
-            add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
+            if (C == 1) add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
+            else
+                for (std::size_t c = 0; c < C; ++c) add_spans(p.planes[f * C + c], spans.data(), spans.size(), acc.data() + c * plane, W, row0);
         }
-        for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) acc[late[band_late[k]].pixel - row0 * W] += late[band_late[k]].add;
-        std::uint16_t* dst = out->samples.data() + row0 * W;
-        for (std::size_t i = 0; i < rows * W; ++i) {
-            dst[i] = to_sample(acc[i] * (1.0 / 16.0), maxval);
-            acc[i] = 0.0;  // ready for the next band (no separate clearing pass)
+        for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) {
+            const LateTerm& t = late[band_late[k]];
+            if (C == 1) acc[t.sample - row0 * W] += t.add;
+            else acc[(t.sample % C) * plane + t.sample / C - row0 * W] += t.add;
         }
+        std::uint16_t* dst = out->samples.data() + row0 * W * C;
+        const auto finish = [&](std::size_t c, auto stride) {
+            double* sums = acc.data() + c * plane;
+            for (std::size_t i = 0; i < rows * W; ++i) {
+                dst[i * stride + c] = to_sample(sums[i] * (1.0 / 16.0), maxval);
+                sums[i] = 0.0;  // ready for the next band (no separate clearing pass)
+            }
+        };
+        if (C == 1) finish(0, std::integral_constant<std::size_t, 1>());  // a plain, vectorisable loop
+        else
+            for (std::size_t c = 0; c < C; ++c) finish(c, C);
     }
 }
 
 Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out) {
     Prepared p;
     if (Status s = prepare(m, false, given, &p); !s) return s;
-    Image im(m.width, m.height, m.maxval);
+    Image im(m.width, m.height, m.maxval, m.channels);
     if (supersample) supersampling(m, p, &im);
     else point_evaluation(m, p, &im);
     *out = std::move(im);

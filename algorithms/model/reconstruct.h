@@ -12,6 +12,11 @@
 // sub-samples outside Gamma = [0, W-1] x [0, H-1] moved onto its border (clamped). Each lattice
 // point is evaluated on the one face that owns it (kernel/raster.h), planes incrementally along
 // spans. Results are rounded to nearest (halves up) and clamped to [0, maxval].
+//
+// A model of C channels (Model::channels, 1 or 3) gives an image of C channels: every channel is
+// the function above of its own values, on the one triangulation and the one set of
+// discontinuities the channels share (an edge jumps when any channel jumps). Each face is scanned
+// once for all channels; a gray model's arithmetic is the same whatever C-handling is around it.
 #pragma once
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
@@ -27,7 +32,7 @@ namespace erd {
 // "not a triangulation of the image domain" (or naming the inconsistent field).
 Status check_triangulation(const Model& m);
 
-// Renders m into *out (W x H, m.maxval): supersample ? 4x4 supersampling : point evaluation.
+// Renders m into *out (W x H, m.channels, m.maxval): supersample ? 4x4 supersampling : point evaluation.
 // Runs the checks of check_triangulation first (all but the pixel count, which they imply), so
 // it never fails in any other way on any model.
 Status reconstruct(const Model& m, bool supersample, Image* out);

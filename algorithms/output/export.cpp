@@ -19,6 +19,10 @@ double default_zscale(const Model& m) {
 
 namespace {
 
+// BT.601 luma of one RGB value triple, the height of a colour model's surface (as erd's gray
+// conversion of colour images weighs the channels).
+double luma(const double* v) { return 0.299 * v[0] + 0.587 * v[1] + 0.114 * v[2]; }
+
 void append(std::string* s, const char* fmt, double a, double b, double c) {
     char buf[96];
     int n = std::snprintf(buf, sizeof buf, fmt, a, b, c);
@@ -97,20 +101,28 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     out->clear();
     if (m.values.empty() && !m.vertices.empty())
         return Status::bad_input("the mesh has no sample values (a triangulation file?): export the .model or .erd");
-    if (m.values.size() != m.vertices.size()) return Status::bad_input("model has " + std::to_string(m.vertices.size()) +
-                                                                       " vertices but " + std::to_string(m.values.size()) + " values");
+    if (m.channels != 1 && m.channels != 3) return Status::bad_input("model has " + std::to_string(m.channels) + " channels (1 or 3)");
+    const std::size_t C = std::size_t(m.channels);
+    if (m.values.size() != m.vertices.size() * C)
+        return Status::bad_input("model has " + std::to_string(m.vertices.size()) + " vertices but " + std::to_string(m.values.size()) +
+                                 " values" + (C > 1 ? " for " + std::to_string(C) + " channels" : ""));
     const bool erd = m.kind == ModelKind::erd;
     if (options.format == MeshFormat::stl && options.base > 0 && erd)
         return Status::bad_input("--base needs a basic model (.model): an ERD surface is open along its constrained edges");
-    if (erd && m.corner_values.size() != m.faces.size())
+    if (erd && m.corner_values.size() != m.faces.size() * C)
         return Status::bad_input("ERD model without a value for every face corner");
     ModelTopology topo;
     if (Status st = build_topology(m, &topo); !st) return st;
     const double zs = options.zscale > 0 ? options.zscale : default_zscale(m);
     const double top = double(m.height - 1);
 
-    // Positions of the written vertices and each face's three indices into them.
-    std::vector<std::array<double, 3>> pos;
+    // Positions of the written vertices (z from the luma of a colour model), their colours, and
+    // each face's three indices into them.
+    std::vector<std::array<double, 3>> pos, rgb;
+    const auto value = [&](const double* v) { return C == 1 ? v[0] : luma(v); };
+    const auto colour = [&](const double* v) {
+        if (C > 1) rgb.push_back({v[0], v[1], v[2]});
+    };
     std::vector<std::array<std::uint32_t, 3>> face_idx(m.faces.size());
     if (erd) {
         const CornerWedges cw = corner_wedges(m, topo);
@@ -119,21 +131,33 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
         std::vector<bool> placed(cw.count, false);
         for (std::size_t v = 0; v < m.vertices.size(); ++v) {
             double x = m.vertices[v].x / 2.0, y = top - m.vertices[v].y / 2.0;
-            if (cw.first[v] == cw.first[v + 1]) { pos.push_back({x, y, m.values[v] * zs}); continue; }
+            if (cw.first[v] == cw.first[v + 1]) {
+                pos.push_back({x, y, value(&m.values[v * C]) * zs});
+                colour(&m.values[v * C]);
+                continue;
+            }
             for (std::uint32_t w = cw.first[v]; w < cw.first[v + 1]; ++w) {
                 copy_of_wedge[w] = std::uint32_t(pos.size());
                 pos.push_back({x, y, 0});
+                colour(&m.values[v * C]);  // replaced by the wedge's colour below
             }
         }
         for (std::size_t f = 0; f < m.faces.size(); ++f)
             for (int i = 0; i < 3; ++i) {
                 std::uint32_t w = cw.label[3 * f + std::size_t(i)];
                 face_idx[f][std::size_t(i)] = copy_of_wedge[w];
-                if (!placed[w]) { pos[copy_of_wedge[w]][2] = m.corner_values[f][std::size_t(i)] * zs; placed[w] = true; }
+                if (placed[w]) continue;
+                double z[3];
+                for (std::size_t c = 0; c < C; ++c) z[c] = m.corner_values[f * C + c][std::size_t(i)];
+                pos[copy_of_wedge[w]][2] = value(z) * zs;
+                if (C > 1) rgb[copy_of_wedge[w]] = {z[0], z[1], z[2]};
+                placed[w] = true;
             }
     } else {
-        for (std::size_t v = 0; v < m.vertices.size(); ++v)
-            pos.push_back({m.vertices[v].x / 2.0, top - m.vertices[v].y / 2.0, m.values[v] * zs});
+        for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+            pos.push_back({m.vertices[v].x / 2.0, top - m.vertices[v].y / 2.0, value(&m.values[v * C]) * zs});
+            colour(&m.values[v * C]);
+        }
         face_idx = m.faces;
     }
 
@@ -141,7 +165,8 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     // writing corners 0, 2, 1 restores counter-clockwise (normals up).
     // A hard-edged model says so (its pixels are the surface at their centres, not 4x4 means);
     // soft-edged and basic exports stay as they were.
-    const std::string kind = erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "";
+    const std::string kind = std::string(erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "") +
+                             (C > 1 ? "; colour: z from BT.601 luma, the vertex colours are the RGB values" : "");
     std::size_t facets = 0;
     if (options.format == MeshFormat::stl) {
         for (auto& t : face_idx) std::swap(t[1], t[2]);
@@ -149,14 +174,29 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     } else if (options.format == MeshFormat::obj) {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
-        for (const auto& p : pos) append(out, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
+        if (C == 1)
+            for (const auto& p : pos) append(out, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
+        else
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                append(out, "v %.9g %.9g %.9g", pos[i][0], pos[i][1], pos[i][2]);
+                const auto unit = [&](double v) { return std::min(1.0, std::max(0.0, v / double(m.maxval))); };
+                append(out, " %.6g %.6g %.6g\n", unit(rgb[i][0]), unit(rgb[i][1]), unit(rgb[i][2]));
+            }
         for (const auto& t : face_idx) append_face(out, "f %u %u %u\n", t[0] + 1, t[2] + 1, t[1] + 1);
     } else {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         out->append("element vertex " + std::to_string(pos.size()) + "\nproperty double x\nproperty double y\nproperty double z\n");
+        if (C > 1) out->append("property uchar red\nproperty uchar green\nproperty uchar blue\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
-        for (const auto& p : pos) append(out, "%.9g %.9g %.9g\n", p[0], p[1], p[2]);
+        if (C == 1)
+            for (const auto& p : pos) append(out, "%.9g %.9g %.9g\n", p[0], p[1], p[2]);
+        else
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                append(out, "%.9g %.9g %.9g", pos[i][0], pos[i][1], pos[i][2]);
+                const auto byte = [&](double v) { return std::min(255.0, std::max(0.0, std::floor(v * 255.0 / double(m.maxval) + 0.5))); };
+                append(out, " %.0f %.0f %.0f\n", byte(rgb[i][0]), byte(rgb[i][1]), byte(rgb[i][2]));
+            }
         for (const auto& t : face_idx) append_face(out, "3 %u %u %u\n", t[0], t[2], t[1]);
     }
     if (counts) {

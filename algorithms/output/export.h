@@ -9,6 +9,12 @@
 // copy (a vertex with k wedges is written k times, at the same x and y, with the wedge's value) and
 // every face uses the copies of its corners' wedges: the discontinuities stay open as cracks.
 //
+// A colour model (3 channels) is one surface with a colour per vertex copy: z is the BT.601 luma
+// 0.299 R + 0.587 G + 0.114 B of the copy's values times zscale; PLY adds uchar red, green, blue
+// properties (value * 255 / maxval, rounded, clamped), OBJ writes "v x y z r g b" with r g b in
+// [0, 1] (value / maxval, clamped) as MeshLab reads it; STL has no colour and keeps the luma
+// surface alone.
+//
 // Binary STL (as fogleman/hmm writes for heightmaps): an 80-byte header, the facet count, then per
 // facet the unit normal and three corners as little-endian floats. With base H > 0 (basic models
 // only: an ERD surface is open along its constrained edges) the surface is lifted by H and closed

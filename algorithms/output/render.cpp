@@ -123,11 +123,16 @@ Status resolve_render(const Model& m, const RenderOptions& options, RenderOption
     return Status::success();
 }
 
-RgbImage gray_to_rgb(const Image& im) {
+RgbImage image_to_rgb(const Image& im) {
     RgbImage out(im.width, im.height, 0);
     double k = im.maxval > 0 ? 255.0 / im.maxval : 0;
+    const auto byte = [&](std::uint16_t v) { return std::uint8_t(std::lround(std::min(255.0, v * k))); };
+    if (im.channels == 3) {
+        for (std::size_t i = 0; i < out.pixels.size() && i < im.samples.size(); ++i) out.pixels[i] = byte(im.samples[i]);
+        return out;
+    }
     for (std::size_t i = 0; i < im.samples.size(); ++i) {
-        auto g = std::uint8_t(std::lround(std::min(255.0, im.samples[i] * k)));
+        auto g = byte(im.samples[i]);
         out.pixels[3 * i] = out.pixels[3 * i + 1] = out.pixels[3 * i + 2] = g;
     }
     return out;
@@ -137,11 +142,19 @@ Status error_map(const Image& orig, const Image& approx, double full, RgbImage* 
     if (orig.width != approx.width || orig.height != approx.height)
         return Status::bad_input("original is " + std::to_string(orig.width) + "x" + std::to_string(orig.height) +
                                  " but the model is " + std::to_string(approx.width) + "x" + std::to_string(approx.height));
+    if (orig.channels != approx.channels) {
+        const auto kind = [](const Image& im) { return im.channels == 1 ? std::string("gray") : "colour (" + std::to_string(im.channels) + " channels)"; };
+        return Status::bad_input("original is " + kind(orig) + " but the model is " + kind(approx));
+    }
     if (!(full > 0)) full = std::max(1.0, orig.maxval / 8.0);
     *out = RgbImage(orig.width, orig.height, 0);
     const int stops = int(sizeof kRamp / sizeof kRamp[0]) - 1;
-    for (std::size_t i = 0; i < orig.samples.size(); ++i) {
-        double e = std::fabs(double(orig.samples[i]) - double(approx.samples[i]));
+    const std::size_t C = std::size_t(orig.channels);
+    for (std::size_t i = 0; i < orig.pixels(); ++i) {
+        // A colour pixel's error is that of its worst channel.
+        double e = 0.0;
+        for (std::size_t c = 0; c < C; ++c)
+            e = std::max(e, std::fabs(double(orig.samples[i * C + c]) - double(approx.samples[i * C + c])));
         double t = std::min(1.0, e / full) * stops;
         int k = std::min(stops - 1, int(t));
         double u = t - k;

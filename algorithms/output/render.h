@@ -50,12 +50,13 @@ double auto_scale(int width, int height);
 // kMaxRenderSide / kMaxRenderPixels) and fills the effective crop and scale into *resolved.
 Status resolve_render(const Model& m, const RenderOptions& options, RenderOptions* resolved);
 
-// Gray samples scaled to 0..255 by maxval, as RGB.
-RgbImage gray_to_rgb(const Image& im);
+// Samples scaled to 0..255 by maxval, as RGB: a colour image channel by channel, a gray one
+// with its sample in all three.
+RgbImage image_to_rgb(const Image& im);
 
 // Absolute error |orig - approx| as a colour ramp (black, purple, red, orange, yellow, white):
-// error 0 is black and `full` (<= 0: maxval / 8) or more is white. Fails (Code::input) when the
-// sizes differ.
+// error 0 is black and `full` (<= 0: maxval / 8) or more is white; a colour pixel shows its
+// largest channel error. Fails (Code::input) when the sizes or the channel counts differ.
 Status error_map(const Image& orig, const Image& approx, double full, RgbImage* out);
 
 // Draws the model onto a raster. `background` (may be null: white) is in image pixels (W x H).

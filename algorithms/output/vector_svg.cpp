@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <unordered_map>
 
+#include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
 #include "algorithms/model/reconstruct.h"
 
@@ -111,6 +112,7 @@ std::string plane_paint(const Pt p[3], const double z[3], std::unordered_map<std
 }  // namespace
 
 Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string* out) {
+    if (Status st = require_gray(m, "the vector picture"); !st) return st;
     if (Status st = check_triangulation(m); !st) return st;
     if (!(o.scale > 0) || !std::isfinite(o.scale)) return Status::bad_input("scale must be a positive finite number");
     int cx = o.crop_x, cy = o.crop_y, cw = o.crop_w, ch = o.crop_h;

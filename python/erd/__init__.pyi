@@ -30,6 +30,9 @@ class Mesh:
     @property
     def maxval(self) -> int: ...
     @property
+    def channels(self) -> int:
+        """1 (gray) or 3 (RGB)."""
+    @property
     def stats(self) -> Dict[str, object]:
         """The `erd generate --stats` fields that describe the mesh."""
     @property
@@ -40,15 +43,15 @@ class Mesh:
         """F x 3 vertex indices."""
     @property
     def values(self) -> npt.NDArray[np.float64]:
-        """N: value per vertex (ERD: mean of its wedge values)."""
+        """N (N x 3 for colour): value per vertex (ERD: mean of its wedge values)."""
     @property
     def corner_values(self) -> npt.NDArray[np.float64]:
-        """F x 3: value of each face at each corner (the wedge values)."""
+        """F x 3 (F x 3 x 3 for colour): value of each face at each corner (the wedge values)."""
     @property
     def constrained_edges(self) -> npt.NDArray[np.int64]:
         """E x 2 vertex pairs."""
     def reconstruct(self, supersample: Optional[bool] = None) -> ImageArray:
-        """H x W image; None: 4x4 supersampling for ERD, point evaluation for basic (as `erd reconstruct`)."""
+        """H x W image (H x W x 3 for colour); None: 4x4 supersampling for ERD, point evaluation for basic (as `erd reconstruct`)."""
     def save(self, path: PathLike) -> None:
         """Writes the .model/.erd bytes `erd generate -o` writes."""
     def __len__(self) -> int: ...
@@ -80,6 +83,7 @@ def generate(
     simple: int = ...,
     seed: int = ...,
     thesis: bool = ...,
+    edges: str = ...,
     wedge_fit: int = ...,
     alpha_min: float = ...,
     alpha_max: float = ...,

@@ -36,13 +36,14 @@ ImageArg image_arg(pyb::handle obj, const char* what, std::optional<long long> m
         throw pyb::value_error(std::string(what) + " has dtype " + std::string(pyb::str(pyb::handle(dt))) +
                                "; erd takes uint8 or uint16 samples (convert with .astype(numpy.uint8) "
                                "after scaling to 0..255)");
-    // Colour comes later as H x W x 3 (issue 17); the shape check already tells the cases apart.
+    // H x W x 3 is colour (R G B per pixel, interleaved as the library takes it); H x W x 1 gray.
     const bool gray3 = a.ndim() == 3 && a.shape(2) == 1;
-    if (a.ndim() == 3 && (a.shape(2) == 3 || a.shape(2) == 4))
+    const bool rgb = a.ndim() == 3 && a.shape(2) == 3;
+    if (a.ndim() == 3 && a.shape(2) == 4)
         throw pyb::value_error(std::string(what) + " has shape " + shape_text(a) +
-                               ": colour images are not supported yet; pass a 2-D gray array (H x W)");
-    if (a.ndim() != 2 && !gray3)
-        throw pyb::value_error(std::string(what) + " must be a 2-D array (H x W), got shape " + shape_text(a));
+                               ": RGBA is not taken; drop the alpha channel (image[..., :3])");
+    if (a.ndim() != 2 && !gray3 && !rgb)
+        throw pyb::value_error(std::string(what) + " must be a 2-D array (H x W) or H x W x 3 (RGB), got shape " + shape_text(a));
     if (a.shape(0) == 0 || a.shape(1) == 0) throw pyb::value_error(std::string(what) + " is empty: shape " + shape_text(a));
     if (a.shape(0) > kMaxImageSide || a.shape(1) > kMaxImageSide)
         throw pyb::value_error(std::string(what) + " of shape " + shape_text(a) + " has a side above " +
@@ -53,7 +54,9 @@ ImageArg image_arg(pyb::handle obj, const char* what, std::optional<long long> m
     ImageArg arg;
     const pyb::ssize_t item = pyb::ssize_t(sizeof(std::uint16_t));
     const bool native16 = dt.itemsize() == 2 && dt.attr("isnative").cast<bool>();
-    const bool rows_ok = a.strides(1) == item && a.strides(0) >= a.shape(1) * item && a.strides(0) % item == 0;
+    const pyb::ssize_t C = rgb ? 3 : 1;
+    const bool rows_ok = a.strides(1) == C * item && (!rgb || a.strides(2) == item) && a.strides(0) >= a.shape(1) * C * item &&
+                         a.strides(0) % item == 0;
     if (native16 && rows_ok) {
         arg.owner = a;  // the library reads the caller's samples in place and copies them once
     } else {
@@ -67,18 +70,21 @@ ImageArg image_arg(pyb::handle obj, const char* what, std::optional<long long> m
     arg.view.maxval = std::uint32_t(mv);
     arg.view.samples = static_cast<const std::uint16_t*>(arg.owner.data());
     arg.view.stride = std::size_t(arg.owner.strides(0) / item);
+    arg.view.channels = int(C);
     return arg;
 }
 
 pyb::array image_array(const Image& image) {
-    const std::size_t h = std::size_t(image.height), w = std::size_t(image.width);
+    const std::size_t h = std::size_t(image.height), w = std::size_t(image.width), c = std::size_t(image.channels);
+    std::vector<std::size_t> shape = {h, w};
+    if (c > 1) shape.push_back(c);
     if (image.maxval <= 255) {
-        pyb::array_t<std::uint8_t> out({h, w});
+        pyb::array_t<std::uint8_t> out(shape);
         std::uint8_t* dst = out.mutable_data();
         for (std::size_t i = 0; i < image.samples.size(); ++i) dst[i] = std::uint8_t(image.samples[i]);
         return out;
     }
-    pyb::array_t<std::uint16_t> out({h, w});
+    pyb::array_t<std::uint16_t> out(shape);
     std::memcpy(out.mutable_data(), image.samples.data(), image.samples.size() * sizeof(std::uint16_t));
     return out;
 }

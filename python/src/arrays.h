@@ -23,15 +23,15 @@ struct ImageArg {
 };
 
 // Checks `obj` as an image and makes its view. `what` names the argument in messages ("image").
-// Accepted: numpy arrays of dtype uint8 or uint16, shape H x W (or H x W x 1), any strides.
-// Refused with ValueError: other dtypes, other shapes (H x W x 3 is named: colour is not in the
-// library yet), empty arrays. maxval: given, else 255 for uint8 and 65535 for uint16.
+// Accepted: numpy arrays of dtype uint8 or uint16, shape H x W (or H x W x 1: gray) or H x W x 3
+// (RGB: a colour view), any strides. Refused with ValueError: other dtypes, other shapes (H x W x 4
+// is named: drop the alpha), empty arrays. maxval: given, else 255 for uint8 and 65535 for uint16.
 ImageArg image_arg(pyb::handle obj, const char* what, std::optional<long long> maxval);
 
 // The default maxval of an image argument's dtype (255 or 65535), without other checks.
 std::uint32_t dtype_maxval(pyb::handle obj);
 
-// An erd::Image as a new H x W array: uint8 when maxval <= 255, else uint16.
+// An erd::Image as a new H x W array (H x W x 3 for colour): uint8 when maxval <= 255, else uint16.
 pyb::array image_array(const Image& image);
 
 // A rows x cols array of T filled from `fill(i, j)`.

@@ -41,7 +41,8 @@ pyb::dict mesh_stats(const Mesh& mesh) {
     pyb::dict d;
     d["method"] = mesh.method.empty() ? none : pyb::str(mesh.method);
     d["model"] = s.erd ? "erd" : "basic";
-    d["image"] = pyb::dict(pyb::arg("width") = s.width, pyb::arg("height") = s.height, pyb::arg("maxval") = s.maxval);
+    d["image"] = pyb::dict(pyb::arg("width") = s.width, pyb::arg("height") = s.height, pyb::arg("maxval") = s.maxval,
+                            pyb::arg("channels") = s.channels);
     d["points"] = pyb::dict(pyb::arg("requested") = s.requested, pyb::arg("achieved") = s.achieved);
     d["vertices"] = s.vertices;
     d["faces"] = s.faces;
@@ -124,22 +125,29 @@ void bind_mesh(pyb::module_& m) {
         .def_property_readonly("faces", [](const Mesh& s) {
             return table<std::int64_t>(s.model.faces.size(), 3, [&](std::size_t i, std::size_t j) { return std::int64_t(s.model.faces[i][j]); });
         }, "F x 3 int64: vertex indices of each triangle, counter-clockwise with y up (clockwise on screen).")
+        .def_property_readonly("channels", [](const Mesh& s) { return s.model.channels; }, "1 (gray) or 3 (RGB).")
         .def_property_readonly("values", [](const Mesh& s) {
-            return table<double>(s.model.values.size(), 1, [&](std::size_t i, std::size_t) { return s.model.values[i]; }).attr("reshape")(-1);
-        }, "N float64: the value at each vertex (ERD model: the mean of its wedge values).")
+            const std::size_t C = std::size_t(s.model.channels);
+            pyb::object t = table<double>(s.model.vertices.size(), C, [&](std::size_t i, std::size_t c) { return s.model.values[i * C + c]; });
+            return C == 1 ? t.attr("reshape")(-1) : t;
+        }, "N float64 (N x 3 for colour): the value at each vertex (ERD model: the mean of its wedge values).")
         .def_property_readonly("corner_values", [](const Mesh& s) {
             const bool erd = s.model.kind == ModelKind::erd;
-            return table<double>(s.model.faces.size(), 3, [&](std::size_t i, std::size_t j) {
-                return erd ? s.model.corner_values[i][j] : s.model.values[s.model.faces[i][j]];
+            const std::size_t C = std::size_t(s.model.channels);
+            pyb::object t = table<double>(s.model.faces.size() * 3, C, [&](std::size_t r, std::size_t c) {
+                const std::size_t i = r / 3, j = r % 3;
+                return erd ? s.model.corner_values[i * C + c][j] : s.model.values[std::size_t(s.model.faces[i][j]) * C + c];
             });
-        }, "F x 3 float64: the value of face i at its corner j (ERD model: the wedge value; basic: the vertex value).")
+            return C == 1 ? t.attr("reshape")(-1, 3) : t.attr("reshape")(-1, 3, 3);
+        }, "F x 3 float64 (F x 3 x 3 for colour: face, corner, channel): the value of face i at its corner j\n"
+           "(ERD model: the wedge value; basic: the vertex value).")
         .def_property_readonly("constrained_edges", [](const Mesh& s) {
             return table<std::int64_t>(s.model.constraints.size(), 2, [&](std::size_t i, std::size_t j) { return std::int64_t(s.model.constraints[i][j]); });
         }, "E x 2 int64: vertex pairs (i < j) of the constrained edges (empty for a basic model). A mesh\n"
            "loaded from an .erd has those across which the corner values jump (what the file records).")
         .def("reconstruct", &reconstruct, pyb::arg("supersample") = pyb::none(),
              "reconstruct(supersample=None) -> numpy.ndarray\n\n"
-             "The image the mesh stands for, H x W, uint8 when maxval <= 255 else uint16. supersample=True\n"
+             "The image the mesh stands for, H x W (H x W x 3 for colour), uint8 when maxval <= 255 else uint16. supersample=True\n"
              "takes the mean of 4x4 sub-samples per pixel, False evaluates at the pixel centres; None does\n"
              "what `erd reconstruct` does (4x4 for an ERD model, point evaluation for a basic one).")
         .def("save", &save, pyb::arg("path"),

@@ -105,6 +105,7 @@ struct Edges {
 Edges edges(pyb::handle image, double beta, double ratio, double tolerance, int min_length, bool length_after,
             bool plain_canny, std::optional<long long> maxval) {
     const ImageArg img = image_arg(image, "image", maxval);
+    if (img.view.channels != 1) throw pyb::value_error("erd.edges takes a gray image (H x W); pass one channel or the luma");
     EdgePolylineParams params;
     params.canny.beta = beta;
     params.canny.r = ratio;
@@ -168,7 +169,7 @@ PYBIND11_MODULE(_erd, m) {
     m.def("generate", &generate, pyb::arg("image"), pyb::arg("method") = "erdgpi", pyb::arg("density") = 1.0,
           pyb::arg("points") = pyb::none(),
           ("generate(image, method='erdgpi', density=1.0, points=None, **options) -> Mesh\n\n"
-           "Meshes a 2-D uint8 or uint16 array (H x W) as `erd generate` does. method: 'ed', 'gpi' (basic\n"
+           "Meshes a uint8 or uint16 array, H x W (gray) or H x W x 3 (RGB: a colour mesh), as `erd generate` does. method: 'ed', 'gpi' (basic\n"
            "model), 'erded', 'erdgpi' (ERD model). density: vertices as a percentage of the pixels; points:\n"
            "an exact vertex count instead (wins over density). options: the `erd generate` flags by their long\n"
            "names with '_' for '-' (beta=0.05, thesis=True, max_error=2.0, ...), plus maxval= (default 255 for\n"
@@ -182,7 +183,7 @@ PYBIND11_MODULE(_erd, m) {
     m.def("psnr", &psnr, pyb::arg("a"), pyb::arg("b"), pyb::arg("maxval") = pyb::none(),
           "psnr(a, b, maxval=None) -> float\n\nPSNR of approximation b against original a in dB, as `erd psnr`: peak 2^p - 1 for\n"
           "p the bits of maxval (default 255 for uint8 a, 65535 for uint16); inf when equal. Both arrays\n"
-          "2-D uint8/uint16 of one shape.");
+          "uint8/uint16 of one shape (H x W, or H x W x 3: the MSE over all channels).");
     pyb::class_<Edges>(m, "Edges", "What erd.edges finds: the half-pixel edge map and the simplified polylines.")
         .def_readonly("map", &Edges::map, "(2H-1) x (2W-1) bool: True at half-pixel lattice points on an edge.")
         .def_readonly("polylines", &Edges::polylines, "List of K x 2 float64 arrays of (x, y) in pixel units.")

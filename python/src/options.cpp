@@ -83,6 +83,7 @@ void unknown(const std::vector<std::string>& names) {
     std::vector<std::string> known;
     for (const Spec& s : specs()) known.push_back(s.name);
     known.push_back("thesis");
+    known.push_back("edges");
     pyb::object close = pyb::module_::import("difflib").attr("get_close_matches");
     std::string msg = "generate() got unexpected keyword argument" + std::string(names.size() > 1 ? "s " : " ");
     for (std::size_t i = 0; i < names.size(); ++i) {
@@ -96,7 +97,7 @@ void unknown(const std::vector<std::string>& names) {
 }  // namespace
 
 std::string option_names() {
-    std::vector<std::string> names = {"thesis"};
+    std::vector<std::string> names = {"thesis", "edges"};
     for (const Spec& s : specs()) names.push_back(s.name);
     std::sort(names.begin(), names.end());
     std::string out;
@@ -109,7 +110,7 @@ GenerateArgs generate_args(double density, pyb::handle points, const pyb::kwargs
     std::vector<std::string> bad;
     for (auto item : kwargs) {
         const std::string name = item.first.cast<std::string>();
-        bool found = name == "thesis";
+        bool found = name == "thesis" || name == "edges";
         for (const Spec& s : specs()) found = found || name == s.name;
         if (!found) bad.push_back(name);
     }
@@ -130,6 +131,16 @@ GenerateArgs generate_args(double density, pyb::handle points, const pyb::kwargs
         pyb::handle t = kwargs["thesis"];
         if (!pyb::isinstance<pyb::bool_>(t)) throw pyb::type_error("thesis must be True or False");
         if (t.cast<bool>()) set_thesis_preset(&g);
+    }
+    // `erd generate --edges KIND`; like the other explicit keywords it beats thesis=True's soft.
+    if (kwargs.contains("edges")) {
+        pyb::handle e = kwargs["edges"];
+        if (!pyb::isinstance<pyb::str>(e)) throw pyb::type_error("edges must be 'hard', 'soft' or 'auto'");
+        const std::string k = e.cast<std::string>();
+        if (k == "hard") g.edges = EdgeChoice::hard;
+        else if (k == "soft") g.edges = EdgeChoice::soft;
+        else if (k == "auto") g.edges = EdgeChoice::automatic;
+        else throw pyb::value_error("edges: '" + k + "' is not 'hard', 'soft' or 'auto'");
     }
     for (const Spec& s : specs()) {
         if (!kwargs.contains(s.name)) continue;

@@ -22,10 +22,10 @@ def test_wrong_dtype_is_refused_by_name(small, dtype):
 
 
 @pytest.mark.parametrize("shape,pattern", [
-    ((100,), r"2-D array \(H x W\), got shape \(100,\)"),
-    ((2, 3, 4, 5), r"2-D array \(H x W\), got shape \(2, 3, 4, 5\)"),
-    ((10, 10, 3), "colour images are not supported yet"),
-    ((10, 10, 4), "colour images are not supported yet"),
+    ((100,), r"2-D array \(H x W\) or H x W x 3 \(RGB\), got shape \(100,\)"),
+    ((2, 3, 4, 5), r"2-D array \(H x W\) or H x W x 3 \(RGB\), got shape \(2, 3, 4, 5\)"),
+    ((10, 10, 2), r"or H x W x 3 \(RGB\), got shape \(10, 10, 2\)"),
+    ((10, 10, 4), r"RGBA is not taken; drop the alpha channel \(image\[..., :3\]\)"),
     ((0, 10), r"empty: shape \(0, 10\)"),
     ((10, 0), r"empty: shape \(10, 0\)"),
 ])

@@ -73,7 +73,7 @@ def test_stop_rules_and_thesis_change_the_mesh(small):
 def test_stats_are_the_cli_fields(small):
     s = erd.generate(small, "erdgpi", density=2.0).stats
     assert s["method"] == "erdgpi" and s["model"] == "erd"
-    assert s["image"] == {"width": 128, "height": 128, "maxval": 255}
+    assert s["image"] == {"width": 128, "height": 128, "maxval": 255, "channels": 1}
     assert s["points"]["requested"] == s["points"]["achieved"] == s["vertices"]
     assert 0 < s["constrained_edges"] and 0 < s["constrained_vertices"] < s["vertices"]
     assert set(s["parameters"]) == {"beta", "r", "l", "epsilon", "simple", "edges"} and s["stop"] == "target"
