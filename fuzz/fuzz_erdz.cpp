@@ -3,8 +3,8 @@
 //
 // Checks beyond "no crash": a refusal is one non-empty line with Code::input; an accepted model
 // keeps the decoder's promises (indices in range, positive faces, the vertices sorted by (y, x)
-// inside the image, values and corner values per channel); reconstruct() accepts a gray one and
-// returns a W x H image; and it survives encode -> decode unchanged (same vertices and values, the same
+// inside the image, values and corner values per channel); reconstruct() accepts it and returns
+// a W x H image of its channels; and it survives encode -> decode unchanged (same vertices and values, the same
 // faces with the same corner values). Images above 2^16 pixels are refused by the limit.
 // Replay without libFuzzer: fuzz/replay.cpp.
 #include <algorithm>
@@ -78,11 +78,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     check_model(m);
-    if (m.channels == 1) {  // colour reconstruction is not on main yet
-        erd::Image im;
-        if (!erd::reconstruct(m, erd::supersampled(m), &im).ok()) std::abort();
-        if (im.width != m.width || im.height != m.height) std::abort();
-    }
+    erd::Image im;
+    if (!erd::reconstruct(m, erd::supersampled(m), &im).ok()) std::abort();
+    if (im.width != m.width || im.height != m.height || im.channels != m.channels) std::abort();
     erd::ErdzOptions o;
     o.step = info.step;
     o.method = info.method;
