@@ -111,6 +111,13 @@ std::string Args::str(const char* long_name, const std::string& fallback) const 
     return g ? g->value : fallback;
 }
 
+std::vector<std::string> Args::all(const char* long_name) const {
+    std::vector<std::string> out;
+    for (const auto& g : given_)
+        if (g.name == long_name) out.push_back(g.value);
+    return out;
+}
+
 // "[lo, hi]" for a message, reals in their shortest form.
 static std::string range_text(double lo, double hi, bool lo_open = false) {
     char buf[96];

@@ -24,6 +24,8 @@ public:
 
     bool has(const char* long_name) const;
     std::string str(const char* long_name, const std::string& fallback = "") const;
+    // Every value of a repeated option, in the order given (str() gives the last).
+    std::vector<std::string> all(const char* long_name) const;
     // Typed getters: a value that does not parse completely, or lies outside [lo, hi], sets *st.
     long long integer(const char* long_name, long long fallback, long long lo, long long hi, Status* st) const;
     // With lo_open the range is (lo, hi]: lo itself is refused.

@@ -10,6 +10,7 @@
 #include "algorithms/model/model_io.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/outputs.h"
@@ -78,6 +79,7 @@ const CommandLine kEdges = {
         {'l', "min-length", "N", "drop polylines traced with fewer than N points (default 5)"},
         {0, "length-after", nullptr, "count -l on the simplified polyline instead"},
         {0, "plain-canny", nullptr, "plain Canny (no junction repair of Ding and Goshtasby)"},
+        kProgressOption,
     },
     "no warnings or statistics", 1, 1, "expected one IMAGE",
 };
@@ -111,7 +113,12 @@ static int run_edges(const Args& args, const Reporter& rep) {
     rep.warn(warning);
 
     EdgePolylineResult chain;
-    if (!(st = edge_polylines(im, params, &chain))) return rep.fail(st);
+    {
+        Progress progress = progress_for("edges", args, rep);
+        params.progress = progress.hook();
+        st = edge_polylines(im, params, &chain);
+    }
+    if (!st) return rep.fail(st);
     const Grid<std::uint8_t>& edges = chain.edges;
     const CannyStats& stats = chain.stats;
     const std::vector<Polyline>& lines = chain.polylines;

@@ -6,6 +6,7 @@
 #include "algorithms/output/export.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
 #include "cli/fileio.h"
 #include "cli/model_file.h"
 #include "cli/output_format.h"
@@ -23,6 +24,7 @@ const CommandLine kExport = {
         {0, "format", "obj|ply|stl", "output format when the file name does not say (default: from the name)"},
         {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
         {'b', "base", "H", "STL: a solid with walls and a bottom, the surface lifted by H (basic models)"},
+        kProgressOption,
     },
     "no warnings", 1, 1, "expected one MODEL",
 };
@@ -54,7 +56,10 @@ static int run_export(const Args& args, const Reporter& rep) {
     if (!st) return rep.fail(st);
     rep.warn(warning);
     std::string text;
+    Progress progress = progress_for("export", args, rep);
+    opt.progress = progress.hook();
     st = export_mesh(m, opt, &text);
+    progress.finish();
     if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
     st = write_file_atomic(out, text);
     if (!st) return rep.fail(st);

@@ -19,6 +19,7 @@
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
 #include "api/erd.h"
+#include "cli/batch.h"
 #include "cli/command_line.h"
 #include "cli/codec_output.h"
 #include "cli/commands.h"
@@ -39,13 +40,16 @@ std::string methods_help();
 
 const CommandLine kGenerate = {
     "generate",
-    "erd generate --method NAME [-i IMAGE] [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
+    "erd generate --method NAME [-i IMAGE]... [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
     "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] "
-    "[--step Q | --bpp B | --step-psnr P] [-q]",
-    "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.",
+    "[-j JOBS] [--summary FILE] [--step Q | --bpp B | --step-psnr P] [-q]",
+    "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.\n"
+    "Many images: several -i or a folder, and outputs named by a pattern with {name} (the input's\n"
+    "name without its extension): erd generate -m erdgpi -i photos/ -o out/{name}.erd -j 4 --summary s.csv.\n"
+    "Each image is meshed on its own; one that fails is reported and the others go on (exit 1).",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
-        {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin)"},
+        {'i', "input", "FILE", "input image, PGM or PNG (default and - : stdin); repeat it or name a folder for many"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
         {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi), or .erdz (binary, either); - = stdout"},
@@ -75,7 +79,9 @@ const CommandLine kGenerate = {
         {0, "max-memory", "SIZE", "refuse a job whose estimated peak memory is above SIZE (e.g. 2G; default: the memory available now; 0 = no cap)"},
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
-        {0, "progress", nullptr, "show progress even when stderr is not a terminal"},
+        kProgressOption,
+        {'j', "jobs", "N", "many images: N at a time (default 1; 0 = one per processor)"},
+        {0, "summary", "FILE", "many images: a table of file, method, points, PSNR, seconds, status (.csv, or .json)"},
         {0, "step", "Q", ".erdz: value quantisation step (default 1)"},
         {0, "bpp", "B", ".erdz: the finest step whose file has at most B bits per pixel"},
         {0, "step-psnr", "P", ".erdz: the coarsest step whose decoded model reconstructs at P dB or more"},
@@ -178,17 +184,16 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
 
 }  // namespace
 
-static int run_generate(const Args& a, const Reporter& rep) {
-    const auto t_start = std::chrono::steady_clock::now();
-    if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")");
-    const MethodInfo* method = find_method(a.str("method"));
-    if (!method) return rep.usage(unknown_method(a.str("method")));
-    // Without -i the image comes on stdin, as for reconstruct; not from a terminal, where the
-    // user would wait for nothing.
-    if (!a.has("input") && ::isatty(STDIN_FILENO))
-        return rep.usage("-i IMAGE is required (or an image on standard input)");
-    if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)");
+// The output files of one image.
+struct Paths {
+    std::string in, out, tri, poly, stats;
+};
 
+// One image: read, mesh, write. In a batch (record not null) progress is the batch's, and the
+// PSNR is measured for the summary when one is written.
+static int generate_one(const Args& a, const Reporter& rep, const Paths& p, BatchRecord* record) {
+    const auto t_start = std::chrono::steady_clock::now();
+    const MethodInfo* method = find_method(a.str("method"));
     GenerateOptions opt;
     int exit_mode = 0;
     Status st;
@@ -201,11 +206,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
     const bool have_cap = a.has("max-memory");
     if (have_cap && !(st = parse_memory_size(a.str("max-memory"), &max_memory))) return rep.usage(st.message);
 
-    const std::string in = a.str("input", "-"), out = a.str("output");
-    const std::string tri = a.str("triangulation"), poly = a.str("polylines"), stats_out = a.str("stats");
-    if (a.has("triangulation") && tri.empty()) return rep.usage("empty -t file name");
-    if (a.has("polylines") && poly.empty()) return rep.usage("empty -p file name");
-    if (a.has("stats") && stats_out.empty()) return rep.usage("empty --stats file name");
+    const std::string &in = p.in, &out = p.out, &tri = p.tri, &poly = p.poly, &stats_out = p.stats;
     std::vector<std::string> outs = {out};
     if (!tri.empty()) outs.push_back(tri);
     if (!poly.empty()) outs.push_back(poly);
@@ -244,7 +245,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
         if (!st) return rep.fail(st);
     }
 
-    Progress progress("generate", Progress::should_show(a.has("progress"), rep.quiet()));
+    Progress progress("generate", !record && Progress::should_show(a.has("progress"), rep.quiet()), a.has("progress"));
     opt.progress = progress.hook();
     GenerateResult res;
     st = method->run(image, opt, &res);
@@ -295,7 +296,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
     // hard-edged one.
     bool have_psnr = false;
     double db = 0.0, psnr_seconds = 0.0;
-    if (a.has("psnr-report")) {
+    if (a.has("psnr-report") || (record && a.has("summary"))) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
         st = reconstruct(res.model, supersampled(res.model), &rec);
@@ -305,7 +306,8 @@ static int run_generate(const Args& a, const Reporter& rep) {
         have_psnr = true;
         psnr_seconds = seconds_since(t0);
         // Asked for explicitly, so printed under -q too (stderr: stdout may carry the model).
-        if (std::isinf(db)) std::fprintf(stderr, "erd generate: psnr: inf\n");
+        if (!a.has("psnr-report")) {
+        } else if (std::isinf(db)) std::fprintf(stderr, "erd generate: psnr: inf\n");
         else std::fprintf(stderr, "erd generate: psnr: %.4f dB\n", db);
     }
     if (!stats_out.empty()) {
@@ -325,7 +327,54 @@ static int run_generate(const Args& a, const Reporter& rep) {
     st = outputs.commit();
     if (!st) return rep.fail(st);
     rep.note(summary(*method, image, res, out, seconds_since(t_start)));
+    if (record) {
+        record->method = method->name;
+        record->points = (long long)res.model.vertices.size();
+        record->has_psnr = have_psnr;
+        record->psnr = db;
+    }
     return 0;
+}
+
+static int run_generate(const Args& a, const Reporter& rep) {
+    if (!a.has("method")) return rep.usage("--method is required (one of: " + method_names() + ")");
+    if (!find_method(a.str("method"))) return rep.usage(unknown_method(a.str("method")));
+    // Without -i the image comes on stdin, as for reconstruct; not from a terminal, where the
+    // user would wait for nothing.
+    if (!a.has("input") && ::isatty(STDIN_FILENO))
+        return rep.usage("-i IMAGE is required (or an image on standard input)");
+    if (!a.has("output")) return rep.usage("-o OUT is required (- for stdout)");
+    Paths p{a.str("input", "-"), a.str("output"), a.str("triangulation"), a.str("polylines"), a.str("stats")};
+    if (a.has("triangulation") && p.tri.empty()) return rep.usage("empty -t file name");
+    if (a.has("polylines") && p.poly.empty()) return rep.usage("empty -p file name");
+    if (a.has("stats") && p.stats.empty()) return rep.usage("empty --stats file name");
+    if (a.has("summary") && a.str("summary").empty()) return rep.usage("empty --summary file name");
+
+    // Option errors once, before any image (a batch would report them for each).
+    GenerateOptions checked;
+    int exit_mode = 0;
+    Status st;
+    parse_options(a, &checked, &exit_mode, &st);
+    CodecChoice codec_checked;
+    parse_codec_options(a, &codec_checked, &st);
+    std::size_t max_memory = 0;
+    if (st && a.has("max-memory")) st = parse_memory_size(a.str("max-memory"), &max_memory);
+    if (!st) return rep.usage(st.message);
+
+    const std::vector<std::string> inputs = a.all("input");
+    if (!wants_batch(inputs, p.out, a.has("jobs") || a.has("summary"))) return generate_one(a, rep, p, nullptr);
+    std::vector<BatchItem> items;
+    int jobs = 1;
+    st = expand_inputs(inputs, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg"}, &items);
+    if (st && !(st = check_patterns(items, {p.out, p.tri, p.poly, p.stats}))) return rep.usage(st.message);
+    if (!st) return rep.fail(st);
+    if (a.has("jobs") && !(st = parse_jobs(a.str("jobs"), &jobs))) return rep.usage(st.message);
+    const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
+        const Paths one{it.input, expand_pattern(p.out, it), expand_pattern(p.tri, it), expand_pattern(p.poly, it),
+                        expand_pattern(p.stats, it)};
+        return generate_one(a, rep, one, rec);
+    };
+    return run_batch(items, jobs, job, a.str("summary"), rep, Progress::should_show(a.has("progress"), rep.quiet()));
 }
 
 int cmd_generate(int argc, char** argv) { return run_command(kGenerate, argc, argv, run_generate); }

@@ -6,7 +6,9 @@
 #include "algorithms/model/model.h"
 #include "algorithms/model/reconstruct.h"
 #include "cli/command_line.h"
+#include "cli/batch.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/model_file.h"
@@ -15,23 +17,27 @@ namespace erd::cli {
 
 const CommandLine kReconstruct = {
     "reconstruct",
-    "erd reconstruct [MODEL] [-o OUT] [--no-aa] [--plain]",
+    "erd reconstruct [MODEL...] [-o OUT] [--no-aa] [--plain] [-j JOBS] [--summary FILE]",
     "Rasterises a mesh model back into an image. MODEL is a .model (basic model: point\n"
     "evaluation at every pixel, the thesis's imgsyn) or an .erd (ERD model: 4x4 supersampling,\n"
     "imgsyn_aa, unless --no-aa or the file says \"edges hard\": then point evaluation); read from stdin when omitted or \"-\" (the kind is then told\n"
     "from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
-    "over the vertices), and its channels: a colour model (header \"channels 3\") gives an RGB image.",
+    "over the vertices), and its channels: a colour model (header \"channels 3\") gives an RGB image.\n"
+    "Many models (several, or a folder): -o names each image by a pattern with {name}, the\n"
+    "model's name without its extension (erd reconstruct out/ -o rec/{name}.png -j 4).",
     {
         {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), else PGM (PPM for colour)"},
         {0, "no-aa", nullptr, "point evaluation at the pixels also for a soft-edged .erd (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2; P3 for colour), as the thesis's imgsyn did"},
+        kProgressOption,
+        {'j', "jobs", "N", "many models: N at a time (default 1; 0 = one per processor)"},
+        {0, "summary", "FILE", "many models: a table of file, kind, points, seconds, status (.csv, or .json)"},
     },
-    "no warnings", 0, 1, "expected at most one MODEL",
+    "no warnings", 0, 1 << 20, nullptr,
 };
 
-static int run_reconstruct(const Args& args, const Reporter& rep) {
-    const std::string in = args.positional().empty() ? "-" : args.positional()[0];
-    const std::string out = args.str("output", "-");
+static int reconstruct_one(const Args& args, const Reporter& rep, const std::string& in, const std::string& out,
+                           BatchRecord* record) {
     Status st = refuse_overwrite(out, {in});
     if (!st) return rep.fail(st);
 
@@ -42,11 +48,36 @@ static int run_reconstruct(const Args& args, const Reporter& rep) {
     rep.warn(warning);
     const bool supersample = supersampled(model) && !args.has("no-aa");
     Image im;
-    if (!(st = reconstruct(model, topo, supersample, &im))) return rep.fail(Status::error(st.code, in + ": " + st.message));
+    Progress progress("reconstruct", !record && Progress::should_show(args.has("progress"), rep.quiet()), args.has("progress"));
+    st = reconstruct(model, topo, supersample, &im, progress.hook());
+    progress.finish();
+    if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
     WriteOptions wo;
     wo.plain = args.has("plain");
     if (!(st = write_image(out, im, wo))) return rep.fail(st);
+    if (record) {
+        record->method = model.kind == ModelKind::erd ? "erd" : "basic";
+        record->points = (long long)model.vertices.size();
+    }
     return 0;
+}
+
+static int run_reconstruct(const Args& args, const Reporter& rep) {
+    const std::vector<std::string>& models = args.positional();
+    const std::string out = args.str("output", "-");
+    if (!wants_batch(models, out, args.has("jobs") || args.has("summary")))
+        return reconstruct_one(args, rep, models.empty() ? "-" : models[0], out, nullptr);
+    std::vector<BatchItem> items;
+    int jobs = 1;
+    Status st = expand_inputs(models, {".model", ".erd"}, &items);
+    if (st && !(st = check_patterns(items, {out == "-" ? std::string() : out}))) return rep.usage(st.message);
+    if (!st) return rep.fail(st);
+    if (out == "-" && items.size() > 1) return rep.usage("many models: name the images with -o and {name} (rec/{name}.pgm)");
+    if (args.has("jobs") && !(st = parse_jobs(args.str("jobs"), &jobs))) return rep.usage(st.message);
+    const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
+        return reconstruct_one(args, rep, it.input, expand_pattern(out, it), rec);
+    };
+    return run_batch(items, jobs, job, args.str("summary"), rep, Progress::should_show(args.has("progress"), rep.quiet()));
 }
 
 int cmd_reconstruct(int argc, char** argv) { return run_command(kReconstruct, argc, argv, run_reconstruct); }

@@ -11,6 +11,7 @@
 #include "algorithms/output/vector_svg.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/model_file.h"
@@ -93,6 +94,7 @@ const CommandLine kRender = {
         {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
         {0, "vector", nullptr, "SVG of the approximating function itself: each face a triangle filled with its plane as a linear gradient"},
         {0, "seams", "layered|crisp|none", "--vector: how seams between anti-aliased triangles are avoided (default layered)"},
+        kProgressOption,
     },
     "no warnings", 1, 1, "expected one MODEL",
 };
@@ -150,6 +152,8 @@ static int run_render(const Args& args, const Reporter& rep) {
         st = write_file_atomic(out, svg);
         return st ? 0 : rep.fail(st);
     }
+    Progress progress = progress_for("render", args, rep);
+    opt.progress = progress.hook();
     RenderOptions resolved;
     st = resolve_render(m, opt, &resolved);
     if (!st) return rep.fail(st);
@@ -170,7 +174,7 @@ static int run_render(const Args& args, const Reporter& rep) {
             bg = image_to_rgb(im);
         } else {
             Image approx;
-            st = reconstruct(m, supersampled(m), &approx);
+            st = reconstruct(m, supersampled(m), &approx, progress.hook());
             if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
             approx.maxval = im.maxval;
             st = error_map(im, approx, error_max, &bg);
@@ -179,7 +183,7 @@ static int run_render(const Args& args, const Reporter& rep) {
         have_bg = true;
     } else if (args.has("over-reconstruction")) {
         Image approx;
-        st = reconstruct(m, supersampled(m), &approx);
+        st = reconstruct(m, supersampled(m), &approx, progress.hook());
         if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
         bg = image_to_rgb(approx);
         have_bg = true;
@@ -199,6 +203,7 @@ static int run_render(const Args& args, const Reporter& rep) {
     } else {
         RgbImage pic;
         st = render_raster(m, have_bg ? &bg : nullptr, opt, &pic);
+        progress.finish();
         if (!st) return rep.fail(st);
         std::vector<unsigned char> png;
         st = encode_rgb_png(pic, &png);

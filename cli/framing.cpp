@@ -50,8 +50,11 @@ struct ImageFrame {
             pos = hd.sep + 1;
             if (!hd.plain) {
                 const std::uint64_t bps = hd.maxval < 256 ? 1 : 2;
-                // One byte more when "maxval\r\n": decode_pgm may take the LF as the separator's pair.
-                *total = hd.sep + 1 + hd.w * hd.h * bps + (d[hd.sep] == '\r' ? 1 : 0);
+                // "maxval\r\n": decode_pgm takes the LF as the separator's pair only when the file
+                // ends one byte after the raster, so two bytes more are read: the stream then shows
+                // whether it ends there, as a file's size would (found by fuzz_framing).
+                const bool crlf = d[hd.sep] == '\r' && !(hd.sep + 1 < n && d[hd.sep + 1] != '\n');
+                *total = hd.sep + 1 + hd.w * hd.h * bps + (crlf ? 2 : 0);
                 return Status::success();
             }
         }

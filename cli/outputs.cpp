@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 
@@ -195,8 +196,15 @@ struct Move {
     std::string named;     // a named temporary: renamed onto base
     std::string proc;      // an O_TMPFILE: its /proc/self/fd path, linked in ...
     std::string link_tmp;  // ... under this name first when it replaces a file (or base exists)
+    std::string backup;    // a second name of the old file while the commit runs (several moves)
     bool replace = false;
 };
+
+bool is_fd(int dirfd, const std::string& name, int fd) {
+    struct stat a, b;
+    return ::fstat(fd, &a) == 0 && ::fstatat(dirfd, name.c_str(), &b, AT_SYMLINK_NOFOLLOW) == 0 && a.st_dev == b.st_dev &&
+           a.st_ino == b.st_ino;
+}
 
 bool link_fd(const Move& m, const std::string& name) {
     if (::linkat(AT_FDCWD, m.proc.c_str(), m.dirfd, name.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
@@ -204,22 +212,59 @@ bool link_fd(const Move& m, const std::string& name) {
     return errno == ENOENT && ::linkat(m.fd, "", m.dirfd, name.c_str(), AT_EMPTY_PATH) == 0;
 }
 
-// Moves every temporary onto its target, in order; the errno of the first failure, or 0.
-int move_all(const std::vector<Move>& moves) {
-    for (const Move& m : moves) {
-        if (!m.named.empty()) {
-            if (::renameat(m.dirfd, m.named.c_str(), m.dirfd, m.base.c_str()) != 0) return errno;
-            continue;
+// One temporary onto its target; the errno of a failure, or 0.
+int move_one(const Move& m) {
+    if (!m.named.empty()) return ::renameat(m.dirfd, m.named.c_str(), m.dirfd, m.base.c_str()) == 0 ? 0 : errno;
+    if (!m.replace && link_fd(m, m.base)) return 0;
+    if (!m.replace && errno != EEXIST) return errno;
+    if (!link_fd(m, m.link_tmp)) return errno;
+    if (::renameat(m.dirfd, m.link_tmp.c_str(), m.dirfd, m.base.c_str()) != 0) {
+        const int err = errno;
+        ::unlinkat(m.dirfd, m.link_tmp.c_str(), 0);
+        return err;
+    }
+    return 0;
+}
+
+// Undoes moves[0..n): a target that holds our file gets its old file back from the backup name
+// (one rename, so it is never missing), or is removed when there was none before. Worked out from
+// the names alone, so it also serves after the child was killed midway. Returns false when a
+// replaced old file had no backup (the file system refused the second name).
+bool roll_back(const std::vector<Move>& moves, std::size_t n) {
+    bool whole = true;
+    for (std::size_t k = n; k-- > 0;) {
+        const Move& m = moves[k];
+        struct stat st;
+        const bool backed = !m.backup.empty() && ::fstatat(m.dirfd, m.backup.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0;
+        if (is_fd(m.dirfd, m.base, m.fd)) {
+            if (backed) ::renameat(m.dirfd, m.backup.c_str(), m.dirfd, m.base.c_str());
+            else if (!m.replace) ::unlinkat(m.dirfd, m.base.c_str(), 0);
+            else whole = false;
+        } else if (backed) {
+            ::unlinkat(m.dirfd, m.backup.c_str(), 0);  // the old file never left its name
         }
-        if (!m.replace && link_fd(m, m.base)) continue;
-        if (!m.replace && errno != EEXIST) return errno;
-        if (!link_fd(m, m.link_tmp)) return errno;
-        if (::renameat(m.dirfd, m.link_tmp.c_str(), m.dirfd, m.base.c_str()) != 0) {
-            const int err = errno;
-            ::unlinkat(m.dirfd, m.link_tmp.c_str(), 0);
+        if (!m.link_tmp.empty() && is_fd(m.dirfd, m.link_tmp, m.fd)) ::unlinkat(m.dirfd, m.link_tmp.c_str(), 0);
+    }
+    return whole;
+}
+
+// Moves every temporary onto its target, in order, all or nothing: with several moves, each old
+// file first gets a second name (a hard link), so a failure of a later move puts the earlier ones
+// back. Returns the errno of the first failure (after the roll-back), or 0; *failed = its index.
+int move_all(const std::vector<Move>& moves, std::size_t* failed) {
+    for (std::size_t k = 0; k < moves.size(); ++k) {
+        const Move& m = moves[k];
+        // No second name where the file system has none (EPERM, ENOTSUP, EMLINK): this old file
+        // then cannot come back (docs/DECISIONS.md "Outputs").
+        if (!m.backup.empty()) (void)::linkat(m.dirfd, m.base.c_str(), m.dirfd, m.backup.c_str(), 0);
+        if (const int err = move_one(m)) {
+            roll_back(moves, k + 1);
+            *failed = k;
             return err;
         }
     }
+    for (const Move& m : moves)
+        if (!m.backup.empty()) ::unlinkat(m.dirfd, m.backup.c_str(), 0);
     return 0;
 }
 
@@ -372,8 +417,12 @@ Status Outputs::commit() {
     // name behind, but the child, which nothing but a KILL of the whole process group reaches,
     // finishes them. Without fork (no memory for one) the same runs here.
     std::vector<Move> moves;
+    std::vector<std::size_t> staged_of;  // moves[k] is staged_[staged_of[k]]
+    bool wrote_special = false;
     for (Staged& s : staged_) {
+        wrote_special = wrote_special || s.special;
         if (s.special) continue;
+        staged_of.push_back(std::size_t(&s - staged_.data()));
         Move m;
         m.dirfd = s.dirfd;
         m.fd = s.fd;
@@ -384,39 +433,57 @@ Status Outputs::commit() {
             m.link_tmp = temp_name();
             s.slot = claim_slot(s.dirfd, m.link_tmp);
             s.tmp = m.link_tmp;  // removed by discard() unless committed
-            m.replace = s.existed;
         }
+        m.replace = s.existed;
         moves.push_back(std::move(m));
     }
+    if (moves.size() > 1)
+        for (Move& m : moves)
+            if (m.replace) m.backup = temp_name();
     sigset_t held, old;
     sigemptyset(&held);
     for (int sig : kSignals) sigaddset(&held, sig);
     ::sigprocmask(SIG_BLOCK, &held, &old);
     int err = 0;
+    std::size_t failed = 0;
     // Only a move through a name needs the child (a new file is linked in by one system call).
     bool through_name = false;
     for (const Move& m : moves) through_name = through_name || m.replace || !m.named.empty();
+    int report[2] = {-1, -1};  // the child's failed index
+    if (through_name && ::pipe(report) != 0) through_name = false;
     const pid_t pid = through_name ? ::fork() : -1;
-    if (pid == 0) ::_exit(move_all(moves));
+    if (pid == 0) {
+        const int e = move_all(moves, &failed);
+        const std::uint32_t index = std::uint32_t(failed);
+        if (e && ::write(report[1], &index, sizeof index) != ssize_t(sizeof index)) {
+        }
+        ::_exit(e);
+    }
+    if (report[1] >= 0) ::close(report[1]);
     if (pid < 0) {
-        err = move_all(moves);
+        err = move_all(moves, &failed);
     } else {
         int status = 0;
         while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
         }
         err = WIFEXITED(status) ? WEXITSTATUS(status) : EIO;
+        std::uint32_t index = 0;
+        if (err && ::read(report[0], &index, sizeof index) == ssize_t(sizeof index)) failed = index;
+        if (!WIFEXITED(status)) roll_back(moves, moves.size());  // killed midway: back to the old files
+        else if (err == 0)
+            for (const Move& m : moves)
+                if (!m.backup.empty()) ::unlinkat(m.dirfd, m.backup.c_str(), 0);
     }
+    if (report[0] >= 0) ::close(report[0]);
     // Which targets are ours now: the ones whose inode is that of our temporary.
-    Status result = Status::success();
+    std::string replaced;  // the targets that hold the new file after a failure
     for (Staged& s : staged_) {
         if (s.special) continue;
         struct stat mine, there;
         const bool moved = ::fstat(s.fd, &mine) == 0 && ::fstatat(s.dirfd, s.base.c_str(), &there, 0) == 0 &&
                            mine.st_dev == there.st_dev && mine.st_ino == there.st_ino;
-        if (!moved) {
-            if (result) result = Status::failure(os_error(s.path, err ? err : EIO));
-            continue;  // discard() removes its temporary
-        }
+        if (!moved) continue;  // discard() removes its temporary
+        if (err) replaced += (replaced.empty() ? "" : ", ") + escape_name(s.path);
         // Committed: the temporary's name (if any) is the target's now, or gone.
         if (!s.tmp.empty() && ::fstatat(s.dirfd, s.tmp.c_str(), &there, AT_SYMLINK_NOFOLLOW) == 0 &&
             there.st_ino == mine.st_ino)
@@ -424,6 +491,13 @@ Status Outputs::commit() {
         s.tmp.clear();
         release_slot(&s.slot);
         (void)::fsync(s.dirfd);  // the new name durable; nothing visible is lost if this fails
+    }
+    Status result = Status::success();
+    if (err) {
+        const std::string& path = failed < staged_of.size() ? staged_[staged_of[failed]].path : staged_.front().path;
+        std::string what = replaced.empty() ? "; every file is as it was" : "; written nevertheless: " + replaced;
+        if (wrote_special) what += " (devices, FIFOs and stdout were written already)";
+        result = Status::failure(os_error(path, err) + what);
     }
     discard();
     ::sigprocmask(SIG_SETMASK, &old, nullptr);

@@ -20,6 +20,7 @@ public:
     // -v/--verbose: also print detail() lines (stage timings, the method's statistics).
     void set_verbose(bool v) { verbose_ = v; }
     bool verbose() const { return verbose_; }
+    const std::string& name() const { return sub_; }
 
     // Prints "erd SUB: message" and returns st.exit_code() (0 prints nothing).
     int fail(const Status& st) const;

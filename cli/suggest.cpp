@@ -26,6 +26,12 @@ int distance(const std::string& a, const std::string& b) {
 }  // namespace
 
 const char* nearest_name(const std::string& name, const std::vector<const char*>& candidates) {
+    // A beginning of exactly one name ("gen", "recon") means that name, however far it is.
+    const char* prefix_of = nullptr;
+    int prefixes = 0;
+    for (const char* c : candidates)
+        if (!name.empty() && std::string(c).compare(0, name.size(), name) == 0) prefix_of = c, ++prefixes;
+    if (prefixes == 1) return prefix_of;
     int best = 1 << 30;
     const char* guess = nullptr;
     for (const char* c : candidates) {

@@ -2,6 +2,7 @@
 # Builds every fuzz/fuzz_*.cpp with libFuzzer + ASan + UBSan and runs each for SECONDS.
 # Prints "PASS name execs corpus" or "FAIL name" per target.
 # Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). FUZZ_BUILD=dir (default build-fuzz).
+# FUZZ_SHORT_SECONDS=S caps the targets named in FUZZ_SHORT (default fuzz_framing fuzz_erdz) at S seconds.
 set -u
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
@@ -18,13 +19,8 @@ mkdir -p $B
 objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/third_party/stb_glue.o $B/liberd.a"
 status=0
 if [[ $# -gt 0 ]]; then targets=$(printf 'fuzz/%s.cpp ' "$@"); else targets=$(ls fuzz/fuzz_*.cpp); fi
-# Targets added after make test reached its time budget run at most SHORT_SMOKE seconds in a
-# smoke run (SECONDS <= 60); a real run (make fuzz) gives them the full time.
-SHORT_SMOKE_TARGETS="fuzz_erdz"
 for src in $targets; do
     name=$(basename "$src" .cpp)
-    secs=$SECONDS_EACH
-    if [[ $SECONDS_EACH -le 60 && " $SHORT_SMOKE_TARGETS " == *" $name "* ]]; then secs=$(( SECONDS_EACH < 4 ? SECONDS_EACH : 4 )); fi
     if ! clang++ $FLAGS -fsanitize=fuzzer "$src" $objs -o $B/$name 2>$B/$name.build.log; then
         echo "FAIL $name (build)"; cat $B/$name.build.log | head -20; status=1; continue
     fi
@@ -32,6 +28,9 @@ for src in $targets; do
     mkdir -p "$corpus"
     seeds=fuzz/corpus/$name
     dict=""; [[ -f fuzz/$name.dict ]] && dict="-dict=fuzz/$name.dict"
+    secs=$SECONDS_EACH
+    # FUZZ_SHORT_SECONDS caps the targets of FUZZ_SHORT (make test's smoke runs keep them short).
+    [[ " ${FUZZ_SHORT:-fuzz_framing fuzz_erdz} " == *" $name "* && -n ${FUZZ_SHORT_SECONDS:-} ]] && (( secs > FUZZ_SHORT_SECONDS )) && secs=$FUZZ_SHORT_SECONDS
     if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$secs" \
         -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
         execs=$(grep -E 'stat::number_of_executed_units' $B/$name.log | awk '{print $2}')

@@ -1,4 +1,4 @@
-// The cancel function of the progress hook (algorithms/methods/progress.h), which the Python
+// The cancel function of the progress hook (kernel/progress.h), which the Python
 // binding uses for Ctrl-C: a method asked to stop returns Code::runtime "cancelled" at its next
 // progress point, and a hook that never asks changes nothing.
 #include <catch2/catch.hpp>
@@ -50,7 +50,7 @@ TEST_CASE("a progress hook's cancel stops the methods with 'cancelled'", "[cance
         CHECK(same.vertices == ref.vertices);
         CHECK(same.corner_values == ref.corner_values);
 
-        for (int stop_after : {1, 2}) {  // ERDED has two progress points; GPI one per 1%
+        for (int stop_after : {1, 2}) {  // the first points of GPI (1% steps) and of the ERD methods (step 1)
             Counter c;
             c.stop_after = stop_after;
             api::Options cancelled = plain;

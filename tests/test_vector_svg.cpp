@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -22,51 +23,100 @@ using namespace erd_test;
 namespace {
 
 struct Gradient {
+    std::string tmpl;  // "_" gray, "_r", "_g", "_b"
     double x1, y1, x2, y2;
 };
 
-// What a renderer paints at (u, v) for the black-to-white template gradient g.
+// What a renderer paints at (u, v) for the black-to-white (or black-to-channel) template gradient g.
 double paint(const Gradient& g, double u, double v) {
     double dx = g.x2 - g.x1, dy = g.y2 - g.y1;
     return 255 * std::clamp(((u - g.x1) * dx + (v - g.y1) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
 }
 
-// Checks every face of m against the SVG text: path f is face f, its fill the face's plane.
+// Value of channel c of face f at its corner k, as the model holds it.
+double model_value(const erd::Model& m, std::size_t f, int k, int c) {
+    const std::size_t C = std::size_t(m.channels);
+    if (m.kind == erd::ModelKind::erd) return m.corner_values[f * C + std::size_t(c)][std::size_t(k)];
+    return m.values[std::size_t(m.faces[f][std::size_t(k)]) * C + std::size_t(c)];
+}
+
+// Checks every face of m against the SVG text, channel by channel: in the layer of channel c
+// (the group "_m", or "_m0", "_m1", "_m2" in colour) path f is face f and its fill is the face's
+// plane in that channel, painted only in that channel (colour: black to pure red, green or blue).
 void check_planes(const erd::Model& m, const std::string& svg, double unit) {
     std::map<std::string, Gradient> grads;
-    std::regex grad_re("<linearGradient id=\"(\\w+)\" xlink:href=\"#_\" x1=\"([-.0-9]+)\" y1=\"([-.0-9]+)\" x2=\"([-.0-9]+)\" y2=\"([-.0-9]+)\"/>");
+    std::regex grad_re("<linearGradient id=\"(\\w+)\" xlink:href=\"#(_[rgb]?)\" x1=\"([-.0-9]+)\" y1=\"([-.0-9]+)\" x2=\"([-.0-9]+)\" y2=\"([-.0-9]+)\"/>");
     for (auto it = std::sregex_iterator(svg.begin(), svg.end(), grad_re); it != std::sregex_iterator(); ++it) {
         const auto& g = *it;
         INFO(g[0].str());
         REQUIRE(grads.count(g[1]) == 0);  // ids unique
-        grads[g[1]] = {std::stod(g[2]), std::stod(g[3]), std::stod(g[4]), std::stod(g[5])};
+        grads[g[1]] = {g[2], std::stod(g[3]), std::stod(g[4]), std::stod(g[5]), std::stod(g[6])};
     }
-    std::regex path_re("<path fill=\"([^\"]+)\" d=\"M[-.0-9 ]+z\"/>");
-    std::size_t f = 0, flat = 0;
+    const std::string kTemplates[3] = {"_r", "_g", "_b"};
     std::set<std::string> used;
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path_re); it != std::sregex_iterator(); ++it, ++f) {
-        REQUIRE(f < m.faces.size());
-        const std::string fill = (*it)[1];
-        for (int k = 0; k < 3; ++k) {
-            const erd::LatticePoint p = m.vertices[m.faces[f][std::size_t(k)]];
-            const double want = std::clamp(erd::corner_value(m, std::uint32_t(3 * f + std::size_t(k))) * 255.0 / m.maxval, 0.0, 255.0);
-            INFO("face " << f << " corner " << k << " fill " << fill);
-            if (fill[0] == '#') {
-                REQUIRE((fill.size() == 7 || fill.size() == 4));  // #rrggbb or #rgb
-                const long level = std::strtol(fill.substr(fill.size() == 4 ? 3 : 5).c_str(), nullptr, 16) * (fill.size() == 4 ? 17 : 1);
-                CHECK(std::fabs(double(level) - want) <= 0.5 + erd::kFlatRange);
-            } else {
-                const std::string id = fill.substr(5, fill.size() - 6);
-                REQUIRE(grads.count(id) == 1);
-                used.insert(id);
-                CHECK(std::fabs(paint(grads[id], p.x * unit / 2, p.y * unit / 2) - want) <= erd::kGradientTolerance);
+    std::size_t flat = 0;
+    for (int c = 0; c < m.channels; ++c) {
+        const std::string group = m.channels == 1 ? "<g id=\"_m\">" : "<g id=\"_m" + std::to_string(c) + "\">";
+        const std::size_t begin = svg.find(group), end = svg.find("</g></defs>", begin);
+        REQUIRE(begin != std::string::npos);
+        REQUIRE(end != std::string::npos);
+        const std::string layer = svg.substr(begin, end - begin);
+        std::regex path_re("<path fill=\"([^\"]+)\" d=\"M[-.0-9 ]+z\"/>");
+        std::size_t f = 0;
+        for (auto it = std::sregex_iterator(layer.begin(), layer.end(), path_re); it != std::sregex_iterator(); ++it, ++f) {
+            REQUIRE(f < m.faces.size());
+            const std::string fill = (*it)[1];
+            for (int k = 0; k < 3; ++k) {
+                const erd::LatticePoint p = m.vertices[m.faces[f][std::size_t(k)]];
+                const double want = std::clamp(model_value(m, f, k, c) * 255.0 / m.maxval, 0.0, 255.0);
+                INFO("channel " << c << " face " << f << " corner " << k << " fill " << fill);
+                if (fill[0] == '#') {
+                    REQUIRE((fill.size() == 7 || fill.size() == 4));  // #rrggbb or #rgb
+                    const int digits = fill.size() == 4 ? 1 : 2;
+                    long level = 0;
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const long l = std::strtol(fill.substr(std::size_t(1 + ch * digits), std::size_t(digits)).c_str(), nullptr, 16) *
+                                       (digits == 1 ? 17 : 1);
+                        if (m.channels == 1 || ch == c) level = l;
+                        else CHECK(l == 0);  // the other channels black
+                        if (m.channels == 1 && ch > 0) CHECK(l == level);
+                    }
+                    CHECK(std::fabs(double(level) - want) <= 0.5 + erd::kFlatRange);
+                } else {
+                    const std::string id = fill.substr(5, fill.size() - 6);
+                    REQUIRE(grads.count(id) == 1);
+                    CHECK(grads[id].tmpl == (m.channels == 1 ? "_" : kTemplates[c]));
+                    used.insert(id);
+                    CHECK(std::fabs(paint(grads[id], p.x * unit / 2, p.y * unit / 2) - want) <= erd::kGradientTolerance);
+                }
             }
+            flat += fill[0] == '#';
         }
-        flat += fill[0] == '#';
+        CHECK(f == m.faces.size());
     }
-    CHECK(f == m.faces.size());
     CHECK(used.size() == grads.size());  // every gradient written is used (deduplicated, none stray)
-    CHECK(flat < m.faces.size());
+    CHECK(flat < m.faces.size() * std::size_t(m.channels));
+}
+
+// A colour model made by hand from a gray one: red the gray values, green their negative, blue
+// a ramp across the image plus a constant per face, so the three planes of a face point in
+// different directions and ERD faces jump in blue too.
+erd::Model colour_of(const erd::Model& g) {
+    erd::Model m = g;
+    m.channels = 3;
+    m.values.clear();
+    for (std::size_t v = 0; v < g.vertices.size(); ++v)
+        for (double z : {g.values[v], double(g.maxval) - g.values[v], double(g.vertices[v].x % 97)}) m.values.push_back(z);
+    m.corner_values.clear();
+    for (std::size_t f = 0; f < g.corner_values.size(); ++f) {
+        const auto& z = g.corner_values[f];
+        m.corner_values.push_back(z);
+        m.corner_values.push_back({g.maxval - z[0], g.maxval - z[1], g.maxval - z[2]});
+        std::array<double, 3> b;
+        for (int k = 0; k < 3; ++k) b[std::size_t(k)] = g.vertices[g.faces[f][std::size_t(k)]].x % 97 + double(f % 5) * 10;
+        m.corner_values.push_back(b);
+    }
+    return m;
 }
 
 }  // namespace
@@ -95,6 +145,23 @@ TEST_CASE("render --vector: each face's gradient is its plane, for both models",
         CHECK(text.find(erd_kind ? "viewBox=\"-1 -1 192 128\"" : "viewBox=\"-.5 -.5 96 64\"") != std::string::npos);
         CHECK(text.find("<use xlink:href=\"#_m\" shape-rendering=\"crispEdges\"/>") != std::string::npos);
         check_planes(m, text, erd_kind ? 2 : 1);
+
+        // Colour: one layer per channel, the green and blue ones screened over red.
+        const erd::Model colour = colour_of(m);
+        std::string rgb;
+        const erd::Status st = erd::render_vector_svg(colour, erd::VectorSvgOptions{}, &rgb);
+        INFO(method << ": " << st.message);
+        REQUIRE(st.ok());
+        CHECK(rgb.find("<stop offset=\"1\" stop-color=\"#f00\"/>") != std::string::npos);
+        std::size_t screens = 0;
+        for (std::size_t at = rgb.find("<g style=\"mix-blend-mode:screen\">"); at != std::string::npos;
+             at = rgb.find("<g style=\"mix-blend-mode:screen\">", at + 1))
+            ++screens;
+        CHECK(screens == 2);
+        check_planes(colour, rgb, erd_kind ? 2 : 1);
+        erd::Model two = colour;
+        two.channels = 2;
+        CHECK(!erd::render_vector_svg(two, erd::VectorSvgOptions{}, &rgb).ok());
     }
 }
 
@@ -114,4 +181,29 @@ TEST_CASE("render --vector: options that do not go with it are refused", "[vecto
     const std::string c = slurp(dir.file("c.svg"));
     CHECK(c.find("width=\"32\" height=\"24\" viewBox=\"7.5 3.5 16 12\" shape-rendering=\"crispEdges\"") != std::string::npos);
     CHECK(c.find("<use") == std::string::npos);
+}
+
+TEST_CASE("render --vector: colour model files become three screened layers", "[vector][colour]") {
+    REQUIRE(binary_available());
+    TempDir dir;
+    // 3x3 pixels, a basic model and an ERD model (a jump in blue across the diagonal), by hand.
+    const std::string basic = "erd-header 1\nchannels 3\nend\n255\n5\n0 0 255 0 0\n4 0 0 255 0\n0 4 0 0 255\n4 4 255 255 255\n"
+                              "2 2 10 20 30\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n";
+    const std::string erd = "erd-header 1\nchannels 3\nend\n255\n5\n0 0 10 11 12\n4 0 20 21 22\n0 4 30 31 32\n4 4 40 41 42\n"
+                            "2 2 25 26 25\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n4\n4 0 25 26 10\n4 1 25 26 10\n4 2 25 26 40\n4 3 25 26 40\n";
+    for (const auto& [name, text] : {std::pair<std::string, std::string>{"c.model", basic}, {"c.erd", erd}}) {
+        INFO(name);
+        spit(dir.file(name), text);
+        RunResult r = run_erd("render " + sh_quote(dir.file(name)) + " -o " + sh_quote(dir.file("c.svg")) + " --vector");
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        erd::Model m;
+        REQUIRE(erd::read_model(text, name == "c.erd" ? erd::ModelFileKind::erd : erd::ModelFileKind::basic, &m).ok());
+        REQUIRE(m.channels == 3);
+        std::string lib;
+        REQUIRE(erd::render_vector_svg(m, erd::VectorSvgOptions{}, &lib).ok());
+        const std::string svg = slurp(dir.file("c.svg"));
+        CHECK(svg == lib);
+        check_planes(m, svg, 1);
+    }
 }

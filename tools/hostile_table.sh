@@ -241,8 +241,6 @@ case_ "colour .erd: two values on a wedge line" 2 reconstruct c_wedge.erd -o r.p
 case_ "colour .erd: channels 4" 2 reconstruct c_four.erd -o r.ppm
 case_ "colour .erd: channels 2" 2 reconstruct c_two.erd -o r.ppm
 case_ "colour .erd: channels given twice" 2 reconstruct c_twice.erd -o r.ppm
-colour_erd '2 2 25 26 27' '0\n' > c_good.erd
-case_ "colour .erd: drawn by a gray-only part" 2 render --vector c_good.erd -o r.svg
 case_ "generate --edges blurry" 2 generate -q -m erdgpi --edges blurry -i step.pgm -o o.erd -n 20
 case_ "psnr: sizes differ" 2 psnr small.pgm other.pgm
 
@@ -366,4 +364,19 @@ case_ "usage error (render): one usage line" 2 render good.model
 case_ "--max-memory below the estimate" 1 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1M
 case_ "--max-memory not a size" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 1e9
 case_ "--max-memory too large" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --max-memory 99999999T
+
+cat <<'EOF'
+
+## Many files in one call (issue 20)
+| case | command | exit | message |
+| --- | --- | --- | --- |
+EOF
+mkdir -p many/in many/out empty
+cp in.pgm many/a.pgm; cp step.pgm many/in/c.pgm; printf 'P5 junk\n' > many/b.pgm
+CHECK='[[ -s many/out/a.model && -s many/out/c.model && ! -e many/out/b.model && $(wc -l < many/s.csv) -eq 4 ]]' case_ "one bad image among three: the others written, 3 summary rows" 1 generate -q -m gpi -i many/a.pgm -i many/b.pgm -i many/in -o 'many/out/{name}.model' -j 2 --summary many/s.csv
+case_ "several inputs, one output file" 2 generate -q -m gpi -i many/a.pgm -i many/in -o o.model
+case_ "two inputs with one name" 2 generate -q -m gpi -i many/a.pgm -i many/a.pgm -o 'many/out/{name}.model'
+case_ "-j not a number" 2 generate -q -m gpi -i many/a.pgm -i many/in -o 'many/out/{name}.model' -j x
+case_ "a folder without images" 2 generate -q -m gpi -i empty -o 'many/out/{name}.model'
+case_ "many models to stdout" 2 reconstruct many/out/a.model many/out/c.model
 exit $bad

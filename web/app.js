@@ -24,6 +24,7 @@ function put(canvas, g, w, h) {
 $('file').addEventListener('change', async () => {
     const f = $('file').files[0];
     if (!f) return;
+    $('run').disabled = true;
     const bmp = await createImageBitmap(f, {colorSpaceConversion: 'none', premultiplyAlpha: 'none'});
     width = bmp.width; height = bmp.height;
     const c = new OffscreenCanvas(width, height);
@@ -36,17 +37,61 @@ $('file').addEventListener('change', async () => {
     $('status').textContent = `${f.name}: ${width} x ${height}`;
 });
 
-$('run').addEventListener('click', () => {
-    $('run').disabled = true; $('busy').hidden = false;
-    $('status').textContent = 'meshing...';
-    worker.postMessage({pixels: gray, width, height, method: $('method').value, density: Number($('density').value)});
+// --thesis sets the flags it implies in the form (edges soft, wedge fit 0), as the preset does
+// on the command line, where later flags still win; unchecking restores erd's defaults.
+$('thesis').addEventListener('change', () => {
+    const on = $('thesis').checked;
+    $('edges').value = on ? '1' : '0';
+    $('wedge-fit').value = on ? '0' : '6';
 });
+
+function flags() {
+    const maxError = $('max-error').value.trim();
+    return {
+        edges: Number($('edges').value), thesis: $('thesis').checked ? 1 : 0, wedgeRule: Number($('wedge-rule').value),
+        wedgeFit: Number($('wedge-fit').value), psnr: Number($('psnr-stop').value) || 0,
+        maxError: maxError === '' ? -1 : Number(maxError),
+    };
+}
+
+$('run').addEventListener('click', () => {
+    $('run').disabled = true;
+    $('progress').hidden = false; $('bar').value = 0; $('bar').dataset.max = '0';
+    $('stage').textContent = 'starting'; $('percent').textContent = '';
+    $('status').textContent = 'meshing...';
+    worker.postMessage({pixels: gray, width, height, method: $('method').value, density: Number($('density').value), flags: flags()});
+});
+
+// A stage with a measured fraction (the greedy insertion) moves the bar; the others show their
+// name with the bar at their start.
+function progress(stage, fraction) {
+    const percent = Math.min(100, Math.floor(fraction * 100));
+    $('bar').value = percent;
+    $('stage').textContent = stage;
+    $('percent').textContent = percent + '%';
+}
+
+function timings(rows, total) {
+    const t = $('timings');
+    t.innerHTML = '<tr><th colspan="2">Time (ms)</th></tr>';
+    for (const [name, ms] of rows.concat([['total in the worker', total]])) {
+        const tr = t.insertRow();
+        tr.insertCell().textContent = name;
+        tr.insertCell().textContent = ms.toFixed(1);
+    }
+}
 
 function link(a, name, blob) { a.href = URL.createObjectURL(blob); a.download = name; a.hidden = false; }
 
 worker.onmessage = (e) => {
     const r = e.data;
-    $('run').disabled = false; $('busy').hidden = true;
+    if (r.progress !== undefined) {
+        progress(r.progress, r.fraction);
+        $('bar').dataset.max = String(Math.max(Number($('bar').dataset.max), $('bar').value));  // what the test reads
+        return;
+    }
+    $('run').disabled = false;
+    if (r.ok) progress('done', 1);
     if (!r.ok) { $('status').textContent = 'error: ' + r.error; return; }
     put($('recon'), r.recon, r.width, r.height);
     // The mesh drawing without its white background, over the original.
@@ -56,5 +101,6 @@ worker.onmessage = (e) => {
     link($('dl-model'), 'mesh.' + ext, new Blob([r.model], {type: 'text/plain'}));
     $('dl-model').textContent = '.' + ext;
     link($('dl-svg'), 'mesh.svg', new Blob([r.vector], {type: 'image/svg+xml'}));
+    timings(r.timings, r.ms);
     $('recon').toBlob((b) => link($('dl-png'), 'reconstruction.png', b), 'image/png');
 };

@@ -1,6 +1,11 @@
-// The C entry points of erd's WebAssembly build (make web): the page's worker passes gray pixels
-// in and reads the results out of the module's memory. One job at a time (the worker is serial),
-// so the results live in one static slot until the next erd_mesh call.
+// The C entry points of erd's WebAssembly build (make web): the page's worker passes pixels in
+// and reads the results out of the module's memory. One job at a time (the worker is serial),
+// so the results live in one static slot until the next erd_mesh call. Progress goes to the page
+// as it happens: the library's progress hook posts a message from the worker (EM_JS), at most
+// once per stage and per whole percent.
+#include <emscripten.h>
+
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -10,43 +15,89 @@
 #include "algorithms/output/vector_svg.h"
 #include "api/erd.h"
 
+EM_JS(void, erd_post_progress, (const char* stage, double fraction),
+      { postMessage({progress : UTF8ToString(stage), fraction : fraction}); });
+
 namespace {
 
 struct Job {
-    std::string error, model_text, vector_svg, mesh_svg;
+    std::string error, model_text, vector_svg, mesh_svg, timings;
     std::vector<std::uint8_t> recon;
     double psnr = 0;
     std::size_t vertices = 0;
 };
 Job job;
 
+struct Posted {
+    std::string stage;
+    int percent = -1;
+};
+
+void on_progress(void* ctx, const char* stage, double fraction) {
+    auto* last = static_cast<Posted*>(ctx);
+    int percent = int(fraction * 100);
+    if (last->stage == stage && last->percent == percent) return;
+    last->stage = stage;
+    last->percent = percent;
+    erd_post_progress(stage, fraction);
+}
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// "name ms" lines, the page's timing table.
+void add_timing(const std::string& name, double ms) { job.timings += name + " " + std::to_string(ms) + "\n"; }
+
 }  // namespace
 
 extern "C" {
 
 // Meshes a w x h 8-bit gray image with `method` ("ed", "gpi", "erded", "erdgpi") at `density`
-// percent, as `erd generate -x 1` does, then reconstructs it (4x4 for ERD models) and measures
-// the PSNR. Returns 0, or the status code with erd_error() set.
-int erd_mesh(const std::uint8_t* pixels, int w, int h, const char* method, double density) {
+// percent, as `erd generate -x 1` with these flags does, then reconstructs it (4x4 for soft ERD
+// models, as `erd reconstruct`) and measures the PSNR. edges: 0 auto, 1 soft, 2 hard (--edges);
+// thesis: --thesis (applied first, so the other flags given beside it win, as on the command
+// line); wedge_rule: -w; wedge_fit: --wedge-fit; psnr: --psnr (0 off); max_error: --max-error
+// (negative off). Returns 0, or the status code with erd_error() set.
+int erd_mesh(const std::uint8_t* pixels, int w, int h, const char* method, double density, int edges, int thesis,
+             int wedge_rule, int wedge_fit, double psnr, double max_error) {
     job = Job{};
+    const auto t0 = Clock::now();
     std::vector<std::uint16_t> samples(pixels, pixels + std::size_t(w) * std::size_t(h));
     erd::api::ImageView view{w, h, 255, samples.data(), 0};
     erd::api::Method m;
     erd::Status st = erd::api::method_from_name(method, &m);
     erd::api::Options opt;
-    opt.generate.density = density;
-    opt.generate.density_given = true;
+    erd::GenerateOptions& g = opt.generate;
+    if (thesis) erd::set_thesis_preset(&g);
+    g.density = density;
+    g.density_given = true;
+    g.edges = edges == 1 ? erd::EdgeChoice::soft : edges == 2 ? erd::EdgeChoice::hard : erd::EdgeChoice::automatic;
+    g.wedge_rule = wedge_rule;
+    g.wedge_fit = wedge_fit;
+    g.psnr = psnr;
+    g.max_error = max_error;
     opt.exact = erd::api::ExactMode::warn;
+    Posted posted;
+    g.progress = erd::ProgressHook{&on_progress, &posted};
     erd::Model model;
-    if (st) st = erd::api::generate(m, view, opt, &model);
+    erd::api::GenerateInfo info;
+    if (st) st = erd::api::generate(m, view, opt, &model, &info);
+    for (const erd::StageTime& s : info.stages) add_timing(s.name, s.seconds * 1000);
+    add_timing("generate, all stages", ms_since(t0));
     erd::Image approx;
-    if (st) st = erd::api::reconstruct(model, model.kind == erd::ModelKind::erd, &approx);
+    auto t1 = Clock::now();
+    if (st) erd_post_progress("reconstruction", 0);
+    if (st) st = erd::api::reconstruct(model, erd::supersampled(model), &approx);
     if (st) st = erd::api::psnr(view, erd::api::view_of(approx), &job.psnr);
+    add_timing("reconstruction", ms_since(t1));
+    t1 = Clock::now();
+    if (st) erd_post_progress("outputs", 0);
     if (st) st = erd::write_model(model, &job.model_text);
     if (st) st = erd::render_vector_svg(model, erd::VectorSvgOptions{}, &job.vector_svg);
     erd::RenderOptions ro;
     ro.scale = 1;
     if (st) st = erd::render_svg(model, "", ro, &job.mesh_svg);
+    add_timing("outputs", ms_since(t1));
     if (!st) {
         job.error = st.message;
         return st.exit_code();
@@ -61,6 +112,7 @@ const char* erd_error() { return job.error.c_str(); }
 const char* erd_model_text() { return job.model_text.c_str(); }
 const char* erd_vector_svg() { return job.vector_svg.c_str(); }
 const char* erd_mesh_svg() { return job.mesh_svg.c_str(); }
+const char* erd_timings() { return job.timings.c_str(); }
 const std::uint8_t* erd_reconstruction() { return job.recon.data(); }
 double erd_psnr() { return job.psnr; }
 int erd_vertices() { return int(job.vertices); }

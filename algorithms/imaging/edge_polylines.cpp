@@ -24,13 +24,19 @@ Status EdgePolylines::detect(const CannyParams& canny) {
         if (!(canny.beta > 0 && canny.beta <= 1) || !(canny.r >= 0 && canny.r <= 1))
             return Status::bad_input("crack edges: beta must be in (0, 1] and r in [0, 1]");
         cracks_ = crack_edges(image_, canny.beta, canny.r);
+        progress_(stage_, from_ + (to_ - from_) * 0.6);
         traced_ = trace_polylines(cracks_);
+        progress_(stage_, to_);
         return Status::success();
     }
     // Points, not a map: only the chosen detection's map is ever made (edge_map()).
+    const auto at = [&](double f) { progress_(stage_, from_ + (to_ - from_) * f); };
     Status st = detector_.detect(canny, &edges_, &stats_);  // reuses the gradient pass while it can
+    at(0.6);
     edges_.link_rows();
+    at(0.75);
     traced_ = trace_polylines(edges_);
+    at(1.0);
     return st;
 }
 
@@ -56,11 +62,15 @@ Grid<std::uint8_t> EdgePolylines::edge_map() const { return hard_ ? cracks_ : er
 Status edge_polylines(const Image& image, const EdgePolylineParams& params, EdgePolylineResult* out) {
     if (params.epsilon < 0 || params.epsilon != params.epsilon)
         return Status::bad_input("polylines: epsilon must be >= 0");
+    params.progress("edges", 0.0);
     EdgePolylines chain(image);
+    chain.set_progress(params.progress, "edges", 0.0, 0.8);
     Status st = chain.detect(params.canny);
     if (!st) return st;
+    params.progress("edges", 0.8);
     chain.simplify(params.min_length, params.epsilon * kEpsilonUnitsPerPixel, params.length_rule);
     chain.release_detector();
+    params.progress("edges", 1.0);
     out->edges = chain.edge_map();
     out->traced = chain.traced().size();
     out->polylines = std::move(chain.kept());

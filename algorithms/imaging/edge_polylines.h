@@ -13,6 +13,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/polylines.h"
+#include "kernel/progress.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -24,6 +25,7 @@ struct EdgePolylineParams {
     double epsilon = 1.0;  // Douglas-Peucker tolerance in pixels (erd generate -e); >= 0
     int min_length = 5;    // the thesis's l: polylines with fewer points are dropped
     LengthRule length_rule = LengthRule::before_simplification;  // when l is counted
+    ProgressHook progress;  // edge_polylines(): "edges" at its steps (detection, tracing, simplification)
 };
 
 // Doubled-coordinate units (half-pixel grid steps) per pixel of epsilon.
@@ -45,6 +47,14 @@ public:
     // hard: crack edges (crack_edges with canny.beta and canny.r), simplified by `crack` below.
     explicit EdgePolylines(const Image& image, bool hard = false);
     // Steps 1.1 and 1.2: edges with these parameters, traced into polylines.
+    // Reports `stage` from `from` to `to` during each detect(): after the detector, the linking
+    // and the tracing.
+    void set_progress(ProgressHook hook, const char* stage, double from, double to) {
+        progress_ = hook;
+        stage_ = stage;
+        from_ = from;
+        to_ = to;
+    }
     Status detect(const CannyParams& canny);
     // Step 1.3 on the last detection: epsilon in doubled-coordinate units (pixels times
     // kEpsilonUnitsPerPixel; hard: times kHardEpsilonScale too). Returns the kept polylines.
@@ -61,6 +71,9 @@ public:
 
 private:
     const Image& image_;
+    ProgressHook progress_;
+    const char* stage_ = "";
+    double from_ = 0, to_ = 1;
     bool hard_;
     CrackRule crack_ = CrackRule::keep_sides;
     Grid<std::uint8_t> cracks_;  // hard: the last detection's crack map

@@ -17,8 +17,10 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     // Step 1: sigma = (d / d_max)^1 with d the MMSODD after 3rd-order binomial smoothing,
     // zero extension at the borders (thesis 3.2.1).
     StageTimer timer(result);
+    if (options.progress.report_cancelled("sample selection", 0.0)) return Status::failure(kCancelled);
     Grid<double> sigma = ed_density(mmsodd(image, 3), 1.0);
     timer.lap("mmsodd density");
+    if (options.progress.report_cancelled("sample selection", 0.2)) return Status::failure(kCancelled);
 
     // Steps 2-3: error diffusion chooses the N - 4 non-corner points; the corners are forbidden
     // to it (their density still diffuses) and always added, so the total is N exactly whenever
@@ -39,6 +41,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     result->stats.diffusion.passes = chosen.passes;
     result->stats.diffusion.adjusted = adjusted;
     timer.lap("error diffusion");
+    if (options.progress.report_cancelled("triangulation", 0.0)) return Status::failure(kCancelled);
 
     // Step 4: the Delaunay triangulation of the corners and the chosen points.
     Cdt cdt;

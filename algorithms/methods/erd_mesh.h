@@ -17,6 +17,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/polylines.h"
 #include "kernel/cdt.h"
+#include "kernel/progress.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -37,6 +38,8 @@ struct InitialMeshOptions {
     // true = plain Douglas-Peucker on the same cracks at that beta; false = keep the side test
     // and let the selection shrink beta and grow l.
     bool hard_fallback = true;
+    // "initial mesh" with the fraction done: each edge detection, each count, the insertion.
+    ProgressHook progress;
 };
 
 struct InitialMesh {

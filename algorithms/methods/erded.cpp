@@ -108,6 +108,7 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
         // The MMSODD plane becomes the density in place; the wedge-value line search computes
         // its values where it needs them (the same values), so no second plane is kept.
         Grid<double> density = ed_density(mmsodd(image, 5), 0.5);
+        options.progress("sample selection", 0.3);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
         // Only the edge pixels are visited (the map is mostly empty); the zeros written do not
@@ -131,6 +132,7 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
         if (!dr.exact) result->stats.diffusion.adjusted = adjust_to_exact(density, occupied, k, &pts);
     }
     timer.lap("sample selection");
+    options.progress("triangulation and wedge values", 0.0);
 
     std::vector<VertInd> ids;
     st = cdt.insert_points(pts, &ids, false);  // no change report: nothing reads it

@@ -27,7 +27,7 @@
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
-#include "algorithms/methods/progress.h"
+#include "kernel/progress.h"
 #include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
 #include "kernel/raster.h"

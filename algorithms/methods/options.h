@@ -9,7 +9,7 @@
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
-#include "algorithms/methods/progress.h"
+#include "kernel/progress.h"
 #include "algorithms/methods/result.h"
 #include "kernel/status.h"
 

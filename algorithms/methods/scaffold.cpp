@@ -136,6 +136,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
     mo.hard_fallback = hard_fallback;
+    mo.progress = options.progress;
     st = build_initial_mesh(image, mo, cdt, mesh);
     if (!st) return st;
     timer.lap("initial mesh");
@@ -145,7 +146,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
 void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result) {
     if (options.wedge_fit > 0) {
-        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit);
+        fit_wedge_values(cdt, image, options.wedge_fit, model, &result->stats.wedge_fit, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
     }

@@ -90,8 +90,11 @@ double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>
 
 }  // namespace
 
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats) {
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
+                      ProgressHook progress) {
+    progress("wedge refit", 0.0);
     const std::vector<FaceSystem> faces = face_systems(cdt, image, *model);
+    progress("wedge refit", 0.5);
     const std::size_t n = model->entry_count();
 
     // out = A^T A v, assembled from the face Gram matrices.
@@ -129,6 +132,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
     double gamma = dot(s, s);
     int it = 0;
     for (; it < iterations && gamma > 1e-12; ++it) {
+        progress("wedge refit", 0.5 + 0.5 * double(it) / double(iterations));
         for (std::size_t i = 0; i < n; ++i) ps[i] = scale[i] * p[i];
         normal_times(ps, &q);
         const double pq = dot(ps, q);  // |A S p|^2

@@ -15,10 +15,13 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
+#include "kernel/progress.h"
 
 namespace erd {
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
-void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats);
+// progress: "wedge refit", half for the pass over the pixels, half for the iterations.
+void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
+                      ProgressHook progress = {});
 
 }  // namespace erd

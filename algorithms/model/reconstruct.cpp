@@ -236,7 +236,7 @@ bool exact_plane(const Model& m, std::size_t f, int c, RoundedPlane* rp) {
 // Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
 // vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles). A
 // face's spans are scanned once for all channels; channel c of pixel x of a row is row[x*C + c].
-void point_evaluation(const Model& m, const Prepared& p, Image* out) {
+void point_evaluation(const Model& m, const Prepared& p, Image* out, ProgressHook progress) {
     const std::size_t W = std::size_t(m.width), C = std::size_t(m.channels);
     const double maxval = m.maxval;
     std::uint16_t* px = out->samples.data();
@@ -264,7 +264,9 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out) {
             for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[std::size_t(x) * stride] = to_sample(v, maxval);
         }
     };
+    const std::size_t every = m.faces.size() / 100 + 1;
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
+        if (progress && f % every == 0) progress("reconstruct", double(f) / double(m.faces.size()));
         const auto& fc = m.faces[f];
         scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
         if (C == 1) fill(f, 0, std::integral_constant<std::size_t, 1>());
@@ -434,7 +436,7 @@ std::vector<std::uint32_t> group_by_band(std::size_t n, std::size_t nb, Bands ba
 // Supersampling band by band. Each pixel's sum takes exactly the additions, in exactly the order,
 // of a whole-image pass (faces in face order, then the late terms), so banding changes no bit.
 // The sums of channel c are plane c of the band's buffer; a face is scanned once for all of them.
-void supersampling(const Model& m, const Prepared& p, Image* out) {
+void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook progress) {
     const std::size_t W = std::size_t(m.width), H = std::size_t(m.height), C = std::size_t(m.channels);
     const std::size_t band = std::max<std::size_t>(1, kBandBytes / (W * C * sizeof(double)));
     const std::size_t nb = (H + band - 1) / band;
@@ -460,6 +462,7 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     std::vector<Span> spans;
     const double maxval = m.maxval;
     for (std::size_t b = 0; b < nb; ++b) {
+        progress("reconstruct", double(b) / double(nb));
         const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
         for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
             const std::uint32_t f = band_faces[k];
@@ -490,12 +493,13 @@ void supersampling(const Model& m, const Prepared& p, Image* out) {
     }
 }
 
-Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out) {
+Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out, ProgressHook progress) {
     Prepared p;
     if (Status s = prepare(m, false, given, &p); !s) return s;
     Image im(m.width, m.height, m.maxval, m.channels);
-    if (supersample) supersampling(m, p, &im);
-    else point_evaluation(m, p, &im);
+    if (supersample) supersampling(m, p, &im, progress);
+    else point_evaluation(m, p, &im, progress);
+    progress("reconstruct", 1.0);
     *out = std::move(im);
     return Status::success();
 }
@@ -507,10 +511,12 @@ Status check_triangulation(const Model& m) {
     return prepare(m, true, nullptr, &p);
 }
 
-Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out) {
-    return reconstruct_with(m, &topo, supersample, out);
+Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out, ProgressHook progress) {
+    return reconstruct_with(m, &topo, supersample, out, progress);
 }
 
-Status reconstruct(const Model& m, bool supersample, Image* out) { return reconstruct_with(m, nullptr, supersample, out); }
+Status reconstruct(const Model& m, bool supersample, Image* out, ProgressHook progress) {
+    return reconstruct_with(m, nullptr, supersample, out, progress);
+}
 
 }  // namespace erd

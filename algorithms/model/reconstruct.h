@@ -21,6 +21,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
 #include "algorithms/model/model_topology.h"
+#include "kernel/progress.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -35,10 +36,11 @@ Status check_triangulation(const Model& m);
 // Renders m into *out (W x H, m.channels, m.maxval): supersample ? 4x4 supersampling : point evaluation.
 // Runs the checks of check_triangulation first (all but the pixel count, which they imply), so
 // it never fails in any other way on any model.
-Status reconstruct(const Model& m, bool supersample, Image* out);
+// progress: "reconstruct" with the fraction of faces (point evaluation) or row bands done.
+Status reconstruct(const Model& m, bool supersample, Image* out, ProgressHook progress = {});
 
 // The same with m's adjacency already built (topo = build_topology(m), e.g. from read_model()),
 // which saves building it again; a topo whose sizes do not fit m is rebuilt.
-Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out);
+Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out, ProgressHook progress = {});
 
 }  // namespace erd

@@ -168,6 +168,11 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     const std::string kind = std::string(erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "") +
                              (C > 1 ? "; colour: z from BT.601 luma, the vertex colours are the RGB values" : "");
     std::size_t facets = 0;
+    // Progress over the text lines (vertices, then faces), about every 1%.
+    const std::size_t lines = pos.size() + face_idx.size(), every = lines / 100 + 1;
+    const auto tick = [&](std::size_t i) {
+        if (options.progress && i % every == 0) options.progress("export", double(i) / double(lines));
+    };
     if (options.format == MeshFormat::stl) {
         for (auto& t : face_idx) std::swap(t[1], t[2]);
         write_stl(pos, face_idx, options.base, out, &facets);
@@ -175,14 +180,21 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         if (C == 1)
-            for (const auto& p : pos) append(out, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                tick(i);
+                append(out, "v %.9g %.9g %.9g\n", pos[i][0], pos[i][1], pos[i][2]);
+            }
         else
             for (std::size_t i = 0; i < pos.size(); ++i) {
+                tick(i);
                 append(out, "v %.9g %.9g %.9g", pos[i][0], pos[i][1], pos[i][2]);
                 const auto unit = [&](double v) { return std::min(1.0, std::max(0.0, v / double(m.maxval))); };
                 append(out, " %.6g %.6g %.6g\n", unit(rgb[i][0]), unit(rgb[i][1]), unit(rgb[i][2]));
             }
-        for (const auto& t : face_idx) append_face(out, "f %u %u %u\n", t[0] + 1, t[2] + 1, t[1] + 1);
+        for (std::size_t i = 0; i < face_idx.size(); ++i) {
+            tick(pos.size() + i);
+            append_face(out, "f %u %u %u\n", face_idx[i][0] + 1, face_idx[i][2] + 1, face_idx[i][1] + 1);
+        }
     } else {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
@@ -190,14 +202,21 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
         if (C > 1) out->append("property uchar red\nproperty uchar green\nproperty uchar blue\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
         if (C == 1)
-            for (const auto& p : pos) append(out, "%.9g %.9g %.9g\n", p[0], p[1], p[2]);
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                tick(i);
+                append(out, "%.9g %.9g %.9g\n", pos[i][0], pos[i][1], pos[i][2]);
+            }
         else
             for (std::size_t i = 0; i < pos.size(); ++i) {
+                tick(i);
                 append(out, "%.9g %.9g %.9g", pos[i][0], pos[i][1], pos[i][2]);
                 const auto byte = [&](double v) { return std::min(255.0, std::max(0.0, std::floor(v * 255.0 / double(m.maxval) + 0.5))); };
                 append(out, " %.0f %.0f %.0f\n", byte(rgb[i][0]), byte(rgb[i][1]), byte(rgb[i][2]));
             }
-        for (const auto& t : face_idx) append_face(out, "3 %u %u %u\n", t[0], t[2], t[1]);
+        for (std::size_t i = 0; i < face_idx.size(); ++i) {
+            tick(pos.size() + i);
+            append_face(out, "3 %u %u %u\n", face_idx[i][0], face_idx[i][2], face_idx[i][1]);
+        }
     }
     if (counts) {
         counts->vertices = pos.size();

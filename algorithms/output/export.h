@@ -24,6 +24,7 @@
 #include <string>
 
 #include "algorithms/model/model.h"
+#include "kernel/progress.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -34,6 +35,7 @@ struct ExportOptions {
     MeshFormat format = MeshFormat::obj;
     double zscale = 0;  // <= 0: the default max(W, H) / (10 * maxval)
     double base = 0;    // STL only: > 0 makes a solid of this base height (see above)
+    ProgressHook progress;  // "export", the fraction of vertices and faces written (OBJ, PLY)
 };
 
 // Counts of what export_mesh writes (for tests and messages).

@@ -202,8 +202,12 @@ Status render_raster(const Model& m, const RgbImage* background, const RenderOpt
     auto px = [&](LatticePoint p) { return place(p.x, o.crop_x, s); };
     auto py = [&](LatticePoint p) { return place(p.y, o.crop_y, s); };
     // Thin edges first so the thick constrained ones stay on top.
+    const std::size_t every = edges.size() / 50 + 1;
     for (int pass = 0; pass < 2; ++pass)
-        for (const ModelEdge& e : edges) {
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+            if (options.progress && i % every == 0)
+                options.progress("render", 0.5 * (double(pass) + double(i) / double(edges.size())));
+            const ModelEdge& e = edges[i];
             if (e.constrained != (pass == 1)) continue;
             LatticePoint a = m.vertices[e.a], b = m.vertices[e.b];
             draw_segment(out, px(a), py(a), px(b), py(b), e.constrained ? o.constrained_width : o.edge_width,

@@ -14,6 +14,7 @@
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
+#include "kernel/progress.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -40,6 +41,7 @@ struct RenderOptions {
     double edge_width = 1.0;         // output pixels
     double constrained_width = 2.5;  // output pixels
     double vertex_radius = 1.6;      // output pixels
+    ProgressHook progress;           // render_raster: "render", the fraction of edges drawn
 };
 
 // The smallest integer scale that makes the larger side of the (cropped) picture at least 512

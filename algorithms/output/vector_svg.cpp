@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <unordered_map>
 
-#include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
 #include "algorithms/model/reconstruct.h"
 
@@ -32,16 +31,17 @@ std::string short_num(double v, int decimals) {
 
 std::string integer(double v) { return short_num(v, 0); }
 
-// Shortest #rgb or #rrggbb of a gray level.
-std::string gray_hex(int g) {
+// Shortest #rgb or #rrggbb of a gray level (channel -1) or of that level in one channel of
+// black (0 red, 1 green, 2 blue).
+std::string level_hex(int g, int channel) {
     static const char* hex = "0123456789abcdef";
     std::string s = "#";
     if (g % 17 == 0) {
-        s.append(3, hex[g / 17]);
+        for (int k = 0; k < 3; ++k) s += channel < 0 || channel == k ? hex[g / 17] : '0';
     } else {
         for (int k = 0; k < 3; ++k) {
-            s += hex[g >> 4];
-            s += hex[g & 15];
+            s += channel < 0 || channel == k ? hex[g >> 4] : '0';
+            s += channel < 0 || channel == k ? hex[g & 15] : '0';
         }
     }
     return s;
@@ -71,14 +71,17 @@ struct Pt {
     double u, v;
 };
 
-// The paint of a face with corners p (user units) and values z (8-bit levels) in one channel:
-// one colour when flat, else a gradient on the channel's template "_" (written to *defs the first
-// time those end points occur). Colour will call it once per channel, each with its own template.
-std::string plane_paint(const Pt p[3], const double z[3], std::unordered_map<std::string, std::string>* gradients,
+// The gradient templates: gray black to white; colour black to pure red, green, blue.
+const char* const kTemplate[4] = {"_", "_r", "_g", "_b"};
+
+// The paint of a face with corners p (user units) and values z (8-bit levels) in one channel
+// (-1 gray, else 0..2): one colour when flat, else a gradient on the channel's template (written
+// to *defs the first time those end points occur in that channel).
+std::string plane_paint(const Pt p[3], const double z[3], int channel, std::unordered_map<std::string, std::string>* gradients,
                         std::string* defs) {
     const double zmin = std::min({z[0], z[1], z[2]}), zmax = std::max({z[0], z[1], z[2]});
     if (zmax - zmin < kFlatRange || zmax <= 0 || zmin >= 255)
-        return gray_hex(int(std::clamp(std::floor((z[0] + z[1] + z[2]) / 3 + 0.5), 0.0, 255.0)));
+        return level_hex(int(std::clamp(std::floor((z[0] + z[1] + z[2]) / 3 + 0.5), 0.0, 255.0)), channel);
     // The plane z = zc + g.(p - c) through the corners, c the centroid; its 0 and 255
     // points along g are the gradient's ends.
     double du1 = p[1].u - p[0].u, dv1 = p[1].v - p[0].v, du2 = p[2].u - p[0].u, dv2 = p[2].v - p[0].v;
@@ -99,11 +102,12 @@ std::string plane_paint(const Pt p[3], const double z[3], std::unordered_map<std
                                  kGradientTolerance;
         if (close) break;
     }
-    std::string key = s[0] + " " + s[1] + " " + s[2] + " " + s[3];
+    const char* tmpl = kTemplate[channel + 1];
+    std::string key = tmpl + (" " + s[0]) + " " + s[1] + " " + s[2] + " " + s[3];
     auto it = gradients->find(key);
     if (it == gradients->end()) {
         it = gradients->emplace(key, gradient_id(gradients->size())).first;
-        *defs += "<linearGradient id=\"" + it->second + "\" xlink:href=\"#_\" x1=\"" + s[0] + "\" y1=\"" + s[1] + "\" x2=\"" +
+        *defs += "<linearGradient id=\"" + it->second + "\" xlink:href=\"#" + tmpl + "\" x1=\"" + s[0] + "\" y1=\"" + s[1] + "\" x2=\"" +
                  s[2] + "\" y2=\"" + s[3] + "\"/>\n";
     }
     return "url(#" + it->second + ")";
@@ -112,8 +116,8 @@ std::string plane_paint(const Pt p[3], const double z[3], std::unordered_map<std
 }  // namespace
 
 Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string* out) {
-    if (Status st = require_gray(m, "the vector picture"); !st) return st;
-    if (Status st = check_triangulation(m); !st) return st;
+    if (Status st = check_triangulation(m); !st) return st;  // 1 or 3 channels, values of every channel
+    const int C = m.channels;
     if (!(o.scale > 0) || !std::isfinite(o.scale)) return Status::bad_input("scale must be a positive finite number");
     int cx = o.crop_x, cy = o.crop_y, cw = o.crop_w, ch = o.crop_h;
     if (cw == 0 || ch == 0) {
@@ -153,32 +157,48 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
     if (o.seams == SeamFix::crisp) t += " shape-rendering=\"crispEdges\"";
     t += ">\n<desc>erd vector: " + std::to_string(m.width) + "x" + std::to_string(m.height) + ", " +
          std::to_string(m.vertices.size()) + " vertices, " + std::to_string(m.faces.size()) + " faces</desc>\n";
-    t += "<linearGradient id=\"_\" gradientUnits=\"userSpaceOnUse\"><stop/><stop offset=\"1\" stop-color=\"#fff\"/></linearGradient>\n";
-    // Layered: the faces once in a group that is drawn twice, without and then with anti-aliasing.
-    if (o.seams == SeamFix::layered) t += "<defs><g id=\"_m\">\n";
-
-    std::unordered_map<std::string, std::string> gradients;  // end points -> id
-    for (std::size_t f = 0; f < m.faces.size(); ++f) {
-        const auto& fc = m.faces[f];
-        Pt p[3], q[3];
-        double z[3];
-        for (int k = 0; k < 3; ++k) {
-            p[k] = at[fc[std::size_t(k)]];
-            q[k] = drawn[fc[std::size_t(k)]];
-            z[k] = corner_value(m, std::uint32_t(3 * f + std::size_t(k))) * level;
-        }
-        double lo = std::min({q[0].u, q[1].u, q[2].u}), hi = std::max({q[0].u, q[1].u, q[2].u});
-        double top = std::min({q[0].v, q[1].v, q[2].v}), bottom = std::max({q[0].v, q[1].v, q[2].v});
-        if (hi <= vx0 || lo >= vx1 || bottom <= vy0 || top >= vy1) continue;
-
-        const std::string paint = plane_paint(p, z, &gradients, &t);
-        t += "<path fill=\"" + paint + "\"";
-        t += " d=\"M";
-        for (int k = 0; k < 3; ++k) t += (k ? " " : "") + short_num(q[k].u, 1) + " " + short_num(q[k].v, 1);
-        t += "z\"/>\n";
+    if (C == 1) {
+        t += "<linearGradient id=\"_\" gradientUnits=\"userSpaceOnUse\"><stop/><stop offset=\"1\" stop-color=\"#fff\"/></linearGradient>\n";
+    } else {
+        for (int c = 0; c < 3; ++c)
+            t += std::string("<linearGradient id=\"") + kTemplate[c + 1] + "\" gradientUnits=\"userSpaceOnUse\"><stop/><stop offset=\"1\" stop-color=\"" +
+                 level_hex(255, c) + "\"/></linearGradient>\n";
     }
-    if (o.seams == SeamFix::layered)
-        t += "</g></defs>\n<use xlink:href=\"#_m\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#_m\"/>\n";
+
+    std::unordered_map<std::string, std::string> gradients;  // template and end points -> id
+    // One layer per channel (gray: one). Colour layers after the first are screened over the ones
+    // below: screen(a, b) = a + b - ab per component, which adds layers that are black in each
+    // other's channels exactly.
+    for (int c = 0; c < C; ++c) {
+        const int channel = C == 1 ? -1 : c;
+        const std::string group = C == 1 ? "_m" : "_m" + std::to_string(c);
+        if (c > 0) t += "<g style=\"mix-blend-mode:screen\">\n";
+        // Layered: the faces once in a group that is drawn twice, without and then with anti-aliasing.
+        if (o.seams == SeamFix::layered) t += "<defs><g id=\"" + group + "\">\n";
+        for (std::size_t f = 0; f < m.faces.size(); ++f) {
+            const auto& fc = m.faces[f];
+            Pt p[3], q[3];
+            double z[3];
+            for (int k = 0; k < 3; ++k) {
+                p[k] = at[fc[std::size_t(k)]];
+                q[k] = drawn[fc[std::size_t(k)]];
+                z[k] = corner_value(m, std::uint32_t(3 * f + std::size_t(k)), c) * level;
+            }
+            double lo = std::min({q[0].u, q[1].u, q[2].u}), hi = std::max({q[0].u, q[1].u, q[2].u});
+            double top = std::min({q[0].v, q[1].v, q[2].v}), bottom = std::max({q[0].v, q[1].v, q[2].v});
+            if (hi <= vx0 || lo >= vx1 || bottom <= vy0 || top >= vy1) continue;
+
+            const std::string paint = plane_paint(p, z, channel, &gradients, &t);
+            t += "<path fill=\"" + paint + "\"";
+            t += " d=\"M";
+            for (int k = 0; k < 3; ++k) t += (k ? " " : "") + short_num(q[k].u, 1) + " " + short_num(q[k].v, 1);
+            t += "z\"/>\n";
+        }
+        if (o.seams == SeamFix::layered)
+            t += "</g></defs>\n<use xlink:href=\"#" + group + "\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group +
+                 "\"/>\n";
+        if (c > 0) t += "</g>\n";
+    }
     t += "</svg>\n";
     return Status::success();
 }

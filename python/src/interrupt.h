@@ -1,6 +1,6 @@
 // Long library calls without the interpreter lock, interruptible with Ctrl-C.
 //
-// The library reports progress through a ProgressHook (algorithms/methods/progress.h) and stops
+// The library reports progress through a ProgressHook (kernel/progress.h) and stops
 // when the hook's cancel function says so. Python's own SIGINT handler only sets a flag that
 // PyErr_CheckSignals turns into KeyboardInterrupt; that needs the lock, so the progress function
 // takes it, at most every 50 ms and only on the main thread (the only one Python delivers signals
@@ -11,7 +11,7 @@
 #include <chrono>
 #include <memory>
 
-#include "algorithms/methods/progress.h"
+#include "kernel/progress.h"
 
 namespace erd::py {
 

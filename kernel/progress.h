@@ -1,5 +1,6 @@
 // A progress hook the library can call without printing: a function pointer and its context,
-// carried in a method's options struct. cli/progress.h supplies the function that draws it on a
+// carried in an options struct or passed to a long call (methods, reconstruct, render, export,
+// edges). cli/progress.h supplies the function that draws it on a
 // terminal; the Python binding (python/src) supplies one that notices Ctrl-C. A null hook costs
 // one branch per call.
 #pragma once

@@ -1,0 +1,89 @@
+// libFuzzer target for the stream framing (cli/framing.h): how far a pipe or device is read.
+//
+// The input's first byte picks the framer (image, model, triangulation), the second the size of
+// the reads after the first 4 KiB (as cli/fileio.cpp read_fd makes them); the rest is the stream.
+// Checks beyond "no crash": a framer error is one non-empty line; the framed bytes are a prefix
+// of the stream; a stream with a bad start (not P2, P5 or PNG) stops within its first read; and
+// whatever decodes as a whole file decodes the same from the framed bytes (reading from a pipe
+// never cuts a valid image or model short). Replay without libFuzzer: fuzz/replay.cpp.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "algorithms/model/model_io.h"
+#include "cli/framing.h"
+
+namespace {
+
+// read_fd's loop over an in-memory stream: the bytes it keeps, or false on a framer error.
+bool framed_read(const erd::cli::Framer& framer, const std::string& stream, std::size_t chunk, std::string* bytes,
+                 std::size_t* reads) {
+    bytes->clear();
+    *reads = 0;
+    std::uint64_t total = UINT64_MAX;
+    std::size_t at = 0;
+    while (at < stream.size()) {
+        std::size_t want = bytes->empty() ? 4096 : chunk;
+        if (total != UINT64_MAX) want = std::size_t(std::min<std::uint64_t>(want, total - bytes->size()));
+        if (want == 0) break;
+        const std::size_t n = std::min(want, stream.size() - at);
+        bytes->append(stream, at, n);
+        at += n;
+        ++*reads;
+        if (total == UINT64_MAX) {
+            erd::Status s = framer(*bytes, &total);
+            if (!s) {
+                if (s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
+                return false;
+            }
+            if (total < bytes->size()) bytes->resize(std::size_t(total));
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 2) return 0;
+    const int kind = data[0] % 3;
+    const std::size_t chunk = 1 + std::size_t(data[1]) * 97;
+    const std::string stream(reinterpret_cast<const char*>(data + 2), size - 2);
+    erd::cli::ImageLimits limits;
+    limits.max_side = 4096;
+    limits.max_pixels = std::int64_t(1) << 20;  // keeps every run fast; the logic is the same
+    const erd::cli::Framer framer = kind == 0 ? erd::cli::image_framer(limits) : erd::cli::model_framer(kind == 2);
+    std::string bytes;
+    std::size_t reads = 0;
+    const bool ok = framed_read(framer, stream, chunk, &bytes, &reads);
+    if (ok && stream.compare(0, bytes.size(), bytes) != 0) std::abort();
+    if (kind == 0) {
+        const bool bad_start = stream.size() >= 2 && static_cast<unsigned char>(stream[0]) != 0x89 &&
+                               !(stream[0] == 'P' && (stream[1] == '2' || stream[1] == '5'));
+        if (bad_start && reads > 1) std::abort();
+        erd::Image whole, framed;
+        std::string w;
+        const auto* p = reinterpret_cast<const unsigned char*>(stream.data());
+        if (erd::cli::decode_image(p, stream.size(), &whole, &w, nullptr, limits).ok()) {
+            if (!ok) std::abort();
+            const auto* q = reinterpret_cast<const unsigned char*>(bytes.data());
+            if (!erd::cli::decode_image(q, bytes.size(), &framed, &w, nullptr, limits).ok()) std::abort();
+            if (framed.width != whole.width || framed.height != whole.height || framed.maxval != whole.maxval ||
+                framed.samples != whole.samples)
+                std::abort();
+        }
+        return 0;
+    }
+    erd::Model whole, framed;
+    const bool whole_ok = kind == 2 ? erd::read_triangulation(stream, &whole).ok()
+                                    : erd::read_model(stream, erd::ModelFileKind::unknown, &whole).ok();
+    if (whole_ok) {
+        if (!ok) std::abort();
+        const bool framed_ok = kind == 2 ? erd::read_triangulation(bytes, &framed).ok()
+                                         : erd::read_model(bytes, erd::ModelFileKind::unknown, &framed).ok();
+        if (!framed_ok || framed.vertices != whole.vertices || framed.faces != whole.faces) std::abort();
+    }
+    return 0;
+}
