@@ -38,7 +38,7 @@ STB_HDR   := /usr/include/stb/stb_image.h
 ZLIB_HDR  := /usr/include/zlib.h
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
-.PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate
+.PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate codec-bench
 all: $(BUILD)/erd
 
 help:
@@ -50,6 +50,7 @@ help:
 	@echo "make asan       the ASan+UBSan build in build-asan/ (clang++)"
 	@echo "make embedded   the library at -Os -fno-exceptions -fno-rtti and docs/examples/embedded.cpp"
 	@echo "make bench      speed and memory benchmarks (medians)"
+	@echo "make codec-bench  .erdz bpp at equal PSNR against JPEG, JPEG 2000, WebP (installs them) -> out/codec/"
 	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make regenerate rewrite the docs the tests generate (docs/HOSTILE.md, docs/hostile_images.md)"
@@ -131,6 +132,9 @@ run: $(BUILD)/erd
 
 bench: $(BUILD)/erd
 	@bash bench/run.sh $(BUILD)/erd $(IMAGES)
+
+codec-bench: $(BUILD)/erd
+	@ERD=$(BUILD)/erd IMAGES=$(IMAGES) bash bench/codec.sh out/codec
 
 eval: $(BUILD)/erd
 	@bash tools/eval.sh $(BUILD)/erd $(IMAGES)

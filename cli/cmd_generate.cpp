@@ -21,10 +21,12 @@
 #include "api/erd.h"
 #include "cli/batch.h"
 #include "cli/command_line.h"
+#include "cli/codec_output.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
 #include "cli/image_io.h"
 #include "cli/memory_cap.h"
+#include "cli/model_file.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
 #include "cli/stats_json.h"
@@ -40,7 +42,7 @@ const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME [-i IMAGE]... [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
     "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] "
-    "[-j JOBS] [--summary FILE] [-q]",
+    "[-j JOBS] [--summary FILE] [--step Q | --bpp B | --step-psnr P] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.\n"
     "Many images: several -i or a folder, and outputs named by a pattern with {name} (the input's\n"
     "name without its extension): erd generate -m erdgpi -i photos/ -o out/{name}.erd -j 4 --summary s.csv.\n"
@@ -51,7 +53,7 @@ const CommandLine kGenerate = {
         {0, "gray", nullptr, "colour input: mesh its BT.601 luma (0.299 R + 0.587 G + 0.114 B) instead of the colour image"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
-        {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi); - = stdout"},
+        {'o', "output", "FILE", "output model: .model (ed, gpi) or .erd (erded, erdgpi), or .erdz (binary, either); - = stdout"},
         {'t', "triangulation", "FILE", "also write the triangulation (erd-triangulation 1)"},
         {'p', "polylines", "FILE", "also write the polylines (erd-polylines 1; none for ed, gpi)"},
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
@@ -88,6 +90,9 @@ const CommandLine kGenerate = {
         kProgressOption,
         {'j', "jobs", "N", "many images: N at a time (default 1; 0 = one per processor)"},
         {0, "summary", "FILE", "many images: a table of file, method, points, PSNR, seconds, status (.csv, or .json)"},
+        {0, "step", "Q", ".erdz: value quantisation step (default 1)"},
+        {0, "bpp", "B", ".erdz: the finest step whose file has at most B bits per pixel"},
+        {0, "step-psnr", "P", ".erdz: the coarsest step whose decoded model reconstructs at P dB or more"},
     },
     "no summary or progress lines", 0, 0, nullptr,
     methods_help,
@@ -206,6 +211,8 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     int exit_mode = 0;
     Status st;
     parse_options(a, &opt, &exit_mode, &st);
+    CodecChoice codec;
+    parse_codec_options(a, &codec, &st);
     if (!st) return rep.usage(st.message);
 
     if ((a.has("constraints") || a.has("no-detect")) && method->model != ModelKind::erd)
@@ -231,6 +238,7 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     if (!st) return st.message == "only one output can go to stdout" ? rep.usage(st.message) : rep.fail(st);
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
+    if (codec.given && !erdz_name(out)) return rep.usage("--step, --bpp and --step-psnr apply to .erdz outputs only");
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
@@ -294,9 +302,11 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     // Every output is staged (a temporary beside its target) and committed together at the end,
     // so a failure anywhere leaves every old file as it was (cli/outputs.h).
     t0 = std::chrono::steady_clock::now();
-    std::string bytes;
-    st = write_model(res.model, &bytes);
+    std::string bytes, codec_note;
+    codec.erdz.method = method->name;
+    st = model_bytes_for(out, res.model, &image, codec, &bytes, &codec_note);
     if (!st) return rep.fail(st);
+    if (!codec_note.empty()) rep.detail("erdz: " + codec_note);
     st = outputs.stage(out, bytes);
     if (!st) return rep.fail(st);
     if (!tri.empty()) {
@@ -378,6 +388,8 @@ static int run_generate(const Args& a, const Reporter& rep) {
     int exit_mode = 0;
     Status st;
     parse_options(a, &checked, &exit_mode, &st);
+    CodecChoice codec_checked;
+    parse_codec_options(a, &codec_checked, &st);
     std::size_t max_memory = 0;
     if (st && a.has("max-memory")) st = parse_memory_size(a.str("max-memory"), &max_memory);
     if (!st) return rep.usage(st.message);

@@ -21,6 +21,7 @@ int cmd_generate(int argc, char** argv);
 int cmd_reconstruct(int argc, char** argv);
 int cmd_render(int argc, char** argv);
 int cmd_export(int argc, char** argv);
+int cmd_convert(int argc, char** argv);
 
 // The thesis's seven programs (Appendix A.5), reached through argv[0] (issue: packaging).
 int thesis_alias(const char* name, int argc, char** argv, bool* handled);

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <memory>
 
+#include "algorithms/codec/erdz.h"
 #include "algorithms/model/model_io.h"
 
 namespace erd::cli {
@@ -140,6 +141,11 @@ Framer model_framer(bool triangulation) {
     auto next = std::make_shared<std::size_t>(4096);
     return [next, triangulation](const std::string& so_far, std::uint64_t* total) {
         *total = UINT64_MAX;
+        if (so_far.size() >= 4 && is_erdz(so_far)) {  // binary: its header gives the size
+            const std::uint64_t n = erdz_stream_size(so_far);
+            if (n != 0) *total = n;
+            return Status::success();
+        }
         if (std::memchr(so_far.data(), 0, so_far.size())) {
             *total = so_far.size();  // text has no NUL: the parser names the line
             return Status::success();

@@ -28,7 +28,8 @@ static const Command kCommands[] = {
     {"edges", "half-pixel edge map and polylines of an image", cmd_edges},
     {"render", "draw a mesh as SVG or PNG", cmd_render},
     {"export", "write a mesh as OBJ or PLY", cmd_export},
-    {"info", "size, maxval and bits per sample of an image", cmd_info},
+    {"convert", "rewrite a model as .model/.erd text or .erdz binary", cmd_convert},
+    {"info", "size, maxval and bits per sample of an image; sections of an .erdz", cmd_info},
     {"synth", "write a deterministic test image", cmd_synth},
     {"help", "list subcommands, or show one's help", cmd_help},
 };

@@ -1,5 +1,6 @@
 #include "cli/model_file.h"
 
+#include "algorithms/codec/erdz.h"
 #include "algorithms/model/model_io.h"
 #include "cli/fileio.h"
 #include "cli/framing.h"
@@ -28,12 +29,18 @@ bool is_triangulation(const std::string& text) {
 
 }  // namespace
 
-Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo) {
+Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo, ErdzInfo* info) {
     if (warning) warning->clear();
     std::string text;
     const ModelFileKind kind = model_kind_from_name(path);
     Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
     if (!st) return st;
+    if (is_erdz(text)) {
+        if (!(st = decode_erdz(text, out, info))) return Status::error(st.code, escape_name(path) + ": " + st.message);
+        if (topo && !(st = build_topology(*out, topo))) return Status::error(st.code, escape_name(path) + ": " + st.message);
+        return st;
+    }
+    if (info) *info = ErdzInfo();
     const ModelFileKind named = kind;
     ModelFileKind found = ModelFileKind::unknown;
     if (is_triangulation(text)) {
@@ -55,6 +62,16 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
     if (warning && named != ModelFileKind::unknown && named != found)
         *warning = escape_name(path) + ": the content is a " + extension_of(found) + " file, not a " + extension_of(named) +
                    " as the name says; read as " + extension_of(found);
+    return st;
+}
+
+bool erdz_name(const std::string& path) { return path.size() > 5 && path.compare(path.size() - 5, 5, ".erdz") == 0; }
+
+Status encode_model_file(const std::string& path, const Model& m, const ErdzOptions& options, std::string* bytes,
+                         ErdzInfo* info) {
+    if (!erdz_name(path)) return write_model(m, bytes);
+    Status st = encode_erdz(m, options, bytes, info);
+    if (!st) return Status::error(st.code, escape_name(path) + ": " + st.message);
     return st;
 }
 

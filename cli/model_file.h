@@ -1,7 +1,9 @@
-// Reading a model file (.model, .erd) from a path for the commands that draw or export one.
+// Reading a model file (.model, .erd, .erdz) from a path for the commands that draw or export one,
+// and the bytes of a model for the name it is written to.
 #pragma once
 #include <string>
 
+#include "algorithms/codec/erdz.h"
 #include "algorithms/model/model.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/status.h"
@@ -15,6 +17,17 @@ namespace erd::cli {
 // nothing is reported as the named kind reads it. A name that disagrees with readable content
 // sets *warning (may be null; cleared first). Messages start with the path.
 // *topo (may be null) receives the model's adjacency for a .model or .erd (see read_model).
-Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr);
+// A file that starts with the .erdz magic is decoded as one (algorithms/codec/erdz.h) whatever its
+// name; *info (may be null) then receives its section sizes (zeros for a text model).
+Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr,
+                       ErdzInfo* info = nullptr);
+
+// True when the name ends with ".erdz".
+bool erdz_name(const std::string& path);
+
+// The bytes of m as the name asks: .erdz encoded with `options` (*info, may be null, gets its
+// sizes), anything else the text model (algorithms/model/model_io.h write_model).
+Status encode_model_file(const std::string& path, const Model& m, const ErdzOptions& options, std::string* bytes,
+                         ErdzInfo* info = nullptr);
 
 }  // namespace erd::cli

@@ -2,7 +2,7 @@
 # Builds every fuzz/fuzz_*.cpp with libFuzzer + ASan + UBSan and runs each for SECONDS.
 # Prints "PASS name execs corpus" or "FAIL name" per target.
 # Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). FUZZ_BUILD=dir (default build-fuzz).
-# FUZZ_SHORT_SECONDS=S caps the targets named in FUZZ_SHORT (default fuzz_framing) at S seconds.
+# FUZZ_SHORT_SECONDS=S caps the targets named in FUZZ_SHORT (default fuzz_framing fuzz_erdz) at S seconds.
 set -u
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
@@ -30,7 +30,7 @@ for src in $targets; do
     dict=""; [[ -f fuzz/$name.dict ]] && dict="-dict=fuzz/$name.dict"
     secs=$SECONDS_EACH
     # FUZZ_SHORT_SECONDS caps the targets of FUZZ_SHORT (make test's smoke runs keep them short).
-    [[ " ${FUZZ_SHORT:-fuzz_framing} " == *" $name "* && -n ${FUZZ_SHORT_SECONDS:-} ]] && (( secs > FUZZ_SHORT_SECONDS )) && secs=$FUZZ_SHORT_SECONDS
+    [[ " ${FUZZ_SHORT:-fuzz_framing fuzz_erdz} " == *" $name "* && -n ${FUZZ_SHORT_SECONDS:-} ]] && (( secs > FUZZ_SHORT_SECONDS )) && secs=$FUZZ_SHORT_SECONDS
     if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$secs" \
         -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
         execs=$(grep -E 'stat::number_of_executed_units' $B/$name.log | awk '{print $2}')

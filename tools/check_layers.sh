@@ -8,6 +8,7 @@
 #                        erdgpi) includes another method's header: what two methods share lives in
 #                        a file of its own
 #   algorithms/output/   kernel/, imaging/, model/, output/
+#   algorithms/codec/    kernel/, imaging/, model/, codec/
 #   api/                 kernel/, algorithms/, api/
 #   imageio/             kernel/, algorithms/imaging/, imageio/, third_party/stb_glue.h, <zlib.h>
 #
@@ -27,6 +28,7 @@ allowed() {  # the include prefixes a folder may use
         algorithms/model) echo "kernel/ algorithms/imaging/ algorithms/model/" ;;
         algorithms/methods) echo "kernel/ algorithms/imaging/ algorithms/model/ algorithms/methods/" ;;
         algorithms/output) echo "kernel/ algorithms/imaging/ algorithms/model/ algorithms/output/" ;;
+        algorithms/codec) echo "kernel/ algorithms/imaging/ algorithms/model/ algorithms/codec/" ;;
         api) echo "kernel/ algorithms/ api/" ;;
         imageio) echo "kernel/ algorithms/imaging/ imageio/ third_party/stb_glue.h" ;;
         *) echo "" ;;  # a folder without a rule: every include of it is reported

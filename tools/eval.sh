@@ -111,6 +111,10 @@ echo "eval: ${#cases[@]} cases (${variants[*]}), $JOBS at a time; outputs under 
 printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"$OUT/raw.txt"
 
 # ---- docs/RESULTS.md ----
+# The codec table (make codec-bench) is kept: saved here, put back after the rewrite.
+codec_keep=$OUT/codec_section.md
+: >"$codec_keep"
+[[ -f $RESULTS ]] && awk '/^<!-- codec/ { on = 1 } on { print } /^<!-- \/codec -->/ { on = 0 }' "$RESULTS" >"$codec_keep"
 {
     echo "# Results"
     echo
@@ -194,6 +198,7 @@ printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"
     done
 } >"$RESULTS"
 echo "eval: wrote $RESULTS"
+if [[ -s $codec_keep ]]; then source tools/results_section.sh; put_section codec "$codec_keep" "$RESULTS"; fi
 # Table 3.4 (ERDED start-up modes): its own marked section, so it must run after the file is written.
 [[ -x tools/eval_startup.sh || -f tools/eval_startup.sh ]] && bash tools/eval_startup.sh "$ERD" "$IMAGES"
 # The hard-edged table (issue 15): its own marked section too.

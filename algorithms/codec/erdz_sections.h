@@ -1,0 +1,55 @@
+// The three coded sections of an .erdz file (algorithms/codec/erdz.h has the layout): each an
+// encoder that returns the section's bytes and a decoder that checks everything it reads.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/lattice.h"
+#include "kernel/status.h"
+
+namespace erd::codec {
+
+// The free vertices' lattice: cells (i, j) of a GW x GH grid, the point (2i, 2j) on the even
+// lattice of a W x H image (GW = W) or (i, j) on the doubled one (GW = 2W - 1).
+struct Lattice {
+    int width = 0, height = 0;  // image size
+    bool full = false;
+    std::int64_t cells_x() const { return full ? 2 * std::int64_t(width) - 1 : width; }
+    std::int64_t cells_y() const { return full ? 2 * std::int64_t(height) - 1 : height; }
+};
+
+// Positions: pts are distinct points of the lattice (any order). The decoder returns them in
+// quadtree order (Morton order of the cells), the order decoder_order puts them in.
+std::string encode_positions(const Lattice& lat, std::vector<LatticePoint> pts);
+void decoder_order(const Lattice& lat, std::vector<LatticePoint>* pts);
+Status decode_positions(const unsigned char* data, std::size_t size, const Lattice& lat, std::vector<LatticePoint>* out);
+
+// Edges: segments between lattice points, each a constrained edge, as chains of points.
+using Chain = std::vector<LatticePoint>;
+std::vector<Chain> make_chains(const std::vector<std::array<LatticePoint, 2>>& segments);
+std::string encode_chains(const std::vector<Chain>& chains);
+// Points must lie in [0, 2W-2] x [0, 2H-2], on the even lattice when `even`; at most max_steps
+// steps in all.
+Status decode_chains(const unsigned char* data, std::size_t size, int width, int height, bool even,
+                     std::uint64_t max_steps, std::vector<Chain>* out);
+
+// Values: `units` values per channel, coded in unit order. unit_corners lists, per unit
+// (CSR: begin[u] .. begin[u+1]), the units of the other two corners of every face the unit
+// covers; those below u are the already-coded neighbours its prediction averages.
+struct ValueGraph {
+    std::vector<std::uint32_t> begin;      // units + 1
+    std::vector<std::uint32_t> neighbour;  // unit indices
+    std::size_t units() const { return begin.empty() ? 0 : begin.size() - 1; }
+};
+// q: units * channels quantised values, q[u * channels + c].
+std::string encode_values(const ValueGraph& g, int channels, const std::vector<std::int64_t>& q);
+Status decode_values(const unsigned char* data, std::size_t size, const ValueGraph& g, int channels,
+                     std::vector<std::int64_t>* q);
+
+// The largest |k| a value section holds (values up to 1e9 at the finest step).
+constexpr std::int64_t kMaxQuantised = std::int64_t(1) << 39;
+
+}  // namespace erd::codec

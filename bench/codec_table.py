@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+# The codec table of docs/RESULTS.md from bench/codec.sh's rd.tsv and rows.tsv: per erd row its
+# PSNR, bpp and bpp per section, and each other codec's bpp at the same PSNR, interpolated
+# linearly in (PSNR, log bpp) between the sweep points around it.
+import json
+import math
+import sys
+
+rd_path, rows_path = sys.argv[1], sys.argv[2]
+curves = {}
+for line in open(rd_path).read().splitlines()[1:]:
+    img, codec, setting, bpp, psnr = line.split('\t')
+    curves.setdefault((img, codec), []).append((float(bpp), float(psnr)))
+
+
+def at_psnr(points, target):
+    """bpp of the codec at `target` dB: '<x' / '>x' outside the sweep."""
+    pts = sorted(points)
+    # The lower-rate envelope: keep points whose PSNR beats every cheaper point.
+    env, best = [], -1e9
+    for b, p in pts:
+        if p > best:
+            env.append((b, p))
+            best = p
+    if target <= env[0][1]:
+        return '<%.3f' % env[0][0], env[0][0]
+    if target > env[-1][1]:
+        return '>%.3f' % env[-1][0], None
+    for (b0, p0), (b1, p1) in zip(env, env[1:]):
+        if p0 <= target <= p1:
+            t = (target - p0) / (p1 - p0) if p1 > p0 else 0.0
+            b = math.exp(math.log(b0) + t * (math.log(b1) - math.log(b0)))
+            return '%.3f' % b, b
+    return 'n/a', None
+
+
+print('| image | density | method | step | PSNR (dB) | erd bpp | positions / edges / values | erd envelope | JPEG | JPEG 2000 | WebP |')
+print('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |')
+for line in open(rows_path).read().splitlines():
+    img, d, method, psnr, js = line.split('\t')
+    j = json.load(open(js))
+    px = j['width'] * j['height']
+    psnr = float(psnr)
+    erd_bpp = j['bpp']
+    cells = []
+    for codec in ('jpeg', 'jpeg2000', 'webp'):
+        text, b = at_psnr(curves.get((img, codec), [(1, 0)]), psnr)
+        # Percent only where interpolated; '<x' / '>x' are bounds.
+        mark = ' (erd %+.0f%%)' % (100.0 * (erd_bpp - b) / b) if b is not None and text[0] not in '<>' else ''
+        cells.append(text + mark)
+    sections = '%.4f / %.4f / %.4f' % (j['position_bits'] / px, j['edge_bits'] / px, j['value_bits'] / px)
+    # The cheapest erd point at this PSNR over every method, density and step (the point count
+    # traded against the step).
+    every = [p for (i, c), pts in curves.items() if i == img and c.startswith('erd') for p in pts]
+    envelope = at_psnr(every, psnr)[0]
+    print('| %s | %s%% | %s | %g | %.2f | %.4f | %s | %s | %s |' % (img, d, method.upper(), j['step'], psnr, erd_bpp, sections,
+                                                                 envelope, ' | '.join(cells)))
