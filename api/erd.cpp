@@ -6,6 +6,7 @@
 #include <cstring>
 #include <string>
 #include <utility>
+#include <unordered_set>
 #include <vector>
 
 #include "algorithms/methods/methods.h"
@@ -155,6 +156,44 @@ Status psnr(const ImageView& original, const ImageView& approx, double* db) {
     return erd::psnr(a, b, db);
 }
 
+namespace {
+
+std::uint64_t edge_key(VertInd a, VertInd b) {
+    return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+}
+
+// The ERD methods' data-dependent flips (their default) leave faces that are not the constrained
+// Delaunay ones: flip every unconstrained edge of *cdt that the model lacks into the other
+// diagonal when the model has that one, pass after pass until nothing changes. Code::input when
+// the result still lacks an edge of the model (faces that are no triangulation of its points).
+Status restore_flips(const Model& model, const std::vector<VertInd>& index, Cdt* cdt) {
+    std::unordered_set<std::uint64_t> edges;
+    for (const auto& f : model.faces) {
+        if (f[0] >= index.size() || f[1] >= index.size() || f[2] >= index.size())
+            return Status::bad_input("triangulate: a face refers to a vertex beyond the model's");
+        for (int k = 0; k < 3; ++k) edges.insert(edge_key(index[f[std::size_t(k)]], index[f[std::size_t((k + 1) % 3)]]));
+    }
+    auto missing = [&](EdgeInd e) { return edges.count(edge_key(cdt->org(e), cdt->dest(e))) == 0; };
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (EdgeInd e = 0; e < 3 * cdt->face_count(); ++e) {
+            if (cdt->on_hull(e) || cdt->constrained(e) || cdt->org(e) > cdt->dest(e) || !missing(e) || !cdt->can_flip(e))
+                continue;
+            const EdgeInd d = cdt->flip_edge(e);
+            if (missing(d))
+                cdt->flip_edge(d);  // the model has neither diagonal here yet: back, try later
+            else
+                changed = true;
+        }
+    }
+    for (EdgeInd e = 0; e < 3 * cdt->face_count(); ++e)
+        if (missing(e))
+            return Status::bad_input("triangulate: the model's faces are not a triangulation of its vertices and constraints");
+    return Status::success();
+}
+
+}  // namespace
+
 Status triangulate(const Model& model, Cdt* cdt) {
     if (!cdt) return Status::bad_input("triangulate: no triangulation to fill");
     if (model.width < 1 || model.height < 1 || model.vertices.empty())
@@ -177,7 +216,7 @@ Status triangulate(const Model& model, Cdt* cdt) {
         st = cdt->insert_constraint(index[c[0]], index[c[1]]);
         if (!st) return st;
     }
-    return Status::success();
+    return restore_flips(model, index, cdt);
 }
 
 }  // namespace erd::api

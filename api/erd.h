@@ -128,11 +128,13 @@ Status reconstruct(const Model& model, bool supersample, Image* out);
 // counts differ.
 Status psnr(const ImageView& original, const ImageView& approx, double* db);
 
-// Rebuilds the constrained Delaunay triangulation of a model (its vertices and constrained
-// edges) in *cdt. The triangulation depends only on the point and constraint sets, so its faces
-// are the model's faces as point triples; vertex numbers differ (the Cdt numbers the four
-// corners 0..3). Code::input for an empty model or one whose points or constraint indices lie
-// outside it.
+// Rebuilds the triangulation of a model in *cdt: the constrained Delaunay triangulation of its
+// vertices and constrained edges (it depends only on those sets), then the flips that give the
+// model's faces where they are not Delaunay (the ERD methods' data-dependent flips, --flips), so
+// its faces are the model's faces as point triples; vertex numbers differ (the Cdt numbers the
+// four corners 0..3). After such flips the Cdt passes verify_topology(), not verify().
+// Code::input for an empty model, one whose points or indices lie outside it, or faces that no
+// flips reach.
 Status triangulate(const Model& model, Cdt* cdt);
 
 }  // namespace erd::api
