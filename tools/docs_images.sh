@@ -9,7 +9,9 @@
 #   Mesh optimisation (issue 16, part "quality"): ERDGPI on bull 0.125% and lena 1%, before (the
 #   previous default: --flips 0 --wedge-prior 0 --wedge-bounds -1) and after (the default): a
 #   detail of the mesh over the reconstruction and its error map.
-#   PARTS (default "bull hard quality") picks the parts.
+#   Colour (issue 17, part "colour"): kodim03 (colour/) at 1%, ERDGPI beside GPI at the same point
+#   count: the reconstruction and the mesh over it, at half size.
+#   PARTS (default "bull hard quality colour") picks the parts.
 # usage: tools/docs_images.sh ERD_BIN IMAGES_DIR [OUT_DIR]
 set -euo pipefail
 erd=${1:-build/erd}
@@ -23,7 +25,22 @@ if [ ! -x "$erd" ]; then echo "docs_images: no erd binary at $erd (run make firs
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-parts=${PARTS:-bull hard quality}
+parts=${PARTS:-bull hard quality colour}
+
+if [[ " $parts " == *" colour "* ]]; then
+    src="$images/color/kodim03.ppm"
+    if [ ! -f "$src" ]; then echo "docs_images: $src not found" >&2; exit 1; fi
+    for method in erdgpi gpi; do
+        case $method in erd*) ext=erd ;; *) ext=model ;; esac
+        model="$tmp/kodim03_$method.$ext"
+        "$erd" generate -m "$method" -i "$src" -d 1 -q -o "$model"
+        "$erd" reconstruct "$model" -q -o "$tmp/kodim03_$method.ppm"
+        echo "docs_images: kodim03 $method: PSNR $("$erd" psnr "$src" "$tmp/kodim03_$method.ppm") dB" >&2
+        "$erd" render "$model" -q --over-reconstruction --no-edges --scale 0.5 -o "$out/colour_kodim03_${method}_reconstruction.png"
+        "$erd" render "$model" -q --over-reconstruction --scale 0.5 -o "$out/colour_kodim03_${method}_mesh.png"
+    done
+    "$erd" render "$model" -q --over "$src" --no-edges --scale 0.5 -o "$out/colour_kodim03_original.png"
+fi
 
 if [[ " $parts " == *" quality "* ]]; then
     for c in "bull 0.125 260,40,320,240" "lena 1 200,180,200,200"; do
