@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "algorithms/model/metrics.h"
+#include "cli/batch.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
@@ -14,22 +15,27 @@ namespace erd::cli {
 
 const CommandLine kPsnr = {
     "psnr",
-    "erd psnr ORIGINAL APPROX [--channels] [--gray] [--json]",
+    "erd psnr ORIGINAL APPROX... [--channels] [--gray] [--json] [-j JOBS] [--summary FILE]",
     "Prints the PSNR of APPROX against ORIGINAL in dB with 4 decimals (\"inf\" when they are\n"
     "identical). Peak = 2^p - 1 with p = ceil(log2(maxval + 1)) of the original; PSNR =\n"
     "10 log10(peak^2 / MSE). Both images must have the same size, maxval and channels; for\n"
-    "colour the MSE is averaged over the three channels and all pixels.",
+    "colour the MSE is averaged over the three channels and all pixels.\n"
+    "Many images (several APPROX, or a folder): ORIGINAL is a pattern with {name}, the APPROX's\n"
+    "name without its extension (erd psnr 'photos/{name}.png' rec/ --summary psnr.csv); each\n"
+    "line is then \"APPROX PSNR\".",
     {
+        {'j', "jobs", "N", "many images: N at a time (default 1; 0 = one per processor)"},
+        {0, "summary", "FILE", "many images: a table of file, points, PSNR, seconds, status (.csv, or .json)"},
         {0, "json", nullptr, "{\"mse\":..,\"peak\":..,\"psnr\":..} on stdout (psnr null when identical)"},
         {0, "channels", nullptr, "colour: also the PSNR of each channel, a second line \"R x G y B z\" (JSON: \"channels\":[..])"},
         {0, "gray", nullptr, "compare the BT.601 luma of colour images (a colour and a gray image then compare)"},
     },
-    "no warnings", 2, 2, "expected ORIGINAL and APPROX",
+    "no warnings", 2, 1 << 20, "expected ORIGINAL and APPROX",
 };
 
-static int run_psnr(const Args& args, const Reporter& rep) {
-    const std::string& a = args.positional()[0];
-    const std::string& b = args.positional()[1];
+// One pair; in a batch (record not null) the line names APPROX and the PSNR goes to the record.
+static int psnr_one(const Args& args, const Reporter& rep, const std::string& a, const std::string& b,
+                    BatchRecord* record) {
     if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin");
 
     Image orig, approx;
@@ -51,6 +57,12 @@ static int run_psnr(const Args& args, const Reporter& rep) {
     }
     const double peak = psnr_peak(orig.maxval);
     const bool channels = args.has("channels") && orig.channels == 3;
+    if (record) {
+        record->has_psnr = !std::isinf(p);
+        record->psnr = p;
+        std::printf(std::isinf(p) ? "%s inf\n" : "%s %.4f\n", b.c_str(), p);
+        return 0;
+    }
     if (args.has("json")) {
         JsonObject j;
         j.num("mse", e).num("peak", peak).num("psnr", p);
@@ -73,6 +85,25 @@ static int run_psnr(const Args& args, const Reporter& rep) {
         std::printf("\n");
     }
     return 0;
+}
+
+static int run_psnr(const Args& args, const Reporter& rep) {
+    const std::vector<std::string>& pos = args.positional();
+    const std::vector<std::string> approx(pos.begin() + 1, pos.end());
+    if (!wants_batch(approx, pos[0], args.has("jobs") || args.has("summary")))
+        return psnr_one(args, rep, pos[0], pos[1], nullptr);
+    if (args.has("json")) return rep.usage("many images: --json is for one pair (--summary s.json writes a table)");
+    if (!has_name_field(pos[0]))
+        return rep.usage("many images: ORIGINAL must name each original by a pattern with {name} ('photos/{name}.png')");
+    std::vector<BatchItem> items;
+    int jobs = 1;
+    Status st = expand_inputs(approx, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg"}, &items);
+    if (!st) return rep.fail(st);
+    if (args.has("jobs") && !(st = parse_jobs(args.str("jobs"), &jobs))) return rep.usage(st.message);
+    const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
+        return psnr_one(args, rep, expand_pattern(pos[0], it), it.input, rec);
+    };
+    return run_batch(items, jobs, job, args.str("summary"), rep, false);
 }
 
 int cmd_psnr(int argc, char** argv) { return run_command(kPsnr, argc, argv, run_psnr); }

@@ -69,7 +69,7 @@ static int run_reconstruct(const Args& args, const Reporter& rep) {
         return reconstruct_one(args, rep, models.empty() ? "-" : models[0], out, nullptr);
     std::vector<BatchItem> items;
     int jobs = 1;
-    Status st = expand_inputs(models, {".model", ".erd"}, &items);
+    Status st = expand_inputs(models, {".model", ".erd", ".erdz"}, &items);
     if (st && !(st = check_patterns(items, {out == "-" ? std::string() : out}))) return rep.usage(st.message);
     if (!st) return rep.fail(st);
     if (out == "-" && items.size() > 1) return rep.usage("many models: name the images with -o and {name} (rec/{name}.pgm)");

@@ -112,6 +112,20 @@ TEST_CASE("many files: one bad among them, the others done, exit 1, a summary ro
     REQUIRE(r.status == 0);
     CHECK(exists(t.file("out/a.pgm")));
     CHECK(exists(t.file("out/c.pgm")));
+    // psnr over the reconstructions, originals by a {name} pattern; b.pgm has no original.
+    spit(t.file("out/b.pgm"), "P5 junk\n");
+    REQUIRE(::rename(t.file("in/c.pgm").c_str(), t.file("c.pgm").c_str()) == 0);
+    r = run_in(t, "psnr '{name}.pgm' out -j 2 --summary p.csv");
+    INFO(r.out << r.err);
+    CHECK(r.status == 1);
+    CHECK(r.out.find("out/a.pgm ") != std::string::npos);
+    CHECK(r.out.find("out/c.pgm ") != std::string::npos);
+    CHECK(r.err.find("1 of 3 files failed") != std::string::npos);
+    const std::string pcsv = slurp(t.file("p.csv"));
+    INFO(pcsv);
+    CHECK(pcsv.find("\nout/a.pgm,") != std::string::npos);
+    CHECK(pcsv.find("\nout/b.pgm,,,,") != std::string::npos);
+    CHECK(run_in(t, "psnr a.pgm out").status == 2);  // many images need a {name} pattern
     // Usage errors before any work: one output file for several inputs, two inputs to one name.
     CHECK(run_in(t, "generate -m gpi -i a.pgm -i in -o one.model").status == 2);
     CHECK(run_in(t, "generate -m gpi -i a.pgm -i a.pgm -o 'out/{name}.model'").status == 2);
