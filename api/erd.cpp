@@ -164,8 +164,9 @@ std::uint64_t edge_key(VertInd a, VertInd b) {
 
 // The ERD methods' data-dependent flips (their default) leave faces that are not the constrained
 // Delaunay ones: flip every unconstrained edge of *cdt that the model lacks into the other
-// diagonal when the model has that one, pass after pass until nothing changes. Code::input when
-// the result still lacks an edge of the model (faces that are no triangulation of its points).
+// diagonal when the model has that one, pass after pass until nothing changes; a model edge
+// still missing then goes in as a constraint, and again. Code::input when the result still lacks
+// an edge of the model (faces that are no triangulation of its points).
 Status restore_flips(const Model& model, const std::vector<VertInd>& index, Cdt* cdt) {
     std::unordered_set<std::uint64_t> edges;
     for (const auto& f : model.faces) {
@@ -174,17 +175,35 @@ Status restore_flips(const Model& model, const std::vector<VertInd>& index, Cdt*
         for (int k = 0; k < 3; ++k) edges.insert(edge_key(index[f[std::size_t(k)]], index[f[std::size_t((k + 1) % 3)]]));
     }
     auto missing = [&](EdgeInd e) { return edges.count(edge_key(cdt->org(e), cdt->dest(e))) == 0; };
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (EdgeInd e = 0; e < 3 * cdt->face_count(); ++e) {
-            if (cdt->on_hull(e) || cdt->constrained(e) || cdt->org(e) > cdt->dest(e) || !missing(e) || !cdt->can_flip(e))
-                continue;
-            const EdgeInd d = cdt->flip_edge(e);
-            if (missing(d))
-                cdt->flip_edge(d);  // the model has neither diagonal here yet: back, try later
-            else
-                changed = true;
+    // Each round inserts every missing model edge as a constraint (inserting retriangulates its
+    // cavity, which can undo flips there, hence the rounds); the constraints only grow.
+    for (;;) {
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (EdgeInd e = 0; e < 3 * cdt->face_count(); ++e) {
+                if (cdt->on_hull(e) || cdt->constrained(e) || cdt->org(e) > cdt->dest(e) || !missing(e) ||
+                    !cdt->can_flip(e))
+                    continue;
+                const EdgeInd d = cdt->flip_edge(e);
+                if (missing(d))
+                    cdt->flip_edge(d);  // the model has neither diagonal here yet: back, try later
+                else
+                    changed = true;
+            }
         }
+        // A model edge still missing is crossed by more than one edge: insert it as a constraint
+        // (which flips its way in), as the .erdz encoder does.
+        bool inserted = false;
+        for (const auto& f : model.faces)
+            for (int k = 0; k < 3; ++k) {
+                const VertInd a = index[f[std::size_t(k)]], b = index[f[std::size_t((k + 1) % 3)]];
+                if (a < b && cdt->find_edge(a, b) == noEdge) {
+                    const Status st = cdt->insert_constraint(a, b);
+                    if (!st) return st;
+                    inserted = true;
+                }
+            }
+        if (!inserted) break;
     }
     for (EdgeInd e = 0; e < 3 * cdt->face_count(); ++e)
         if (missing(e))

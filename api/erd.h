@@ -132,7 +132,9 @@ Status psnr(const ImageView& original, const ImageView& approx, double* db);
 // vertices and constrained edges (it depends only on those sets), then the flips that give the
 // model's faces where they are not Delaunay (the ERD methods' data-dependent flips, --flips), so
 // its faces are the model's faces as point triples; vertex numbers differ (the Cdt numbers the
-// four corners 0..3). After such flips the Cdt passes verify_topology(), not verify().
+// four corners 0..3). After such flips the Cdt passes verify_topology(), not verify(); a flipped
+// edge that single flips cannot bring back is inserted as a constraint, so cdt->constrained()
+// may hold edges beyond model.constraints (the model's own discontinuities are those).
 // Code::input for an empty model, one whose points or indices lie outside it, or faces that no
 // flips reach.
 Status triangulate(const Model& model, Cdt* cdt);

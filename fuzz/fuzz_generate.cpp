@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "api/erd.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/options.h"
 #include "algorithms/model/reconstruct.h"
@@ -38,12 +39,6 @@ struct Reader {
 
 void check(bool ok) {
     if (!ok) __builtin_trap();
-}
-
-// A face as its vertex triple rotated so the smallest index comes first (orientation kept).
-std::array<std::uint32_t, 3> canonical(std::array<std::uint32_t, 3> f) {
-    while (f[0] > f[1] || f[0] > f[2]) f = {f[1], f[2], f[0]};
-    return f;
 }
 
 void check_model(const erd::Image& image, const erd::GenerateResult& res) {
@@ -62,29 +57,24 @@ void check_model(const erd::Image& image, const erd::GenerateResult& res) {
     }
     if (m.kind == ModelKind::erd) check(m.corner_values.size() == m.faces.size());
 
-    // The kernel, given the same vertices and constraints, builds the same triangulation.
+    // The kernel, given the same vertices and constraints, builds the same triangulation (after
+    // the flips that the ERD methods' data-dependent flips made: api::triangulate restores them).
     Cdt cdt;
-    check(cdt.reset(mx, my).ok());
-    std::vector<VertInd> ids;
-    check(cdt.insert_points(m.vertices, &ids).ok());
-    check(cdt.vertex_count() == m.vertices.size());
-    for (const auto& c : m.constraints) {
-        ConstraintReport rep;
-        check(cdt.insert_constraint(ids[c[0]], ids[c[1]], &rep).ok());
-    }
+    check(api::triangulate(m, &cdt).ok());
     std::string why;
-    check(cdt.verify(&why));
-    std::vector<std::array<VertInd, 3>> kf;
-    cdt.export_faces(&kf);
-    check(kf.size() == m.faces.size());
-    std::vector<VertInd> back(ids.size());  // kernel vertex -> model vertex
-    for (std::size_t i = 0; i < ids.size(); ++i) back[ids[i]] = VertInd(i);
-    std::vector<std::array<std::uint32_t, 3>> a, b;
-    for (const auto& f : kf) a.push_back(canonical({back[f[0]], back[f[1]], back[f[2]]}));
-    for (const auto& f : m.faces) b.push_back(canonical(f));
-    std::sort(a.begin(), a.end());
-    std::sort(b.begin(), b.end());
-    check(a == b);
+    check(cdt.verify_topology(&why));
+    check(cdt.vertex_count() == m.vertices.size());
+    check(cdt.face_count() == m.faces.size());
+    std::vector<std::array<std::int32_t, 6>> want;
+    for (const auto& f : m.faces) {
+        std::array<LatticePoint, 3> p = {m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]};
+        int k = 0;  // the (Y, X)-smallest first, as canonical_faces does
+        for (int i = 1; i < 3; ++i)
+            if (p[i].y < p[k].y || (p[i].y == p[k].y && p[i].x < p[k].x)) k = i;
+        want.push_back({p[k].x, p[k].y, p[(k + 1) % 3].x, p[(k + 1) % 3].y, p[(k + 2) % 3].x, p[(k + 2) % 3].y});
+    }
+    std::sort(want.begin(), want.end());
+    check(canonical_faces(cdt) == want);
 
     bool constant = true;
     for (std::uint16_t s : image.samples) constant = constant && s == image.samples[0];
