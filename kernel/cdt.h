@@ -271,5 +271,8 @@ private:
 // so the (Y,X)-smallest comes first, faces sorted. Two triangulations of the same rectangle are
 // equal iff their canonical forms are.
 std::vector<std::array<std::int32_t, 6>> canonical_faces(const Cdt& cdt);
+// The same form of faces given as vertex triples into `points` (a Model's vertices and faces).
+std::vector<std::array<std::int32_t, 6>> canonical_faces(const std::vector<LatticePoint>& points,
+                                                         const std::vector<std::array<VertInd, 3>>& faces);
 
 }  // namespace erd

@@ -115,11 +115,11 @@ void Cdt::export_constraints(std::vector<std::array<VertInd, 2>>* out) const {
     std::sort(out->begin(), out->end());
 }
 
-std::vector<std::array<std::int32_t, 6>> canonical_faces(const Cdt& cdt) {
-    std::vector<std::array<std::int32_t, 6>> out(cdt.face_count());
-    for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-        LatticePoint p[3] = {cdt.point(cdt.face_vertex(f, 0)), cdt.point(cdt.face_vertex(f, 1)),
-                             cdt.point(cdt.face_vertex(f, 2))};
+std::vector<std::array<std::int32_t, 6>> canonical_faces(const std::vector<LatticePoint>& points,
+                                                         const std::vector<std::array<VertInd, 3>>& faces) {
+    std::vector<std::array<std::int32_t, 6>> out(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const LatticePoint p[3] = {points[faces[f][0]], points[faces[f][1]], points[faces[f][2]]};
         int m = 0;
         for (int i = 1; i < 3; ++i)
             if (perturb_before(p[i], p[m])) m = i;
@@ -130,6 +130,12 @@ std::vector<std::array<std::int32_t, 6>> canonical_faces(const Cdt& cdt) {
     }
     std::sort(out.begin(), out.end());
     return out;
+}
+
+std::vector<std::array<std::int32_t, 6>> canonical_faces(const Cdt& cdt) {
+    std::vector<std::array<VertInd, 3>> faces;
+    cdt.export_faces(&faces);
+    return canonical_faces(cdt.points(), faces);
 }
 
 namespace {

@@ -22,19 +22,7 @@ inline std::uint64_t key(LatticePoint p) { return (std::uint64_t(std::uint32_t(p
 
 // The model's faces are the CDT's (as point sets).
 inline bool same_faces(const Cdt& cdt, const Model& m) {
-    std::vector<std::array<std::uint64_t, 3>> a, b;
-    auto rotated = [](std::array<std::uint64_t, 3> t) {
-        while (!(t[0] < t[1] && t[0] < t[2])) t = {t[1], t[2], t[0]};
-        return t;
-    };
-    for (FaceInd f = 0; f < cdt.face_count(); ++f)
-        a.push_back(rotated({key(cdt.point(cdt.face_vertex(f, 0))), key(cdt.point(cdt.face_vertex(f, 1))),
-                             key(cdt.point(cdt.face_vertex(f, 2)))}));
-    for (const auto& f : m.faces)
-        b.push_back(rotated({key(m.vertices[f[0]]), key(m.vertices[f[1]]), key(m.vertices[f[2]])}));
-    std::sort(a.begin(), a.end());
-    std::sort(b.begin(), b.end());
-    return a == b;
+    return canonical_faces(cdt) == canonical_faces(m.vertices, m.faces);
 }
 
 // A model whose faces are not the CDT's (data-dependent flips, algorithms/methods/flips.h):
