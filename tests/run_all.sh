@@ -155,7 +155,7 @@ else
 fi
 
 stage
-echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's"
+echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
 browser_stage web tests/web_test.sh "$IMAGES"
 
 stage
