@@ -148,10 +148,10 @@ browser_stage() {
         *) failed=$((failed + 1)) ;;
     esac
 }
-if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm ]]; then
-    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm"
+if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm && -f $IMAGES/color/kodim03.ppm ]]; then
+    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm" "$IMAGES/color/kodim03.ppm"
 else
-    echo "SKIPPED: $IMAGES/bull.pgm or lena.pgm missing"; skipped=$((skipped + 1))
+    echo "FAILED: $IMAGES/bull.pgm, lena.pgm or color/kodim03.ppm missing"; failed=$((failed + 1))
 fi
 
 stage
