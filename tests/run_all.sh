@@ -148,14 +148,14 @@ browser_stage() {
         *) failed=$((failed + 1)) ;;
     esac
 }
-if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm ]]; then
-    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm"
+if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm && -f $IMAGES/color/kodim03.ppm ]]; then
+    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm" "$IMAGES/color/kodim03.ppm"
 else
-    echo "SKIPPED: $IMAGES/bull.pgm or lena.pgm missing"; skipped=$((skipped + 1))
+    echo "FAILED: $IMAGES/bull.pgm, lena.pgm or color/kodim03.ppm missing"; failed=$((failed + 1))
 fi
 
 stage
-echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's"
+echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
 browser_stage web tests/web_test.sh "$IMAGES"
 
 stage

@@ -47,7 +47,7 @@ for img in "$@"; do
         "$ERD" reconstruct "$base.$ext" --no-aa -o "$base.point.pgm" -q
         "$ERD" reconstruct "$base.$ext" -o "$base.aa.pgm" -q
         point=$("$ERD" psnr "$img" "$base.point.pgm" 2>/dev/null); aa=$("$ERD" psnr "$img" "$base.aa.pgm" 2>/dev/null)
-        faces=$(grep -c '<path' "$base.svg"); bytes=$(wc -c <"$base.svg")
+        faces=$(grep -oE '[0-9]+ faces</desc>' "$base.svg" | grep -oE '^[0-9]+'); bytes=$(wc -c <"$base.svg")  # colour: 3 paths a face
         read -r W H < <("$ERD" info "$img" | grep -oE '[0-9]+ ?x ?[0-9]+' | head -1 | tr -d ' ' | tr x ' ')
         printf '%-10s %-7s %6d %8.1f %6s %9s' "$name" "$m" "$faces" "$(echo "$bytes / $faces" | bc -l)" "$point" "$aa"
         for r in $active; do

@@ -2,14 +2,18 @@
 // and reads the results out of the module's memory. One job at a time (the worker is serial),
 // so the results live in one static slot until the next erd_mesh call. Progress goes to the page
 // as it happens: the library's progress hook posts a message from the worker (EM_JS), at most
-// once per stage and per whole percent.
+// once per stage and per whole percent. The page hands every image over as RGB; it becomes gray
+// here, by the library's own rules as the command line's reader applies them (channels all equal,
+// or --gray), so the page meshes what `erd generate` meshes for the same file.
 #include <emscripten.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/luma.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/output/render.h"
 #include "algorithms/output/vector_svg.h"
@@ -21,10 +25,12 @@ EM_JS(void, erd_post_progress, (const char* stage, double fraction),
 namespace {
 
 struct Job {
+    erd::Model model;
     std::string error, model_text, vector_svg, mesh_svg, timings;
     std::vector<std::uint8_t> recon;
     double psnr = 0;
     std::size_t vertices = 0;
+    int channels = 1;
 };
 Job job;
 
@@ -52,18 +58,24 @@ void add_timing(const std::string& name, double ms) { job.timings += name + " " 
 
 extern "C" {
 
-// Meshes a w x h 8-bit gray image with `method` ("ed", "gpi", "erded", "erdgpi") at `density`
+// Meshes a w x h 8-bit RGB image (interleaved R G B) with `method` ("ed", "gpi", "erded", "erdgpi") at `density`
 // percent, as `erd generate -x 1` with these flags does, then reconstructs it (4x4 for soft ERD
 // models, as `erd reconstruct`) and measures the PSNR. edges: 0 auto, 1 soft, 2 hard (--edges);
 // thesis: --thesis (applied first, so the other flags given beside it win, as on the command
 // line); wedge_rule: -w; wedge_fit: --wedge-fit; psnr: --psnr (0 off); max_error: --max-error
-// (negative off). Returns 0, or the status code with erd_error() set.
-int erd_mesh(const std::uint8_t* pixels, int w, int h, const char* method, double density, int edges, int thesis,
-             int wedge_rule, int wedge_fit, double psnr, double max_error) {
+// (negative off); gray: --gray (mesh the luma of a colour image). An image whose channels are
+// equal at every pixel is meshed gray, as erd reads it. The reconstruction has the model's
+// channels (erd_channels()), the PSNR is over all of them (`erd psnr`). The model stays for
+// erd_files(). Returns 0, or the status code with erd_error() set.
+int erd_mesh(const std::uint8_t* rgb, int w, int h, const char* method, double density, int edges, int thesis,
+             int wedge_rule, int wedge_fit, double psnr, double max_error, int gray) {
     job = Job{};
     const auto t0 = Clock::now();
-    std::vector<std::uint16_t> samples(pixels, pixels + std::size_t(w) * std::size_t(h));
-    erd::api::ImageView view{w, h, 255, samples.data(), 0};
+    erd::Image image(w, h, 255, 3);
+    std::copy(rgb, rgb + image.samples.size(), image.samples.begin());
+    erd::gray_if_channels_equal(&image);
+    if (gray) image = erd::luma(image);
+    const erd::api::ImageView view = erd::api::view_of(image);
     erd::api::Method m;
     erd::Status st = erd::api::method_from_name(method, &m);
     erd::api::Options opt;
@@ -79,7 +91,7 @@ int erd_mesh(const std::uint8_t* pixels, int w, int h, const char* method, doubl
     opt.exact = erd::api::ExactMode::warn;
     Posted posted;
     g.progress = erd::ProgressHook{&on_progress, &posted};
-    erd::Model model;
+    erd::Model& model = job.model;
     erd::api::GenerateInfo info;
     if (st) st = erd::api::generate(m, view, opt, &model, &info);
     for (const erd::StageTime& s : info.stages) add_timing(s.name, s.seconds * 1000);
@@ -90,21 +102,39 @@ int erd_mesh(const std::uint8_t* pixels, int w, int h, const char* method, doubl
     if (st) st = erd::api::reconstruct(model, erd::supersampled(model), &approx);
     if (st) st = erd::api::psnr(view, erd::api::view_of(approx), &job.psnr);
     add_timing("reconstruction", ms_since(t1));
-    t1 = Clock::now();
-    if (st) erd_post_progress("outputs", 0);
-    if (st) st = erd::write_model(model, &job.model_text);
-    if (st) st = erd::render_vector_svg(model, erd::VectorSvgOptions{}, &job.vector_svg);
-    erd::RenderOptions ro;
-    ro.scale = 1;
-    if (st) st = erd::render_svg(model, "", ro, &job.mesh_svg);
-    add_timing("outputs", ms_since(t1));
     if (!st) {
         job.error = st.message;
         return st.exit_code();
     }
     job.vertices = model.vertices.size();
+    job.channels = model.channels;
     job.recon.resize(approx.samples.size());
     for (std::size_t i = 0; i < approx.samples.size(); ++i) job.recon[i] = std::uint8_t(approx.samples[i]);
+    return 0;
+}
+
+// The files the page offers for the last erd_mesh's model: its .erd/.model text, the vector SVG
+// (`erd render --vector`) and the mesh drawing (`erd render -s 1`). Apart from erd_mesh, so the
+// page shows the reconstruction and the PSNR while these are written (in the WebAssembly build
+// they take about as long as the meshing: the C library's number formatting). erd_timings() then
+// holds their times only.
+int erd_files() {
+    job.timings.clear();
+    auto t = Clock::now();
+    erd::Status st = erd::write_model(job.model, &job.model_text);
+    add_timing("model file", ms_since(t));
+    t = Clock::now();
+    if (st) st = erd::render_vector_svg(job.model, erd::VectorSvgOptions{}, &job.vector_svg);
+    add_timing("vector SVG", ms_since(t));
+    t = Clock::now();
+    erd::RenderOptions ro;
+    ro.scale = 1;
+    if (st) st = erd::render_svg(job.model, "", ro, &job.mesh_svg);
+    add_timing("mesh drawing", ms_since(t));
+    if (!st) {
+        job.error = st.message;
+        return st.exit_code();
+    }
     return 0;
 }
 
@@ -116,5 +146,6 @@ const char* erd_timings() { return job.timings.c_str(); }
 const std::uint8_t* erd_reconstruction() { return job.recon.data(); }
 double erd_psnr() { return job.psnr; }
 int erd_vertices() { return int(job.vertices); }
+int erd_channels() { return job.channels; }
 
 }  // extern "C"
