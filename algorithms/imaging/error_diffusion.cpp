@@ -8,6 +8,8 @@
 #include <limits>
 #include <utility>
 
+#include "kernel/row_parallel.h"
+
 namespace erd {
 
 namespace {
@@ -352,20 +354,34 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
     return Status::success();
 }
 
-Grid<double> ed_density(Grid<double> d, double gamma) {
+Grid<double> ed_density(Grid<double> d, double gamma, int threads) {
+    // Bands of rows side by side (kernel/row_parallel.h): the maximum of the bands' maxima is the
+    // maximum, and each value is mapped alone, so every thread count gives the same bits.
+    const std::size_t w = std::size_t(std::max(0, d.width));
+    const RowParts parts(0, std::size_t(std::max(0, d.height)), threads, 64);
+    std::vector<double> band_max(parts.count, 0.0);
+    run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
+        double m = 0;
+        for (std::size_t i = y0 * w; i < y1 * w; ++i) m = std::max(m, d.data[i]);
+        band_max[k] = m;
+    });
     double dmax = 0;
-    for (double v : d.data) dmax = std::max(dmax, v);
+    for (double m : band_max) dmax = std::max(dmax, m);
     if (!(dmax > 0)) {
         std::fill(d.data.begin(), d.data.end(), 0.0);
         return d;
     }
-    // One loop per exponent (not the choice inside the loop, at every pixel).
-    if (gamma == 1.0)
-        for (double& v : d.data) v = std::max(0.0, v) / dmax;
-    else if (gamma == 0.5)
-        for (double& v : d.data) v = std::sqrt(std::max(0.0, v) / dmax);
-    else
-        for (double& v : d.data) v = std::pow(std::max(0.0, v) / dmax, gamma);
+    run_parts(parts, [&](std::size_t, std::size_t y0, std::size_t y1) {
+        double* const first = d.data.data() + y0 * w;
+        double* const last = d.data.data() + y1 * w;
+        // One loop per exponent (not the choice inside the loop, at every pixel).
+        if (gamma == 1.0)
+            for (double* v = first; v != last; ++v) *v = std::max(0.0, *v) / dmax;
+        else if (gamma == 0.5)
+            for (double* v = first; v != last; ++v) *v = std::sqrt(std::max(0.0, *v) / dmax);
+        else
+            for (double* v = first; v != last; ++v) *v = std::pow(std::max(0.0, *v) / dmax, gamma);
+    });
     return d;
 }
 

@@ -74,6 +74,7 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
 
 // The ED density sigma = (d / d_max)^gamma (thesis eq. 3.4), gamma > 0; all zeros when d_max <= 0.
 // Takes d by value so that a caller passing a temporary (ED: the MMSODD grid) reuses its storage.
-Grid<double> ed_density(Grid<double> d, double gamma);
+// threads: bands of rows side by side, the same bits for every count (kernel/row_parallel.h).
+Grid<double> ed_density(Grid<double> d, double gamma, int threads = 1);
 
 }  // namespace erd
