@@ -49,6 +49,13 @@ struct RowParts {
     std::size_t part_end(std::size_t k) const { return part_begin(k + 1); }
 };
 
+// The rows a part needs so that it holds at least `items` items (pixels, samples) of rows with
+// `per_row` items each: starting a thread costs tens of microseconds on an idle machine (more
+// under load), so the callers give each part a few tenths of a millisecond of work at least.
+inline std::size_t rows_for(std::size_t items, std::size_t per_row) {
+    return per_row == 0 ? items : (items + per_row - 1) / per_row;
+}
+
 // Calls fn(k, part_begin(k), part_end(k)) for every part k, part 0 on the calling thread and
 // the others on threads of their own; returns when all have returned. fn must write nothing
 // another part reads or writes (its own rows, or a per-part slot indexed by k).

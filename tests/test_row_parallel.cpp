@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/imaging/colour.h"
@@ -62,7 +63,20 @@ std::string model_text(const Model& m) {
     return s;
 }
 
-const int kSizes[][2] = {{1, 1}, {1, 37}, {41, 1}, {2, 2}, {3, 70}, {70, 3}, {17, 33}, {64, 61}, {129, 40}};
+// Small sizes (one part: the stages give small inputs a single thread) and sizes of several
+// parts at 2 and 3 threads (MMSODD parts hold 2^15 pixels at least, the density's 2^18).
+const int kSizes[][2] = {{1, 1}, {1, 37}, {41, 1}, {2, 2}, {17, 33}, {1, 200000}, {3, 40000}, {700, 160}, {257, 401}};
+
+// Pseudo-random samples (a fixed LCG): images of more than 2^19 samples for the PSNR's parts.
+Image noise_image(int w, int h, int channels, std::uint32_t seed) {
+    Image im(w, h, 65535, channels);
+    std::uint32_t x = seed;
+    for (auto& v : im.samples) {
+        x = x * 1664525u + 1013904223u;
+        v = std::uint16_t(x >> 16);
+    }
+    return im;
+}
 
 }  // namespace
 
@@ -93,8 +107,8 @@ TEST_CASE("row parts: contiguous, cover the range, at most the threads asked for
 
 TEST_CASE("MMSODD and the ED density: the same bits at 1, 2 and 3 threads, odd sizes", "[threads][mmsodd]") {
     for (const auto& wh : kSizes) {
-        const Image im = synth_image(wh[0], wh[1], 8);
-        const Image deep = synth_image(wh[0], wh[1], 16, 5);
+        const Image im = noise_image(wh[0], wh[1], 1, 1);
+        const Image deep = noise_image(wh[0], wh[1], 1, 5);
         const Grid<double> plane = to_grid(deep);
         for (int order : {1, 3, 5, 7}) {
             INFO(wh[0] << " x " << wh[1] << ", order " << order);
@@ -106,20 +120,31 @@ TEST_CASE("MMSODD and the ED density: the same bits at 1, 2 and 3 threads, odd s
                 INFO(threads << " threads");
                 CHECK(same_bits(one, mmsodd(im, order, threads)));
                 CHECK(same_bits(plane_one, mmsodd(plane, order, Border::zero, threads)));
-                CHECK(same_bits(ed_density(one, 0.5, 1), ed_density(one, 0.5, threads)));
-                CHECK(same_bits(ed_density(one, 1.0, 1), ed_density(one, 1.0, threads)));
-                CHECK(same_bits(ed_density(one, 0.7, 1), ed_density(one, 0.7, threads)));
             }
         }
     }
-    const Image colour = synth_colour(67, 45);
+    for (const auto& wh : {std::make_pair(1, 800000), std::make_pair(1000, 801), std::make_pair(5, 3)}) {
+        Grid<double> d(wh.first, wh.second);
+        std::uint32_t x = 9;
+        for (double& v : d.data) {
+            x = x * 1664525u + 1013904223u;
+            v = double(x >> 8) / 3.0;
+        }
+        d.data[d.data.size() - 1] = 1e9;  // the maximum in the last part
+        for (int threads : {2, 3})
+            for (double gamma : {0.5, 1.0, 0.7}) {
+                INFO(wh.first << " x " << wh.second << ", " << threads << " threads, gamma " << gamma);
+                CHECK(same_bits(ed_density(d, gamma, 1), ed_density(d, gamma, threads)));
+            }
+    }
+    const Image colour = synth_colour(300, 260);
     for (ColourDensity how : {ColourDensity::sum, ColourDensity::max, ColourDensity::luma})
         for (int threads : {2, 3}) CHECK(same_bits(colour_mmsodd(colour, 5, how, 1), colour_mmsodd(colour, 5, how, threads)));
 }
 
 TEST_CASE("PSNR, MSE and channel MSE: the same at 1, 2 and 3 threads", "[threads][metrics]") {
-    for (const auto& wh : kSizes) {
-        const Image a = synth_image(wh[0], wh[1], 16, 1), b = synth_image(wh[0], wh[1], 16, 2);
+    for (const auto& wh : {std::make_pair(1, 1), std::make_pair(3, 1), std::make_pair(1, 1600000), std::make_pair(1300, 1300)}) {
+        const Image a = noise_image(wh.first, wh.second, 1, 1), b = noise_image(wh.first, wh.second, 1, 2);
         double e1 = 0, p1 = 0;
         REQUIRE(mse(a, b, &e1, 1).ok());
         REQUIRE(psnr(a, b, &p1, 1).ok());
@@ -131,9 +156,7 @@ TEST_CASE("PSNR, MSE and channel MSE: the same at 1, 2 and 3 threads", "[threads
             CHECK(std::memcmp(&p, &p1, sizeof p) == 0);
         }
     }
-    const Image a = synth_colour(67, 45), b = synth_colour(67, 45);
-    Image c = b;
-    for (std::size_t i = 0; i < c.samples.size(); i += 7) c.samples[i] = std::uint16_t(255 - c.samples[i]);
+    const Image a = noise_image(800, 700, 3, 1), c = noise_image(800, 700, 3, 2);
     double one[3], three[3], e1 = 0, e3 = 0;
     REQUIRE(channel_mse(a, c, one, 1).ok());
     REQUIRE(channel_mse(a, c, three, 3).ok());
@@ -152,7 +175,8 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
         int w, h, channels;
     };
     // 2 x N and N x 2 are the smallest images a method meshes.
-    const Case cases[] = {{2, 2, 1}, {2, 23, 1}, {29, 2, 1}, {67, 45, 1}, {130, 97, 1}, {53, 41, 3}};
+    // 560 x 480 and 300 x 260 give the MMSODD, the density and both reconstructions several parts.
+    const Case cases[] = {{2, 2, 1}, {2, 23, 1}, {29, 2, 1}, {67, 45, 1}, {560, 480, 1}, {300, 260, 3}};
     for (const Case& c : cases) {
         const Image im = c.channels == 3 ? synth_colour(c.w, c.h) : synth_image(c.w, c.h);
         for (const char* method : {"ed", "gpi", "erded", "erdgpi"}) {
@@ -161,7 +185,7 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
             Model first_model;
             for (int threads : {1, 2, 3}) {
                 GenerateOptions o;
-                o.points = std::max(std::int64_t(4), std::int64_t(c.w) * c.h / 25);
+                o.points = std::max(std::int64_t(4), std::int64_t(c.w) * c.h / 40);
                 o.threads = threads;
                 GenerateResult r;
                 const Status st = find_method(method)->run(im, o, &r);
@@ -194,7 +218,7 @@ TEST_CASE("erd generate, reconstruct and psnr: -j 1, 2 and 3 write the same byte
     const auto run = [&](const std::string& args) {
         return erd_test::run_erd(args, "cd " + erd_test::sh_quote(t.path) + " && ");
     };
-    REQUIRE(run("synth -q -W 97 -H 71 -o a.pgm").status == 0);
+    REQUIRE(run("synth -q -W 611 -H 467 -o a.pgm").status == 0);
     for (const char* method : {"ed", "erded", "erdgpi"}) {
         INFO(method);
         std::string model, image, db;

@@ -355,10 +355,11 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
 }
 
 Grid<double> ed_density(Grid<double> d, double gamma, int threads) {
-    // Bands of rows side by side (kernel/row_parallel.h): the maximum of the bands' maxima is the
-    // maximum, and each value is mapped alone, so every thread count gives the same bits.
+    // Bands of rows side by side (kernel/row_parallel.h), 2^18 pixels at least: the maximum of the
+    // bands' maxima is the maximum, and each value is mapped alone, so every thread count gives
+    // the same bits.
     const std::size_t w = std::size_t(std::max(0, d.width));
-    const RowParts parts(0, std::size_t(std::max(0, d.height)), threads, 64);
+    const RowParts parts(0, std::size_t(std::max(0, d.height)), threads, rows_for(std::size_t(1) << 18, w));
     std::vector<double> band_max(parts.count, 0.0);
     run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
         double m = 0;

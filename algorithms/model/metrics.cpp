@@ -35,11 +35,12 @@ static Status check_pair(const Image& a, const Image& b) {
 }
 
 // The exact integer sums of squared differences of each channel (c channels interleaved), rows
-// in bands side by side: integer sums, so the bands' order cannot change a bit. At most 2^28
+// in bands of 2^19 samples at least side by side: integer sums, so the bands' order cannot change
+// a bit. At most 2^28
 // pixels * 2^32 per squared difference < 2^64.
 static void squared_error_sums(const Image& a, const Image& b, int threads, std::uint64_t sum[3]) {
     const std::size_t c = std::size_t(a.channels), row = std::size_t(a.width) * c;
-    const RowParts parts(0, std::size_t(a.height), threads, 64);
+    const RowParts parts(0, std::size_t(a.height), threads, rows_for(std::size_t(1) << 19, row));
     std::vector<std::uint64_t> part_sums(parts.count * 3, 0);
     run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
         std::uint64_t s[3] = {0, 0, 0};

@@ -237,15 +237,15 @@ bool exact_plane(const Model& m, std::size_t f, int c, RoundedPlane* rp) {
 // Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
 // vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles). A
 // face's spans are scanned once for all channels; channel c of pixel x of a row is row[x*C + c].
-// Faces in parts side by side (kernel/row_parallel.h): each pixel is owned by one face, so the
-// parts write disjoint pixels and the image is the same for any count; the discontinuity and
-// vertex writes over them follow on one thread, in their order.
+// Faces in parts of 1024 at least side by side (kernel/row_parallel.h): each pixel is owned by
+// one face, so the parts write disjoint pixels and the image is the same for any count; the
+// discontinuity and vertex writes over them follow on one thread, in their order.
 void point_evaluation(const Model& m, const Prepared& p, Image* out, ProgressHook progress, int threads) {
     const std::size_t W = std::size_t(m.width), C = std::size_t(m.channels);
     const double maxval = m.maxval;
     std::uint16_t* px = out->samples.data();
     const Lattice l = Lattice::pixels();
-    const RowParts parts(0, m.faces.size(), threads, 256);
+    const RowParts parts(0, m.faces.size(), threads, 1024);
     run_parts(parts, [&](std::size_t part, std::size_t f0, std::size_t f1) {
         std::vector<Span> spans;
         RoundedPlane rp;
@@ -467,9 +467,11 @@ void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook p
         group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn((C == 1 ? late[i].sample : late[i].sample / C) / W / band); }, &late_first);
     const std::size_t plane = band * W;
     const double maxval = m.maxval;
-    // Bands in parts side by side (kernel/row_parallel.h), each part with sums of its own: a band
-    // is finished from its own faces and late terms, so the image is the same for any count.
-    run_parts(RowParts(0, nb, threads), [&](std::size_t part, std::size_t b0, std::size_t b1) {
+    // Bands in parts of 2^15 samples at least side by side (kernel/row_parallel.h), each part
+    // with sums of its own: a band is finished from its own faces and late terms, so the image
+    // is the same for any count.
+    const RowParts parts(0, nb, threads, rows_for(std::size_t(1) << 15, band * W * C));
+    run_parts(parts, [&](std::size_t part, std::size_t b0, std::size_t b1) {
         std::vector<double> acc(plane * C);
         std::vector<Span> spans;
         for (std::size_t b = b0; b < b1; ++b) {
