@@ -142,6 +142,31 @@ TEST_CASE("MMSODD and the ED density: the same bits at 1, 2 and 3 threads, odd s
         for (int threads : {2, 3}) CHECK(same_bits(colour_mmsodd(colour, 5, how, 1), colour_mmsodd(colour, 5, how, threads)));
 }
 
+TEST_CASE("error diffusion's count search: the same points at 1, 2 and 3 threads", "[threads][diffusion]") {
+    // Above 2^16 pixels the 16-lane sweeps run as two halves side by side.
+    for (const auto& wh : {std::make_pair(300, 260), std::make_pair(1, 70000), std::make_pair(40, 30)}) {
+        const Image im = noise_image(wh.first, wh.second, 1, 4);
+        const Grid<double> density = ed_density(mmsodd(im, 3), 1.0);
+        for (Startup startup : {Startup::none, Startup::mirror, Startup::force})
+            for (std::size_t k : {std::size_t(7), density.size() / 50}) {
+                DiffusionParams p;
+                p.startup = startup;
+                DiffusionResult one;
+                REQUIRE(select_points(density, k, p, &one).ok());
+                for (int threads : {2, 3}) {
+                    INFO(wh.first << " x " << wh.second << ", K " << k << ", " << threads << " threads");
+                    p.threads = threads;
+                    DiffusionResult other;
+                    REQUIRE(select_points(density, k, p, &other).ok());
+                    CHECK(other.points == one.points);
+                    CHECK(other.rho == one.rho);
+                    CHECK(other.passes == one.passes);
+                    CHECK(other.exact == one.exact);
+                }
+            }
+    }
+}
+
 TEST_CASE("PSNR, MSE and channel MSE: the same at 1, 2 and 3 threads", "[threads][metrics]") {
     for (const auto& wh : {std::make_pair(1, 1), std::make_pair(3, 1), std::make_pair(1, 1600000), std::make_pair(1300, 1300)}) {
         const Image a = noise_image(wh.first, wh.second, 1, 1), b = noise_image(wh.first, wh.second, 1, 2);

@@ -206,6 +206,31 @@ void run_sweep(const Grid<double>& density, const DiffusionParams& params, Sweep
     }
 }
 
+// The count search's sweep of kLanes lanes, on two threads when asked (threads >= 2): each runs
+// half of the lanes over the image. Every operation of a lane is its own (the quads are
+// element-wise; `any` only skips work), so each lane's count and points are the same bits as in
+// one sweep of all of them; a thread's half fills the latency of the carried error with two
+// quads instead of four.
+void run_search_sweep(const Grid<double>& density, const DiffusionParams& params, Sweep<kGroups>* sw) {
+    constexpr int half = kLanes / 2;
+    if (resolve_threads(params.threads) < 2 || std::size_t(density.width) * std::size_t(density.height) < (std::size_t(1) << 16)) {
+        run_sweep(density, params, sw);
+        return;
+    }
+    Sweep<kGroups / 2> parts[2];
+    for (int k = 0; k < 2; ++k)
+        for (int l = 0; l < half; ++l) {
+            parts[k].rho[l] = sw->rho[k * half + l];
+            parts[k].points[l] = sw->points[k * half + l];
+        }
+    run_parts(RowParts(0, 2, 2), [&](std::size_t k, std::size_t, std::size_t) { run_sweep(density, params, &parts[k]); });
+    for (int k = 0; k < 2; ++k)
+        for (int l = 0; l < half; ++l) {
+            sw->level[k * half + l] = parts[k].level[l];
+            sw->count[k * half + l] = parts[k].count[l];
+        }
+}
+
 }  // namespace
 
 std::size_t diffuse(const Grid<double>& density, double rho, const DiffusionParams& params,
@@ -275,7 +300,7 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
         float rhos[kLanes];
         if (lanes == kLanes) {
             for (int l = 0; l < kLanes; ++l) sw.rho[l] = float(trials[l]);
-            run_sweep(density, params, &sw);
+            run_search_sweep(density, params, &sw);
             std::copy(sw.count, sw.count + kLanes, counts);
             std::copy(sw.rho, sw.rho + kLanes, rhos);
         } else {

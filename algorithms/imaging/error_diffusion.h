@@ -50,6 +50,9 @@ struct DiffusionParams {
     // enters the diffusion. Must have the density's size.
     const Grid<std::uint8_t>* forbidden = nullptr;
     int max_passes = 256;  // thresholds tried at most (4 in the first sweep, 16 in each later one)
+    // Threads of the count search's sweeps of 16 lanes: 2 or more (0: the machine's processors)
+    // run them as two sweeps of 8 lanes side by side, with the same points (kernel/row_parallel.h).
+    int threads = 1;
 };
 
 struct DiffusionResult {

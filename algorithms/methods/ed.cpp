@@ -33,6 +33,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     DiffusionParams params;
     params.startup = Startup::none;
     params.forbidden = &corners;
+    params.threads = options.threads;
     DiffusionResult chosen;
     const std::size_t want = std::size_t(n - 4);
     st = select_points(sigma, want, params, &chosen);

@@ -123,6 +123,7 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
         DiffusionParams dp;
         dp.startup = options.startup == 1 ? Startup::force : options.startup == 2 ? Startup::none : Startup::mirror;
         dp.forbidden = &occupied;
+        dp.threads = options.threads;
         DiffusionResult dr;
         st = select_points(density, k, dp, &dr);
         if (!st) return st;
