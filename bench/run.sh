@@ -224,7 +224,7 @@ threads_pair() {
     med() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
     local mw1 mc1 mw2 mc2
     mw1=$(med "${w1[@]}"); mc1=$(med "${c1[@]}"); mw2=$(med "${w2[@]}"); mc2=$(med "${c2[@]}")
-    printf 'threads %-26s -j 1 wall %8s cpu %8s ms   -j 2 wall %8s cpu %8s ms   speed-up %s\n' "$label" "$mw1" "$mc1" "$mw2" "$mc2" \
+    printf 'threads %-32s -j 1 wall %8s cpu %8s ms   -j 2 wall %8s cpu %8s ms   speed-up %s\n' "$label" "$mw1" "$mc1" "$mw2" "$mc2" \
         "$(awk -v a="$mw1" -v b="$mw2" -v c="$mc1" -v d="$mc2" 'BEGIN { if (b > 0 && c > 0) printf "%.2fx (cpu %+.0f%%)", a / b, 100 * (d / c - 1) }')"
 }
 echo "threads: load $(cut -d' ' -f1-3 /proc/loadavg) before"
