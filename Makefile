@@ -203,10 +203,12 @@ uninstall:
 	  $(patsubst %,$(DESTDIR)$(MANDIR)/man1/%.1,$(ERD_ALIASES))
 	rm -rf $(DESTDIR)$(INCLUDEDIR)/erd
 
-# `make embedded`: kernel/ + algorithms/ at -Os with -fno-exceptions -fno-rtti in their own build
+# `make embedded`: kernel/ + algorithms/ at -Os with -fno-exceptions -fno-rtti (and no threads) in their own build
 # dir, the example docs/examples/embedded.cpp linked against that library, run once; prints sizes.
 EMBEDDED_BUILD ?= build-embedded
-EMBEDDED_FLAGS := -Os -fno-exceptions -fno-rtti -ffunction-sections -fdata-sections
+# ERD_NO_THREADS: the row-parallel stages run their parts one after the other (kernel/row_parallel.h),
+# so the library needs no thread support from the device; the results are the same.
+EMBEDDED_FLAGS := -Os -fno-exceptions -fno-rtti -ffunction-sections -fdata-sections -DERD_NO_THREADS
 embedded:
 	@env CXXFLAGS="$(EMBEDDED_FLAGS)" $(MAKE) --no-print-directory BUILD=$(EMBEDDED_BUILD) \
 	  $(EMBEDDED_BUILD)/liberd.a $(EMBEDDED_BUILD)/embedded_example

@@ -141,19 +141,19 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
     return st;
 }
 
-Status reconstruct(const Model& model, bool supersample, Image* out) {
+Status reconstruct(const Model& model, bool supersample, Image* out, int threads) {
     if (!out) return Status::bad_input("reconstruct: no image to fill");
-    return erd::reconstruct(model, supersample, out);
+    return erd::reconstruct(model, supersample, out, {}, threads);
 }
 
-Status psnr(const ImageView& original, const ImageView& approx, double* db) {
+Status psnr(const ImageView& original, const ImageView& approx, double* db, int threads) {
     if (!db) return Status::bad_input("psnr: no result to fill");
     Image a, b;
     Status st = copy_view(original, &a);
     if (!st) return Status::bad_input("original: " + st.message);
     st = copy_view(approx, &b);
     if (!st) return Status::bad_input("approximation: " + st.message);
-    return erd::psnr(a, b, db);
+    return erd::psnr(a, b, db, threads);
 }
 
 namespace {

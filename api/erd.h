@@ -88,6 +88,8 @@ struct Options {
     // Refuse (Code::runtime, before allocating) when memory_estimate() exceeds this many bytes.
     // 0 = no limit.
     std::size_t max_memory = 0;
+    // Threads: generate.threads (1 by default; 0 = the machine's processors) runs the image
+    // stages side by side (kernel/row_parallel.h) with the same model for every count.
 };
 
 // The thesis's method exactly, in one call: erd::thesis_options() (the thesis's wedge values,
@@ -121,12 +123,14 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
 // pixel (the thesis's imgsyn), or with `supersample` the mean of 4x4 sub-samples per pixel
 // (imgsyn_aa). Values rounded to the nearest integer and clamped to [0, maxval]. A model's own
 // reconstruction is supersample = supersampled(model): soft-edged ERD models only (model.h).
-Status reconstruct(const Model& model, bool supersample, Image* out);
+// threads: the faces or row bands on that many threads (0 = the machine's processors), the same
+// image for every count (as Options::generate.threads, 1 by default).
+Status reconstruct(const Model& model, bool supersample, Image* out, int threads = 1);
 
 // PSNR of `approx` against `original` in dB, peak 2^p - 1 with p the bits per sample of the
 // original; +infinity when the images are equal. Code::input when sizes, maxvals or channel
-// counts differ.
-Status psnr(const ImageView& original, const ImageView& approx, double* db);
+// counts differ. threads: as reconstruct's, the same result for every count.
+Status psnr(const ImageView& original, const ImageView& approx, double* db, int threads = 1);
 
 // Rebuilds the triangulation of a model in *cdt: the constrained Delaunay triangulation of its
 // vertices and constrained edges (it depends only on those sets), then the flips that give the

@@ -200,3 +200,51 @@ else
     echo "colour: $COLOUR_IMG or $(dirname "$ERD")/liberd.a missing; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# threads (issue 18, "Two cores"): the image stages (MMSODD, density, reconstruction, PSNR;
+# kernel/row_parallel.h) at -j 1 and -j 2, whole process. The two alternate run by run (one
+# warm-up each first), so both see the same load; medians of THREADS_RUNS (default 3) wall and
+# CPU times, the speed-up (wall at -j 1 / wall at -j 2) and the CPU time -j 2 adds. Each method
+# at -d 1 on lena and on `erd synth` images of THREADS_SIZES (default 2048; 4096 adds a minute
+# or more), then erd reconstruct (4x4, the ERDGPI model) and erd psnr. No targets: on 2 cores
+# shared with others the speed-up is what the load leaves.
+THREADS_SIZES=${THREADS_SIZES:-2048}
+THREADS_RUNS=${THREADS_RUNS:-3}
+# threads_pair LABEL ERD_ARGS...: one line, -j 1 beside -j 2.
+threads_pair() {
+    local label=$1 r j w c x
+    shift
+    local -a w1=() c1=() w2=() c2=()
+    for j in 1 2; do "$ERD" "$@" -j "$j" >/dev/null 2>&1 || { echo "threads $label: erd $* -j $j failed"; return; }; done
+    for ((r = 0; r < THREADS_RUNS; ++r)); do
+        for j in 1 2; do
+            read -r w c x < <(TIMEIT_WARMUP=0 "$TIMEIT" 1 "$ERD" "$@" -j "$j" || echo "- - -")
+            if [[ $j == 1 ]]; then w1+=("$w"); c1+=("$c"); else w2+=("$w"); c2+=("$c"); fi
+        done
+    done
+    med() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+    local mw1 mc1 mw2 mc2
+    mw1=$(med "${w1[@]}"); mc1=$(med "${c1[@]}"); mw2=$(med "${w2[@]}"); mc2=$(med "${c2[@]}")
+    printf 'threads %-32s -j 1 wall %8s cpu %8s ms   -j 2 wall %8s cpu %8s ms   speed-up %s\n' "$label" "$mw1" "$mc1" "$mw2" "$mc2" \
+        "$(awk -v a="$mw1" -v b="$mw2" -v c="$mc1" -v d="$mc2" 'BEGIN { if (b > 0 && c > 0) printf "%.2fx (cpu %+.0f%%)", a / b, 100 * (d / c - 1) }')"
+}
+echo "threads: load $(cut -d' ' -f1-3 /proc/loadavg) before"
+threads_images=()
+[[ -f $IMAGES/lena.pgm ]] && threads_images+=("lena:$IMAGES/lena.pgm")
+for s in $THREADS_SIZES; do
+    "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/threads$s.pgm" && threads_images+=("synth$s:$OUT/threads$s.pgm")
+done
+for entry in "${threads_images[@]}"; do
+    label=${entry%%:*} img=${entry#*:}
+    for m in ed gpi erded erdgpi; do
+        ext=model; [[ $m == erd* ]] && ext=erd
+        threads_pair "$m $label 1%" generate -m "$m" -q -x 2 -d 1 -i "$img" -o "$OUT/threads.$m.$ext"
+    done
+    # The ERDGPI model just written (soft edges for the 4x4 reconstruction: synth's are hard).
+    "$ERD" generate -m erdgpi -q -x 2 -d 1 --edges soft -i "$img" -o "$OUT/threads.soft.erd" -j 2 &&
+        threads_pair "reconstruct 4x4 $label" reconstruct "$OUT/threads.soft.erd" -o "$OUT/threads.rec.pgm" &&
+        threads_pair "reconstruct point $label" reconstruct --no-aa "$OUT/threads.soft.erd" -o "$OUT/threads.rec.pgm" &&
+        threads_pair "psnr $label" psnr "$img" "$OUT/threads.rec.pgm"
+done
+echo "threads: load $(cut -d' ' -f1-3 /proc/loadavg) after"
+rm -f "$OUT"/threads*
+# ---------------------------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 // timeit: runs a command RUNS times (after one untimed warm-up run) and prints the medians of its
 // wall time and CPU time (user + system) and the largest peak RSS, as
 //     wall_ms cpu_ms rss_kb
-// Usage: timeit RUNS COMMAND [ARGS...]   (the command's stdout and stderr go to /dev/null)
+// Usage: timeit RUNS COMMAND [ARGS...]   (the command's stdout and stderr go to /dev/null;
+// TIMEIT_WARMUP=0 skips the warm-up)
 //
 // Why not /usr/bin/time inside a bash loop: that adds a subshell, a second exec and `date` calls
 // to every run (a large share of a 25 ms target), and its CPU time has 10 ms steps.
@@ -73,7 +74,9 @@ int main(int argc, char** argv) {
     }
     char** cmd = argv + 2;
     Sample s{};
-    if (!run_once(cmd, &s)) {
+    // TIMEIT_WARMUP=0: no warm-up run (a caller alternating two commands warms them up itself).
+    const char* warm = std::getenv("TIMEIT_WARMUP");
+    if (!(warm && warm[0] == '0') && !run_once(cmd, &s)) {
         std::fprintf(stderr, "timeit: %s failed\n", cmd[0]);
         return 1;
     }

@@ -203,6 +203,18 @@ Status parse_jobs(const std::string& text, int* jobs) {
     return Status::success();
 }
 
+Status parse_parallelism(bool given, const std::string& text, bool batch, Parallelism* out) {
+    const long cpus = ::sysconf(_SC_NPROCESSORS_ONLN);
+    const int processors = int(cpus > 0 ? std::min(cpus, 256L) : 1L);
+    int n = batch ? 1 : processors;
+    if (given) {
+        if (Status st = parse_jobs(text, &n); !st) return st;
+    }
+    out->jobs = batch ? n : 1;
+    out->threads = batch ? std::max(1, processors / n) : n;
+    return Status::success();
+}
+
 int run_batch(const std::vector<BatchItem>& items, int jobs, const BatchJob& job, const std::string& summary,
               const Reporter& rep, bool progress) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -37,7 +37,7 @@ Status expand_inputs(const std::vector<std::string>& given, const std::vector<st
                      std::vector<BatchItem>* items);
 
 // A batch rather than one file: several inputs, a folder, an output pattern with {name}, or
-// batch_flags (-j, --summary) given.
+// batch_flags (--summary) given. -j alone does not make one: for one file it is its threads.
 bool wants_batch(const std::vector<std::string>& inputs, const std::string& output, bool batch_flags);
 
 // True when the pattern holds {name}.
@@ -50,6 +50,16 @@ Status check_patterns(const std::vector<BatchItem>& items, const std::vector<std
 
 // Parses -j: "N" in [1, 256], or 0 = the number of processors.
 Status parse_jobs(const std::string& text, int* jobs);
+
+// What -j means (docs/DECISIONS.md "Threads"). One file: its image stages (MMSODD, density,
+// gradient, reconstruction, PSNR) run on N threads, by default (and for 0) one per processor.
+// A batch: N files at a time (default 1), each file's stages on the processors shared among
+// them, at least one thread each. Outputs are the same either way.
+struct Parallelism {
+    int jobs = 1;     // processes of a batch
+    int threads = 1;  // threads of each file
+};
+Status parse_parallelism(bool given, const std::string& text, bool batch, Parallelism* out);
 
 using BatchJob = std::function<int(const BatchItem& item, BatchRecord* record)>;
 

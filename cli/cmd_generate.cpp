@@ -88,7 +88,7 @@ const CommandLine kGenerate = {
         {0, "stats", "FILE", "write run statistics as one JSON line (- = stdout)"},
         {0, "psnr-report", nullptr, "also reconstruct the model and print its PSNR on stderr (also under -q; --stats)"},
         kProgressOption,
-        {'j', "jobs", "N", "many images: N at a time (default 1; 0 = one per processor)"},
+        {'j', "jobs", "N", "one image: N threads (default and 0: one per processor); many: N images at a time (default 1)"},
         {0, "summary", "FILE", "many images: a table of file, method, points, PSNR, seconds, status (.csv, or .json)"},
         {0, "step", "Q", ".erdz: value quantisation step (default 1)"},
         {0, "bpp", "B", ".erdz: the finest step whose file has at most B bits per pixel"},
@@ -204,7 +204,7 @@ struct Paths {
 
 // One image: read, mesh, write. In a batch (record not null) progress is the batch's, and the
 // PSNR is measured for the summary when one is written.
-static int generate_one(const Args& a, const Reporter& rep, const Paths& p, BatchRecord* record) {
+static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int threads, BatchRecord* record) {
     const auto t_start = std::chrono::steady_clock::now();
     const MethodInfo* method = find_method(a.str("method"));
     GenerateOptions opt;
@@ -281,6 +281,7 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
 
     Progress progress("generate", !record && Progress::should_show(a.has("progress"), rep.quiet()), a.has("progress"));
     opt.progress = progress.hook();
+    opt.threads = threads;
     GenerateResult res;
     st = method->run(image, opt, &res);
     progress.finish();
@@ -335,9 +336,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, Batc
     if (a.has("psnr-report") || (record && a.has("summary"))) {
         t0 = std::chrono::steady_clock::now();
         Image rec;
-        st = reconstruct(res.model, supersampled(res.model), &rec);
+        st = reconstruct(res.model, supersampled(res.model), &rec, {}, threads);
         if (!st) return rep.fail(Status::failure("reconstruct: " + st.message));
-        st = psnr(image, rec, &db);
+        st = psnr(image, rec, &db, threads);
         if (!st) return rep.fail(st);
         have_psnr = true;
         psnr_seconds = seconds_since(t0);
@@ -398,19 +399,20 @@ static int run_generate(const Args& a, const Reporter& rep) {
     if (!st) return rep.usage(st.message);
 
     const std::vector<std::string> inputs = a.all("input");
-    if (!wants_batch(inputs, p.out, a.has("jobs") || a.has("summary"))) return generate_one(a, rep, p, nullptr);
+    const bool batch = wants_batch(inputs, p.out, a.has("summary"));
+    Parallelism par;
+    if (!(st = parse_parallelism(a.has("jobs"), a.str("jobs"), batch, &par))) return rep.usage(st.message);
+    if (!batch) return generate_one(a, rep, p, par.threads, nullptr);
     std::vector<BatchItem> items;
-    int jobs = 1;
     st = expand_inputs(inputs, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg"}, &items);
     if (st && !(st = check_patterns(items, {p.out, p.tri, p.poly, p.stats}))) return rep.usage(st.message);
     if (!st) return rep.fail(st);
-    if (a.has("jobs") && !(st = parse_jobs(a.str("jobs"), &jobs))) return rep.usage(st.message);
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
         const Paths one{it.input, expand_pattern(p.out, it), expand_pattern(p.tri, it), expand_pattern(p.poly, it),
                         expand_pattern(p.stats, it)};
-        return generate_one(a, rep, one, rec);
+        return generate_one(a, rep, one, par.threads, rec);
     };
-    return run_batch(items, jobs, job, a.str("summary"), rep, Progress::should_show(a.has("progress"), rep.quiet()));
+    return run_batch(items, par.jobs, job, a.str("summary"), rep, Progress::should_show(a.has("progress"), rep.quiet()));
 }
 
 int cmd_generate(int argc, char** argv) { return run_command(kGenerate, argc, argv, run_generate); }

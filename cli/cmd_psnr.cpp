@@ -24,7 +24,7 @@ const CommandLine kPsnr = {
     "name without its extension (erd psnr 'photos/{name}.png' rec/ --summary psnr.csv); each\n"
     "line is then \"APPROX PSNR\".",
     {
-        {'j', "jobs", "N", "many images: N at a time (default 1; 0 = one per processor)"},
+        {'j', "jobs", "N", "one pair: N threads (default and 0: one per processor); many: N images at a time (default 1)"},
         {0, "summary", "FILE", "many images: a table of file, points, PSNR, seconds, status (.csv, or .json)"},
         {0, "json", nullptr, "{\"mse\":..,\"peak\":..,\"psnr\":..} on stdout (psnr null when identical)"},
         {0, "channels", nullptr, "colour: also the PSNR of each channel, a second line \"R x G y B z\" (JSON: \"channels\":[..])"},
@@ -35,7 +35,7 @@ const CommandLine kPsnr = {
 
 // One pair; in a batch (record not null) the line names APPROX and the PSNR goes to the record.
 static int psnr_one(const Args& args, const Reporter& rep, const std::string& a, const std::string& b,
-                    BatchRecord* record) {
+                    int threads, BatchRecord* record) {
     if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin");
 
     Image orig, approx;
@@ -50,13 +50,16 @@ static int psnr_one(const Args& args, const Reporter& rep, const std::string& a,
     rep.warn(warning);
 
     double e = 0, p = 0, per[3] = {0, 0, 0};
-    if (!(st = mse(orig, approx, &e)) || !(st = psnr(orig, approx, &p)) || !(st = channel_mse(orig, approx, per))) {
+    const bool channels = args.has("channels") && orig.channels == 3;
+    // One pass over the samples for the PSNR (psnr() is psnr_of_mse of the same mse), a second
+    // for the channels only when they are asked for.
+    if (!(st = mse(orig, approx, &e, threads)) || (channels && !(st = channel_mse(orig, approx, per, threads)))) {
         std::string msg = a + " and " + b + ": " + st.message;
         if (st.message.find("colour and the other gray") != std::string::npos) msg += " (--gray compares their luma)";
         return rep.fail(Status::bad_input(msg));
     }
+    p = psnr_of_mse(e, orig.maxval);
     const double peak = psnr_peak(orig.maxval);
-    const bool channels = args.has("channels") && orig.channels == 3;
     if (record) {
         record->has_psnr = !std::isinf(p);
         record->psnr = p;
@@ -90,20 +93,21 @@ static int psnr_one(const Args& args, const Reporter& rep, const std::string& a,
 static int run_psnr(const Args& args, const Reporter& rep) {
     const std::vector<std::string>& pos = args.positional();
     const std::vector<std::string> approx(pos.begin() + 1, pos.end());
-    if (!wants_batch(approx, pos[0], args.has("jobs") || args.has("summary")))
-        return psnr_one(args, rep, pos[0], pos[1], nullptr);
+    const bool batch = wants_batch(approx, pos[0], args.has("summary"));
+    Parallelism par;
+    Status st = parse_parallelism(args.has("jobs"), args.str("jobs"), batch, &par);
+    if (!st) return rep.usage(st.message);
+    if (!batch) return psnr_one(args, rep, pos[0], pos[1], par.threads, nullptr);
     if (args.has("json")) return rep.usage("many images: --json is for one pair (--summary s.json writes a table)");
     if (!has_name_field(pos[0]))
         return rep.usage("many images: ORIGINAL must name each original by a pattern with {name} ('photos/{name}.png')");
     std::vector<BatchItem> items;
-    int jobs = 1;
-    Status st = expand_inputs(approx, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg"}, &items);
+    st = expand_inputs(approx, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg"}, &items);
     if (!st) return rep.fail(st);
-    if (args.has("jobs") && !(st = parse_jobs(args.str("jobs"), &jobs))) return rep.usage(st.message);
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
-        return psnr_one(args, rep, expand_pattern(pos[0], it), it.input, rec);
+        return psnr_one(args, rep, expand_pattern(pos[0], it), it.input, par.threads, rec);
     };
-    return run_batch(items, jobs, job, args.str("summary"), rep, false);
+    return run_batch(items, par.jobs, job, args.str("summary"), rep, false);
 }
 
 int cmd_psnr(int argc, char** argv) { return run_command(kPsnr, argc, argv, run_psnr); }

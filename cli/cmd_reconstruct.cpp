@@ -30,14 +30,14 @@ const CommandLine kReconstruct = {
         {0, "no-aa", nullptr, "point evaluation at the pixels also for a soft-edged .erd (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2; P3 for colour), as the thesis's imgsyn did"},
         kProgressOption,
-        {'j', "jobs", "N", "many models: N at a time (default 1; 0 = one per processor)"},
+        {'j', "jobs", "N", "one model: N threads (default and 0: one per processor); many: N models at a time (default 1)"},
         {0, "summary", "FILE", "many models: a table of file, kind, points, seconds, status (.csv, or .json)"},
     },
     "no warnings", 0, 1 << 20, nullptr,
 };
 
 static int reconstruct_one(const Args& args, const Reporter& rep, const std::string& in, const std::string& out,
-                           BatchRecord* record) {
+                           int threads, BatchRecord* record) {
     Status st = refuse_overwrite(out, {in});
     if (!st) return rep.fail(st);
 
@@ -49,7 +49,7 @@ static int reconstruct_one(const Args& args, const Reporter& rep, const std::str
     const bool supersample = supersampled(model) && !args.has("no-aa");
     Image im;
     Progress progress("reconstruct", !record && Progress::should_show(args.has("progress"), rep.quiet()), args.has("progress"));
-    st = reconstruct(model, topo, supersample, &im, progress.hook());
+    st = reconstruct(model, topo, supersample, &im, progress.hook(), threads);
     progress.finish();
     if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
     WriteOptions wo;
@@ -65,19 +65,20 @@ static int reconstruct_one(const Args& args, const Reporter& rep, const std::str
 static int run_reconstruct(const Args& args, const Reporter& rep) {
     const std::vector<std::string>& models = args.positional();
     const std::string out = args.str("output", "-");
-    if (!wants_batch(models, out, args.has("jobs") || args.has("summary")))
-        return reconstruct_one(args, rep, models.empty() ? "-" : models[0], out, nullptr);
+    const bool batch = wants_batch(models, out, args.has("summary"));
+    Parallelism par;
+    Status st = parse_parallelism(args.has("jobs"), args.str("jobs"), batch, &par);
+    if (!st) return rep.usage(st.message);
+    if (!batch) return reconstruct_one(args, rep, models.empty() ? "-" : models[0], out, par.threads, nullptr);
     std::vector<BatchItem> items;
-    int jobs = 1;
-    Status st = expand_inputs(models, {".model", ".erd", ".erdz"}, &items);
+    st = expand_inputs(models, {".model", ".erd", ".erdz"}, &items);
     if (st && !(st = check_patterns(items, {out == "-" ? std::string() : out}))) return rep.usage(st.message);
     if (!st) return rep.fail(st);
     if (out == "-" && items.size() > 1) return rep.usage("many models: name the images with -o and {name} (rec/{name}.pgm)");
-    if (args.has("jobs") && !(st = parse_jobs(args.str("jobs"), &jobs))) return rep.usage(st.message);
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
-        return reconstruct_one(args, rep, it.input, expand_pattern(out, it), rec);
+        return reconstruct_one(args, rep, it.input, expand_pattern(out, it), par.threads, rec);
     };
-    return run_batch(items, jobs, job, args.str("summary"), rep, Progress::should_show(args.has("progress"), rep.quiet()));
+    return run_batch(items, par.jobs, job, args.str("summary"), rep, Progress::should_show(args.has("progress"), rep.quiet()));
 }
 
 int cmd_reconstruct(int argc, char** argv) { return run_command(kReconstruct, argc, argv, run_reconstruct); }

@@ -17,12 +17,12 @@ Image luma_of(const Image& im) {
     return g;
 }
 
-Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity how) {
-    if (im.channels == 1) return mmsodd(im, smoothing_order);
-    if (how == ColourDensity::luma) return mmsodd(luma_of(im), smoothing_order);
-    Grid<double> d = mmsodd_channel(im, 0, smoothing_order);
+Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity how, int threads) {
+    if (im.channels == 1) return mmsodd(im, smoothing_order, threads);
+    if (how == ColourDensity::luma) return mmsodd(luma_of(im), smoothing_order, threads);
+    Grid<double> d = mmsodd_channel(im, 0, smoothing_order, threads);
     for (int c = 1; c < im.channels; ++c) {
-        const Grid<double> dc = mmsodd_channel(im, c, smoothing_order);
+        const Grid<double> dc = mmsodd_channel(im, c, smoothing_order, threads);
         for (std::size_t i = 0; i < d.size(); ++i)
             d.data[i] = how == ColourDensity::sum ? d.data[i] + dc.data[i] : std::max(d.data[i], dc.data[i]);
     }

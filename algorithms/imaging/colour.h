@@ -19,6 +19,6 @@ enum class ColourDensity {
 };
 
 // The MMSODD (algorithms/imaging/mmsodd.h, zero borders) of every channel of im, combined.
-Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity how);
+Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity how, int threads = 1);
 
 }  // namespace erd

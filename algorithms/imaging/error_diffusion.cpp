@@ -8,6 +8,8 @@
 #include <limits>
 #include <utility>
 
+#include "kernel/row_parallel.h"
+
 namespace erd {
 
 namespace {
@@ -204,6 +206,31 @@ void run_sweep(const Grid<double>& density, const DiffusionParams& params, Sweep
     }
 }
 
+// The count search's sweep of kLanes lanes, on two threads when asked (threads >= 2): each runs
+// half of the lanes over the image. Every operation of a lane is its own (the quads are
+// element-wise; `any` only skips work), so each lane's count and points are the same bits as in
+// one sweep of all of them; a thread's half fills the latency of the carried error with two
+// quads instead of four.
+void run_search_sweep(const Grid<double>& density, const DiffusionParams& params, Sweep<kGroups>* sw) {
+    constexpr int half = kLanes / 2;
+    if (resolve_threads(params.threads) < 2 || std::size_t(density.width) * std::size_t(density.height) < (std::size_t(1) << 16)) {
+        run_sweep(density, params, sw);
+        return;
+    }
+    Sweep<kGroups / 2> parts[2];
+    for (int k = 0; k < 2; ++k)
+        for (int l = 0; l < half; ++l) {
+            parts[k].rho[l] = sw->rho[k * half + l];
+            parts[k].points[l] = sw->points[k * half + l];
+        }
+    run_parts(RowParts(0, 2, 2), [&](std::size_t k, std::size_t, std::size_t) { run_sweep(density, params, &parts[k]); });
+    for (int k = 0; k < 2; ++k)
+        for (int l = 0; l < half; ++l) {
+            sw->level[k * half + l] = parts[k].level[l];
+            sw->count[k * half + l] = parts[k].count[l];
+        }
+}
+
 }  // namespace
 
 std::size_t diffuse(const Grid<double>& density, double rho, const DiffusionParams& params,
@@ -273,7 +300,7 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
         float rhos[kLanes];
         if (lanes == kLanes) {
             for (int l = 0; l < kLanes; ++l) sw.rho[l] = float(trials[l]);
-            run_sweep(density, params, &sw);
+            run_search_sweep(density, params, &sw);
             std::copy(sw.count, sw.count + kLanes, counts);
             std::copy(sw.rho, sw.rho + kLanes, rhos);
         } else {
@@ -352,20 +379,35 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
     return Status::success();
 }
 
-Grid<double> ed_density(Grid<double> d, double gamma) {
+Grid<double> ed_density(Grid<double> d, double gamma, int threads) {
+    // Bands of rows side by side (kernel/row_parallel.h), 2^18 pixels at least: the maximum of the
+    // bands' maxima is the maximum, and each value is mapped alone, so every thread count gives
+    // the same bits.
+    const std::size_t w = std::size_t(std::max(0, d.width));
+    const RowParts parts(0, std::size_t(std::max(0, d.height)), threads, rows_for(std::size_t(1) << 18, w));
+    std::vector<double> band_max(parts.count, 0.0);
+    run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
+        double m = 0;
+        for (std::size_t i = y0 * w; i < y1 * w; ++i) m = std::max(m, d.data[i]);
+        band_max[k] = m;
+    });
     double dmax = 0;
-    for (double v : d.data) dmax = std::max(dmax, v);
+    for (double m : band_max) dmax = std::max(dmax, m);
     if (!(dmax > 0)) {
         std::fill(d.data.begin(), d.data.end(), 0.0);
         return d;
     }
-    // One loop per exponent (not the choice inside the loop, at every pixel).
-    if (gamma == 1.0)
-        for (double& v : d.data) v = std::max(0.0, v) / dmax;
-    else if (gamma == 0.5)
-        for (double& v : d.data) v = std::sqrt(std::max(0.0, v) / dmax);
-    else
-        for (double& v : d.data) v = std::pow(std::max(0.0, v) / dmax, gamma);
+    run_parts(parts, [&](std::size_t, std::size_t y0, std::size_t y1) {
+        double* const first = d.data.data() + y0 * w;
+        double* const last = d.data.data() + y1 * w;
+        // One loop per exponent (not the choice inside the loop, at every pixel).
+        if (gamma == 1.0)
+            for (double* v = first; v != last; ++v) *v = std::max(0.0, *v) / dmax;
+        else if (gamma == 0.5)
+            for (double* v = first; v != last; ++v) *v = std::sqrt(std::max(0.0, *v) / dmax);
+        else
+            for (double* v = first; v != last; ++v) *v = std::pow(std::max(0.0, *v) / dmax, gamma);
+    });
     return d;
 }
 

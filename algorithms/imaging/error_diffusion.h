@@ -50,6 +50,9 @@ struct DiffusionParams {
     // enters the diffusion. Must have the density's size.
     const Grid<std::uint8_t>* forbidden = nullptr;
     int max_passes = 256;  // thresholds tried at most (4 in the first sweep, 16 in each later one)
+    // Threads of the count search's sweeps of 16 lanes: 2 or more (0: the machine's processors)
+    // run them as two sweeps of 8 lanes side by side, with the same points (kernel/row_parallel.h).
+    int threads = 1;
 };
 
 struct DiffusionResult {
@@ -74,6 +77,7 @@ Status select_points(const Grid<double>& density, std::size_t count, const Diffu
 
 // The ED density sigma = (d / d_max)^gamma (thesis eq. 3.4), gamma > 0; all zeros when d_max <= 0.
 // Takes d by value so that a caller passing a temporary (ED: the MMSODD grid) reuses its storage.
-Grid<double> ed_density(Grid<double> d, double gamma);
+// threads: bands of rows side by side, the same bits for every count (kernel/row_parallel.h).
+Grid<double> ed_density(Grid<double> d, double gamma, int threads = 1);
 
 }  // namespace erd

@@ -17,16 +17,17 @@
 namespace erd {
 
 // MMSODD at every sample of im. smoothing_order must be odd and >= 1 (1 = no smoothing);
-// an invalid order is treated as 1.
-Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border = Border::zero);
+// an invalid order is treated as 1. threads: bands of rows side by side (kernel/row_parallel.h;
+// 0 = the machine's processors), the same bits for every count; the separable form ignores it.
+Grid<double> mmsodd(const Grid<double>& im, int smoothing_order, Border border = Border::zero, int threads = 1);
 
 // The same with zero extension, straight from an image's samples: equal to
 // mmsodd(to_grid(im), smoothing_order) without the image-sized copy in doubles.
-Grid<double> mmsodd(const Image& im, int smoothing_order);
+Grid<double> mmsodd(const Image& im, int smoothing_order, int threads = 1);
 
 // The same on channel `channel` of a colour image: mmsodd(channel_plane(im, channel), order)
 // without the plane's copy.
-Grid<double> mmsodd_channel(const Image& im, int channel, int smoothing_order);
+Grid<double> mmsodd_channel(const Image& im, int channel, int smoothing_order, int threads = 1);
 
 // The MMSODD by its definition: the passes above with whole-image filters, any border, four
 // image-sized temporaries. mmsodd() serves Border::replicate with it; tests use it as the

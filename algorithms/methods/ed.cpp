@@ -21,7 +21,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     StageTimer timer(result);
     if (options.progress.report_cancelled("sample selection", 0.0)) return Status::failure(kCancelled);
     // Colour: the channels' MMSODDs combined (ColourChoices::density).
-    Grid<double> sigma = ed_density(colour_mmsodd(image, 3, options.colour.density), 1.0);
+    Grid<double> sigma = ed_density(colour_mmsodd(image, 3, options.colour.density, options.threads), 1.0, options.threads);
     timer.lap("mmsodd density");
     if (options.progress.report_cancelled("sample selection", 0.2)) return Status::failure(kCancelled);
 
@@ -33,6 +33,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     DiffusionParams params;
     params.startup = Startup::none;
     params.forbidden = &corners;
+    params.threads = options.threads;
     DiffusionResult chosen;
     const std::size_t want = std::size_t(n - 4);
     st = select_points(sigma, want, params, &chosen);

@@ -108,7 +108,7 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
     } else if (k > 0) {
         // The MMSODD plane becomes the density in place; the wedge-value line search computes
         // its values where it needs them (the same values), so no second plane is kept.
-        Grid<double> density = ed_density(colour_mmsodd(image, 5, options.colour.density), 0.5);
+        Grid<double> density = ed_density(colour_mmsodd(image, 5, options.colour.density, options.threads), 0.5, options.threads);
         options.progress("sample selection", 0.3);
         const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
@@ -123,6 +123,7 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
         DiffusionParams dp;
         dp.startup = options.startup == 1 ? Startup::force : options.startup == 2 ? Startup::none : Startup::mirror;
         dp.forbidden = &occupied;
+        dp.threads = options.threads;
         DiffusionResult dr;
         st = select_points(density, k, dp, &dr);
         if (!st) return st;

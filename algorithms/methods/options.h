@@ -88,6 +88,10 @@ struct GenerateOptions {
     ColourChoices colour;        // colour images only (channels == 3)
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages
+    // Threads of the image stages (MMSODD, density, edge detection's gradient, reconstruction,
+    // PSNR: kernel/row_parallel.h); 0 = the machine's processors. Outputs are the same for every
+    // count; the CLI's -j sets it for one file.
+    int threads = 1;
 };
 
 // N for an image of width x height under these options: round(D*W*H/100) when -d was given or

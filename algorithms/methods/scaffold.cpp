@@ -159,10 +159,11 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
 namespace {
 
 // True when a's point-evaluated reconstruction has a higher PSNR than b's (false on any error).
-bool better_reconstruction(const Image& image, const Model& a, const Model& b) {
+bool better_reconstruction(const Image& image, const Model& a, const Model& b, int threads) {
     Image ra, rb;
     double pa = 0, pb = 0;
-    if (!reconstruct(a, false, &ra) || !psnr(image, ra, &pa) || !reconstruct(b, false, &rb) || !psnr(image, rb, &pb))
+    if (!reconstruct(a, false, &ra, {}, threads) || !psnr(image, ra, &pa, threads) ||
+        !reconstruct(b, false, &rb, {}, threads) || !psnr(image, rb, &pb, threads))
         return false;
     return pa > pb;
 }
@@ -220,7 +221,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             }
             optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit);
             model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
-            if (guard && better_reconstruction(image, before, result->model)) result->model = std::move(before);
+            if (guard && better_reconstruction(image, before, result->model, options.threads)) result->model = std::move(before);
             timer->lap("flips");
         }
     }
@@ -251,7 +252,8 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
     const GenerateResult* r[2] = {result, &exact};
     for (int i = 0; i < 2; ++i) {
         Image rec;
-        if (!(st = reconstruct(r[i]->model, false, &rec)) || !(st = psnr(image, rec, &db[i]))) return st;
+        if (!(st = reconstruct(r[i]->model, false, &rec, {}, options.threads)) || !(st = psnr(image, rec, &db[i], options.threads)))
+            return st;
     }
     if (db[1] > db[0]) *result = std::move(exact);
     result->stats.erd.plain_psnr = db[0];

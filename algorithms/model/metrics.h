@@ -15,17 +15,18 @@ double psnr_peak(std::uint32_t maxval);
 
 // Mean squared error over all samples (every channel of every pixel). Fails (Code::input) when
 // sizes or channel counts differ, when the images are empty, or when the maxvals differ
-// (comparing 8-bit to 16-bit samples is meaningless).
-Status mse(const Image& orig, const Image& approx, double* out);
+// (comparing 8-bit to 16-bit samples is meaningless). threads: bands of rows side by side
+// (kernel/row_parallel.h); the sums are exact integers, so every count gives the same result.
+Status mse(const Image& orig, const Image& approx, double* out, int threads = 1);
 
 // The MSE of each channel alone: out[c] for c < channels (their mean is mse()). Same failures.
-Status channel_mse(const Image& orig, const Image& approx, double out[3]);
+Status channel_mse(const Image& orig, const Image& approx, double out[3], int threads = 1);
 
 // PSNR in dB of a mean squared error against an image of this maxval; +infinity for mse 0.
 double psnr_of_mse(double mse, std::uint32_t maxval);
 
 // PSNR in dB = 10 log10(peak^2 / mse); +infinity when the images are identical. Same failures as mse.
-Status psnr(const Image& orig, const Image& approx, double* out);
+Status psnr(const Image& orig, const Image& approx, double* out, int threads = 1);
 
 // Convenience forms for callers that have already checked the images match: NaN on mismatch.
 double mse(const Image& orig, const Image& approx);

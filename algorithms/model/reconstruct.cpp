@@ -27,6 +27,7 @@
 #include "algorithms/model/model_topology.h"
 #include "kernel/predicates.h"
 #include "kernel/raster.h"
+#include "kernel/row_parallel.h"
 
 namespace erd {
 namespace {
@@ -236,43 +237,50 @@ bool exact_plane(const Model& m, std::size_t f, int c, RoundedPlane* rp) {
 // Every pixel is written once by its owning face, then overwritten on discontinuity edges and at
 // vertices; each write is final, so it is rounded on the spot (no W x H buffer of doubles). A
 // face's spans are scanned once for all channels; channel c of pixel x of a row is row[x*C + c].
-void point_evaluation(const Model& m, const Prepared& p, Image* out, ProgressHook progress) {
+// Faces in parts of 1024 at least side by side (kernel/row_parallel.h): each pixel is owned by
+// one face, so the parts write disjoint pixels and the image is the same for any count; the
+// discontinuity and vertex writes over them follow on one thread, in their order.
+void point_evaluation(const Model& m, const Prepared& p, Image* out, ProgressHook progress, int threads) {
     const std::size_t W = std::size_t(m.width), C = std::size_t(m.channels);
     const double maxval = m.maxval;
     std::uint16_t* px = out->samples.data();
     const Lattice l = Lattice::pixels();
-    std::vector<Span> spans;
-    RoundedPlane rp;
-    // The spans of one face in one channel; `stride` is C, a constant 1 for gray so that its
-    // loops stay as they were.
-    const auto fill = [&](std::size_t f, std::size_t c, auto stride) {
-        if (exact_plane(m, f, int(c), &rp)) {
-            // p stepped from an exact start over each piece, truncated (kernel/raster.h).
+    const RowParts parts(0, m.faces.size(), threads, 1024);
+    run_parts(parts, [&](std::size_t part, std::size_t f0, std::size_t f1) {
+        std::vector<Span> spans;
+        RoundedPlane rp;
+        // The spans of one face in one channel; `stride` is C, a constant 1 for gray so that its
+        // loops stay as they were.
+        const auto fill = [&](std::size_t f, std::size_t c, auto stride) {
+            if (exact_plane(m, f, int(c), &rp)) {
+                // p stepped from an exact start over each piece, truncated (kernel/raster.h).
+                for (const Span& s : spans) {
+                    std::uint16_t* row = px + std::size_t(s.y) * W * stride + c;
+                    rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
+                        for (std::int32_t x = first; x <= last; ++x, v += rp.dp) row[std::size_t(x) * stride] = std::uint16_t(std::int32_t(v));
+                    });
+                }
+                return;
+            }
+            const SpanPlane& pl = p.planes[f * C + c];
+            const double dv = pl.step_x(l);
             for (const Span& s : spans) {
                 std::uint16_t* row = px + std::size_t(s.y) * W * stride + c;
-                rp.pieces(s.x_begin, s.x_end, s.y, [&](std::int32_t first, std::int32_t last, double v) {
-                    for (std::int32_t x = first; x <= last; ++x, v += rp.dp) row[std::size_t(x) * stride] = std::uint16_t(std::int32_t(v));
-                });
+                double v = pl.at(l, s.x_begin, s.y);
+                for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[std::size_t(x) * stride] = to_sample(v, maxval);
             }
-            return;
+        };
+        // Progress from the calling thread's part alone (the hook need not be thread-safe).
+        const std::size_t n = f1 - f0, every = n / 100 + 1;
+        for (std::size_t f = f0; f < f1; ++f) {
+            if (part == 0 && progress && (f - f0) % every == 0) progress("reconstruct", double(f - f0) / double(n));
+            const auto& fc = m.faces[f];
+            scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
+            if (C == 1) fill(f, 0, std::integral_constant<std::size_t, 1>());
+            else
+                for (std::size_t c = 0; c < C; ++c) fill(f, c, C);
         }
-        const SpanPlane& pl = p.planes[f * C + c];
-        const double dv = pl.step_x(l);
-        for (const Span& s : spans) {
-            std::uint16_t* row = px + std::size_t(s.y) * W * stride + c;
-            double v = pl.at(l, s.x_begin, s.y);
-            for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[std::size_t(x) * stride] = to_sample(v, maxval);
-        }
-    };
-    const std::size_t every = m.faces.size() / 100 + 1;
-    for (std::size_t f = 0; f < m.faces.size(); ++f) {
-        if (progress && f % every == 0) progress("reconstruct", double(f) / double(m.faces.size()));
-        const auto& fc = m.faces[f];
-        scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
-        if (C == 1) fill(f, 0, std::integral_constant<std::size_t, 1>());
-        else
-            for (std::size_t c = 0; c < C; ++c) fill(f, c, C);
-    }
+    });
     fix_discontinuities(m, p, l, [&](std::int32_t i, std::int32_t j, int c, double mean, double) {
         px[(std::size_t(j) * W + std::size_t(i)) * C + std::size_t(c)] = to_sample(mean, maxval);
     });
@@ -436,7 +444,7 @@ std::vector<std::uint32_t> group_by_band(std::size_t n, std::size_t nb, Bands ba
 // Supersampling band by band. Each pixel's sum takes exactly the additions, in exactly the order,
 // of a whole-image pass (faces in face order, then the late terms), so banding changes no bit.
 // The sums of channel c are plane c of the band's buffer; a face is scanned once for all of them.
-void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook progress) {
+void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook progress, int threads) {
     const std::size_t W = std::size_t(m.width), H = std::size_t(m.height), C = std::size_t(m.channels);
     const std::size_t band = std::max<std::size_t>(1, kBandBytes / (W * C * sizeof(double)));
     const std::size_t nb = (H + band - 1) / band;
@@ -458,47 +466,56 @@ void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook p
     const std::vector<std::uint32_t> band_late =
         group_by_band(late.size(), nb, [&](std::size_t i, auto fn) { fn((C == 1 ? late[i].sample : late[i].sample / C) / W / band); }, &late_first);
     const std::size_t plane = band * W;
-    std::vector<double> acc(plane * C);
-    std::vector<Span> spans;
     const double maxval = m.maxval;
-    for (std::size_t b = 0; b < nb; ++b) {
-        progress("reconstruct", double(b) / double(nb));
-        const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
-        for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
-            const std::uint32_t f = band_faces[k];
-            const auto& fc = m.faces[f];
-            // The band's sub-rows only: a face spanning several bands is scanned in pieces.
-            scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans, std::int32_t(4 * row0),
-                          std::int32_t(4 * (row0 + rows) - 1));
-            if (C == 1) add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
-            else
-                for (std::size_t c = 0; c < C; ++c) add_spans(p.planes[f * C + c], spans.data(), spans.size(), acc.data() + c * plane, W, row0);
-        }
-        for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) {
-            const LateTerm& t = late[band_late[k]];
-            if (C == 1) acc[t.sample - row0 * W] += t.add;
-            else acc[(t.sample % C) * plane + t.sample / C - row0 * W] += t.add;
-        }
-        std::uint16_t* dst = out->samples.data() + row0 * W * C;
-        const auto finish = [&](std::size_t c, auto stride) {
-            double* sums = acc.data() + c * plane;
-            for (std::size_t i = 0; i < rows * W; ++i) {
-                dst[i * stride + c] = to_sample(sums[i] * (1.0 / 16.0), maxval);
-                sums[i] = 0.0;  // ready for the next band (no separate clearing pass)
+    // Bands in parts of 2^15 samples at least side by side (kernel/row_parallel.h), each part
+    // with sums of its own: a band is finished from its own faces and late terms, so the image
+    // is the same for any count.
+    const RowParts parts(0, nb, threads, rows_for(std::size_t(1) << 15, band * W * C));
+    run_parts(parts, [&](std::size_t part, std::size_t b0, std::size_t b1) {
+        std::vector<double> acc(plane * C);
+        std::vector<Span> spans;
+        for (std::size_t b = b0; b < b1; ++b) {
+            // Progress from the calling thread's part alone (the hook need not be thread-safe).
+            if (part == 0) progress("reconstruct", double(b - b0) / double(b1 - b0));
+            const std::size_t row0 = b * band, rows = std::min(H, row0 + band) - row0;
+            for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
+                const std::uint32_t f = band_faces[k];
+                const auto& fc = m.faces[f];
+                // The band's sub-rows only: a face spanning several bands is scanned in pieces.
+                scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans,
+                              std::int32_t(4 * row0), std::int32_t(4 * (row0 + rows) - 1));
+                if (C == 1) add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
+                else
+                    for (std::size_t c = 0; c < C; ++c)
+                        add_spans(p.planes[f * C + c], spans.data(), spans.size(), acc.data() + c * plane, W, row0);
             }
-        };
-        if (C == 1) finish(0, std::integral_constant<std::size_t, 1>());  // a plain, vectorisable loop
-        else
-            for (std::size_t c = 0; c < C; ++c) finish(c, C);
-    }
+            for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) {
+                const LateTerm& t = late[band_late[k]];
+                if (C == 1) acc[t.sample - row0 * W] += t.add;
+                else acc[(t.sample % C) * plane + t.sample / C - row0 * W] += t.add;
+            }
+            std::uint16_t* dst = out->samples.data() + row0 * W * C;
+            const auto finish = [&](std::size_t c, auto stride) {
+                double* sums = acc.data() + c * plane;
+                for (std::size_t i = 0; i < rows * W; ++i) {
+                    dst[i * stride + c] = to_sample(sums[i] * (1.0 / 16.0), maxval);
+                    sums[i] = 0.0;  // ready for the next band (no separate clearing pass)
+                }
+            };
+            if (C == 1) finish(0, std::integral_constant<std::size_t, 1>());  // a plain, vectorisable loop
+            else
+                for (std::size_t c = 0; c < C; ++c) finish(c, C);
+        }
+    });
 }
 
-Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out, ProgressHook progress) {
+Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out, ProgressHook progress,
+                        int threads) {
     Prepared p;
     if (Status s = prepare(m, false, given, &p); !s) return s;
     Image im(m.width, m.height, m.maxval, m.channels);
-    if (supersample) supersampling(m, p, &im, progress);
-    else point_evaluation(m, p, &im, progress);
+    if (supersample) supersampling(m, p, &im, progress, threads);
+    else point_evaluation(m, p, &im, progress, threads);
     progress("reconstruct", 1.0);
     *out = std::move(im);
     return Status::success();
@@ -511,12 +528,13 @@ Status check_triangulation(const Model& m) {
     return prepare(m, true, nullptr, &p);
 }
 
-Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out, ProgressHook progress) {
-    return reconstruct_with(m, &topo, supersample, out, progress);
+Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out, ProgressHook progress,
+                   int threads) {
+    return reconstruct_with(m, &topo, supersample, out, progress, threads);
 }
 
-Status reconstruct(const Model& m, bool supersample, Image* out, ProgressHook progress) {
-    return reconstruct_with(m, nullptr, supersample, out, progress);
+Status reconstruct(const Model& m, bool supersample, Image* out, ProgressHook progress, int threads) {
+    return reconstruct_with(m, nullptr, supersample, out, progress, threads);
 }
 
 }  // namespace erd

@@ -36,11 +36,14 @@ Status check_triangulation(const Model& m);
 // Renders m into *out (W x H, m.channels, m.maxval): supersample ? 4x4 supersampling : point evaluation.
 // Runs the checks of check_triangulation first (all but the pixel count, which they imply), so
 // it never fails in any other way on any model.
-// progress: "reconstruct" with the fraction of faces (point evaluation) or row bands done.
-Status reconstruct(const Model& m, bool supersample, Image* out, ProgressHook progress = {});
+// progress: "reconstruct" with the fraction of faces (point evaluation) or row bands done, called
+// from the calling thread only. threads: faces or bands of rows side by side
+// (kernel/row_parallel.h; 0 = the machine's processors), the same image for every count.
+Status reconstruct(const Model& m, bool supersample, Image* out, ProgressHook progress = {}, int threads = 1);
 
 // The same with m's adjacency already built (topo = build_topology(m), e.g. from read_model()),
 // which saves building it again; a topo whose sizes do not fit m is rebuilt.
-Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out, ProgressHook progress = {});
+Status reconstruct(const Model& m, const ModelTopology& topo, bool supersample, Image* out, ProgressHook progress = {},
+                   int threads = 1);
 
 }  // namespace erd

@@ -92,6 +92,7 @@ def generate(
     triangles: int = ...,
     maxval: int = ...,
     max_memory: int = ...,
+    threads: int = ...,
 ) -> Mesh:
     """Meshes a 2-D uint8/uint16 image as `erd generate` does (options: its long flag names)."""
 

@@ -50,6 +50,7 @@ const std::vector<Spec>& specs() {
         {"aa_errors", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.supersampled_errors = v == 1; }},
         {"maxval", Kind::integer, 1, 65535, [](GenerateArgs* a, double v) { a->maxval = (long long)v; }},
         {"max_memory", Kind::integer, 0, 9e18, [](GenerateArgs* a, double v) { a->options.max_memory = std::size_t(v); }},
+        {"threads", Kind::integer, 0, 256, [](GenerateArgs* a, double v) { a->options.generate.threads = int(v); }},
     };
     return s;
 }

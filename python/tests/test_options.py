@@ -70,6 +70,15 @@ def test_stop_rules_and_thesis_change_the_mesh(small):
     assert np.array_equal(same.corner_values, base.corner_values)  # explicit values beat thesis=True
 
 
+def test_threads_give_the_same_mesh(small):
+    one = erd.generate(small, "erded", density=3.0, threads=1)
+    for t in (0, 2, 3):
+        other = erd.generate(small, "erded", density=3.0, threads=t)
+        assert np.array_equal(one.vertices, other.vertices) and np.array_equal(one.corner_values, other.corner_values)
+    with pytest.raises(ValueError):
+        erd.generate(small, density=3.0, threads=-1)
+
+
 def test_stats_are_the_cli_fields(small):
     s = erd.generate(small, "erdgpi", density=2.0).stats
     assert s["method"] == "erdgpi" and s["model"] == "erd"

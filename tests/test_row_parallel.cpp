@@ -1,0 +1,277 @@
+// Threads of the image stages (kernel/row_parallel.h): the parts cover their range, and every
+// stage that uses them gives the same bytes at 1, 2 and 3 threads (MMSODD, the ED density, the
+// PSNR, both reconstructions, the four methods' models in gray and colour, `erd generate`,
+// `erd reconstruct` and `erd psnr` -j), on odd sizes down to 1 x N and N x 1.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algorithms/imaging/colour.h"
+#include "algorithms/imaging/error_diffusion.h"
+#include "algorithms/imaging/mmsodd.h"
+#include "algorithms/imaging/synth.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/model/metrics.h"
+#include "algorithms/model/model_io.h"
+#include "algorithms/model/reconstruct.h"
+#include "kernel/row_parallel.h"
+#include "tests/erd_run.h"
+
+using namespace erd;
+
+namespace {
+
+Image synth_image(int w, int h, int bits = 8, std::uint64_t seed = 1) {
+    SynthParams p;
+    p.width = w;
+    p.height = h;
+    p.bits = bits;
+    p.seed = seed;
+    Image im;
+    REQUIRE(synth(p, &im).ok());
+    return im;
+}
+
+// A colour image from three synth images of different seeds (different noise in each channel).
+Image synth_colour(int w, int h) {
+    Image out(w, h, 255, 3);
+    for (int c = 0; c < 3; ++c) {
+        const Image g = synth_image(w, h, 8, std::uint64_t(c + 3));
+        for (std::size_t i = 0; i < g.samples.size(); ++i) out.samples[i * 3 + std::size_t(c)] = g.samples[i];
+    }
+    return out;
+}
+
+bool same_bits(const Grid<double>& a, const Grid<double>& b) {
+    return a.width == b.width && a.height == b.height && a.data.size() == b.data.size() &&
+           (a.data.empty() || std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(double)) == 0);
+}
+
+bool same_image(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.channels == b.channels && a.maxval == b.maxval &&
+           a.samples == b.samples;
+}
+
+std::string model_text(const Model& m) {
+    std::string s;
+    REQUIRE(write_model(m, &s).ok());
+    return s;
+}
+
+// Small sizes (one part: the stages give small inputs a single thread) and sizes of several
+// parts at 2 and 3 threads (MMSODD parts hold 2^15 pixels at least, the density's 2^18).
+const int kSizes[][2] = {{1, 1}, {1, 37}, {41, 1}, {2, 2}, {17, 33}, {1, 200000}, {3, 40000}, {700, 160}, {257, 401}};
+
+// Pseudo-random samples (a fixed LCG): images of more than 2^19 samples for the PSNR's parts.
+Image noise_image(int w, int h, int channels, std::uint32_t seed) {
+    Image im(w, h, 65535, channels);
+    std::uint32_t x = seed;
+    for (auto& v : im.samples) {
+        x = x * 1664525u + 1013904223u;
+        v = std::uint16_t(x >> 16);
+    }
+    return im;
+}
+
+}  // namespace
+
+TEST_CASE("row parts: contiguous, cover the range, at most the threads asked for, min size kept", "[threads]") {
+    for (std::size_t n : {0u, 1u, 2u, 7u, 64u, 1000u})
+        for (int threads : {1, 2, 3, 8})
+            for (std::size_t min_items : {1u, 16u}) {
+                const RowParts parts(5, 5 + n, threads, min_items);
+                INFO(n << " items, " << threads << " threads, min " << min_items);
+                REQUIRE(parts.count >= 1);
+                CHECK(parts.count <= std::size_t(threads));
+                if (parts.count > 1) CHECK(n / parts.count >= min_items);
+                CHECK(parts.part_begin(0) == 5);
+                CHECK(parts.part_end(parts.count - 1) == 5 + n);
+                for (std::size_t k = 0; k < parts.count; ++k) {
+                    CHECK(parts.part_begin(k) <= parts.part_end(k));
+                    if (k + 1 < parts.count) CHECK(parts.part_end(k) == parts.part_begin(k + 1));
+                }
+                std::vector<int> seen(n, 0);
+                run_parts(parts, [&](std::size_t, std::size_t b, std::size_t e) {
+                    for (std::size_t i = b; i < e; ++i) ++seen[i - 5];
+                });
+                for (int s : seen) CHECK(s == 1);
+            }
+    CHECK(resolve_threads(3) == 3);
+    CHECK(resolve_threads(0) >= 1);
+}
+
+TEST_CASE("MMSODD and the ED density: the same bits at 1, 2 and 3 threads, odd sizes", "[threads][mmsodd]") {
+    for (const auto& wh : kSizes) {
+        const Image im = noise_image(wh[0], wh[1], 1, 1);
+        const Image deep = noise_image(wh[0], wh[1], 1, 5);
+        const Grid<double> plane = to_grid(deep);
+        for (int order : {1, 3, 5, 7}) {
+            INFO(wh[0] << " x " << wh[1] << ", order " << order);
+            const Grid<double> one = mmsodd(im, order, 1);
+            const Grid<double> plane_one = mmsodd(plane, order, Border::zero, 1);
+            // The banded sweep is the unbanded one: also against the definition (integer samples).
+            CHECK(same_bits(one, mmsodd_separable(to_grid(im), order, Border::zero)));
+            for (int threads : {2, 3}) {
+                INFO(threads << " threads");
+                CHECK(same_bits(one, mmsodd(im, order, threads)));
+                CHECK(same_bits(plane_one, mmsodd(plane, order, Border::zero, threads)));
+            }
+        }
+    }
+    for (const auto& wh : {std::make_pair(1, 800000), std::make_pair(1000, 801), std::make_pair(5, 3)}) {
+        Grid<double> d(wh.first, wh.second);
+        std::uint32_t x = 9;
+        for (double& v : d.data) {
+            x = x * 1664525u + 1013904223u;
+            v = double(x >> 8) / 3.0;
+        }
+        d.data[d.data.size() - 1] = 1e9;  // the maximum in the last part
+        for (int threads : {2, 3})
+            for (double gamma : {0.5, 1.0, 0.7}) {
+                INFO(wh.first << " x " << wh.second << ", " << threads << " threads, gamma " << gamma);
+                CHECK(same_bits(ed_density(d, gamma, 1), ed_density(d, gamma, threads)));
+            }
+    }
+    const Image colour = synth_colour(300, 260);
+    for (ColourDensity how : {ColourDensity::sum, ColourDensity::max, ColourDensity::luma})
+        for (int threads : {2, 3}) CHECK(same_bits(colour_mmsodd(colour, 5, how, 1), colour_mmsodd(colour, 5, how, threads)));
+}
+
+TEST_CASE("error diffusion's count search: the same points at 1, 2 and 3 threads", "[threads][diffusion]") {
+    // Above 2^16 pixels the 16-lane sweeps run as two halves side by side.
+    for (const auto& wh : {std::make_pair(300, 260), std::make_pair(1, 70000), std::make_pair(40, 30)}) {
+        const Image im = noise_image(wh.first, wh.second, 1, 4);
+        const Grid<double> density = ed_density(mmsodd(im, 3), 1.0);
+        for (Startup startup : {Startup::none, Startup::mirror, Startup::force})
+            for (std::size_t k : {std::size_t(7), density.size() / 50}) {
+                DiffusionParams p;
+                p.startup = startup;
+                DiffusionResult one;
+                REQUIRE(select_points(density, k, p, &one).ok());
+                for (int threads : {2, 3}) {
+                    INFO(wh.first << " x " << wh.second << ", K " << k << ", " << threads << " threads");
+                    p.threads = threads;
+                    DiffusionResult other;
+                    REQUIRE(select_points(density, k, p, &other).ok());
+                    CHECK(other.points == one.points);
+                    CHECK(other.rho == one.rho);
+                    CHECK(other.passes == one.passes);
+                    CHECK(other.exact == one.exact);
+                }
+            }
+    }
+}
+
+TEST_CASE("PSNR, MSE and channel MSE: the same at 1, 2 and 3 threads", "[threads][metrics]") {
+    for (const auto& wh : {std::make_pair(1, 1), std::make_pair(3, 1), std::make_pair(1, 1600000), std::make_pair(1300, 1300)}) {
+        const Image a = noise_image(wh.first, wh.second, 1, 1), b = noise_image(wh.first, wh.second, 1, 2);
+        double e1 = 0, p1 = 0;
+        REQUIRE(mse(a, b, &e1, 1).ok());
+        REQUIRE(psnr(a, b, &p1, 1).ok());
+        for (int threads : {2, 3}) {
+            double e = -1, p = -1;
+            REQUIRE(mse(a, b, &e, threads).ok());
+            REQUIRE(psnr(a, b, &p, threads).ok());
+            CHECK(std::memcmp(&e, &e1, sizeof e) == 0);
+            CHECK(std::memcmp(&p, &p1, sizeof p) == 0);
+        }
+    }
+    const Image a = noise_image(800, 700, 3, 1), c = noise_image(800, 700, 3, 2);
+    double one[3], three[3], e1 = 0, e3 = 0;
+    REQUIRE(channel_mse(a, c, one, 1).ok());
+    REQUIRE(channel_mse(a, c, three, 3).ok());
+    REQUIRE(mse(a, c, &e1, 1).ok());
+    REQUIRE(mse(a, c, &e3, 3).ok());
+    CHECK(std::memcmp(one, three, sizeof one) == 0);
+    CHECK(e1 == e3);
+    CHECK(e1 > 0);
+    // Sizes that differ still fail, threads or not.
+    double e = 0;
+    CHECK_FALSE(mse(synth_image(5, 4), synth_image(4, 5), &e, 3).ok());
+}
+
+TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 threads", "[threads][methods]") {
+    struct Case {
+        int w, h, channels;
+    };
+    // 2 x N and N x 2 are the smallest images a method meshes.
+    // 560 x 480 and 300 x 260 give the MMSODD, the density and both reconstructions several parts.
+    const Case cases[] = {{2, 2, 1}, {2, 23, 1}, {29, 2, 1}, {67, 45, 1}, {560, 480, 1}, {300, 260, 3}};
+    for (const Case& c : cases) {
+        const Image im = c.channels == 3 ? synth_colour(c.w, c.h) : synth_image(c.w, c.h);
+        for (const char* method : {"ed", "gpi", "erded", "erdgpi"}) {
+            INFO(method << " on " << c.w << " x " << c.h << " x " << c.channels);
+            std::string first;
+            Model first_model;
+            for (int threads : {1, 2, 3}) {
+                GenerateOptions o;
+                o.points = std::max(std::int64_t(4), std::int64_t(c.w) * c.h / 40);
+                o.threads = threads;
+                GenerateResult r;
+                const Status st = find_method(method)->run(im, o, &r);
+                INFO(threads << " threads: " << st.message);
+                REQUIRE(st.ok());
+                const std::string text = model_text(r.model);
+                if (threads == 1) {
+                    first = text;
+                    first_model = r.model;
+                } else {
+                    CHECK(text == first);
+                }
+            }
+            for (bool supersample : {false, true}) {
+                Image one, other;
+                REQUIRE(reconstruct(first_model, supersample, &one, {}, 1).ok());
+                for (int threads : {2, 3}) {
+                    INFO((supersample ? "4x4, " : "point, ") << threads << " threads");
+                    REQUIRE(reconstruct(first_model, supersample, &other, {}, threads).ok());
+                    CHECK(same_image(one, other));
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("erd generate, reconstruct and psnr: -j 1, 2 and 3 write the same bytes; -j alone is no batch", "[threads][cli]") {
+    REQUIRE(erd_test::binary_available());
+    erd_test::TempDir t;
+    const auto run = [&](const std::string& args) {
+        return erd_test::run_erd(args, "cd " + erd_test::sh_quote(t.path) + " && ");
+    };
+    REQUIRE(run("synth -q -W 611 -H 467 -o a.pgm").status == 0);
+    for (const char* method : {"ed", "erded", "erdgpi"}) {
+        INFO(method);
+        std::string model, image, db;
+        const std::string m = method, ext = m == "ed" ? ".model" : ".erd";
+        for (int j : {1, 2, 3}) {
+            const std::string n = std::to_string(j);
+            auto r = run("generate -q -m " + m + " -d 3 -i a.pgm -o m" + n + ext + " -j " + n);
+            INFO(r.err);
+            REQUIRE(r.status == 0);
+            REQUIRE(run("reconstruct m" + n + ext + " -o r" + n + ".pgm -j " + n).status == 0);
+            r = run("psnr a.pgm r" + n + ".pgm -j " + n);
+            REQUIRE(r.status == 0);
+            if (j == 1) {
+                model = erd_test::slurp(t.file("m1" + ext));
+                image = erd_test::slurp(t.file("r1.pgm"));
+                db = r.out;
+                REQUIRE(!model.empty());
+            } else {
+                CHECK(erd_test::slurp(t.file("m" + n + ext)) == model);
+                CHECK(erd_test::slurp(t.file("r" + n + ".pgm")) == image);
+                CHECK(r.out == db);
+            }
+        }
+    }
+    // One file with -j prints no batch line; a bad -j is a usage error.
+    auto r = run("generate -m gpi -d 3 -i a.pgm -o g.model -j 2");
+    CHECK(r.status == 0);
+    CHECK(r.err.find("files") == std::string::npos);
+    CHECK(run("generate -m gpi -d 3 -i a.pgm -o g.model -j x").status == 2);
+    CHECK(run("psnr a.pgm a.pgm -j 300").status == 2);
+}
