@@ -54,11 +54,12 @@ struct ErdzInfo {
     std::string method;
     double step = 0.0;
     bool full_lattice = false;          // free vertices on the doubled lattice
-    std::size_t header_bits = 0;        // magic, version, header and the three length prefixes
-    std::size_t position_bits = 0, edge_bits = 0, value_bits = 0;
+    std::size_t header_bits = 0;        // magic, version, header and the section length prefixes
+    std::size_t position_bits = 0, edge_bits = 0, flip_bits = 0, value_bits = 0;
     std::size_t total_bits = 0;
     std::size_t free_points = 0;        // coded in the positions section
     std::size_t chains = 0, chain_steps = 0;
+    std::size_t flips = 0;              // edges flipped after the rebuild
     std::size_t coded_values = 0;       // vertices (basic) or wedges (erd), times channels
 };
 

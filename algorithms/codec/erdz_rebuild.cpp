@@ -4,8 +4,8 @@
 
 namespace erd::codec {
 
-Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>& free_points,
-               const std::vector<Chain>& chains, Rebuilt* r) {
+Status rebuild(int width, int height, const std::vector<LatticePoint>& free_points, const std::vector<Chain>& chains,
+               Rebuilt* r) {
     Cdt& cdt = r->cdt;
     Status st = cdt.reset(2 * width - 2, 2 * height - 2);
     if (!st) return st;
@@ -32,6 +32,11 @@ Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>&
         at += c.size();
     }
     if (rep.dropped_crossing > 0) return Status::bad_input("edges section: two constrained edges cross");
+    return Status::success();
+}
+
+void number_units(bool erd, Rebuilt* r) {
+    const Cdt& cdt = r->cdt;
 
     const std::size_t nv = cdt.vertex_count(), nh = 3 * cdt.face_count();
     r->order.resize(nv);
@@ -107,7 +112,6 @@ Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>&
         start = std::uint32_t(g.neighbour.size());
     }
     g.begin[units] = start;
-    return Status::success();
 }
 
 }  // namespace erd::codec
