@@ -79,9 +79,7 @@ PY
     for meth in ${METHODS:-erdgpi gpi}; do
         ext=erd; [[ $meth == gpi || $meth == ed ]] && ext=model
         base=$W/$img-$d-$meth
-        # --flips 0: what `generate -o x.erdz` does (a flipped edge costs a constraint in an .erdz).
-        flips=(); [[ $ext == erd ]] && flips=(--flips 0)
-        "$ERD" generate -q --method $meth -i "$src" -d "$d" "${flips[@]}" -o "$base.$ext"
+        "$ERD" generate -q --method $meth -i "$src" -d "$d" -o "$base.$ext"
         for s in 1 2 3 4 6 8; do
             "$ERD" convert -q "$base.$ext" "$base-s$s.erdz" --step $s
             "$ERD" reconstruct "$base-s$s.erdz" -o "$base-s$s.pgm"

@@ -233,7 +233,7 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     Rebuilt r;
     std::vector<LatticePoint> free_points;
     std::vector<Chain> chains;
-    std::vector<codec::FlipRecord> plan;
+    std::string flp;
     std::uint64_t flips = 0;
     codec::Lattice lat{m.width, m.height, false};
     for (;;) {
@@ -245,7 +245,6 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
         r = Rebuilt();  // a fresh kernel, as the decoder's: nothing carried over from the last round
         if (!(st = codec::rebuild(m.width, m.height, free_points, chains, &r)))
             return Status::bad_input("the model cannot be rebuilt: " + st.message);
-        codec::number_units(m.kind == ModelKind::erd, &r);
         // Flip where the other diagonal crosses fewer of the model's edges: every flip lowers the
         // crossings between the two triangulations, and while any remain some flip lowers them
         // (Hanke, Ottmann and Schuierer 1996), so the flips end at the model's faces.
@@ -256,8 +255,9 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
             const std::size_t now = crossings(m, topo, mv[a], mv[b], limit);
             return now > 0 && crossings(m, topo, mv[c], mv[d], now) < now;
         };
-        const bool planned = codec::plan_flips(&r.cdt, &r.corner_unit, choose, &plan);
-        flips = std::uint64_t(std::count_if(plan.begin(), plan.end(), [](const codec::FlipRecord& p) { return p.flip; }));
+        flp = codec::encode_flips(&r.cdt, choose, &flips);
+        const bool planned = !flp.empty();
+        if (flips == 0) flp.clear();  // no flips: an empty section, no bits spent on saying so
         std::vector<FaceKey> got(r.cdt.face_count());
         std::vector<EdgeKey> have;
         for (FaceInd f = 0; f < r.cdt.face_count(); ++f) {
@@ -283,6 +283,8 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
         if (edges.size() == before_count)
             return Status::bad_input("the model's faces are not a triangulation of its vertices over the image");
     }
+
+    codec::number_units(m.kind == ModelKind::erd, &r);
 
     // The values in the decoder's unit order, from the model vertex or face at the same place.
     std::vector<std::pair<FaceKey, std::uint32_t>> face_at(m.faces.size());
@@ -313,8 +315,6 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     const std::string pos = codec::encode_positions(lat, free_points);
     const std::string edg = codec::encode_chains(chains);
     const std::string val = codec::encode_values(r.graph, m.channels, q);
-    // No flips: an empty section, no bits spent on saying so.
-    const std::string flp = flips == 0 ? std::string() : codec::encode_flips(plan, {&q, m.channels, step});
 
     std::string& o = *out;
     o.assign(kMagic, 4);
@@ -330,7 +330,7 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     o.push_back(char(options.method.size()));
     o += options.method;
     std::size_t header = o.size();
-    for (const std::string* s : {&pos, &edg, &val, &flp}) {
+    for (const std::string* s : {&pos, &edg, static_cast<const std::string*>(&flp), &val}) {
         const std::size_t before_len = o.size();
         put_varint(&o, s->size());
         header += o.size() - before_len;
@@ -372,9 +372,10 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
     rd.pos += mlen;
     if (!method_ok(method)) return bad("header: bad method name");
     std::size_t header = rd.pos;
-    std::array<std::pair<std::size_t, std::size_t>, 4> sec{};  // positions, edges, values, flips
-    static const char* const kSections[] = {"positions", "edges", "values", "flips"};
-    for (int i = 0; i < nsec; ++i) {
+    std::array<std::pair<std::size_t, std::size_t>, 4> sec{};  // positions, edges, flips, values
+    static const char* const kSections[] = {"positions", "edges", "flips", "values"};
+    for (int j = 0; j < nsec; ++j) {
+        const int i = nsec == 3 && j == 2 ? 3 : j;  // version 1 has no flips section
         const std::size_t p0 = rd.pos;
         std::uint64_t len = 0;
         if (!rd.varint(&len)) return bad(std::string("the file ends before the ") + kSections[i] + " section");
@@ -400,12 +401,11 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
     if (!(st = codec::decode_chains(data(1), sec[1].second, width, height, !erd, max_steps, &chains))) return st;
     Rebuilt r;
     if (!(st = codec::rebuild(width, height, free_points, chains, &r))) return st;
+    std::uint64_t flips = 0;
+    if (sec[2].second > 0 && !(st = codec::decode_flips(data(2), sec[2].second, &r.cdt, &flips))) return st;
     codec::number_units(erd, &r);
     std::vector<std::int64_t> q;
-    if (!(st = codec::decode_values(data(2), sec[2].second, r.graph, C, &q))) return st;
-    std::uint64_t flips = 0;
-    if (sec[3].second > 0 && !(st = codec::decode_flips(data(3), sec[3].second, &r.cdt, &r.corner_unit, {&q, C, step}, &flips)))
-        return st;
+    if (!(st = codec::decode_values(data(3), sec[3].second, r.graph, C, &q))) return st;
     for (std::int64_t k : q)
         if (std::fabs(double(k) * step) > 1e9) return bad("values section: a value above 1e9 in magnitude");
 
@@ -446,7 +446,7 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
     }
     std::sort(m.constraints.begin(), m.constraints.end());
     if (info)
-        fill_info(version, method, step, lat.full, header, {sec[0].second, sec[1].second, sec[3].second, sec[2].second},
+        fill_info(version, method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second, sec[3].second},
                   bytes.size(), free_points, chains, flips, q.size(), info);
     return Status::success();
 }

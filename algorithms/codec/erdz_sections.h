@@ -38,28 +38,14 @@ std::string encode_chains(const std::vector<Chain>& chains);
 Status decode_chains(const unsigned char* data, std::size_t size, int width, int height, bool even,
                      std::uint64_t max_steps, std::vector<Chain>* out);
 
-// Flips (version 2): the edges flipped in the rebuilt triangulation *cdt after the values are
-// known (erdz_flips.cpp has the visiting order and the contexts). corner_unit (per half-edge, the
-// value unit at its origin, Rebuilt::corner_unit) follows the flips.
-// The encoder first plans: choose(a, b, c, d) says whether to flip edge a-b into c-d (vertices of
-// *cdt) at each edge the decoder will visit; false when it wanted more than max_flips flips. It
-// then codes the plan once the values are known. The decoder makes the same flips, and refuses a
-// section that ends early or goes on, or that flips more often than max_flips.
+// Flips (version 2): the edges flipped in the rebuilt triangulation *cdt (erdz_flips.cpp has the
+// visiting order). The encoder asks choose(a, b, c, d) whether to flip edge a-b into c-d (vertices
+// of *cdt) at each edge the decoder visits, and returns the section; *flips (may be null) gets the
+// number of flips. It returns "" when choose wanted more than max_flips flips. The decoder makes
+// the same flips, and refuses a section that ends early or goes on, or that flips more often.
 using FlipChoice = std::function<bool(VertInd a, VertInd b, VertInd c, VertInd d)>;
-struct FlipRecord {
-    std::uint32_t units[4];  // of a, b, c, d
-    std::uint8_t context;
-    bool flip;
-};
-struct FlipValues {
-    const std::vector<std::int64_t>* q;  // quantised values, q[unit * channels + c]
-    int channels;
-    double step;
-};
-bool plan_flips(Cdt* cdt, std::vector<std::uint32_t>* corner_unit, const FlipChoice& choose, std::vector<FlipRecord>* out);
-std::string encode_flips(const std::vector<FlipRecord>& plan, const FlipValues& values);
-Status decode_flips(const unsigned char* data, std::size_t size, Cdt* cdt, std::vector<std::uint32_t>* corner_unit,
-                    const FlipValues& values, std::uint64_t* flips = nullptr);
+std::string encode_flips(Cdt* cdt, const FlipChoice& choose, std::uint64_t* flips = nullptr);
+Status decode_flips(const unsigned char* data, std::size_t size, Cdt* cdt, std::uint64_t* flips = nullptr);
 inline std::uint64_t max_flips(std::size_t faces) { return 4 * std::uint64_t(faces); }
 
 // Values: `units` values per channel, coded in unit order. unit_corners lists, per unit
