@@ -34,7 +34,7 @@ def at_psnr(points, target):
     return 'n/a', None
 
 
-print('| image | density | method | step | PSNR (dB) | erd bpp | positions / edges / values | erd envelope | JPEG | JPEG 2000 | WebP |')
+print('| image | density | method | step | PSNR (dB) | erd bpp | positions / edges / flips / values | erd envelope | JPEG | JPEG 2000 | WebP |')
 print('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |')
 for line in open(rows_path).read().splitlines():
     img, d, method, psnr, js = line.split('\t')
@@ -48,7 +48,8 @@ for line in open(rows_path).read().splitlines():
         # Percent only where interpolated; '<x' / '>x' are bounds.
         mark = ' (erd %+.0f%%)' % (100.0 * (erd_bpp - b) / b) if b is not None and text[0] not in '<>' else ''
         cells.append(text + mark)
-    sections = '%.4f / %.4f / %.4f' % (j['position_bits'] / px, j['edge_bits'] / px, j['value_bits'] / px)
+    sections = '%.4f / %.4f / %.4f / %.4f' % (j['position_bits'] / px, j['edge_bits'] / px, j.get('flip_bits', 0) / px,
+                                              j['value_bits'] / px)
     # The cheapest erd point at this PSNR over every method, density and step (the point count
     # traded against the step).
     every = [p for (i, c), pts in curves.items() if i == img and c.startswith('erd') for p in pts]
