@@ -438,10 +438,9 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
             const std::uint32_t u = r.corner_unit[3 * f + FaceInd(k)];
             for (std::size_t c = 0; c < uC; ++c) m.corner_values[f * uC + c][std::size_t(k)] = double(q[u * uC + c]) * step;
         }
-    std::vector<std::array<VertInd, 2>> cons;
-    r.cdt.export_constraints(&cons);
-    for (auto& c : cons) {
-        const std::uint32_t a = r.rank[c[0]], b = r.rank[c[1]];
+    for (EdgeInd e = 0; e < 3 * nf; ++e) {
+        if (!r.cdt.constrained(e) || (!r.cdt.on_hull(e) && r.cdt.org(e) > r.cdt.dest(e))) continue;
+        const std::uint32_t a = r.rank[r.cdt.org(e)], b = r.rank[r.cdt.dest(e)];
         m.constraints.push_back({std::min(a, b), std::max(a, b)});
     }
     std::sort(m.constraints.begin(), m.constraints.end());

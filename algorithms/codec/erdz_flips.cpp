@@ -34,7 +34,7 @@ using FlipModels = std::array<CountModel, 2>;  // [cocircular]
 
 class FlipRun {
 public:
-    explicit FlipRun(Cdt* cdt) : cdt_(*cdt) {}
+    explicit FlipRun(Cdt* cdt) : cdt_(*cdt), small_(cdt->max_x() < kSmallCoord && cdt->max_y() < kSmallCoord) {}
 
     // Runs the rounds; decide(e, cocircular) returns whether to flip e (coding or decoding the
     // bit). Stops with false once more than max_flips flips were made.
@@ -67,8 +67,9 @@ private:
     bool visit(EdgeInd e, Decide& decide, std::vector<std::uint64_t>* next, std::uint64_t max_flips) {
         if (!cdt_.can_flip(e)) return true;
         const EdgeInd t = cdt_.twin(e);
-        const bool cocircular = incircle(cdt_.point(cdt_.org(e)), cdt_.point(cdt_.org(t)), cdt_.point(cdt_.org(prev_edge(e))),
-                                         cdt_.point(cdt_.org(prev_edge(t)))) == 0;
+        const LatticePoint pa = cdt_.point(cdt_.org(e)), pb = cdt_.point(cdt_.org(t)),
+                           pc = cdt_.point(cdt_.org(prev_edge(e))), pd = cdt_.point(cdt_.org(prev_edge(t)));
+        const bool cocircular = small_ ? incircle_small(pa, pb, pc, pd) == 0 : incircle(pa, pb, pc, pd) == 0;
         if (!decide(e, cocircular)) return true;
         if (++flips_ > max_flips) return false;
         const EdgeInd d = cdt_.flip_edge(e);
@@ -79,6 +80,7 @@ private:
     }
 
     Cdt& cdt_;
+    const bool small_;  // every coordinate below kSmallCoord: the int64 in-circle test is exact
     std::uint64_t flips_ = 0;
 };
 
