@@ -117,7 +117,7 @@ if [[ $RESULTS != none ]]; then
         echo "(4x4 supersampled). The other codecs at that PSNR: JPEG \`cjpeg -optimize\` (quality 2-90),"
         echo "JPEG 2000 \`opj_compress -r\` (ratio 6-400, .j2k codestream), WebP \`cwebp -m 6\` (quality 0-90),"
         echo "interpolated in (PSNR, log bpp) between the sweep points around it; \"<x\": the codec's lowest setting"
-        echo "already beats the PSNR at x bpp, \">x\": its highest does not reach it. (erd +N%) = erd's bpp relative to that codec's (negative: erd smaller). erd envelope: the cheapest erd point at that PSNR over both methods, all densities and steps."
+        echo "already beats the PSNR at x bpp, \">x\": its highest does not reach it. (erd +N%) = erd's bpp relative to that codec's (negative: erd smaller). erd envelope: the cheapest erd point at that PSNR over both methods, all densities and steps (interpolated); the next column names the cheapest measured point that reaches it (the point count traded against the step)."
         echo
         cat "$OUT/table.md"
         echo

@@ -18,9 +18,9 @@ done
     echo "set terminal pngcairo size $((480 * cols)),$((420 * rows)) font ',10'"
     echo "set output '$out'"
     echo "set multiplot layout $rows,$cols"
-    echo "set logscale x; set xlabel 'bits per pixel'; set ylabel 'PSNR (dB)'; set grid; set key bottom right"
+    echo "set logscale x; set xlabel 'bits per pixel'; set ylabel 'PSNR (dB)'; set grid; set key top left"
     for img in $imgs; do
-        echo "set title '$img'"
+        echo "set title '$img' noenhanced"
         echo "plot '$tmp/$img.erd-erdgpi' with points pt 7 ps 0.6 lc rgb '#c00000' title 'erd ERDGPI .erdz', \\"
         echo "     '$tmp/$img.erd-gpi' with points pt 6 ps 0.6 lc rgb '#ff7f0e' title 'erd GPI .erdz', \\"
         echo "     '$tmp/$img.jpeg' with linespoints pt 5 ps 0.5 lc rgb '#1f77b4' title 'JPEG', \\"
