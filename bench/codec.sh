@@ -15,7 +15,8 @@ cd "$(dirname "$0")/.."
 ERD=${ERD:-build/erd}
 IMAGES=${IMAGES:-../shared/images}
 OUT=${1:-out/codec}
-CASES=${CASES:-"bull:0.125 bull:0.25 bull:0.5 bull:1 lena:0.5 lena:1 lena:2 lena:3 peppers:0.5 peppers:1 peppers:2 peppers:3"}
+CASES=${CASES:-"bull:0.125 bull:0.25 bull:0.5 bull:1 lena:0.5 lena:1 lena:2 lena:3 peppers:0.5 peppers:1 peppers:2 peppers:3
+kodim01:1 kodim02:1 kodim03:1 kodim04:1 kodim05:1 kodim06:1 house_color:1"}
 mkdir -p "$OUT/work"
 need=()
 command -v cjpeg >/dev/null || need+=(libjpeg-turbo-progs)
@@ -48,52 +49,52 @@ rows=$OUT/rows.tsv
 : >"$rows"
 for c in $CASES; do
     img=${c%%:*}; d=${c##*:}
-    src=$IMAGES/$img.pgm
+    # A gray image at the top level, a colour one in color/ (RGB PSNR over the three channels).
+    src=$IMAGES/$img.pgm; ext_img=pgm
+    [[ -f $src ]] || { src=$IMAGES/color/$img.ppm; ext_img=ppm; }
     px=$(pixels_of "$src")
     if [[ -z ${swept[$img]:-} ]]; then
         swept[$img]=1
         for q in 2 4 6 8 10 12 15 20 25 30 40 50 60 70 80 90; do
             cjpeg -quality $q -optimize -outfile "$W/$img.jpg" "$src" 2>/dev/null
-            djpeg -pnm -outfile "$W/$img.jpg.pgm" "$W/$img.jpg"
-            printf "%s\tjpeg\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.jpg") $px)" "$(psnr_of "$src" "$W/$img.jpg.pgm")" >>"$rd"
+            djpeg -pnm -outfile "$W/$img.jpg.$ext_img" "$W/$img.jpg"
+            printf "%s\tjpeg\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.jpg") $px)" "$(psnr_of "$src" "$W/$img.jpg.$ext_img")" >>"$rd"
         done
         for r in 400 300 200 150 100 80 60 50 40 30 20 15 10 8 6; do
             opj_compress -i "$src" -o "$W/$img.j2k" -r $r >/dev/null 2>&1
-            opj_decompress -i "$W/$img.j2k" -o "$W/$img.j2k.pgm" >/dev/null 2>&1
-            printf "%s\tjpeg2000\tr%s\t%s\t%s\n" "$img" $r "$(bpp $(bits_of "$W/$img.j2k") $px)" "$(psnr_of "$src" "$W/$img.j2k.pgm")" >>"$rd"
+            opj_decompress -i "$W/$img.j2k" -o "$W/$img.j2k.$ext_img" >/dev/null 2>&1
+            printf "%s\tjpeg2000\tr%s\t%s\t%s\n" "$img" $r "$(bpp $(bits_of "$W/$img.j2k") $px)" "$(psnr_of "$src" "$W/$img.j2k.$ext_img")" >>"$rd"
         done
         for q in 0 2 5 10 15 20 30 40 50 60 70 80 90; do
             cwebp -quiet -q $q -m 6 "$src" -o "$W/$img.webp"
             dwebp -quiet "$W/$img.webp" -ppm -o "$W/$img.webp.ppm"
             # WebP decodes to RGB; a gray source comes back with R = G = B up to rounding: keep G.
-            python3 - "$W/$img.webp.ppm" "$W/$img.webp.pgm" <<'PY'
+            [[ $ext_img == pgm ]] && python3 - "$W/$img.webp.ppm" "$W/$img.webp.pgm" <<'PY'
 import sys
 d = open(sys.argv[1], 'rb').read()
 magic, size, maxval, body = d.split(b'\n', 3)
 w, h = map(int, size.split())
 open(sys.argv[2], 'wb').write(b'P5\n%d %d\n255\n' % (w, h) + body[1: 3 * w * h: 3])
 PY
-            printf "%s\twebp\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.webp") $px)" "$(psnr_of "$src" "$W/$img.webp.pgm")" >>"$rd"
+            printf "%s\twebp\tq%s\t%s\t%s\n" "$img" $q "$(bpp $(bits_of "$W/$img.webp") $px)" "$(psnr_of "$src" "$W/$img.webp.$ext_img")" >>"$rd"
         done
     fi
     for meth in ${METHODS:-erdgpi gpi}; do
         ext=erd; [[ $meth == gpi || $meth == ed ]] && ext=model
         base=$W/$img-$d-$meth
-        # --flips 0: what `generate -o x.erdz` does (a flipped edge costs a constraint in an .erdz).
-        flips=(); [[ $ext == erd ]] && flips=(--flips 0)
-        "$ERD" generate -q --method $meth -i "$src" -d "$d" "${flips[@]}" -o "$base.$ext"
+        "$ERD" generate -q --method $meth -i "$src" -d "$d" -o "$base.$ext"
         for s in 1 2 3 4 6 8; do
             "$ERD" convert -q "$base.$ext" "$base-s$s.erdz" --step $s
-            "$ERD" reconstruct "$base-s$s.erdz" -o "$base-s$s.pgm"
+            "$ERD" reconstruct "$base-s$s.erdz" -o "$base-s$s.$ext_img"
             printf "%s\terd-%s\td%s-s%s\t%s\t%s\n" "$img" $meth "$d" $s "$(bpp $(bits_of "$base-s$s.erdz") $px)" \
-                "$(psnr_of "$src" "$base-s$s.pgm")" >>"$rd"
+                "$(psnr_of "$src" "$base-s$s.$ext_img")" >>"$rd"
         done
-        p1=$(psnr_of "$src" "$base-s1.pgm")
+        p1=$(psnr_of "$src" "$base-s1.$ext_img")
         target=$(python3 -c "print('%.4f' % ($p1 - 0.25))")
         "$ERD" convert -q "$base.$ext" "$base.erdz" --step-psnr "$target" -i "$src"
-        "$ERD" reconstruct "$base.erdz" -o "$base.pgm"
+        "$ERD" reconstruct "$base.erdz" -o "$base.$ext_img"
         "$ERD" info --json "$base.erdz" >"$base.json"
-        printf "%s\t%s\t%s\t%s\t%s\n" "$img" "$d" $meth "$(psnr_of "$src" "$base.pgm")" "$base.json" >>"$rows"
+        printf "%s\t%s\t%s\t%s\t%s\n" "$img" "$d" $meth "$(psnr_of "$src" "$base.$ext_img")" "$base.json" >>"$rows"
     done
 done
 
@@ -111,12 +112,12 @@ if [[ $RESULTS != none ]]; then
         echo
         echo "Written by \`make codec-bench\` on $(date -u '+%Y-%m-%d %H:%M') UTC, commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown);"
         echo "$(cjpeg -version 2>&1 | head -1 | sed 's/ (build.*//'), OpenJPEG $(opj_compress -h 2>&1 | grep -o 'openjp2 library v[0-9.]*' | head -1 | sed 's/.* v//'), cwebp $(cwebp -version 2>&1 | head -1)."
-        echo "erd: ERDGPI and GPI (default options) at the thesis's densities written as .erdz at the coarsest step on"
+        echo "erd: ERDGPI and GPI (default options, so ERDGPI with its data-dependent flips) at the thesis's densities (the colour images at 1%, PSNR over the three channels) written as .erdz at the coarsest step on"
         echo "the grid 2^(i/4) within 0.25 dB of step 1 (\`erd convert --step-psnr\`); PSNR of its reconstruction"
         echo "(4x4 supersampled). The other codecs at that PSNR: JPEG \`cjpeg -optimize\` (quality 2-90),"
         echo "JPEG 2000 \`opj_compress -r\` (ratio 6-400, .j2k codestream), WebP \`cwebp -m 6\` (quality 0-90),"
         echo "interpolated in (PSNR, log bpp) between the sweep points around it; \"<x\": the codec's lowest setting"
-        echo "already beats the PSNR at x bpp, \">x\": its highest does not reach it. (erd +N%) = erd's bpp relative to that codec's (negative: erd smaller). erd envelope: the cheapest erd point at that PSNR over both methods, all densities and steps."
+        echo "already beats the PSNR at x bpp, \">x\": its highest does not reach it. (erd +N%) = erd's bpp relative to that codec's (negative: erd smaller). erd envelope: the cheapest erd point at that PSNR over both methods, all densities and steps (interpolated); the next column names the cheapest measured point that reaches it (the point count traded against the step)."
         echo
         cat "$OUT/table.md"
         echo

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# PSNR against bpp per codec, one panel per image, from bench/codec.sh's rd.tsv (gnuplot, PNG).
+# PSNR against bpp per codec, one panel per image (four to a row), from bench/codec.sh's rd.tsv
+# (gnuplot, PNG).
 # Usage: bench/codec_plot.sh RD.tsv OUT.png
 set -eu
 rd=$1; out=$2
@@ -13,12 +14,13 @@ for img in $imgs; do
     done
 done
 {
-    echo "set terminal pngcairo size $((480 * n)),420 font ',10'"
+    cols=$(( n < 4 ? n : 4 )); rows=$(( (n + 3) / 4 ))
+    echo "set terminal pngcairo size $((480 * cols)),$((420 * rows)) font ',10'"
     echo "set output '$out'"
-    echo "set multiplot layout 1,$n"
-    echo "set logscale x; set xlabel 'bits per pixel'; set ylabel 'PSNR (dB)'; set grid; set key bottom right"
+    echo "set multiplot layout $rows,$cols"
+    echo "set logscale x; set xlabel 'bits per pixel'; set ylabel 'PSNR (dB)'; set grid; set key top left"
     for img in $imgs; do
-        echo "set title '$img'"
+        echo "set title '$img' noenhanced"
         echo "plot '$tmp/$img.erd-erdgpi' with points pt 7 ps 0.6 lc rgb '#c00000' title 'erd ERDGPI .erdz', \\"
         echo "     '$tmp/$img.erd-gpi' with points pt 6 ps 0.6 lc rgb '#ff7f0e' title 'erd GPI .erdz', \\"
         echo "     '$tmp/$img.jpeg' with linespoints pt 5 ps 0.5 lc rgb '#1f77b4' title 'JPEG', \\"

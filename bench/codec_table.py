@@ -8,9 +8,11 @@ import sys
 
 rd_path, rows_path = sys.argv[1], sys.argv[2]
 curves = {}
+settings = {}  # (img, codec) -> [(bpp, psnr, setting)]
 for line in open(rd_path).read().splitlines()[1:]:
     img, codec, setting, bpp, psnr = line.split('\t')
     curves.setdefault((img, codec), []).append((float(bpp), float(psnr)))
+    settings.setdefault((img, codec), []).append((float(bpp), float(psnr), setting))
 
 
 def at_psnr(points, target):
@@ -34,8 +36,8 @@ def at_psnr(points, target):
     return 'n/a', None
 
 
-print('| image | density | method | step | PSNR (dB) | erd bpp | positions / edges / values | erd envelope | JPEG | JPEG 2000 | WebP |')
-print('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |')
+print('| image | density | method | step | PSNR (dB) | erd bpp | positions / edges / flips / values | erd envelope | cheapest erd point at that PSNR | JPEG | JPEG 2000 | WebP |')
+print('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |')
 for line in open(rows_path).read().splitlines():
     img, d, method, psnr, js = line.split('\t')
     j = json.load(open(js))
@@ -48,10 +50,16 @@ for line in open(rows_path).read().splitlines():
         # Percent only where interpolated; '<x' / '>x' are bounds.
         mark = ' (erd %+.0f%%)' % (100.0 * (erd_bpp - b) / b) if b is not None and text[0] not in '<>' else ''
         cells.append(text + mark)
-    sections = '%.4f / %.4f / %.4f' % (j['position_bits'] / px, j['edge_bits'] / px, j['value_bits'] / px)
+    sections = '%.4f / %.4f / %.4f / %.4f' % (j['position_bits'] / px, j['edge_bits'] / px, j.get('flip_bits', 0) / px,
+                                              j['value_bits'] / px)
     # The cheapest erd point at this PSNR over every method, density and step (the point count
     # traded against the step).
     every = [p for (i, c), pts in curves.items() if i == img and c.startswith('erd') for p in pts]
     envelope = at_psnr(every, psnr)[0]
-    print('| %s | %s%% | %s | %g | %.2f | %.4f | %s | %s | %s |' % (img, d, method.upper(), j['step'], psnr, erd_bpp, sections,
-                                                                 envelope, ' | '.join(cells)))
+    # The point count traded against the step: the cheapest measured erd point (method, density,
+    # step) that reaches this PSNR, not interpolated.
+    reach = sorted((b, c, s) for (i, c), pts in settings.items() if i == img and c.startswith('erd')
+                   for b, p, s in pts if p >= psnr - 1e-9)
+    cheapest = '%.4f (%s %s)' % (reach[0][0], reach[0][1][4:].upper(), reach[0][2]) if reach else '-'
+    print('| %s | %s%% | %s | %g | %.2f | %.4f | %s | %s | %s | %s |' % (img, d, method.upper(), j['step'], psnr, erd_bpp, sections,
+                                                                      envelope, cheapest, ' | '.join(cells)))

@@ -1,7 +1,9 @@
-// Decode time of .erdz files: file bytes -> Model (decode_erdz) -> image (reconstruct, 4x4
-// supersampled for a soft-edged ERD model), in process, the best of N runs (a shared machine
-// makes the median noisy; the best run is the closest to the unloaded cost).
-// Usage: erdz_decode_bench N FILE.erdz...   prints "FILE W H decode_ms image_ms".
+// Decode time of .erdz files, in process: file bytes -> Model (decode_erdz), then -> image by
+// point evaluation and by the model's own reconstruction (4x4 supersampled for a soft-edged ERD
+// model, else the same point evaluation). Medians of N runs of each, and the best run (on a
+// shared machine the best is the closest to the unloaded cost).
+// Usage: erdz_decode_bench N FILE.erdz...
+// Prints per file: "FILE W H decode MED BEST  +point MED BEST  +own MED BEST" (ms).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -9,9 +11,27 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/reconstruct.h"
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct Times {
+    std::vector<double> v;
+    double median() {
+        std::sort(v.begin(), v.end());
+        return v.empty() ? 0.0 : v[v.size() / 2];
+    }
+    double best() const { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+};
+
+}  // namespace
 
 int main(int argc, char** argv) {
     if (argc < 3) {
@@ -24,23 +44,24 @@ int main(int argc, char** argv) {
         std::stringstream ss;
         ss << f.rdbuf();
         const std::string bytes = ss.str();
-        double best_decode = 1e9, best_total = 1e9;
+        Times decode, point, own;
         erd::Model m;
         for (int i = 0; i < n; ++i) {
-            const auto t0 = std::chrono::steady_clock::now();
-            erd::Status st = erd::decode_erdz(bytes, &m);
-            const auto t1 = std::chrono::steady_clock::now();
-            erd::Image im;
-            if (st) st = erd::reconstruct(m, erd::supersampled(m), &im);
-            const auto t2 = std::chrono::steady_clock::now();
-            if (!st) {
-                std::fprintf(stderr, "%s: %s\n", argv[a], st.message.c_str());
-                return 1;
+            for (int mode = 0; mode < 3; ++mode) {
+                const auto t0 = std::chrono::steady_clock::now();
+                erd::Status st = erd::decode_erdz(bytes, &m);
+                erd::Image im;
+                if (st && mode > 0) st = erd::reconstruct(m, mode == 2 && erd::supersampled(m), &im);
+                const double t = ms_since(t0);
+                if (!st) {
+                    std::fprintf(stderr, "%s: %s\n", argv[a], st.message.c_str());
+                    return 1;
+                }
+                (mode == 0 ? decode : mode == 1 ? point : own).v.push_back(t);
             }
-            best_decode = std::min(best_decode, std::chrono::duration<double, std::milli>(t1 - t0).count());
-            best_total = std::min(best_total, std::chrono::duration<double, std::milli>(t2 - t0).count());
         }
-        std::printf("%s %d %d %.2f %.2f\n", argv[a], m.width, m.height, best_decode, best_total);
+        std::printf("%s %d %d decode %.2f %.2f  +point %.2f %.2f  +own %.2f %.2f\n", argv[a], m.width, m.height, decode.median(),
+                    decode.best(), point.median(), point.best(), own.median(), own.best());
     }
     return 0;
 }

@@ -248,3 +248,24 @@ done
 echo "threads: load $(cut -d' ' -f1-3 /proc/loadavg) after"
 rm -f "$OUT"/threads*
 # ---------------------------------------------------------------------------------------------
+# codec (issue 24): .erdz decode, file bytes -> model -> image, in process (bench/erdz_decode_bench.cpp):
+# lena ERDGPI 3% and bull ERDGPI 0.125% at step 2, medians of RUNS. Target: a 512x512 model decoded
+# into its image in <= 20 ms (the "+own" column: 4x4 supersampled for the soft-edged ERD model).
+if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm && -f $(dirname "$ERD")/liberd.a ]]; then
+    EDB=$(dirname "$ERD")/erdz_decode_bench
+    if ${CXX:-g++} -O2 -std=c++17 -I. bench/erdz_decode_bench.cpp "$(dirname "$ERD")/liberd.a" -o "$EDB"; then
+        "$ERD" generate -q --method erdgpi -d 3 --step 2 -i "$IMAGES/lena.pgm" -o "$OUT/lena3.erdz"
+        "$ERD" generate -q --method erdgpi -d 0.125 --step 2 -i "$IMAGES/bull.pgm" -o "$OUT/bull0125.erdz"
+        echo "codec: FILE W H  decode median best  +point median best  +own median best (ms; target +own <= 20 for 512x512)"
+        "$EDB" "$RUNS" "$OUT/lena3.erdz" "$OUT/bull0125.erdz"
+        if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
+            valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EDB" 1 "$OUT/lena3.erdz" 2>&1 >/dev/null |
+                sed -n 's/.*Collected : \([0-9]*\).*/codec lena3: \1 instructions (one run of decode, +point, +own)/p'
+        fi
+    else
+        echo "codec: bench/erdz_decode_bench.cpp did not build; skipped"
+    fi
+else
+    echo "codec: lena.pgm, bull.pgm or $(dirname "$ERD")/liberd.a missing; skipped"
+fi
+# ---------------------------------------------------------------------------------------------

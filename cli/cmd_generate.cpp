@@ -76,7 +76,7 @@ const CommandLine kGenerate = {
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
-        {0, "flips", "K", "ERD: K rounds of data-dependent flips of unconstrained edges, each followed by a refit (default 1, 0 for an .erdz output; also ED/GPI --optimize)"},
+        {0, "flips", "K", "ERD: K rounds of data-dependent flips of unconstrained edges, each followed by a refit (default 1; also ED/GPI --optimize)"},
         {0, "optimize", nullptr, "ED, GPI: least-squares vertex values (ours, beyond the thesis)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
         {0, "alpha-max", "B", "ERD: ... to B pixels, steps of 0.05 (default 1; thesis 1.5)"},
@@ -239,9 +239,6 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
     if (codec.given && !erdz_name(out)) return rep.usage("--step, --bpp and --step-psnr apply to .erdz outputs only");
-    // An .erdz rebuilds the constrained Delaunay triangulation and stores a flipped edge as one
-    // more constraint: flips cost more bits than they gain dB there (docs/DECISIONS.md ".erdz").
-    if (erdz_name(out) && !a.has("flips")) opt.flips = 0;
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;

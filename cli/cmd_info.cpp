@@ -70,7 +70,8 @@ static int erdz_info(const std::string& path, const Args& args, const Reporter& 
         j.num("step", info.step).integer("vertices", std::int64_t(m.vertices.size())).integer("faces", std::int64_t(m.faces.size()));
         j.integer("constraints", std::int64_t(m.constraints.size()));
         j.integer("header_bits", std::int64_t(info.header_bits)).integer("position_bits", std::int64_t(info.position_bits));
-        j.integer("edge_bits", std::int64_t(info.edge_bits)).integer("value_bits", std::int64_t(info.value_bits));
+        j.integer("edge_bits", std::int64_t(info.edge_bits)).integer("flip_bits", std::int64_t(info.flip_bits));
+        j.integer("value_bits", std::int64_t(info.value_bits)).integer("flips", std::int64_t(info.flips));
         j.integer("total_bits", std::int64_t(info.total_bits)).num("bpp", bpp(info.total_bits));
         std::printf("%s\n", j.text().c_str());
         return 0;
@@ -85,6 +86,7 @@ static int erdz_info(const std::string& path, const Args& args, const Reporter& 
                 bpp(info.position_bits), info.free_points, info.full_lattice ? "half-pixel" : "pixel");
     std::printf("edges:     %9zu bits  %.5f bpp  (%zu chains, %zu steps)\n", info.edge_bits, bpp(info.edge_bits), info.chains,
                 info.chain_steps);
+    std::printf("flips:     %9zu bits  %.5f bpp  (%zu edges flipped)\n", info.flip_bits, bpp(info.flip_bits), info.flips);
     std::printf("values:    %9zu bits  %.5f bpp  (%zu values)\n", info.value_bits, bpp(info.value_bits), info.coded_values);
     std::printf("total:     %9zu bits  %.5f bpp  (%zu bytes)\n", info.total_bits, bpp(info.total_bits), info.total_bits / 8);
     return 0;

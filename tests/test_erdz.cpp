@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "algorithms/codec/erdz_rate.h"
 #include "algorithms/codec/erdz_rebuild.h"
 #include "algorithms/codec/range_coder.h"
+#include "algorithms/imaging/splitmix.h"
 #include "algorithms/imaging/synth.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/metrics.h"
@@ -57,6 +60,13 @@ Model colour_of(const Model& g) {
     return m;
 }
 
+std::string read_bytes(const char* path) {
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
 using Key = std::array<std::int64_t, 2>;
 Key key(LatticePoint p) { return {p.y, p.x}; }
 
@@ -90,7 +100,7 @@ void check_round_trip(const Model& m, double step) {
     erd::ErdzInfo info;
     REQUIRE(erd::encode_erdz(m, o, &bytes, &info).ok());
     CHECK(info.total_bits == 8 * bytes.size());
-    CHECK(info.header_bits + info.position_bits + info.edge_bits + info.value_bits == info.total_bits);
+    CHECK(info.header_bits + info.position_bits + info.edge_bits + info.flip_bits + info.value_bits == info.total_bits);
     Model d;
     erd::ErdzInfo dinfo;
     const erd::Status st = erd::decode_erdz(bytes, &d, &dinfo);
@@ -98,6 +108,8 @@ void check_round_trip(const Model& m, double step) {
     REQUIRE(st.ok());
     CHECK(dinfo.method == "test");
     CHECK(dinfo.total_bits == info.total_bits);
+    CHECK(dinfo.flips == info.flips);
+    CHECK(dinfo.version == 2);
     CHECK(d.kind == m.kind);
     CHECK(d.channels == m.channels);
     CHECK(d.width == m.width);
@@ -215,13 +227,117 @@ TEST_CASE("erdz: the value units depend on the triangulation, not on the kernel'
     parts(a, &fa, &ca);
     parts(b, &fb, &cb);
     erd::codec::Rebuilt reused, fresh;
-    REQUIRE(erd::codec::rebuild(200, 150, true, fa, ca, &reused).ok());
-    REQUIRE(erd::codec::rebuild(200, 150, true, fb, cb, &reused).ok());
-    REQUIRE(erd::codec::rebuild(200, 150, true, fb, cb, &fresh).ok());
+    REQUIRE(erd::codec::rebuild(200, 150, fa, ca, &reused).ok());
+    erd::codec::number_units(true, &reused);
+    REQUIRE(erd::codec::rebuild(200, 150, fb, cb, &reused).ok());
+    erd::codec::number_units(true, &reused);
+    REQUIRE(erd::codec::rebuild(200, 150, fb, cb, &fresh).ok());
+    erd::codec::number_units(true, &fresh);
     CHECK(erd::canonical_faces(reused.cdt) == erd::canonical_faces(fresh.cdt));
     CHECK(reused.unit_begin == fresh.unit_begin);
     CHECK(reused.graph.begin == fresh.graph.begin);
     CHECK(reused.graph.neighbour == fresh.graph.neighbour);
+}
+
+// The edges of m as point pairs, and those of them that are constrained in the decoded model.
+std::vector<std::array<Key, 2>> constraint_set(const Model& m) {
+    std::vector<std::array<Key, 2>> out;
+    for (const auto& c : m.constraints) out.push_back({key(m.vertices[c[0]]), key(m.vertices[c[1]])});
+    for (auto& e : out)
+        if (e[1] < e[0]) std::swap(e[0], e[1]);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST_CASE("erdz: flipped edges cost bits, not constraints", "[erdz]") {
+    // The ERD methods' data-dependent flips (on by default) leave a triangulation that is not
+    // the CDT; the file rebuilds it with the flips section and needs no constraint beyond the
+    // model's own (its discontinuities).
+    const Model m = make_model("erdgpi", 160, 120, 3);
+    std::string bytes;
+    erd::ErdzInfo info;
+    REQUIRE(erd::encode_erdz(m, erd::ErdzOptions(), &bytes, &info).ok());
+    CHECK(info.flips > 0);
+    CHECK(info.flip_bits > 0);
+    Model d;
+    REQUIRE(erd::decode_erdz(bytes, &d).ok());
+    CHECK(constraint_set(d) == constraint_set(m));
+    check_round_trip(m, 2.0);
+    // A model without flips spends nothing on them.
+    erd::GenerateOptions o;
+    o.flips = 0;
+    erd::Image im;
+    erd::SynthParams sp;
+    sp.width = 160;
+    sp.height = 120;
+    REQUIRE(erd::synth(sp, &im).ok());
+    o.density = 3;
+    o.density_given = true;
+    erd::GenerateResult res;
+    REQUIRE(erd::find_method("erdgpi")->run(im, o, &res).ok());
+    REQUIRE(erd::encode_erdz(res.model, erd::ErdzOptions(), &bytes, &info).ok());
+    CHECK(info.flips == 0);
+    CHECK(info.flip_bits == 0);
+}
+
+TEST_CASE("erdz: any triangulation of the points rebuilds by flips, however it was chosen", "[erdz]") {
+    // Random flips, many deep (an edge flipped, then its neighbours, ...): the flips section does
+    // not assume the ERD methods' rule, only the faces. A basic model, so the values stay per
+    // vertex whatever the faces.
+    const Model base = make_model("gpi", 120, 90, 4);
+    const std::uint64_t seed = GENERATE(1u, 2u, 3u);
+    const int rounds = GENERATE(1, 6);
+    erd::Cdt cdt;
+    REQUIRE(cdt.reset(2 * base.width - 2, 2 * base.height - 2).ok());
+    std::vector<erd::VertInd> index;
+    REQUIRE(cdt.insert_points(base.vertices, &index).ok());
+    erd::SplitMix rng{seed};
+    std::size_t flipped = 0;
+    for (int r = 0; r < rounds; ++r)
+        for (erd::EdgeInd e = 0; e < 3 * cdt.face_count(); ++e)
+            if (rng.next() % 3 == 0 && cdt.can_flip(e)) flipped += cdt.flip_edge(e) != erd::noEdge;
+    REQUIRE(flipped > 50);
+    Model m = base;
+    std::vector<std::array<erd::VertInd, 3>> faces;
+    cdt.export_faces(&faces);
+    std::vector<std::uint32_t> model_of(cdt.vertex_count());
+    for (std::size_t i = 0; i < index.size(); ++i) model_of[index[i]] = std::uint32_t(i);
+    m.faces.clear();
+    for (const auto& f : faces) m.faces.push_back({model_of[f[0]], model_of[f[1]], model_of[f[2]]});
+    INFO("seed " << seed << ", " << rounds << " rounds, " << flipped << " flips");
+    std::string bytes;
+    erd::ErdzInfo info;
+    REQUIRE(erd::encode_erdz(m, erd::ErdzOptions(), &bytes, &info).ok());
+    CHECK(info.flips > 0);
+    CHECK(info.chains == 0);  // reached by flips alone
+    check_round_trip(m, 1.0);
+}
+
+TEST_CASE("erdz: version 1 files (no flips section) are still read", "[erdz]") {
+    // A committed seed written by the version-1 encoder: a GPI model of 48 x 32.
+    const std::string bytes = read_bytes("fuzz/corpus/fuzz_erdz/gpi.erdz");
+    REQUIRE(bytes.size() > 5);
+    REQUIRE(bytes[4] == 1);
+    Model d;
+    erd::ErdzInfo info;
+    const erd::Status st = erd::decode_erdz(bytes, &d, &info);
+    INFO(st.message);
+    REQUIRE(st.ok());
+    CHECK(info.version == 1);
+    CHECK(info.flips == 0);
+    CHECK(d.vertices.size() == 77);
+    CHECK(d.faces.size() == 145);
+    CHECK(info.header_bits + info.position_bits + info.edge_bits + info.value_bits == info.total_bits);
+    // Written again, it is a version-2 file of the same model.
+    std::string again;
+    erd::ErdzOptions o;
+    o.step = info.step;
+    REQUIRE(erd::encode_erdz(d, o, &again).ok());
+    Model d2;
+    REQUIRE(erd::decode_erdz(again, &d2).ok());
+    CHECK(d2.vertices == d.vertices);
+    CHECK(d2.values == d.values);
+    CHECK(faces_of(d2, 0) == faces_of(d, 0));
 }
 
 TEST_CASE("erdz: every truncation and many damaged bytes are refused with one line", "[erdz]") {
@@ -239,8 +355,8 @@ TEST_CASE("erdz: every truncation and many damaged bytes are refused with one li
     }
     CHECK(!erd::decode_erdz(bytes + "x", &d).ok());
     std::string bad = bytes;
-    bad[4] = 2;
-    CHECK(erd::decode_erdz(bad, &d).message.find("version 2") != std::string::npos);
+    bad[4] = 3;
+    CHECK(erd::decode_erdz(bad, &d).message.find("version 3") != std::string::npos);
     // Flipped bits: refused or decoded into a valid model, never a crash (the fuzzer goes further).
     int refused = 0;
     for (std::size_t i = 5; i < bytes.size(); i += 3) {

@@ -19,7 +19,7 @@ using codec::Chain;
 using codec::Rebuilt;
 
 constexpr char kMagic[4] = {'E', 'R', 'D', 'Z'};
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;  // 2 added the flips section; 1 is still read
 constexpr std::size_t kMaxMethod = 32;
 
 void put_varint(std::string* out, std::uint64_t v) {
@@ -44,6 +44,9 @@ struct Reader {
         return false;
     }
 };
+
+// Version 1 had no flips section.
+int section_count(int version) { return version == 1 ? 3 : 4; }
 
 bool method_ok(const std::string& name) {
     if (name.size() > kMaxMethod) return false;
@@ -91,6 +94,33 @@ Status check_model(const Model& m) {
     return Status::success();
 }
 
+// How many of the model's edges segment a-b (model vertices, no vertex inside the segment)
+// crosses: 0 when it is one of them. Walks the model's faces along the segment; `limit` (or more)
+// when it crosses that many or the faces are not a triangulation along it.
+std::size_t crossings(const Model& m, const ModelTopology& t, std::uint32_t a, std::uint32_t b, std::size_t limit) {
+    const LatticePoint pa = m.vertices[a], pb = m.vertices[b];
+    const auto vert = [&](std::uint32_t h) { return m.faces[h / 3][h % 3]; };
+    std::uint32_t h = kNoHalfEdge;  // the edge through which a-b leaves the face at a it starts in
+    for (std::uint32_t i = t.corner_begin[a]; i < t.corner_begin[a + 1]; ++i) {
+        const std::uint32_t c = t.corners[i], w1 = vert(ModelTopology::next(c)), w2 = vert(ModelTopology::prev(c));
+        if (w1 == b || w2 == b) return 0;
+        if (orient2d(pa, m.vertices[w1], pb) > 0 && orient2d(pa, m.vertices[w2], pb) < 0) h = ModelTopology::next(c);
+    }
+    if (h == kNoHalfEdge) return limit;
+    for (std::size_t n = 1; n < limit; ++n) {
+        // h (w1 -> w2) is the n-th edge crossed; its twin o runs w2 -> w1 in the next face, whose
+        // third vertex x the segment passes on w1's side or on w2's.
+        const std::uint32_t o = t.twin[h];
+        if (o == kNoHalfEdge) return limit;
+        const std::uint32_t x = vert(ModelTopology::prev(o));
+        if (x == b) return n;
+        const std::int64_t sx = orient2d(pa, pb, m.vertices[x]), s1 = orient2d(pa, pb, m.vertices[vert(ModelTopology::next(o))]);
+        if (sx == 0) return limit;
+        h = (sx > 0) == (s1 > 0) ? ModelTopology::prev(o) : ModelTopology::next(o);
+    }
+    return limit;
+}
+
 // The free points and chains of the constraint set `edges`.
 void split_points(const Model& m, const std::vector<EdgeKey>& edges, std::vector<LatticePoint>* free_points,
                   std::vector<Chain>* chains) {
@@ -113,22 +143,24 @@ void split_points(const Model& m, const std::vector<EdgeKey>& edges, std::vector
     }
 }
 
-void fill_info(const std::string& method, double step, bool full, std::size_t header, std::array<std::size_t, 3> sections,
-               std::size_t total, const std::vector<LatticePoint>& free_points, const std::vector<Chain>& chains,
-               std::size_t values, ErdzInfo* info) {
+void fill_info(int version, const std::string& method, double step, bool full, std::size_t header,
+               std::array<std::size_t, 4> sections, std::size_t total, const std::vector<LatticePoint>& free_points,
+               const std::vector<Chain>& chains, std::uint64_t flips, std::size_t values, ErdzInfo* info) {
     *info = ErdzInfo();
-    info->version = kVersion;
+    info->version = version;
     info->method = method;
     info->step = step;
     info->full_lattice = full;
     info->header_bits = 8 * header;
     info->position_bits = 8 * sections[0];
     info->edge_bits = 8 * sections[1];
-    info->value_bits = 8 * sections[2];
+    info->flip_bits = 8 * sections[2];
+    info->value_bits = 8 * sections[3];
     info->total_bits = 8 * total;
     info->free_points = free_points.size();
     info->chains = chains.size();
     for (const Chain& c : chains) info->chain_steps += c.size() - 1;
+    info->flips = std::size_t(flips);
     info->coded_values = values;
 }
 
@@ -139,6 +171,8 @@ bool is_erdz(const std::string& bytes) { return bytes.size() >= 4 && std::memcmp
 std::uint64_t erdz_stream_size(const std::string& prefix) {
     if (prefix.size() < 5) return 0;
     if (!is_erdz(prefix)) return prefix.size();
+    const int version = std::uint8_t(prefix[4]);
+    if (version < 1 || version > kVersion) return prefix.size();
     Reader rd{prefix, 5};
     std::uint64_t v = 0;
     for (int i = 0; i < 8; ++i)
@@ -146,7 +180,7 @@ std::uint64_t erdz_stream_size(const std::string& prefix) {
     if (rd.pos >= prefix.size()) return 0;
     rd.pos += 1 + std::size_t(std::uint8_t(prefix[rd.pos]));
     std::uint64_t total = rd.pos;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < section_count(version); ++i) {
         Reader sec{prefix, std::size_t(total)};
         if (!sec.varint(&v)) return prefix.size() >= total + 10 ? prefix.size() : 0;
         if (v > (std::uint64_t(1) << 40)) return prefix.size();
@@ -188,9 +222,19 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
         want[f] = face_key(m.vertices[m.faces[f][0]], m.vertices[m.faces[f][1]], m.vertices[m.faces[f][2]]);
     std::vector<FaceKey> want_sorted = want;
     std::sort(want_sorted.begin(), want_sorted.end());
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> vertex_at(m.vertices.size());
+    for (std::uint32_t i = 0; i < m.vertices.size(); ++i) vertex_at[i] = {key(m.vertices[i]), i};
+    std::sort(vertex_at.begin(), vertex_at.end());
+    for (std::size_t i = 1; i < vertex_at.size(); ++i)
+        if (vertex_at[i].first == vertex_at[i - 1].first) return Status::bad_input("two of the model's vertices are the same point");
+    const auto model_vertex = [&](LatticePoint p) {
+        return std::lower_bound(vertex_at.begin(), vertex_at.end(), std::make_pair(key(p), std::uint32_t(0)))->second;
+    };
     Rebuilt r;
     std::vector<LatticePoint> free_points;
     std::vector<Chain> chains;
+    std::string flp;
+    std::uint64_t flips = 0;
     codec::Lattice lat{m.width, m.height, false};
     for (;;) {
         std::sort(edges.begin(), edges.end());
@@ -199,8 +243,21 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
         lat.full = std::any_of(free_points.begin(), free_points.end(), [](LatticePoint p) { return p.x % 2 || p.y % 2; });
         codec::decoder_order(lat, &free_points);  // the decoder's input, in its order: the same CDT
         r = Rebuilt();  // a fresh kernel, as the decoder's: nothing carried over from the last round
-        if (!(st = codec::rebuild(m.width, m.height, m.kind == ModelKind::erd, free_points, chains, &r)))
+        if (!(st = codec::rebuild(m.width, m.height, free_points, chains, &r)))
             return Status::bad_input("the model cannot be rebuilt: " + st.message);
+        // Flip where the other diagonal crosses fewer of the model's edges: every flip lowers the
+        // crossings between the two triangulations, and while any remain some flip lowers them
+        // (Hanke, Ottmann and Schuierer 1996), so the flips end at the model's faces.
+        std::vector<std::uint32_t> mv(r.cdt.vertex_count());
+        for (VertInd v = 0; v < mv.size(); ++v) mv[v] = model_vertex(r.cdt.point(v));
+        const std::size_t limit = m.faces.size() + 1;
+        const auto choose = [&](VertInd a, VertInd b, VertInd c, VertInd d) {
+            const std::size_t now = crossings(m, topo, mv[a], mv[b], limit);
+            return now > 0 && crossings(m, topo, mv[c], mv[d], now) < now;
+        };
+        flp = codec::encode_flips(&r.cdt, choose, &flips);
+        const bool planned = !flp.empty();
+        if (flips == 0) flp.clear();  // no flips: an empty section, no bits spent on saying so
         std::vector<FaceKey> got(r.cdt.face_count());
         std::vector<EdgeKey> have;
         for (FaceInd f = 0; f < r.cdt.face_count(); ++f) {
@@ -212,7 +269,7 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
             have.push_back(edge_key(c, a));
         }
         std::sort(got.begin(), got.end());
-        if (got == want_sorted && r.cdt.vertex_count() == m.vertices.size()) break;
+        if (planned && got == want_sorted && r.cdt.vertex_count() == m.vertices.size()) break;
         std::sort(have.begin(), have.end());
         const std::size_t before_count = edges.size();
         for (std::size_t f = 0; f < m.faces.size(); ++f)
@@ -227,13 +284,9 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
             return Status::bad_input("the model's faces are not a triangulation of its vertices over the image");
     }
 
+    codec::number_units(m.kind == ModelKind::erd, &r);
+
     // The values in the decoder's unit order, from the model vertex or face at the same place.
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> vertex_at(m.vertices.size());
-    for (std::uint32_t i = 0; i < m.vertices.size(); ++i) vertex_at[i] = {key(m.vertices[i]), i};
-    std::sort(vertex_at.begin(), vertex_at.end());
-    const auto model_vertex = [&](LatticePoint p) {
-        return std::lower_bound(vertex_at.begin(), vertex_at.end(), std::make_pair(key(p), std::uint32_t(0)))->second;
-    };
     std::vector<std::pair<FaceKey, std::uint32_t>> face_at(m.faces.size());
     for (std::uint32_t f = 0; f < m.faces.size(); ++f) face_at[f] = {want[f], f};
     std::sort(face_at.begin(), face_at.end());
@@ -277,15 +330,15 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     o.push_back(char(options.method.size()));
     o += options.method;
     std::size_t header = o.size();
-    for (const std::string* s : {&pos, &edg, &val}) {
+    for (const std::string* s : {&pos, &edg, static_cast<const std::string*>(&flp), &val}) {
         const std::size_t before_len = o.size();
         put_varint(&o, s->size());
         header += o.size() - before_len;
         o += *s;
     }
     if (info)
-        fill_info(options.method, step, lat.full, header, {pos.size(), edg.size(), val.size()}, o.size(), free_points,
-                  chains, q.size(), info);
+        fill_info(kVersion, options.method, step, lat.full, header, {pos.size(), edg.size(), flp.size(), val.size()},
+                  o.size(), free_points, chains, flips, q.size(), info);
     return Status::success();
 }
 
@@ -293,8 +346,10 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
     const auto bad = [](const std::string& what) { return Status::bad_input(what); };
     if (!is_erdz(bytes)) return bad("not an .erdz file (no ERDZ magic)");
     if (bytes.size() < 5) return bad("the file ends inside its header");
-    if (int(std::uint8_t(bytes[4])) != kVersion)
-        return bad(".erdz version " + std::to_string(int(std::uint8_t(bytes[4]))) + " is not supported (this erd reads 1)");
+    const int version = std::uint8_t(bytes[4]);
+    if (version < 1 || version > kVersion)
+        return bad(".erdz version " + std::to_string(version) + " is not supported (this erd reads 1 and 2)");
+    const int nsec = section_count(version);
     Reader rd{bytes, 5};
     std::array<std::uint64_t, 9> h{};
     static const char* const kNames[] = {"width", "height", "maxval", "channels", "kind", "edges", "step", "lattice", ""};
@@ -317,9 +372,10 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
     rd.pos += mlen;
     if (!method_ok(method)) return bad("header: bad method name");
     std::size_t header = rd.pos;
-    std::array<std::pair<std::size_t, std::size_t>, 3> sec{};
-    static const char* const kSections[] = {"positions", "edges", "values"};
-    for (int i = 0; i < 3; ++i) {
+    std::array<std::pair<std::size_t, std::size_t>, 4> sec{};  // positions, edges, flips, values
+    static const char* const kSections[] = {"positions", "edges", "flips", "values"};
+    for (int j = 0; j < nsec; ++j) {
+        const int i = nsec == 3 && j == 2 ? 3 : j;  // version 1 has no flips section
         const std::size_t p0 = rd.pos;
         std::uint64_t len = 0;
         if (!rd.varint(&len)) return bad(std::string("the file ends before the ") + kSections[i] + " section");
@@ -344,9 +400,12 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
     const std::uint64_t max_steps = 3 * std::uint64_t(2 * W - 1) * std::uint64_t(2 * H - 1);
     if (!(st = codec::decode_chains(data(1), sec[1].second, width, height, !erd, max_steps, &chains))) return st;
     Rebuilt r;
-    if (!(st = codec::rebuild(width, height, erd, free_points, chains, &r))) return st;
+    if (!(st = codec::rebuild(width, height, free_points, chains, &r))) return st;
+    std::uint64_t flips = 0;
+    if (sec[2].second > 0 && !(st = codec::decode_flips(data(2), sec[2].second, &r.cdt, &flips))) return st;
+    codec::number_units(erd, &r);
     std::vector<std::int64_t> q;
-    if (!(st = codec::decode_values(data(2), sec[2].second, r.graph, C, &q))) return st;
+    if (!(st = codec::decode_values(data(3), sec[3].second, r.graph, C, &q))) return st;
     for (std::int64_t k : q)
         if (std::fabs(double(k) * step) > 1e9) return bad("values section: a value above 1e9 in magnitude");
 
@@ -379,16 +438,15 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
             const std::uint32_t u = r.corner_unit[3 * f + FaceInd(k)];
             for (std::size_t c = 0; c < uC; ++c) m.corner_values[f * uC + c][std::size_t(k)] = double(q[u * uC + c]) * step;
         }
-    std::vector<std::array<VertInd, 2>> cons;
-    r.cdt.export_constraints(&cons);
-    for (auto& c : cons) {
-        const std::uint32_t a = r.rank[c[0]], b = r.rank[c[1]];
+    for (EdgeInd e = 0; e < 3 * nf; ++e) {
+        if (!r.cdt.constrained(e) || (!r.cdt.on_hull(e) && r.cdt.org(e) > r.cdt.dest(e))) continue;
+        const std::uint32_t a = r.rank[r.cdt.org(e)], b = r.rank[r.cdt.dest(e)];
         m.constraints.push_back({std::min(a, b), std::max(a, b)});
     }
     std::sort(m.constraints.begin(), m.constraints.end());
     if (info)
-        fill_info(method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second}, bytes.size(), free_points,
-                  chains, q.size(), info);
+        fill_info(version, method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second, sec[3].second},
+                  bytes.size(), free_points, chains, flips, q.size(), info);
     return Status::success();
 }
 

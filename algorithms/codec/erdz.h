@@ -2,12 +2,13 @@
 // self-describing container whose sections are range-coded (algorithms/codec/range_coder.h).
 //
 // Layout (integers are LEB128 varints unless said otherwise):
-//   magic      the 4 bytes "ERDZ", then the version byte (1)
+//   magic      the 4 bytes "ERDZ", then the version byte (2; version 1, still read, had no flips
+//              section)
 //   header     width, height, maxval, channels (1 or 3), kind (0 basic, 1 erd), edges (0 soft,
 //              1 hard), step (the value quantisation step in 1/256ths, >= 1), lattice (0: free
 //              vertices on the even lattice, 1: on the doubled lattice), the method's name
 //              (length byte + that many bytes of [a-z0-9_-], may be empty)
-//   sections   three, in this order, each its byte length (varint) then its range-coded bytes:
+//   sections   four, in this order, each its byte length (varint) then its range-coded bytes:
 //     positions  the vertices on no constrained edge, other than the four corners: occupancy of
 //                the lattice as a quadtree, one adaptive bit per child (context: level and how
 //                many earlier siblings were occupied; a last child that must be occupied is not
@@ -15,6 +16,8 @@
 //     edges      the constrained edges as chains: a chain starts at a position (coded relative
 //                to the previous chain's start) and goes on by steps (dx, dy) between its
 //                successive vertices; the chain's vertices are vertices of the model
+//     flips      the edges to flip in the rebuilt triangulation, one adaptive bit per edge the
+//                decoder visits (erdz_flips.cpp); empty (0 bytes) when nothing is flipped
 //     values     the values, quantised to integer multiples k of the step, in the order of the
 //                vertices sorted by (y, x): per vertex (basic) or per wedge (erd), per channel,
 //                k minus a prediction from the vertex's already-coded neighbours in that wedge,
@@ -22,17 +25,21 @@
 //   Nothing may follow the last section.
 //
 // Topology is not stored. The decoder rebuilds the constrained Delaunay triangulation of the
-// positions with the edges as constraints (kernel/cdt.h); it depends on the point and segment
-// sets only, so it is the one the encoder saw. The encoder makes that true for any model: it
-// starts from the model's constraints and discontinuities and adds as constraints the model's
-// edges the rebuilt triangulation lacks until the two agree (a model not made by erd, or not
-// Delaunay, costs a few more chain steps). The decoded model lists its vertices sorted by
-// (y, x), its faces as the kernel exports them and, as Model::constraints, the decoded edges.
+// positions with the edges as constraints (kernel/cdt.h), the same as the encoder's (the same
+// input in the same order), then makes the flips. The encoder's constraints are the model's own
+// and its discontinuities; it flips an edge when the other diagonal crosses fewer of the model's
+// edges, which reaches any triangulation of the points (a flip that lowers the crossings always
+// exists while any remain), so the flips do not depend on how the model's faces were chosen.
+// Should the faces still differ (faces that are not a triangulation of the points, or more flips
+// than max_flips), it adds the missing edges as constraints and starts again. The decoded model
+// lists its vertices sorted by (y, x), its faces as the kernel exports them and, as
+// Model::constraints, the decoded edges.
 //
 // Every value decodes to within step / 2 of the encoded model's (exactly, for integer values and
 // step 1). A decoder refuses every file that an encoder cannot have written: a bad magic or
 // version, a header value out of range, a section that ends early or goes on after its last
-// symbol, a position outside the image or given twice, a chain step of zero, crossing edges.
+// symbol, a position outside the image or given twice, a chain step of zero, crossing edges,
+// more flips than any encoder makes.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -54,11 +61,12 @@ struct ErdzInfo {
     std::string method;
     double step = 0.0;
     bool full_lattice = false;          // free vertices on the doubled lattice
-    std::size_t header_bits = 0;        // magic, version, header and the three length prefixes
-    std::size_t position_bits = 0, edge_bits = 0, value_bits = 0;
+    std::size_t header_bits = 0;        // magic, version, header and the section length prefixes
+    std::size_t position_bits = 0, edge_bits = 0, flip_bits = 0, value_bits = 0;
     std::size_t total_bits = 0;
     std::size_t free_points = 0;        // coded in the positions section
     std::size_t chains = 0, chain_steps = 0;
+    std::size_t flips = 0;              // edges flipped after the rebuild
     std::size_t coded_values = 0;       // vertices (basic) or wedges (erd), times channels
 };
 

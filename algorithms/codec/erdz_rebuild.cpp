@@ -4,8 +4,8 @@
 
 namespace erd::codec {
 
-Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>& free_points,
-               const std::vector<Chain>& chains, Rebuilt* r) {
+Status rebuild(int width, int height, const std::vector<LatticePoint>& free_points, const std::vector<Chain>& chains,
+               Rebuilt* r) {
     Cdt& cdt = r->cdt;
     Status st = cdt.reset(2 * width - 2, 2 * height - 2);
     if (!st) return st;
@@ -32,14 +32,22 @@ Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>&
         at += c.size();
     }
     if (rep.dropped_crossing > 0) return Status::bad_input("edges section: two constrained edges cross");
+    return Status::success();
+}
+
+void number_units(bool erd, Rebuilt* r) {
+    const Cdt& cdt = r->cdt;
 
     const std::size_t nv = cdt.vertex_count(), nh = 3 * cdt.face_count();
+    // (y, x) order by one sort of packed keys (coordinates below 2^24, indices below 2^32).
+    std::vector<std::pair<std::uint64_t, VertInd>> keyed(nv);
+    for (VertInd i = 0; i < nv; ++i) {
+        const LatticePoint p = cdt.point(i);
+        keyed[i] = {(std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x), i};
+    }
+    std::sort(keyed.begin(), keyed.end());
     r->order.resize(nv);
-    for (VertInd i = 0; i < nv; ++i) r->order[i] = i;
-    std::sort(r->order.begin(), r->order.end(), [&](VertInd a, VertInd b) {
-        const LatticePoint p = cdt.point(a), q = cdt.point(b);
-        return p.y != q.y ? p.y < q.y : p.x < q.x;
-    });
+    for (VertInd i = 0; i < nv; ++i) r->order[i] = keyed[i].second;
     r->rank.assign(nv, 0);
     for (std::uint32_t k = 0; k < nv; ++k) r->rank[r->order[k]] = k;
 
@@ -100,14 +108,14 @@ Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>&
     std::uint32_t start = 0;
     for (std::size_t u = 0; u < units; ++u) {
         const auto b0 = raw.begin() + g.begin[u], b1 = raw.begin() + g.begin[u + 1];
-        std::sort(b0, b1);
+        for (auto it = b0 + (b0 != b1); it < b1; ++it)  // insertion sort: a dozen entries
+            for (auto j = it; j != b0 && *(j - 1) > *j; --j) std::iter_swap(j - 1, j);
         g.begin[u] = start;
         for (auto it = b0; it != b1; ++it)
             if (it == b0 || *it != *(it - 1)) g.neighbour.push_back(*it);
         start = std::uint32_t(g.neighbour.size());
     }
     g.begin[units] = start;
-    return Status::success();
 }
 
 }  // namespace erd::codec

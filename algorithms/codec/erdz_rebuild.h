@@ -19,10 +19,13 @@ struct Rebuilt {
 };
 
 // Triangulates the W x H image's rectangle with the free points and the chains' points, the
-// chains' segments as constraints, and numbers the value units (per vertex for a basic model,
-// per wedge in rotational order for an ERD model). Fails (input) when a free point is a corner
-// or a chain point, or when two chain segments cross.
-Status rebuild(int width, int height, bool erd, const std::vector<LatticePoint>& free_points,
-               const std::vector<Chain>& chains, Rebuilt* r);
+// chains' segments as constraints (r->cdt; the rest of *r is left for number_units). Fails
+// (input) when a free point is a corner or a chain point, or when two chain segments cross.
+Status rebuild(int width, int height, const std::vector<LatticePoint>& free_points, const std::vector<Chain>& chains,
+               Rebuilt* r);
+
+// Numbers the value units of r->cdt as it is now (after the flips section): per vertex for a
+// basic model, per wedge in rotational order for an ERD model, and fills the rest of *r.
+void number_units(bool erd, Rebuilt* r);
 
 }  // namespace erd::codec

@@ -1,12 +1,14 @@
-// The three coded sections of an .erdz file (algorithms/codec/erdz.h has the layout): each an
+// The four coded sections of an .erdz file (algorithms/codec/erdz.h has the layout): each an
 // encoder that returns the section's bytes and a decoder that checks everything it reads.
 #pragma once
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "kernel/cdt.h"
 #include "kernel/lattice.h"
 #include "kernel/status.h"
 
@@ -35,6 +37,16 @@ std::string encode_chains(const std::vector<Chain>& chains);
 // steps in all.
 Status decode_chains(const unsigned char* data, std::size_t size, int width, int height, bool even,
                      std::uint64_t max_steps, std::vector<Chain>* out);
+
+// Flips (version 2): the edges flipped in the rebuilt triangulation *cdt (erdz_flips.cpp has the
+// visiting order). The encoder asks choose(a, b, c, d) whether to flip edge a-b into c-d (vertices
+// of *cdt) at each edge the decoder visits, and returns the section; *flips (may be null) gets the
+// number of flips. It returns "" when choose wanted more than max_flips flips. The decoder makes
+// the same flips, and refuses a section that ends early or goes on, or that flips more often.
+using FlipChoice = std::function<bool(VertInd a, VertInd b, VertInd c, VertInd d)>;
+std::string encode_flips(Cdt* cdt, const FlipChoice& choose, std::uint64_t* flips = nullptr);
+Status decode_flips(const unsigned char* data, std::size_t size, Cdt* cdt, std::uint64_t* flips = nullptr);
+inline std::uint64_t max_flips(std::size_t faces) { return 4 * std::uint64_t(faces); }
 
 // Values: `units` values per channel, coded in unit order. unit_corners lists, per unit
 // (CSR: begin[u] .. begin[u+1]), the units of the other two corners of every face the unit

@@ -31,20 +31,42 @@ void RangeEncoder::shift_low() {
     low_ = (low_ & 0x00FFFFFFu) << 8;
 }
 
-void RangeEncoder::bit(BitModel& m, int b) {
-    const std::uint32_t bound = (range_ >> kProbBits) * m.p;
+std::uint32_t CountModel::p() const {
+    const std::uint32_t p = ((2 * n0 + 1) << kProbBits) / (2 * (n0 + n1) + 2);
+    return p < 1 ? 1 : p > (1u << kProbBits) - 1 ? (1u << kProbBits) - 1 : p;
+}
+
+void CountModel::update(int b) {
+    (b ? n1 : n0) += 1;
+    if (n0 + n1 > kHalveAt) {
+        n0 = (n0 + 1) / 2;
+        n1 = (n1 + 1) / 2;
+    }
+}
+
+void RangeEncoder::code(std::uint32_t p0, int b) {
+    const std::uint32_t bound = (range_ >> kProbBits) * p0;
     if (b == 0) {
         range_ = bound;
-        m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
     } else {
         low_ += bound;
         range_ -= bound;
-        m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
     }
     while (range_ < kTop) {
         range_ <<= 8;
         shift_low();
     }
+}
+
+void RangeEncoder::bit(BitModel& m, int b) {
+    code(m.p, b);
+    if (b == 0) m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
+    else m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
+}
+
+void RangeEncoder::bit(CountModel& m, int b) {
+    code(m.p(), b);
+    m.update(b);
 }
 
 void RangeEncoder::direct_bits(std::uint32_t value, int count) {
@@ -74,23 +96,34 @@ std::uint8_t RangeDecoder::next() {
     return 0;
 }
 
-int RangeDecoder::bit(BitModel& m) {
-    const std::uint32_t bound = (range_ >> kProbBits) * m.p;
+int RangeDecoder::code(std::uint32_t p0) {
+    const std::uint32_t bound = (range_ >> kProbBits) * p0;
     int b;
     if (code_ < bound) {
         range_ = bound;
-        m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
         b = 0;
     } else {
         code_ -= bound;
         range_ -= bound;
-        m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
         b = 1;
     }
     while (range_ < kTop) {
         range_ <<= 8;
         code_ = (code_ << 8) | next();
     }
+    return b;
+}
+
+int RangeDecoder::bit(BitModel& m) {
+    const int b = code(m.p);
+    if (b == 0) m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
+    else m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
+    return b;
+}
+
+int RangeDecoder::bit(CountModel& m) {
+    const int b = code(m.p());
+    m.update(b);
     return b;
 }
 
