@@ -103,7 +103,7 @@ static int run_psnr(const Args& args, const Reporter& rep) {
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
         return psnr_one(args, rep, expand_pattern(pos[0], it), it.input, rec);
     };
-    return run_batch(items, jobs, job, args.str("summary"), rep, false);
+    return run_batch(items, jobs, job, args.str("summary"), rep, false, {{}, {pos[0]}});
 }
 
 int cmd_psnr(int argc, char** argv) { return run_command(kPsnr, argc, argv, run_psnr); }
