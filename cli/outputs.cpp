@@ -301,19 +301,21 @@ namespace {
 // thousands.
 class FileIndex {
 public:
-    // The index of a file added before that is the same file as `id`, or -1.
+    // The index of a file added before that is the same file as `id`, or -1. A name through a
+    // folder that does not exist (x/../a.pgm) is found by its normalised name.
     long find(const FileId& id) const {
+        if (id.device) return -1;
         if (id.exists) {
-            if (id.device) return -1;
             auto it = by_inode_.find({id.dev, id.ino});
-            return it == by_inode_.end() ? -1 : long(it->second);
+            if (it != by_inode_.end()) return long(it->second);
         }
         auto it = by_name_.find(id.key);
         return it == by_name_.end() ? -1 : long(it->second);
     }
     void add(const FileId& id, std::size_t index) {
-        if (id.exists && !id.device) by_inode_.emplace(std::make_pair(id.dev, id.ino), index);
-        else if (!id.exists) by_name_.emplace(id.key, index);
+        if (id.device) return;
+        if (id.exists) by_inode_.emplace(std::make_pair(id.dev, id.ino), index);
+        by_name_.emplace(id.key, index);
     }
 
 private:
