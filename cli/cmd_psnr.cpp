@@ -60,7 +60,7 @@ static int psnr_one(const Args& args, const Reporter& rep, const std::string& a,
     if (record) {
         record->has_psnr = !std::isinf(p);
         record->psnr = p;
-        std::printf(std::isinf(p) ? "%s inf\n" : "%s %.4f\n", b.c_str(), p);
+        std::printf(std::isinf(p) ? "%s inf\n" : "%s %.4f\n", escape_name(b).c_str(), p);  // a name on a terminal
         return 0;
     }
     if (args.has("json")) {

@@ -468,4 +468,6 @@ CHECK='[[ ! -e many/out/a.csv ]]' case_ "the summary is a job's output: refused"
 cp in.pgm a.pgm
 OLDA=$(sum a.pgm)
 CHECK='[[ $(sum a.pgm) == "$OLDA" ]]' case_ "psnr: the summary is an ORIGINAL: refused" 2 psnr '{name}.pgm' many/a.pgm many/in/c.pgm --summary ./a.pgm
+mkdir esc; cp in.pgm esc/$'a\033]0;x\007.pgm'; cp in.pgm $'a\033]0;x\007.pgm'
+SHOW='(stdout: esc/a\x1b]0;x\x07.pgm inf)' CHECK='! LC_ALL=C grep -q $'"'"'\033'"'"' out.stdout' case_ "psnr over many: a name with escapes is printed escaped on stdout" 0 psnr '{name}.pgm' esc/
 exit $bad
