@@ -1,5 +1,6 @@
 #include "cli/args.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -125,6 +126,13 @@ static std::string range_text(double lo, double hi, bool lo_open = false) {
     return buf;
 }
 
+// Decimal text only: strtod and strtoll would also take leading blanks, and strtod hexadecimal
+// ("0x10" as 16, "0x1p3" as 8), which no one means for a density or a PSNR.
+static bool decimal_text(const std::string& s) {
+    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
+    return s.find_first_of("xX") == std::string::npos;
+}
+
 // Every numeric option is checked against its range on the text, before any conversion can
 // overflow: a value too large for the type is "outside the range", never a wrapped number.
 long long Args::integer(const char* long_name, long long fallback, long long lo, long long hi, Status* st) const {
@@ -135,7 +143,7 @@ long long Args::integer(const char* long_name, long long fallback, long long lo,
     errno = 0;
     long long v = std::strtoll(s, &end, 10);
     const std::string shown = escape_name(g->value);
-    if (g->value.empty() || *end != '\0' || end == s) {
+    if (!decimal_text(g->value) || *end != '\0' || end == s) {
         if (st->ok()) *st = Status::bad_input("--" + g->name + ": '" + shown + "' is not an integer (allowed: [" +
                                               std::to_string(lo) + ", " + std::to_string(hi) + "])");
         return fallback;
@@ -157,7 +165,7 @@ double Args::real(const char* long_name, double fallback, double lo, double hi, 
     double v = std::strtod(s, &end);
     const bool overflow = errno == ERANGE && std::isinf(v);  // underflow: a tiny value, checked below
     const std::string shown = escape_name(g->value);
-    if (g->value.empty() || *end != '\0' || end == s || std::isnan(v)) {
+    if (!decimal_text(g->value) || *end != '\0' || end == s || std::isnan(v)) {
         if (st->ok()) *st = Status::bad_input("--" + g->name + ": '" + shown + "' is not a number (allowed: " + range_text(lo, hi, lo_open) + ")");
         return fallback;
     }

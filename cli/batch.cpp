@@ -196,7 +196,7 @@ Status check_patterns(const std::vector<BatchItem>& items, const std::vector<std
 Status parse_jobs(const std::string& text, int* jobs) {
     char* end = nullptr;
     const long v = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || v < 0 || v > 256)
+    if (text.empty() || text[0] < '0' || text[0] > '9' || *end != '\0' || v < 0 || v > 256)
         return Status::bad_input("-j: '" + escape_name(text) + "' is not a number of jobs in [0, 256] (0 = one per processor)");
     const long cpus = ::sysconf(_SC_NPROCESSORS_ONLN);
     *jobs = v == 0 ? int(cpus > 0 ? cpus : 1) : int(v);
@@ -216,14 +216,23 @@ Status parse_parallelism(bool given, const std::string& text, bool batch, Parall
 }
 
 int run_batch(const std::vector<BatchItem>& items, int jobs, const BatchJob& job, const std::string& summary,
-              const Reporter& rep, bool progress) {
+              const Reporter& rep, bool progress, const BatchFiles& files) {
     const auto t0 = std::chrono::steady_clock::now();
-    Outputs outputs;
-    if (!summary.empty()) {
-        std::vector<std::string> inputs;
-        for (const BatchItem& it : items) inputs.push_back(it.input);
-        if (Status st = outputs.check({summary}, inputs); !st) return rep.fail(st);
+    // Each job checks its own files; across jobs only this sees that one job would overwrite the
+    // input of another (a.model, a2.model -o {name}2.model) or the summary a job's output.
+    std::vector<std::string> inputs, outs;
+    for (const BatchItem& it : items) {
+        inputs.push_back(it.input);
+        for (const std::string& p : files.inputs)
+            if (!p.empty() && p != "-") inputs.push_back(expand_pattern(p, it));
+        for (const std::string& p : files.outputs)
+            if (!p.empty() && p != "-") outs.push_back(expand_pattern(p, it));
     }
+    if (!summary.empty()) outs.push_back(summary);
+    if (Status st = Outputs::clashes(outs, inputs); !st) return rep.fail(st);
+    Outputs outputs;
+    if (!summary.empty())
+        if (Status st = outputs.check({summary}, inputs); !st) return rep.fail(st);
     std::vector<BatchRecord> recs(items.size());
     std::vector<Running> running;
     Progress bar("batch", progress, progress);

@@ -63,10 +63,19 @@ Status parse_parallelism(bool given, const std::string& text, bool batch, Parall
 
 using BatchJob = std::function<int(const BatchItem& item, BatchRecord* record)>;
 
+// Every file the jobs of a batch name beside their item's input, as patterns with {name}: the
+// outputs (-o, -t, ...) and other inputs (psnr's ORIGINAL). Empty patterns and "-" are skipped.
+struct BatchFiles {
+    std::vector<std::string> outputs;
+    std::vector<std::string> inputs;
+};
+
 // Runs job(item) for every item, each in a child process, up to `jobs` at a time; writes the
 // summary to `summary` when not empty (CSV unless it ends in .json); shows "files" progress
-// when `progress`. Returns 0 or 1 as said above.
+// when `progress`. Returns 0 or 1 as said above, or 2 before any job when two of the batch's
+// files clash (Outputs::clashes over `files` for every item and the summary: one job's output is
+// another's input, the summary is a job's output, ...).
 int run_batch(const std::vector<BatchItem>& items, int jobs, const BatchJob& job, const std::string& summary,
-              const Reporter& rep, bool progress);
+              const Reporter& rep, bool progress, const BatchFiles& files);
 
 }  // namespace erd::cli

@@ -24,6 +24,7 @@
 #include "cli/codec_output.h"
 #include "cli/commands.h"
 #include "cli/fileio.h"
+#include "cli/framing.h"
 #include "cli/image_io.h"
 #include "cli/memory_cap.h"
 #include "cli/model_file.h"
@@ -251,7 +252,8 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     rep.warn(warning);
     if (!constraints_in.empty()) {
         std::string text;
-        if (!(st = read_file(constraints_in, &text))) return rep.fail(st);
+        // A stream stops at its first definite error: /dev/zero, `yes |` read 4 KiB, not 1 GiB.
+        if (!(st = read_file(constraints_in, &text, kMaxInputBytes, polylines_framer()))) return rep.fail(st);
         if (!(st = read_polylines(text, &opt.constraints)))
             return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message));
     }
@@ -409,7 +411,8 @@ static int run_generate(const Args& a, const Reporter& rep) {
                         expand_pattern(p.stats, it)};
         return generate_one(a, rep, one, par.threads, rec);
     };
-    return run_batch(items, par.jobs, job, a.str("summary"), rep, Progress::should_show(a.has("progress"), rep.quiet()));
+    return run_batch(items, par.jobs, job, a.str("summary"), rep, Progress::should_show(a.has("progress"), rep.quiet()),
+                     {{p.out, p.tri, p.poly, p.stats}, {a.str("constraints")}});
 }
 
 int cmd_generate(int argc, char** argv) { return run_command(kGenerate, argc, argv, run_generate); }

@@ -63,7 +63,7 @@ static int psnr_one(const Args& args, const Reporter& rep, const std::string& a,
     if (record) {
         record->has_psnr = !std::isinf(p);
         record->psnr = p;
-        std::printf(std::isinf(p) ? "%s inf\n" : "%s %.4f\n", b.c_str(), p);
+        std::printf(std::isinf(p) ? "%s inf\n" : "%s %.4f\n", escape_name(b).c_str(), p);  // a name on a terminal
         return 0;
     }
     if (args.has("json")) {
@@ -107,7 +107,7 @@ static int run_psnr(const Args& args, const Reporter& rep) {
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
         return psnr_one(args, rep, expand_pattern(pos[0], it), it.input, par.threads, rec);
     };
-    return run_batch(items, par.jobs, job, args.str("summary"), rep, false);
+    return run_batch(items, par.jobs, job, args.str("summary"), rep, false, {{}, {pos[0]}});
 }
 
 int cmd_psnr(int argc, char** argv) { return run_command(kPsnr, argc, argv, run_psnr); }

@@ -78,7 +78,8 @@ static int run_reconstruct(const Args& args, const Reporter& rep) {
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {
         return reconstruct_one(args, rep, it.input, expand_pattern(out, it), par.threads, rec);
     };
-    return run_batch(items, par.jobs, job, args.str("summary"), rep, Progress::should_show(args.has("progress"), rep.quiet()));
+    return run_batch(items, par.jobs, job, args.str("summary"), rep, Progress::should_show(args.has("progress"), rep.quiet()),
+                     {{out}, {}});
 }
 
 int cmd_reconstruct(int argc, char** argv) { return run_command(kReconstruct, argc, argv, run_reconstruct); }

@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <memory>
+#include <vector>
 
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model_io.h"
@@ -134,14 +136,17 @@ Framer image_framer(const ImageLimits& limits) {
     return [frame](const std::string& so_far, std::uint64_t* total) { return (*frame)(so_far, total); };
 }
 
-Framer model_framer(bool triangulation) {
-    // Checkpoints at 4 KiB, 16 KiB, 64 KiB, ...: the text so far (cut after its last whitespace,
-    // so no token is split) is parsed, and a definite error stops the reading; an error that only
-    // says the text ends early does not. The parses cost at most 4/3 of one parse of the whole.
+namespace {
+
+// Text read from a stream, checked at 4 KiB, 16 KiB, 64 KiB, ...: the text so far (cut after its
+// last whitespace, so no token is split) is parsed, and a definite error stops the reading; an
+// error that only says the text ends early does not. The parses cost at most 4/3 of one parse of
+// the whole. With `erdz`, an .erdz stream is framed by its header instead.
+Framer text_framer(std::function<Status(const std::string&)> parse, bool erdz) {
     auto next = std::make_shared<std::size_t>(4096);
-    return [next, triangulation](const std::string& so_far, std::uint64_t* total) {
+    return [next, parse, erdz](const std::string& so_far, std::uint64_t* total) {
         *total = UINT64_MAX;
-        if (so_far.size() >= 4 && is_erdz(so_far)) {  // binary: its header gives the size
+        if (erdz && so_far.size() >= 4 && is_erdz(so_far)) {  // binary: its header gives the size
             const std::uint64_t n = erdz_stream_size(so_far);
             if (n != 0) *total = n;
             return Status::success();
@@ -154,12 +159,30 @@ Framer model_framer(bool triangulation) {
         *next = so_far.size() * 4;
         std::size_t cut = so_far.size();
         while (cut > 0 && !space(static_cast<unsigned char>(so_far[cut - 1]))) --cut;
-        const std::string prefix = so_far.substr(0, cut);
-        Model m;
-        Status s = triangulation ? read_triangulation(prefix, &m) : read_model(prefix, ModelFileKind::unknown, &m);
+        Status s = parse(so_far.substr(0, cut));
         if (!s && s.message.find("ends early") == std::string::npos && s.message != "empty file") *total = so_far.size();
         return Status::success();
     };
+}
+
+}  // namespace
+
+Framer model_framer(bool triangulation) {
+    return text_framer(
+        [triangulation](const std::string& text) {
+            Model m;
+            return triangulation ? read_triangulation(text, &m) : read_model(text, ModelFileKind::unknown, &m);
+        },
+        true);
+}
+
+Framer polylines_framer() {
+    return text_framer(
+        [](const std::string& text) {
+            std::vector<std::vector<LatticePoint>> lines;
+            return read_polylines(text, &lines);
+        },
+        false);
 }
 
 }  // namespace erd::cli

@@ -22,4 +22,7 @@ Framer image_framer(const ImageLimits& limits);
 // already holds an error other than "the file ends early" (checked at 4 KiB, 16 KiB, ...).
 Framer model_framer(bool triangulation);
 
+// Polylines text (erd-polylines 1, generate --constraints): as model text.
+Framer polylines_framer();
+
 }  // namespace erd::cli

@@ -124,6 +124,7 @@ int erd::cli::run(int argc, char** argv) {
 // The Python extension links the CLI without this main and calls run() (python/erd/__main__.py).
 #ifndef ERD_CLI_NO_MAIN
 int main(int argc, char** argv) {
+    erd::cli::guard_standard_streams();
     tune_allocator();
     erd::cli::install_output_signal_handlers();
     return erd::cli::run(argc, argv);

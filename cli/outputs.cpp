@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <utility>
 
 #include "cli/report.h"
 
@@ -53,6 +55,15 @@ void install_output_signal_handlers() {
     }
     // A file-size limit (ulimit -f) then fails the write with EFBIG instead of killing us.
     ::signal(SIGXFSZ, SIG_IGN);
+}
+
+void guard_standard_streams() {
+    for (int fd = 0; fd <= 2; ++fd) {
+        if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+        // The lowest free number: fd itself, since the ones below it are open by now.
+        const int got = ::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
+        if (got >= 0 && got != fd) ::close(got);
+    }
 }
 
 namespace {
@@ -128,24 +139,45 @@ void split(const std::string& path, std::string* dir, std::string* base) {
     *base = slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-// The file an output name writes: a symbolic link resolved to its target (the whole chain).
+// The file an output name writes: a symbolic link to a regular file resolved to its target (the
+// whole chain), so the target is replaced in its own folder. A link to a special file (/dev/stdout
+// to a pipe, /dev/fd/N) keeps its name: it is opened and written in place.
 Status resolve(const std::string& path, std::string* target) {
     *target = path;
-    struct stat lst;
+    struct stat lst, st;
     if (::lstat(path.c_str(), &lst) != 0 || !S_ISLNK(lst.st_mode)) return Status::success();
-    char* real = ::realpath(path.c_str(), nullptr);
-    if (!real)
-        return Status::failure(escape_name(path) + ": a symbolic link to a missing file (" + std::strerror(errno) +
+    if (::stat(path.c_str(), &st) != 0) {
+        const int err = errno;
+        const char* what = err == ENOENT  ? "a symbolic link to a missing file"
+                           : err == ELOOP ? "a symbolic link loop"
+                                          : "a symbolic link that cannot be followed";
+        return Status::failure(escape_name(path) + ": " + what + " (" + std::strerror(err) +
                                "); erd writes through a link only onto an existing target");
+    }
+    if (!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) return Status::success();
+    char* real = ::realpath(path.c_str(), nullptr);
+    if (!real) return Status::failure(os_error(path, errno));
     *target = real;
     std::free(real);
     return Status::success();
 }
 
-// What a name refers to, for the clash checks.
+// An old regular file we may not write (mode 0444 for its owner, another user's file) is not
+// replaced either, although its folder would allow the rename: erd writes what `>` could write.
+Status refuse_read_only(const std::string& path, const std::string& target) {
+    struct stat st;
+    if (::stat(target.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return Status::success();
+    if (::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) == 0 || errno != EACCES) return Status::success();
+    return Status::failure(escape_name(path) + ": " + std::strerror(EACCES) + " (a read-only file; erd does not replace it)");
+}
+
+// What a name refers to, for the clash checks. Two names are one file that writing an output
+// would destroy or garble when they are the same regular file, FIFO or socket (stdout a pipe and
+// /dev/stdout), or the same name not yet created; a device may be read and written and repeat
+// (/dev/null).
 struct FileId {
     bool exists = false;
-    bool regular = false;
+    bool device = false;  // a character or block device
     dev_t dev = 0;
     ino_t ino = 0;
     std::string key;  // its folder's real path + its name (for a name that does not exist yet)
@@ -156,7 +188,7 @@ FileId id_of_fd(int fd) {
     struct stat st;
     if (::fstat(fd, &st) == 0) {
         id.exists = true;
-        id.regular = S_ISREG(st.st_mode);
+        id.device = S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode);
         id.dev = st.st_dev;
         id.ino = st.st_ino;
     }
@@ -169,7 +201,7 @@ FileId id_of_path(const std::string& path) {
     struct stat st;
     if (::stat(path.c_str(), &st) == 0) {
         id.exists = true;
-        id.regular = S_ISREG(st.st_mode);
+        id.device = S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode);
         id.dev = st.st_dev;
         id.ino = st.st_ino;
     }
@@ -179,13 +211,6 @@ FileId id_of_path(const std::string& path) {
     id.key = real ? std::string(real) + "/" + base : normalise(path);
     std::free(real);
     return id;
-}
-
-// Two names of one file that writing the output would destroy: the same regular file, or the
-// same name not yet created. A special file may be read and written (/dev/null).
-bool same_file(const FileId& a, const FileId& b) {
-    if (a.exists && b.exists) return a.regular && b.regular && a.dev == b.dev && a.ino == b.ino;
-    return a.key == b.key;  // a name not (yet) there: the same folder and name
 }
 
 // One temporary's way onto its target, prepared before the fork so the child only makes
@@ -270,42 +295,83 @@ int move_all(const std::vector<Move>& moves, std::size_t* failed) {
 
 }  // namespace
 
-Status Outputs::check(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) const {
-    std::vector<FileId> in_ids;
-    for (const std::string& in : inputs) {
-        if (in.empty()) continue;
-        in_ids.push_back(in == "-" ? id_of_fd(0) : id_of_path(in));
+namespace {
+
+// The files named so far, found by identity (same_file) in logarithmic time: a batch may name
+// thousands.
+class FileIndex {
+public:
+    // The index of a file added before that is the same file as `id`, or -1. A name through a
+    // folder that does not exist (x/../a.pgm) is found by its normalised name.
+    long find(const FileId& id) const {
+        if (id.device) return -1;
+        if (id.exists) {
+            auto it = by_inode_.find({id.dev, id.ino});
+            if (it != by_inode_.end()) return long(it->second);
+        }
+        auto it = by_name_.find(id.key);
+        return it == by_name_.end() ? -1 : long(it->second);
     }
-    std::vector<FileId> out_ids;
+    void add(const FileId& id, std::size_t index) {
+        if (id.device) return;
+        if (id.exists) by_inode_.emplace(std::make_pair(id.dev, id.ino), index);
+        by_name_.emplace(id.key, index);
+    }
+
+private:
+    std::map<std::pair<dev_t, ino_t>, std::size_t> by_inode_;
+    std::map<std::string, std::size_t> by_name_;
+};
+
+// Outputs::check, and with whole = false only its clashes (Outputs::clashes).
+Status check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, bool whole) {
+    FileIndex ins, outs;
+    for (std::size_t k = 0; k < inputs.size(); ++k)
+        if (!inputs[k].empty()) ins.add(inputs[k] == "-" ? id_of_fd(0) : id_of_path(inputs[k]), k);
     int to_stdout = 0;
-    for (const std::string& out : outputs) {
-        if (out.empty()) return Status::bad_input("empty output file name");
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const std::string& out = outputs[i];
+        if (out.empty()) {
+            if (whole) return Status::bad_input("empty output file name");
+            continue;
+        }
         FileId id;
         if (out == "-") {
             if (++to_stdout > 1) return Status::bad_input("only one output can go to stdout");
             id = id_of_fd(1);
         } else {
             std::string target;
-            if (Status s = resolve(out, &target); !s) return s;
+            Status s = resolve(out, &target);
+            if (!s && whole) return s;
+            if (!s) target = out;
             id = id_of_path(target);
             struct stat st;
-            if (id.exists && ::stat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+            if (whole && id.exists && ::stat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
                 return Status::failure(escape_name(out) + ": is a directory");
+            if (whole && !(s = refuse_read_only(out, target))) return s;
         }
         const std::string shown = out == "-" ? "stdout" : escape_name(out);
-        for (std::size_t k = 0; k < in_ids.size(); ++k)
-            if (same_file(id, in_ids[k]))
-                return Status::bad_input(shown + ": output would overwrite the input " +
-                                         (inputs[k] == "-" ? std::string("stdin") : escape_name(inputs[k])) +
-                                         "; choose another output file");
-        for (std::size_t k = 0; k < out_ids.size(); ++k)
-            if (same_file(id, out_ids[k]))
-                return Status::bad_input(shown + ": the same file as the output " +
-                                         (outputs[k] == "-" ? std::string("stdout") : escape_name(outputs[k])) +
-                                         "; give each output its own file");
-        out_ids.push_back(id);
+        if (const long k = ins.find(id); k >= 0)
+            return Status::bad_input(shown + ": output would overwrite the input " +
+                                     (inputs[std::size_t(k)] == "-" ? std::string("stdin") : escape_name(inputs[std::size_t(k)])) +
+                                     "; choose another output file");
+        if (const long k = outs.find(id); k >= 0)
+            return Status::bad_input(shown + ": the same file as the output " +
+                                     (outputs[std::size_t(k)] == "-" ? std::string("stdout") : escape_name(outputs[std::size_t(k)])) +
+                                     "; give each output its own file");
+        outs.add(id, i);
     }
     return Status::success();
+}
+
+}  // namespace
+
+Status Outputs::check(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) const {
+    return check_outputs(outputs, inputs, true);
+}
+
+Status Outputs::clashes(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+    return check_outputs(outputs, inputs, false);
 }
 
 Status Outputs::stage(const std::string& path, const std::string& bytes) {
@@ -323,6 +389,7 @@ Status Outputs::stage(const std::string& path, const std::string& bytes) {
     struct stat st;
     s.existed = ::stat(s.target.c_str(), &st) == 0;
     if (s.existed && S_ISDIR(st.st_mode)) return Status::failure(escape_name(path) + ": is a directory");
+    if (Status r = refuse_read_only(path, s.target); !r) return r;
     if (s.existed && !S_ISREG(st.st_mode)) {
         s.special = true;
         s.bytes = bytes;

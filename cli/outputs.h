@@ -13,7 +13,9 @@
 // file is exactly as it was, and a failure anywhere before commit leaves them all untouched.
 // Special files (devices, FIFOs, sockets) and "-" (stdout) cannot be replaced: they are written
 // in place, first in commit(), and are never unlinked. A symbolic link is followed: its target
-// is replaced in the target's folder and the link stays; a link to nothing is refused.
+// is replaced in the target's folder and the link stays; a link to a special file (/dev/stdout,
+// /dev/fd/N) is written in place; a link to nothing is refused. An old file we may not write
+// (read-only for us) is refused although its folder would allow the rename.
 //
 // Signals (install_output_signal_handlers, below): INT, TERM, HUP, QUIT and PIPE remove any named temporary before the process dies
 // (the handler only unlinks fixed buffers, async-signal-safe); SIGXFSZ is ignored so a file-size
@@ -39,9 +41,14 @@ public:
 
     // Refuses (Code::input) an output that is the same file as an input (device and inode, stdin
     // and stdout included; different spellings and hard links are the same file), two outputs
-    // that are the same file, a second "-", an output that is a folder or a symbolic link to
-    // nothing. Special files may repeat (/dev/null as two outputs) and may be inputs too.
+    // that are the same file, a second "-", an output that is a folder, a symbolic link to
+    // nothing, or a read-only file we could not write in place. Devices may repeat (/dev/null as
+    // two outputs) and may be inputs too; a FIFO or pipe may not (stdout a pipe and /dev/stdout).
     Status check(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) const;
+
+    // The clashes of check() alone (an output that is an input, two outputs one file), for every
+    // file of a batch up front; a bad output name (a folder, a dangling link) is left to its job.
+    static Status clashes(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 
     // Writes `bytes` for `path` ("-" = stdout): to a temporary beside a regular target, or kept
     // for commit() when the target is special. Failures (Code::runtime) name the path.
@@ -74,5 +81,12 @@ private:
 // SIGXFSZ ignored); a signal the process ignores stays ignored (nohup). The erd program calls it
 // first thing; a library user (the Python module, the tests) keeps its own signal handling.
 void install_output_signal_handlers();
+
+// Puts /dev/null on each of descriptors 0, 1, 2 that is closed (`erd ... >&- 2>&-`), so no file
+// erd opens takes that number and receives what is printed to stdout or stderr (a message in the
+// middle of an output model). It is opened write-only as stdin and read-only as stdout and
+// stderr: using a closed stream still fails (EBADF, "stdout: Bad file descriptor"). erd calls it
+// first thing.
+void guard_standard_streams();
 
 }  // namespace erd::cli

@@ -1,6 +1,6 @@
 // libFuzzer target for the stream framing (cli/framing.h): how far a pipe or device is read.
 //
-// The input's first byte picks the framer (image, model, triangulation), the second the size of
+// The input's first byte picks the framer (image, model, triangulation, polylines), the second the size of
 // the reads after the first 4 KiB (as cli/fileio.cpp read_fd makes them); the rest is the stream.
 // Checks beyond "no crash": a framer error is one non-empty line; the framed bytes are a prefix
 // of the stream; a stream with a bad start (not P2, P5 or PNG) stops within its first read; and
@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "algorithms/model/model_io.h"
 #include "cli/framing.h"
@@ -48,13 +49,15 @@ bool framed_read(const erd::cli::Framer& framer, const std::string& stream, std:
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 2) return 0;
-    const int kind = data[0] % 3;
+    const int kind = data[0] % 4;
     const std::size_t chunk = 1 + std::size_t(data[1]) * 97;
     const std::string stream(reinterpret_cast<const char*>(data + 2), size - 2);
     erd::cli::ImageLimits limits;
     limits.max_side = 4096;
     limits.max_pixels = std::int64_t(1) << 20;  // keeps every run fast; the logic is the same
-    const erd::cli::Framer framer = kind == 0 ? erd::cli::image_framer(limits) : erd::cli::model_framer(kind == 2);
+    const erd::cli::Framer framer = kind == 0   ? erd::cli::image_framer(limits)
+                                    : kind == 3 ? erd::cli::polylines_framer()
+                                                : erd::cli::model_framer(kind == 2);
     std::string bytes;
     std::size_t reads = 0;
     const bool ok = framed_read(framer, stream, chunk, &bytes, &reads);
@@ -73,6 +76,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (framed.width != whole.width || framed.height != whole.height || framed.maxval != whole.maxval ||
                 framed.samples != whole.samples)
                 std::abort();
+        }
+        return 0;
+    }
+    if (kind == 3) {
+        std::vector<std::vector<erd::LatticePoint>> whole, framed;
+        if (erd::read_polylines(stream, &whole).ok()) {
+            if (!ok || !erd::read_polylines(bytes, &framed).ok() || framed != whole) std::abort();
         }
         return 0;
     }

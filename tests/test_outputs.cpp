@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <random>
@@ -47,9 +48,10 @@ bool has_temporary(const std::string& dir) {
 TEST_CASE("device nodes as outputs are written in place and never removed (root: mknod)", "[outputs]") {
     REQUIRE(erd_test::binary_available());
     TempDir t;
-    const std::string null_dev = t.file("null"), zero_dev = t.file("zero");
+    const std::string null_dev = t.file("null"), zero_dev = t.file("zero"), full_dev = t.file("full");
     if (::geteuid() != 0 || ::mknod(null_dev.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0 ||
-        ::mknod(zero_dev.c_str(), S_IFCHR | 0666, makedev(1, 5)) != 0) {
+        ::mknod(zero_dev.c_str(), S_IFCHR | 0666, makedev(1, 5)) != 0 ||
+        ::mknod(full_dev.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) {
         WARN("skipped: mknod needs root (and a file system that allows device nodes)");
         return;
     }
@@ -70,17 +72,72 @@ TEST_CASE("device nodes as outputs are written in place and never removed (root:
         {"render to a device", "render m.model --format svg -o null", 0},
         {"export to a device", "export m.model --format obj -o null", 0},
         {"synth to a device", "synth -q -o null", 0},
+        {"a batch's summary to a device", "reconstruct m.model -o r_{name}.pgm --summary null", 0},
+        {"-o a file, -t a full device: the file not written", "generate -q -m gpi -i in.pgm -n 20 -o new.model -t full", 1},
+        {"reconstruct to a full device", "reconstruct m.model -o full", 1},
     };
     for (const Case& c : cases) {
         INFO(c.label << ": erd " << c.args);
         erd_test::RunResult r = run_in(t, c.args);
         CHECK(r.status == c.status);
-        for (const std::string& dev : {null_dev, zero_dev}) {
+        for (const std::string& dev : {null_dev, zero_dev, full_dev}) {
             struct stat st;
             REQUIRE(::lstat(dev.c_str(), &st) == 0);
             CHECK(S_ISCHR(st.st_mode));
         }
         CHECK_FALSE(has_temporary(t.path));
+    }
+    CHECK_FALSE(erd_test::exists(t.file("new.model")));
+}
+
+// An old file its user may not write (read-only for its owner) is refused, not replaced by a
+// rename the folder would allow; a read-only folder takes nothing. Root may write anything, so
+// as root the cases run as nobody (setpriv).
+TEST_CASE("read-only old files and folders: refused, left as they were, no temporary", "[outputs]") {
+    REQUIRE(erd_test::binary_available());
+    TempDir t;
+    const std::string home = t.file("home");
+    REQUIRE(::mkdir(home.c_str(), 0755) == 0);
+    REQUIRE(run_in(t, "synth -q -W 32 -H 24 -o home/in.pgm && cd home && " + sh_quote(erd_test::erd_bin()) +
+                          " generate -q -m gpi -i in.pgm -n 20 -o m.model").status == 0);
+    spit(home + "/ro.pgm", "read-only");
+    REQUIRE(::chmod((home + "/ro.pgm").c_str(), 0444) == 0);
+    REQUIRE(::mkdir((home + "/rodir").c_str(), 0755) == 0);
+    spit(home + "/rodir/keep.pgm", "kept");
+    std::string as_user;  // the command prefix that drops root
+    if (::geteuid() == 0) {
+        if (erd_test::run_shell("command -v setpriv").status != 0) {
+            WARN("skipped: running as root without setpriv to drop to nobody");
+            return;
+        }
+        REQUIRE(::chmod(t.path.c_str(), 0755) == 0);
+        REQUIRE(erd_test::run_shell("chown -R 65534:65534 " + sh_quote(home)).status == 0);
+        as_user = "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+    }
+    REQUIRE(::chmod((home + "/rodir").c_str(), 0555) == 0);
+    const std::string bin = erd_test::erd_bin()[0] == '/' ? erd_test::erd_bin() : std::string(std::getenv("PWD") ? std::getenv("PWD") : ".") + "/" + erd_test::erd_bin();
+    struct Case {
+        const char* label;
+        std::string args;
+    };
+    const std::vector<Case> cases = {
+        {"-o a read-only file", "reconstruct m.model -o ro.pgm"},
+        {"-t a read-only file", "generate -q -m gpi -i in.pgm -n 20 -o new.model -t ro.pgm"},
+        {"a read-only file through a batch's summary", "reconstruct m.model -o r_{name}.pgm --summary ro.pgm"},
+        {"into a read-only folder", "synth -q -W 8 -H 8 -o rodir/new.pgm"},
+        {"over a file in a read-only folder", "synth -q -W 8 -H 8 -o rodir/keep.pgm"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.label << ": erd " << c.args);
+        erd_test::RunResult r = erd_test::run_shell("cd " + sh_quote(home) + " && " + as_user + sh_quote(bin) + " " + c.args);
+        CHECK(r.status == 1);
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        CHECK_THAT(r.err, Catch::Contains("ermission denied"));
+        CHECK(slurp(home + "/ro.pgm") == "read-only");
+        CHECK(slurp(home + "/rodir/keep.pgm") == "kept");
+        CHECK_FALSE(erd_test::exists(home + "/new.model"));
+        CHECK_FALSE(erd_test::exists(home + "/rodir/new.pgm"));
+        CHECK_FALSE(has_temporary(home));
     }
 }
 

@@ -47,12 +47,24 @@ case_() {
     # file-size cap (ulimit -f, 512-byte blocks); CHECK: a condition on the files afterwards.
     # A sanitized binary (ERD_SANITIZED set) reserves terabytes of shadow address space, which no
     # ulimit -v allows: there the rows run without the memory cap (the plain build checks it).
-    (
-        [[ -n ${LIMIT_KB:-} && -z ${ERD_SANITIZED:-} ]] && ulimit -v "$LIMIT_KB"
-        [[ -n ${LIMIT_FSIZE:-} ]] && ulimit -f "$LIMIT_FSIZE"
-        exec "$BIN" "${args[@]}"
-    ) <"${IN:-/dev/null}" >out.stdout 2>out.stderr
-    local rc=$? msg
+    # PIPE=1: stdout is a pipe (to out.stdout); CLOSED=1: stdout and stderr are closed.
+    local rc
+    if [[ -n ${PIPE:-} ]]; then
+        ( exec "$BIN" "${args[@]}" ) <"${IN:-/dev/null}" 2>out.stderr | cat >out.stdout
+        rc=${PIPESTATUS[0]}
+    elif [[ -n ${CLOSED:-} ]]; then
+        : >out.stderr
+        ( exec "$BIN" "${args[@]}" ) <"${IN:-/dev/null}" >&- 2>&-
+        rc=$?
+    else
+        (
+            [[ -n ${LIMIT_KB:-} && -z ${ERD_SANITIZED:-} ]] && ulimit -v "$LIMIT_KB"
+            [[ -n ${LIMIT_FSIZE:-} ]] && ulimit -f "$LIMIT_FSIZE"
+            exec "$BIN" "${args[@]}"
+        ) <"${IN:-/dev/null}" >out.stdout 2>out.stderr
+        rc=$?
+    fi
+    local msg
     msg=$(grep -v '^$' out.stderr | head -1 | sed "s|$D/||g" | cut -c1-200)
     [[ -n ${SHOW:-} ]] && msg=$SHOW
     if [[ $rc -eq 0 && ${args[0]} == generate ]]; then
@@ -63,6 +75,7 @@ case_() {
         done
         local nv=""
         # The vertex count: the second line of the thesis's body, after a header block if any.
+        [[ $o == /dev/stdout ]] && o=out.stdout  # what the pipe carried
         [[ -f $o ]] && nv=$(awk '/^erd-header/ { h = 1 } h { if ($0 == "end") h = 0; next } { if (++n == 2) { print; exit } }' "$o" 2>/dev/null)
         [[ -f $o ]] || n=""  # a special output (/dev/null, a FIFO): nothing to count
         msg="ok: $nv vertices; $(grep 'psnr' out.stderr | head -1 | sed 's/^erd generate: //')"
@@ -267,9 +280,12 @@ cat <<'EOF'
 ## Outputs that are not ours, and old files (issue 19)
 All outputs of a command are committed together at the end (docs/DECISIONS.md, "Outputs"): a
 failure leaves every old file as it was; special files are written in place and never
-unlinked; a symbolic link is followed (its target replaced, the link kept), a link to nothing
-refused. Each row also checks the files afterwards ("check failed" when they are not as stated).
-Device nodes and a full file system: tests/test_outputs.cpp ("[outputs]", as root).
+unlinked; a symbolic link is followed (its target replaced, the link kept), a link to a special
+file (/dev/stdout to a pipe) written in place, a link to nothing or a loop refused. A device may be
+two outputs (/dev/null), a FIFO or pipe may not. Closed stdout and stderr get /dev/null first, so
+no message lands in an output. Each row also checks the files afterwards ("check failed" when
+they are not as stated). Device nodes, a full file system, read-only files and folders (as
+nobody): tests/test_outputs.cpp ("[outputs]", as root).
 
 | case | command | exit | message |
 | --- | --- | --- | --- |
@@ -313,6 +329,16 @@ OLDP=$(sum self.pgm)
 IN=self.pgm CHECK='[[ $(sum self.pgm) == "$OLDP" ]]' case_ "stdin is the output (generate -i -)" 2 generate -q -m gpi -i - -o self.pgm -n 20
 ln self.pgm hard.pgm
 CHECK='[[ $(sum self.pgm) == "$OLDP" ]]' case_ "output is a hard link of the input" 2 generate -q -m gpi -i self.pgm -o hard.pgm -n 20
+ln -s loop2.model loop1.model; ln -s loop1.model loop2.model
+CHECK='[[ -L loop1.model ]]' case_ "-o a symbolic link loop: refused" 1 generate -q -m gpi -i in.pgm -o loop1.model -n 20
+PIPE=1 CHECK='[[ $(sed -n 2p out.stdout) == 20 ]]' case_ "-o /dev/stdout, a pipe: written in place" 0 generate -q -m gpi -i in.pgm -o /dev/stdout -n 20
+PIPE=1 case_ "-o - -t /dev/stdout, a pipe: one file, refused" 2 generate -q -m gpi -i in.pgm -o - -t /dev/stdout -n 20
+mkfifo fifo.in
+(timeout 20 sh -c 'cat in.pgm > fifo.in') &
+CHECK='[[ -p fifo.in ]] && timeout 20 cat fifo.in >/dev/null && wait' case_ "-i a FIFO -o the same FIFO: refused" 2 generate -q -m gpi -i fifo.in -o fifo.in -n 20
+"$BIN" generate -q -m gpi -i in.pgm -o ref.model -t ref.tri -n 20 >/dev/null 2>&1
+CLOSED=1 CHECK='cmp -s c.model ref.model && cmp -s c.tri ref.tri' case_ "stdout and stderr closed: no message inside an output" 0 generate -v --psnr-report -m gpi -i in.pgm -o c.model -t c.tri -n 20
+CLOSED=1 case_ "stdout closed, -o -: fails" 1 reconstruct good.model
 LONG=$(printf 'n%.0s' {1..245}).model
 CHECK='[[ -e $LONG ]] && no_temp' case_ "a 251-byte output name" 0 generate -q -m gpi -i in.pgm -o "$LONG" -n 20
 rm -f "$LONG"
@@ -334,6 +360,8 @@ LIMIT_KB=65536 IN=/dev/urandom SHOW="(random bytes: the message varies)" case_ "
 LIMIT_KB=65536 IN=<(yes) case_ "yes piped in, as an image" 2 info -
 LIMIT_KB=65536 IN=<(yes) case_ "yes piped in, as a model" 2 reconstruct - -o r.pgm
 LIMIT_KB=65536 IN=<(yes 1) case_ "yes 1 piped in, as a model" 2 reconstruct - -o r.pgm
+LIMIT_KB=65536 IN=/dev/zero case_ "/dev/zero as --constraints" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --constraints -
+LIMIT_KB=65536 IN=<(yes) case_ "yes piped in, as --constraints" 2 generate -q -m erdgpi -i in.pgm -o o.erd -n 20 --constraints -
 LIMIT_KB=65536 IN=<(printf 'P5\n64 64\n255\n'; cat /dev/zero) case_ "P5 header, then /dev/zero" 0 info -
 LIMIT_KB=65536 IN=<(printf 'P2\n4 4\n255\n'; yes 7) case_ "P2 header, then endless samples" 0 info -
 LIMIT_KB=65536 IN=<(printf 'P5\n'; yes '# comment') case_ "P5 magic, then an endless comment" 2 info -
@@ -357,6 +385,11 @@ cat <<'EOF'
 EOF
 case_ "density 1e300" 2 generate -q -m ed -i in.pgm -o o.model -d 1e300
 case_ "density 1e-320" 2 generate -q -m ed -i in.pgm -o o.model -d 1e-320
+case_ "density 0x10 (hexadecimal)" 2 generate -q -m ed -i in.pgm -o o.model -d 0x10
+case_ "psnr target 0x1p3 (hexadecimal)" 2 generate -q -m gpi -i in.pgm -o o.model --psnr 0x1p3
+case_ "N ' 20' (a leading blank)" 2 generate -q -m ed -i in.pgm -o o.model -n ' 20'
+case_ "-j ' 2' (a leading blank)" 2 reconstruct good.model -o r.pgm -j ' 2'
+case_ "synth width -0" 2 synth -W -0 -H 4 -o s.pgm
 case_ "N 2^63" 2 generate -q -m ed -i in.pgm -o o.model -n 9223372036854775808
 case_ "synth width 1e9" 2 synth -W 1000000000 -H 4 -o s.pgm
 case_ "render scale 1e400" 2 render good.model -o r.svg --scale 1e400
@@ -415,7 +448,8 @@ case_ "JPEG start marker only" 2 info soi.jpg
 
 cat <<'EOF'
 
-## Many files in one call (issue 20)
+## Many files in one call (issues 19, 20)
+Every job's files are checked against every other job's, and the summary, before any job runs.
 | case | command | exit | message |
 | --- | --- | --- | --- |
 EOF
@@ -427,4 +461,13 @@ case_ "two inputs with one name" 2 generate -q -m gpi -i many/a.pgm -i many/a.pg
 case_ "-j not a number" 2 generate -q -m gpi -i many/a.pgm -i many/in -o 'many/out/{name}.model' -j x
 case_ "a folder without images" 2 generate -q -m gpi -i empty -o 'many/out/{name}.model'
 case_ "many models to stdout" 2 reconstruct many/out/a.model many/out/c.model
+cp many/out/a.model many/out/a2.model
+OLDA2=$(sum many/out/a2.model)
+CHECK='[[ $(sum many/out/a2.model) == "$OLDA2" && ! -e many/out/a22.model ]]' case_ "one job's output is another's input: refused up front" 2 reconstruct many/out/a.model many/out/a2.model -o 'many/out/{name}2.model'
+CHECK='[[ ! -e many/out/a.csv ]]' case_ "the summary is a job's output: refused" 2 reconstruct many/out/a.model many/out/c.model -o 'many/out/{name}.csv' --summary many/out/a.csv
+cp in.pgm a.pgm
+OLDA=$(sum a.pgm)
+CHECK='[[ $(sum a.pgm) == "$OLDA" ]]' case_ "psnr: the summary is an ORIGINAL: refused" 2 psnr '{name}.pgm' many/a.pgm many/in/c.pgm --summary ./a.pgm
+mkdir esc; cp in.pgm esc/$'a\033]0;x\007.pgm'; cp in.pgm $'a\033]0;x\007.pgm'
+SHOW='(stdout: esc/a\x1b]0;x\x07.pgm inf)' CHECK='! LC_ALL=C grep -q $'"'"'\033'"'"' out.stdout' case_ "psnr over many: a name with escapes is printed escaped on stdout" 0 psnr '{name}.pgm' esc/
 exit $bad
