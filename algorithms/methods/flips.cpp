@@ -39,8 +39,11 @@ private:
 }  // namespace
 
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
-                      const std::vector<FaceInd>* seed_faces) {
+                      const std::vector<FaceInd>* seed_faces, MeshSystems* systems) {
     FlipStats st;
+    if (systems && !systems->matches(*cdt)) systems = nullptr;
+    const RasterDomain domain{cdt->max_x(), cdt->max_y()};
+    std::vector<Span> spans;
     TriangleError tri_error(image, *cdt);
     const std::size_t nf = cdt->face_count();
     std::vector<double> face_sse(nf, -1.0);  // < 0: not computed yet
@@ -48,6 +51,11 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
     auto sse_of = [&](FaceInd f) {
         if (face_sse[f] < 0) {
             const EdgeInd e = 3 * f;
+            if (systems) {
+                face_sse[f] = systems->faces[f].sse(corner(e), corner(e + 1), corner(e + 2));
+                if (face_sse[f] < 0) face_sse[f] = 0;  // an exact fit's rounding residue
+                return face_sse[f];
+            }
             face_sse[f] = tri_error(cdt->point(cdt->org(e)), corner(e), cdt->point(cdt->org(e + 1)), corner(e + 1),
                                     cdt->point(cdt->org(e + 2)), corner(e + 2));
         }
@@ -97,6 +105,12 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
         face_sse[f2] = s2;
         st.changed.push_back(f1);
         st.changed.push_back(f2);
+        if (systems)
+            for (FaceInd f : {f1, f2}) {
+                const EdgeInd k = 3 * f;
+                systems->faces[f] = face_system(image, domain, cdt->point(cdt->org(k)), cdt->point(cdt->org(k + 1)),
+                                                cdt->point(cdt->org(k + 2)), &spans);
+            }
         for (FaceInd f : {f1, f2})
             for (EdgeInd k = 3 * f; k < 3 * f + 3; ++k)
                 if (k != diag && cdt->twin(k) != diag) enqueue(k);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
 #include "kernel/cdt.h"
 
@@ -27,8 +28,10 @@ struct FlipStats {
 // Flips edges of *cdt (values from model, which keeps its wedge values) while a flip lowers the
 // squared error. Edges are visited from a work list seeded with every edge of the faces in
 // *seed_faces (every edge when it is null); a flip puts the four outer edges of its
-// quadrilateral back on it.
+// quadrilateral back on it. systems, when they match *cdt (the refit's, wedge_fit.h), give the
+// squared error of the faces before a flip without a pass over their pixels, and are kept in
+// step: a flip rewrites the systems of its two faces.
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
-                      const std::vector<FaceInd>* seed_faces = nullptr);
+                      const std::vector<FaceInd>* seed_faces = nullptr, MeshSystems* systems = nullptr);
 
 }  // namespace erd
