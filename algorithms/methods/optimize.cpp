@@ -13,10 +13,18 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
     std::vector<FaceInd> seed;
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
-        improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed, systems);
+        improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed, systems,
+                         options.flip_min_share);
         seed = std::move(fs.changed);
-        if (fs.flips == 0) break;
+        if (fs.flips == 0 && options.moves == 0) break;
         if (options.wedge_fit > 0) {
+            WedgeFitStats again;
+            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, systems);
+            if (stats) stats->sse_after = again.sse_after;
+        }
+        if (round < options.moves && systems && options.wedge_fit > 0) {
+            MoveStats ms;
+            improve_by_moves(cdt, image, *model, options.move_step, options.move_min_gain, systems, &ms);
             WedgeFitStats again;
             fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, systems);
             if (stats) stats->sse_after = again.sse_after;

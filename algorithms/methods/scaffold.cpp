@@ -49,6 +49,7 @@ Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode 
 void set_thesis_preset(GenerateOptions* o) {
     o->wedge_fit = 0;
     o->flips = 0;
+    o->moves = 0;
     o->alpha_min = 1.0;
     o->alpha_max = 1.5;
     o->edge_zero_radius = 0;

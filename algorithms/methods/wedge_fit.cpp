@@ -199,6 +199,16 @@ FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0,
     return fs;
 }
 
+const FaceSystem& MeshSystems::get(const Cdt& cdt, const Image& image, FaceInd f) {
+    if (stale[f]) {
+        const EdgeInd e = 3 * f;
+        faces[f] = face_system(image, RasterDomain{cdt.max_x(), cdt.max_y()}, cdt.point(cdt.org(e)),
+                               cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)), &spans_);
+        stale[f] = 0;
+    }
+    return faces[f];
+}
+
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
                       ProgressHook progress) {
     WedgeFitOptions o;
@@ -215,12 +225,13 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
         // The same list, in the same order, as the pass over the pixels would make.
         faces.reserve(cdt.face_count());
         for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-            if (!systems->faces[f].owns) continue;
+            if (!systems->get(cdt, image, f).owns) continue;
             faces.push_back(systems->faces[f]);
             for (int j = 0; j < 3; ++j) faces.back().entry[j] = model->corner_entry(cdt, 3 * f + EdgeInd(j));
         }
     } else if (systems) {
         systems->faces.assign(cdt.face_count(), FaceSystem());
+        systems->stale.assign(cdt.face_count(), 0);
         const RasterDomain domain{cdt.max_x(), cdt.max_y()};
         std::vector<Span> spans;
         faces.reserve(cdt.face_count());

@@ -57,9 +57,18 @@ FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0,
 // The systems of a mesh's faces by face slot, kept in step with the mesh: the refit fills them
 // when they are missing, and the flips (flips.h) rewrite those of the faces they flip, so the
 // refits after the flips need no pass over the pixels.
+// A changed face is only marked stale and made again when it is next needed (a face can change
+// many times between refits).
 struct MeshSystems {
     std::vector<FaceSystem> faces;
+    std::vector<std::uint8_t> stale;  // by face slot: 1 = faces[f] is out of date
+
     bool matches(const Cdt& cdt) const { return faces.size() == cdt.face_count(); }
+    void mark(FaceInd f) { stale[f] = 1; }
+    // The system of face f, made again first when stale.
+    const FaceSystem& get(const Cdt& cdt, const Image& image, FaceInd f);
+private:
+    std::vector<Span> spans_;
 };
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
