@@ -32,9 +32,14 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
     }
 }
 
-void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& options, Model* model,
+void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& given, Model* model,
                           WedgeFitStats* stats) {
-    if (!options.optimize) return;
+    if (!given.optimize) return;
+    // The point set stays (no vertex moves), and every quadrilateral is tried: --optimize as it
+    // was decided (docs/DECISIONS.md).
+    GenerateOptions options = given;
+    options.moves = 0;
+    options.flip_min_share = 0;
     // With no constrained edge every vertex has one wedge, whose value is phi_bar at the vertex:
     // the sample itself at a pixel, so the fit starts from the basic model's values.
     ErdModel erd(image, wedge_options(options));
