@@ -71,12 +71,16 @@ const CommandLine kGenerate = {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --moves 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
         {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
+        {0, "flip-min-share", "F", "ERD: flips skip quadrilaterals whose error is below F of the mean of two faces (default 0.1)"},
+        {0, "moves", "K", "ERD: vertex moves after the first K rounds of flips, each followed by a refit (default 1)"},
+        {0, "move-step", "S", "ERD: the moves' step in half pixels (default 2)"},
+        {0, "move-min-gain", "G", "ERD: a move predicted to lower its faces' error by less than G of it is not tried (default 0.03)"},
         {0, "flips", "K", "ERD: K rounds of data-dependent flips of unconstrained edges, each followed by a refit (default 1; also ED/GPI --optimize)"},
         {0, "optimize", nullptr, "ED, GPI: least-squares vertex values (ours, beyond the thesis)"},
         {0, "alpha-min", "A", "ERD: wedge line search from A pixels along the bisector (default 0.75; thesis 1)"},
@@ -186,6 +190,10 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
     if (a.has("optimize")) o->optimize = true;
     if (a.has("flips")) o->flips = int(a.integer("flips", 0, 0, 64, st));
+    if (a.has("flip-min-share")) o->flip_min_share = a.real("flip-min-share", 0.0, 0.0, 1e9, st);
+    if (a.has("moves")) o->moves = int(a.integer("moves", 0, 0, 64, st));
+    if (a.has("move-step")) o->move_step = int(a.integer("move-step", 2, 1, 64, st));
+    if (a.has("move-min-gain")) o->move_min_gain = a.real("move-min-gain", 0.0, 0.0, 1e9, st);
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
     if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
     if (st->ok() && o->alpha_max < o->alpha_min)

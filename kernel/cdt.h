@@ -208,6 +208,13 @@ public:
     // verify() then fails; use verify_topology().
     bool can_flip(EdgeInd e) const;
     EdgeInd flip_edge(EdgeInd e);
+    // Vertex moves on request (algorithms/methods/moves.h), the same kind of data-dependent
+    // change: true when v is an interior vertex with no constrained edge and every face around
+    // it stays positive with v at lattice point p (so p lies in the open star of v, where no
+    // other vertex is, and the faces keep their edges). move_vertex moves it (false: nothing
+    // changed); faces and wedges keep their indices.
+    bool can_move(VertInd v, LatticePoint p) const;
+    bool move_vertex(VertInd v, LatticePoint p);
 
 private:
     struct Pair { VertInd a, b; };

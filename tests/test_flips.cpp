@@ -99,6 +99,72 @@ TEST_CASE("data-dependent flips lower the squared error and keep constraints and
     test::check_model(m);  // the flipped-faces path of check_model
 }
 
+TEST_CASE("kernel move_vertex: free interior vertices only, inside their star", "[flips][kernel]") {
+    Cdt cdt;
+    REQUIRE(cdt.reset(40, 40).ok());
+    VertInd v = 0, w = 0;
+    REQUIRE(cdt.insert_point(LatticePoint{20, 20}, &v).ok());
+    REQUIRE(cdt.insert_point(LatticePoint{30, 30}, &w).ok());
+    CHECK(!cdt.can_move(0, LatticePoint{2, 2}));     // a corner
+    CHECK(!cdt.can_move(v, LatticePoint{30, 30}));   // onto a vertex
+    CHECK(!cdt.can_move(v, LatticePoint{0, 20}));    // onto the boundary
+    CHECK(!cdt.can_move(v, LatticePoint{34, 34}));   // out of its star
+    REQUIRE(cdt.can_move(v, LatticePoint{22, 18}));
+    REQUIRE(cdt.move_vertex(v, LatticePoint{22, 18}));
+    CHECK(cdt.point(v) == LatticePoint{22, 18});
+    std::string why;
+    INFO(why);
+    CHECK(cdt.verify_topology(&why));
+    VertInd a = 0, b = 0;
+    REQUIRE(cdt.insert_point(LatticePoint{10, 30}, &a).ok());
+    REQUIRE(cdt.insert_point(LatticePoint{30, 10}, &b).ok());
+    REQUIRE(cdt.insert_constraint(a, b).ok());
+    const EdgeInd e = cdt.find_edge(a, b);
+    if (e != noEdge) CHECK(!cdt.can_move(a, LatticePoint{12, 30}));  // a vertex of a constrained edge
+    CHECK(cdt.verify_topology(&why));
+}
+
+TEST_CASE("vertex moves lower the squared error and keep the count, constraints and topology", "[flips]") {
+    const Image im = ridge(48, 40);
+    InitialMeshOptions mo;
+    mo.target = 150;
+    Cdt cdt;
+    InitialMesh mesh;
+    REQUIRE(build_initial_mesh(im, mo, &cdt, &mesh).ok());
+    random_points(&cdt, 60, 5);
+    std::vector<std::array<VertInd, 2>> cons_before, cons_after;
+    cdt.export_constraints(&cons_before);
+    const std::size_t n = cdt.vertex_count();
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(cdt);
+    MeshSystems systems;
+    WedgeFitOptions o;
+    WedgeFitStats before;
+    fit_wedge_values(cdt, im, o, &model, &before, nullptr, {}, &systems);
+    REQUIRE(systems.matches(cdt));
+    MoveStats ms;
+    improve_by_moves(&cdt, im, model, 2, 0.0, &systems, &ms);
+    CHECK(ms.moves > 0);
+    CHECK(ms.tested >= ms.moves);
+    CHECK(cdt.vertex_count() == n);
+    std::string why;
+    INFO(why);
+    CHECK(cdt.verify_topology(&why));
+    cdt.export_constraints(&cons_after);
+    CHECK(cons_after == cons_before);
+    // The kept systems are those of the moved mesh: a refit from them equals a fresh one.
+    ErdModel fresh = model;
+    WedgeFitStats kept_stats, fresh_stats;
+    fit_wedge_values(cdt, im, o, &model, &kept_stats, nullptr, {}, &systems);
+    fit_wedge_values(cdt, im, o, &fresh, &fresh_stats, nullptr);
+    CHECK(kept_stats.sse_after == fresh_stats.sse_after);
+    CHECK(kept_stats.sse_after < before.sse_after);
+    for (std::size_t i = 0; i < model.entry_count(); ++i) CHECK(model.entry_value(i) == fresh.entry_value(i));
+    Model m;
+    model.to_model(cdt, im.width, im.height, im.maxval, &m);
+    test::check_model(m);
+}
+
 TEST_CASE("regularised refit: values stay within their pixels' range and near a weakly supported line-search value",
           "[flips][erd]") {
     // A step image without constraints: plain least squares overshoots the step (values above

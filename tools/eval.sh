@@ -64,7 +64,7 @@ title() {
         *+thesis) echo "$M, thesis method (--thesis)" ;;
         *+previous) echo "$M, previous default (no flips, plain refit: ${VFLAGS[previous]})" ;;
         *+optimize) echo "$M --optimize (least-squares values, flips)" ;;
-        erded|erdgpi) echo "$M, erd default (regularised wedge refit, flips, alpha 0.75-1, edge radius 1)" ;;
+        erded|erdgpi) echo "$M, erd default (regularised wedge refit, flips, moves, alpha 0.75-1, edge radius 1)" ;;
         *) echo "$M" ;;
     esac
 }

@@ -1,5 +1,6 @@
 #include "algorithms/methods/flips.h"
 
+#include <cmath>
 #include <vector>
 
 #include "kernel/raster.h"
@@ -39,8 +40,9 @@ private:
 }  // namespace
 
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
-                      const std::vector<FaceInd>* seed_faces) {
+                      const std::vector<FaceInd>* seed_faces, MeshSystems* systems, double min_share) {
     FlipStats st;
+    if (systems && !systems->matches(*cdt)) systems = nullptr;
     TriangleError tri_error(image, *cdt);
     const std::size_t nf = cdt->face_count();
     std::vector<double> face_sse(nf, -1.0);  // < 0: not computed yet
@@ -48,11 +50,23 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
     auto sse_of = [&](FaceInd f) {
         if (face_sse[f] < 0) {
             const EdgeInd e = 3 * f;
+            if (systems) {
+                face_sse[f] = systems->get(*cdt, image, f).sse(corner(e), corner(e + 1), corner(e + 2));
+                if (face_sse[f] < 0) face_sse[f] = 0;  // an exact fit's rounding residue
+                return face_sse[f];
+            }
             face_sse[f] = tri_error(cdt->point(cdt->org(e)), corner(e), cdt->point(cdt->org(e + 1)), corner(e + 1),
                                     cdt->point(cdt->org(e + 2)), corner(e + 2));
         }
         return face_sse[f];
     };
+    // Quadrilaterals whose error is below min_share of the mean of two faces cannot gain much.
+    double skip_below = 0;
+    if (systems && min_share > 0) {
+        double total = 0;
+        for (FaceInd f = 0; f < nf; ++f) total += sse_of(f);
+        skip_below = min_share * 2.0 * total / double(nf);
+    }
     std::vector<EdgeInd> work;
     std::vector<std::uint8_t> queued(3 * nf, 0);
     auto enqueue = [&](EdgeInd k) {
@@ -82,6 +96,7 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
         const LatticePoint c = cdt->point(cdt->org(ec)), d = cdt->point(cdt->org(ed));
         const double za = corner(ea), zb = corner(eb), zc = corner(ec), zd = corner(ed);
         const double before = sse_of(face_of(e)) + sse_of(face_of(t));
+        if (before < skip_below) continue;
         const double s1 = tri_error(c, zc, a, za, d, zd), s2 = tri_error(d, zd, b, zb, c, zc);
         ++st.tested;
         // A flip must win by more than rounding: the squared error then falls at every flip and
@@ -97,9 +112,71 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
         face_sse[f2] = s2;
         st.changed.push_back(f1);
         st.changed.push_back(f2);
+        if (systems) systems->mark(f1), systems->mark(f2);
         for (FaceInd f : {f1, f2})
             for (EdgeInd k = 3 * f; k < 3 * f + 3; ++k)
                 if (k != diag && cdt->twin(k) != diag) enqueue(k);
+    }
+    if (stats) *stats = st;
+}
+
+void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
+                      MeshSystems* systems, MoveStats* stats) {
+    MoveStats st;
+    if (!systems || !systems->matches(*cdt)) return;
+    TriangleError tri_error(image, *cdt);
+    auto corner = [&](EdgeInd e) { return model.corner_value(*cdt, e); };
+    std::vector<EdgeInd> star;
+    std::vector<double> zs;  // per star corner: (z_a, z_b) of the face (v, a, b)
+    for (VertInd v = 4; v < cdt->vertex_count(); ++v) {
+        const LatticePoint p0 = cdt->point(v);
+        if (cdt->on_boundary(v)) continue;
+        cdt->corners_around(v, &star);
+        bool free = true;
+        for (EdgeInd e : star) free = free && !cdt->constrained(e);
+        if (!free) continue;
+        // The gradient of the faces' squared error in v's position (values kept): a pixel's
+        // approximation moves by -w_v grad(plane) . delta, so d SSE_f = -2 grad(plane_f) . r_f,v
+        // with r_f,v = sum e w_v = (G z - h)_v of the face's system; pixels changing faces
+        // across v's edges add nothing at first order (the planes agree there).
+        double zv = 0, current = 0, gx = 0, gy = 0;
+        zs.clear();
+        for (EdgeInd e : star) {
+            const FaceInd f = face_of(e);
+            const EdgeInd k = 3 * f;
+            const double z[3] = {corner(k), corner(k + 1), corner(k + 2)};
+            const FaceSystem& fs = systems->get(*cdt, image, f);
+            double gz[3];
+            fs.gram_times(z[0], z[1], z[2], gz);
+            const int i = int(e - k);
+            zv = z[i];
+            zs.push_back(z[(i + 1) % 3]);
+            zs.push_back(z[(i + 2) % 3]);
+            const double s = (z[0] * gz[0] + z[1] * gz[1] + z[2] * gz[2]) - 2.0 * (z[0] * fs.h[0] + z[1] * fs.h[1] + z[2] * fs.h[2]) + fs.bb;
+            current += s > 0 ? s : 0;
+            SpanPlane plane;
+            plane.set(cdt->point(cdt->org(k)), z[0], cdt->point(cdt->org(k + 1)), z[1], cdt->point(cdt->org(k + 2)), z[2]);
+            const double r = gz[i] - fs.h[i];
+            gx -= 2.0 * r * plane.gx;
+            gy -= 2.0 * r * plane.gy;
+        }
+        // The lattice step most against the gradient, and its first-order gain.
+        const std::int32_t dx = gx < -0.4142 * std::abs(gy) ? step : (gx > 0.4142 * std::abs(gy) ? -step : 0);
+        const std::int32_t dy = gy < -0.4142 * std::abs(gx) ? step : (gy > 0.4142 * std::abs(gx) ? -step : 0);
+        const double predicted = -(gx * dx + gy * dy);
+        if ((dx == 0 && dy == 0) || predicted <= min_gain * current) continue;
+        const LatticePoint p{p0.x + dx, p0.y + dy};
+        if (!cdt->can_move(v, p)) continue;
+        ++st.tested;
+        const double bound = current - 1e-9 * (current + 1.0);
+        double s = 0;
+        for (std::size_t i = 0; i < star.size() && s < bound; ++i) {
+            const EdgeInd e = star[i];
+            s += tri_error(p, zv, cdt->point(cdt->dest(e)), zs[2 * i], cdt->point(cdt->org(prev_edge(e))), zs[2 * i + 1]);
+        }
+        if (!(s < bound) || !cdt->move_vertex(v, p)) continue;
+        ++st.moves;
+        for (EdgeInd e : star) systems->mark(face_of(e));
     }
     if (stats) *stats = st;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
 #include "kernel/cdt.h"
 
@@ -27,8 +28,26 @@ struct FlipStats {
 // Flips edges of *cdt (values from model, which keeps its wedge values) while a flip lowers the
 // squared error. Edges are visited from a work list seeded with every edge of the faces in
 // *seed_faces (every edge when it is null); a flip puts the four outer edges of its
-// quadrilateral back on it.
+// quadrilateral back on it. systems, when they match *cdt (the refit's, wedge_fit.h), give the
+// squared error of the faces before a flip without a pass over their pixels, and are kept in
+// step: a flip rewrites the systems of its two faces.
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
-                      const std::vector<FaceInd>* seed_faces = nullptr);
+                      const std::vector<FaceInd>* seed_faces = nullptr, MeshSystems* systems = nullptr,
+                      double min_share = 0.0);
+
+struct MoveStats {
+    std::size_t moves = 0;   // vertices moved
+    std::size_t tested = 0;  // positions whose error was measured
+};
+
+// Vertex moves (ours): each interior vertex with no constrained edge, in index order, is tried
+// at the one of its 8 lattice neighbours at distance `step` (doubled units: 2 = one pixel) that
+// lies most against the gradient of its faces' squared error in its position (from the face
+// systems, no pass over the pixels; the values of model as they are), and moves there when that
+// lowers the squared error of its faces. A vertex whose first-order gain is below min_gain times
+// its faces' error is not tried. systems as for improve_by_flips (required; moved faces are
+// marked stale).
+void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
+                      MeshSystems* systems, MoveStats* stats);
 
 }  // namespace erd

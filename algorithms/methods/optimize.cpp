@@ -7,34 +7,49 @@
 namespace erd {
 
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
-                       const std::vector<double>* line_search, WedgeFitStats* stats) {
+                       const std::vector<double>* line_search, WedgeFitStats* stats, MeshSystems* systems) {
     // Round 1 tries every edge; later rounds (after a refit moved the values) only the edges of
     // the faces the previous round flipped, where the refit moved the most.
     std::vector<FaceInd> seed;
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
-        improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed);
+        improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed, systems,
+                         options.flip_min_share);
         seed = std::move(fs.changed);
-        if (fs.flips == 0) break;
+        if (fs.flips == 0 && options.moves == 0) break;
         if (options.wedge_fit > 0) {
             WedgeFitStats again;
-            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search);
+            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, systems);
+            if (stats) stats->sse_after = again.sse_after;
+        }
+        if (round < options.moves && systems && options.wedge_fit > 0) {
+            MoveStats ms;
+            improve_by_moves(cdt, image, *model, options.move_step, options.move_min_gain, systems, &ms);
+            WedgeFitStats again;
+            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, systems);
             if (stats) stats->sse_after = again.sse_after;
         }
     }
 }
 
-void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& options, Model* model,
+void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& given, Model* model,
                           WedgeFitStats* stats) {
-    if (!options.optimize) return;
+    if (!given.optimize) return;
+    // The point set stays (no vertex moves), and every quadrilateral is tried: --optimize as it
+    // was decided (docs/DECISIONS.md).
+    GenerateOptions options = given;
+    options.moves = 0;
+    options.flip_min_share = 0;
     // With no constrained edge every vertex has one wedge, whose value is phi_bar at the vertex:
     // the sample itself at a pixel, so the fit starts from the basic model's values.
     ErdModel erd(image, wedge_options(options));
     erd.assign_all(*cdt);
     std::vector<double> samples;
     for (std::size_t i = 0; i < erd.entry_count(); ++i) samples.push_back(erd.entry_value(i));
-    if (options.wedge_fit > 0) fit_wedge_values(*cdt, image, wedge_fit_options(options), &erd, stats, &samples);
-    if (options.flips) optimize_by_flips(cdt, image, options, &erd, &samples, stats);
+    MeshSystems systems;
+    if (options.wedge_fit > 0)
+        fit_wedge_values(*cdt, image, wedge_fit_options(options), &erd, stats, &samples, {}, &systems);
+    if (options.flips) optimize_by_flips(cdt, image, options, &erd, &samples, stats, &systems);
     *model = basic_model(*cdt, image);
     for (VertInd v = 0; v < model->vertices.size(); ++v) model->values[v] = erd.vertex_value(v);
 }

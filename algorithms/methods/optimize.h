@@ -16,6 +16,7 @@
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/options.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/model.h"
 #include "kernel/cdt.h"
@@ -23,9 +24,10 @@
 namespace erd {
 
 // Flips, then refits model's values (drawn towards line_search, wedge_fit.h) when
-// options.wedge_fit > 0.
+// options.wedge_fit > 0. systems: the face systems of the refit before (wedge_fit.h), kept in
+// step with the flips so the refits after them skip the pass over the pixels.
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
-                       const std::vector<double>* line_search, WedgeFitStats* stats);
+                       const std::vector<double>* line_search, WedgeFitStats* stats, MeshSystems* systems = nullptr);
 
 // Replaces *model (a basic model of cdt) by the optimised one: refitted values, flipped faces.
 // Does nothing unless options.optimize.

@@ -49,6 +49,7 @@ Status check_exact_count(std::size_t requested, std::size_t achieved, ExactMode 
 void set_thesis_preset(GenerateOptions* o) {
     o->wedge_fit = 0;
     o->flips = 0;
+    o->moves = 0;
     o->alpha_min = 1.0;
     o->alpha_max = 1.5;
     o->edge_zero_radius = 0;
@@ -205,8 +206,9 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             for (std::size_t i = 0; i < model->entry_count(); ++i) kept.push_back(model->entry_value(i));
             line_search_values = &kept;
         }
+        MeshSystems systems;  // the flips and the refits after them start from the first refit's
         fit_wedge_values(cdt, image, wedge_fit_options(options), model, &result->stats.wedge_fit,
-                         line_search_values, options.progress);
+                         line_search_values, options.progress, options.flips ? &systems : nullptr);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
         if (options.flips) {
@@ -219,7 +221,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
                 before = result->model;  // keeps the fields to_model leaves alone (edges)
                 model->to_model(cdt, image.width, image.height, image.maxval, &before);
             }
-            optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit);
+            optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit, &systems);
             model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
             if (guard && better_reconstruction(image, before, result->model, options.threads)) result->model = std::move(before);
             timer->lap("flips");

@@ -11,33 +11,66 @@ namespace erd {
 
 namespace {
 
-// One face's share of the normal equations. With w = (w0, w1, w2) the weights of the face's
-// corners at a pixel (w2 = 1 - w0 - w1) and b the pixel's sample, summed over the face's pixels:
-// g = sum w w^T (symmetric: g00 g01 g02 g11 g12 g22), h = sum b w, bb = sum b^2.
-struct FaceSystem {
-    std::uint32_t entry[3];
-    double g[6];
-    double h[3];
-    double bb;
-    std::uint16_t lo, hi;  // smallest and largest sample among the face's pixels
-
-    // (G v)_i for the face's values v = (a, b, c).
-    void gram_times(double a, double b, double c, double out[3]) const {
-        out[0] = g[0] * a + g[1] * b + g[2] * c;
-        out[1] = g[1] * a + g[3] * b + g[4] * c;
-        out[2] = g[2] * a + g[4] * b + g[5] * c;
+// The systems of the triangle (p0, p1, p2) for each of the N images (one, or the channel planes
+// of a colour image: the Gram matrix is the same, made once), over the pixels in spans.
+template <int N>
+void accumulate(const std::vector<Span>& spans, const Image* const* images, LatticePoint p0, LatticePoint p1,
+                LatticePoint p2, FaceSystem* out) {
+    SpanPlane l0, l1;  // the weights of corners 0 and 1 as planes
+    l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
+    l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
+    // The weights are l.at(X, Y) = (z0 + gx (X - x0)) + gy (Y - y0) with z0 = 1 for l0 and 0
+    // for l1, computed below with the same roundings in the same order: X - x0 is an exact
+    // small integer stepped by 2, and dropping l1's "0 +" changes at most the sign of a zero
+    // weight, which no sum below can see (the sums start at +0, and +0 + -0 = +0).
+    const double gx0 = l0.gx, gx1 = l1.gx;
+    double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0[N] = {}, h1[N] = {}, h2[N] = {};
+    std::uint64_t bb[N] = {};  // sum b^2 in integers: exact, and what the double sum gave while exact
+    std::uint16_t lo[N], hi[N];
+    for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0;
+    for (const Span& sp : spans) {
+        const double Y = double(2 * sp.y);
+        const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
+        const std::uint16_t* px[N];
+        for (int k = 0; k < N; ++k) px[k] = &images[k]->samples[std::size_t(sp.y) * std::size_t(images[k]->width)];
+        double a = double(2 * sp.x_begin) - l0.x0;
+        for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, a += 2.0) {
+            const double w0 = (1.0 + gx0 * a) + t0, w1 = gx1 * a + t1;
+            const double w2 = 1.0 - w0 - w1;
+            g00 += w0 * w0;
+            g01 += w0 * w1;
+            g02 += w0 * w2;
+            g11 += w1 * w1;
+            g12 += w1 * w2;
+            g22 += w2 * w2;
+            for (int k = 0; k < N; ++k) {
+                const std::uint16_t v = px[k][i];
+                const double b = double(v);
+                h0[k] += b * w0;
+                h1[k] += b * w1;
+                h2[k] += b * w2;
+                bb[k] += std::uint64_t(v) * v;
+                lo[k] = v < lo[k] ? v : lo[k];
+                hi[k] = v > hi[k] ? v : hi[k];
+            }
+        }
     }
-    // sum over the face's pixels of (approximation - b)^2 = v^T G v - 2 h.v + bb.
-    double sse(double a, double b, double c) const {
-        double gv[3];
-        gram_times(a, b, c, gv);
-        return (a * gv[0] + b * gv[1] + c * gv[2]) - 2.0 * (a * h[0] + b * h[1] + c * h[2]) + bb;
+    for (int k = 0; k < N; ++k) {
+        FaceSystem& fs = out[k];
+        const double g[6] = {g00, g01, g02, g11, g12, g22};
+        for (int j = 0; j < 6; ++j) fs.g[j] = g[j];
+        fs.h[0] = h0[k];
+        fs.h[1] = h1[k];
+        fs.h[2] = h2[k];
+        fs.bb = double(bb[k]);
+        fs.lo = lo[k];
+        fs.hi = hi[k];
+        fs.owns = true;
     }
-};
+}
 
 // Assembles the face systems of every face that owns at least one pixel, for each of the N
-// images (one, or the channel planes of a colour image: their Gram matrices are the same, made
-// once); faces[k] holds image k's.
+// images; faces[k] holds image k's.
 template <int N>
 void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces) {
     const Lattice lattice = Lattice::pixels();
@@ -48,52 +81,14 @@ void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& mo
         const EdgeInd e = 3 * f;
         const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
         if (scan_triangle(lattice, domain, p0, p1, p2, &spans) == 0) continue;
-        SpanPlane l0, l1;  // the weights of corners 0 and 1 as planes
-        l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
-        l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
-        // The weights are l.at(X, Y) = (z0 + gx (X - x0)) + gy (Y - y0) with z0 = 1 for l0 and 0
-        // for l1, computed below with the same roundings in the same order: X - x0 is an exact
-        // small integer stepped by 2, and dropping l1's "0 +" changes at most the sign of a zero
-        // weight, which no sum below can see (the sums start at +0, and +0 + -0 = +0).
-        const double gx0 = l0.gx, gx1 = l1.gx;
-        double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0[N] = {}, h1[N] = {}, h2[N] = {};
-        std::uint64_t bb[N] = {};  // sum b^2 in integers: exact, and what the double sum gave while exact
-        std::uint16_t lo[N], hi[N];
-        for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0;
-        for (const Span& sp : spans) {
-            const double Y = double(2 * sp.y);
-            const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
-            const std::uint16_t* px[N];
-            for (int k = 0; k < N; ++k) px[k] = &images[k]->samples[std::size_t(sp.y) * std::size_t(images[k]->width)];
-            double a = double(2 * sp.x_begin) - l0.x0;
-            for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, a += 2.0) {
-                const double w0 = (1.0 + gx0 * a) + t0, w1 = gx1 * a + t1;
-                const double w2 = 1.0 - w0 - w1;
-                g00 += w0 * w0;
-                g01 += w0 * w1;
-                g02 += w0 * w2;
-                g11 += w1 * w1;
-                g12 += w1 * w2;
-                g22 += w2 * w2;
-                for (int k = 0; k < N; ++k) {
-                    const std::uint16_t v = px[k][i];
-                    const double b = double(v);
-                    h0[k] += b * w0;
-                    h1[k] += b * w1;
-                    h2[k] += b * w2;
-                    bb[k] += std::uint64_t(v) * v;
-                    lo[k] = v < lo[k] ? v : lo[k];
-                    hi[k] = v > hi[k] ? v : hi[k];
-                }
-            }
-        }
+        FaceSystem fs[N];
+        accumulate<N>(spans, images, p0, p1, p2, fs);
         const std::uint32_t entry[3] = {model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1),
                                         model.corner_entry(cdt, e + 2)};
-        for (int k = 0; k < N; ++k)
-            faces[k].push_back({{entry[0], entry[1], entry[2]},
-                                {g00, g01, g02, g11, g12, g22},
-                                {h0[k], h1[k], h2[k]},
-                                double(bb[k]), lo[k], hi[k]});
+        for (int k = 0; k < N; ++k) {
+            for (int j = 0; j < 3; ++j) fs[k].entry[j] = entry[j];
+            faces[k].push_back(fs[k]);
+        }
     }
 }
 
@@ -195,6 +190,25 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
 
 }  // namespace
 
+FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
+                       std::vector<Span>* spans) {
+    FaceSystem fs;
+    if (scan_triangle(Lattice::pixels(), domain, p0, p1, p2, spans) == 0) return fs;
+    const Image* one = &image;
+    accumulate<1>(*spans, &one, p0, p1, p2, &fs);
+    return fs;
+}
+
+const FaceSystem& MeshSystems::get(const Cdt& cdt, const Image& image, FaceInd f) {
+    if (stale[f]) {
+        const EdgeInd e = 3 * f;
+        faces[f] = face_system(image, RasterDomain{cdt.max_x(), cdt.max_y()}, cdt.point(cdt.org(e)),
+                               cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)), &spans_);
+        stale[f] = 0;
+    }
+    return faces[f];
+}
+
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
                       ProgressHook progress) {
     WedgeFitOptions o;
@@ -203,11 +217,37 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
 }
 
 void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
-                      WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress) {
+                      WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress,
+                      MeshSystems* systems) {
     progress("wedge refit", 0.0);
     std::vector<FaceSystem> faces;
-    const Image* one = &image;
-    face_systems<1>(cdt, &one, *model, &faces);
+    if (systems && systems->matches(cdt)) {
+        // The same list, in the same order, as the pass over the pixels would make.
+        faces.reserve(cdt.face_count());
+        for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+            if (!systems->get(cdt, image, f).owns) continue;
+            faces.push_back(systems->faces[f]);
+            for (int j = 0; j < 3; ++j) faces.back().entry[j] = model->corner_entry(cdt, 3 * f + EdgeInd(j));
+        }
+    } else if (systems) {
+        systems->faces.assign(cdt.face_count(), FaceSystem());
+        systems->stale.assign(cdt.face_count(), 0);
+        const RasterDomain domain{cdt.max_x(), cdt.max_y()};
+        std::vector<Span> spans;
+        faces.reserve(cdt.face_count());
+        for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+            const EdgeInd e = 3 * f;
+            FaceSystem& fs = systems->faces[f];
+            fs = face_system(image, domain, cdt.point(cdt.org(e)), cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)),
+                             &spans);
+            if (!fs.owns) continue;
+            for (int j = 0; j < 3; ++j) fs.entry[j] = model->corner_entry(cdt, e + EdgeInd(j));
+            faces.push_back(fs);
+        }
+    } else {
+        const Image* one = &image;
+        face_systems<1>(cdt, &one, *model, &faces);
+    }
     progress("wedge refit", 0.5);
     solve(faces, image, options, model, stats, prior, progress);
 }

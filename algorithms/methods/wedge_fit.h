@@ -10,6 +10,7 @@
 // A value no pixel depends on keeps its thesis value. Results are clamped to [0, maxval].
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "algorithms/model/erd_model.h"
@@ -17,8 +18,58 @@
 #include "algorithms/methods/result.h"
 #include "kernel/cdt.h"
 #include "kernel/progress.h"
+#include "kernel/raster.h"
 
 namespace erd {
+
+// One face's share of the refit's normal equations. With w = (w0, w1, w2) the weights of the
+// face's corners at a pixel (w2 = 1 - w0 - w1) and b the pixel's sample, summed over the face's
+// pixels: g = sum w w^T (symmetric: g00 g01 g02 g11 g12 g22), h = sum b w, bb = sum b^2. They
+// depend on the face's corners and the image only, not on the values.
+struct FaceSystem {
+    std::uint32_t entry[3] = {0, 0, 0};  // the model's entries of the corners (set by the refit)
+    double g[6] = {0, 0, 0, 0, 0, 0};
+    double h[3] = {0, 0, 0};
+    double bb = 0;
+    std::uint16_t lo = 0xffff, hi = 0;  // smallest and largest sample among the face's pixels
+    bool owns = false;                  // false: the face owns no pixel (the rest is zero)
+
+    // (G v)_i for the face's values v = (a, b, c).
+    void gram_times(double a, double b, double c, double out[3]) const {
+        out[0] = g[0] * a + g[1] * b + g[2] * c;
+        out[1] = g[1] * a + g[3] * b + g[4] * c;
+        out[2] = g[2] * a + g[4] * b + g[5] * c;
+    }
+    // sum over the face's pixels of (approximation - b)^2 = v^T G v - 2 h.v + bb.
+    double sse(double a, double b, double c) const {
+        double gv[3];
+        gram_times(a, b, c, gv);
+        return (a * gv[0] + b * gv[1] + c * gv[2]) - 2.0 * (a * h[0] + b * h[1] + c * h[2]) + bb;
+    }
+};
+
+// The system of the triangle with corners p0, p1, p2 in that order (the order of a face's
+// corners 0, 1, 2) over the pixels it owns; spans is scratch. Bit for bit what the refit's own
+// pass over the pixels makes for such a face.
+FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
+                       std::vector<Span>* spans);
+
+// The systems of a mesh's faces by face slot, kept in step with the mesh: the refit fills them
+// when they are missing, and the flips (flips.h) rewrite those of the faces they flip, so the
+// refits after the flips need no pass over the pixels.
+// A changed face is only marked stale and made again when it is next needed (a face can change
+// many times between refits).
+struct MeshSystems {
+    std::vector<FaceSystem> faces;
+    std::vector<std::uint8_t> stale;  // by face slot: 1 = faces[f] is out of date
+
+    bool matches(const Cdt& cdt) const { return faces.size() == cdt.face_count(); }
+    void mark(FaceInd f) { stale[f] = 1; }
+    // The system of face f, made again first when stale.
+    const FaceSystem& get(const Cdt& cdt, const Image& image, FaceInd f);
+private:
+    std::vector<Span> spans_;
+};
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
 // progress: "wedge refit", half for the pass over the pixels, half for the iterations.
@@ -39,8 +90,11 @@ struct WedgeFitOptions {
 
 // As above with options. `prior`, when given, holds z_ls for the first prior->size() entries
 // (the values start from the model's current ones); other entries use their current value.
+// systems, when given: used when they match cdt, else made (and kept there) by the pass over the
+// pixels.
 void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
-                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr, ProgressHook progress = {});
+                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr, ProgressHook progress = {},
+                      MeshSystems* systems = nullptr);
 
 // The same for the channels of a colour image on one triangulation (models[c] on planes[c], all
 // with the same wedges): each channel's refit as above with the same options, the pixel pass
