@@ -39,6 +39,11 @@
 
 namespace erd {
 
+// The gradient of step 1 on a colour image (docs/DECISIONS.md "Colour methods"): that of the luma
+// plane (the caller passes the luma image), Di Zenzo's (the structure tensor's largest eigenvalue
+// and its eigenvector over the three channels' gradients), or the largest channel's gradient.
+enum class ColourGradient { luma, dizenzo, max };
+
 struct CannyParams {
     double beta = 0.055;      // fraction of grid points at or above tau_high, in (0, 1]
     double r = 0.4;           // tau_low = r * tau_high, in [0, 1]
@@ -79,7 +84,9 @@ Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_
 // destruction; the image must outlive the detector.
 class EdgeDetector {
 public:
-    explicit EdgeDetector(const Image& im);
+    // A three-channel image is detected on its colour gradient as `colour` says (dizenzo or max;
+    // luma is the caller's: it passes the luma plane).
+    explicit EdgeDetector(const Image& im, ColourGradient colour = ColourGradient::dizenzo);
     ~EdgeDetector();
     EdgeDetector(const EdgeDetector&) = delete;
     EdgeDetector& operator=(const EdgeDetector&) = delete;
@@ -94,6 +101,7 @@ public:
 
 private:
     const Image& im_;
+    ColourGradient colour_;
     std::unique_ptr<Pass> pass_;
 };
 

@@ -31,4 +31,9 @@ struct FlipStats {
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
                       const std::vector<FaceInd>* seed_faces = nullptr);
 
+// The same for a colour model (issue 17): channel c's values from models[c] on planes[c], the
+// squared error summed over the channels. One channel is the call above.
+void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
+                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces = nullptr);
+
 }  // namespace erd

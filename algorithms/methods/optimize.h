@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/options.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/model.h"
@@ -26,6 +27,11 @@ namespace erd {
 // options.wedge_fit > 0.
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
                        const std::vector<double>* line_search, WedgeFitStats* stats);
+
+// The same for a colour model: flips on the error summed over the channels, each channel's refit
+// drawn towards (*line_search)[c].
+void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* model,
+                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats);
 
 // Replaces *model (a basic model of cdt) by the optimised one: refitted values, flipped faces.
 // Does nothing unless options.optimize.
