@@ -32,17 +32,13 @@
 #include <cstdint>
 #include <memory>
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/point_rings.h"
 #include "kernel/status.h"
 
 namespace erd {
-
-// The gradient of step 1 on a colour image (docs/DECISIONS.md "Colour methods"): that of the luma
-// plane (the caller passes the luma image), Di Zenzo's (the structure tensor's largest eigenvalue
-// and its eigenvector over the three channels' gradients), or the largest channel's gradient.
-enum class ColourGradient { luma, dizenzo, max };
 
 struct CannyParams {
     double beta = 0.055;      // fraction of grid points at or above tau_high, in (0, 1]

@@ -46,7 +46,7 @@ class EdgePolylines {
 public:
     // hard: crack edges (crack_edges with canny.beta and canny.r), simplified by `crack` below.
     // gradient: the image whose gradient the (soft) detection reads when not `image` (a colour
-    // image, combined as `colour` says; canny.h ColourGradient); may be null.
+    // image, combined as `colour` says; colour.h ColourGradient); may be null.
     explicit EdgePolylines(const Image& image, bool hard = false, const Image* gradient = nullptr,
                            ColourGradient colour = ColourGradient::dizenzo);
     // Steps 1.1 and 1.2: edges with these parameters, traced into polylines.

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/filters.h"
 
 namespace erd {

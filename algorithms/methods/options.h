@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
@@ -34,7 +33,7 @@ struct ColourChoices {
     // gray model; the colour values are then assigned and refit on the final mesh.
     bool greedy_on_luma = false;
     // The ERD methods' edge detection (step 1): on the luma's gradient, Di Zenzo's colour gradient
-    // or the largest channel's (canny.h ColourGradient). The edge kind and hard (crack) edges
+    // or the largest channel's (colour.h ColourGradient). The edge kind and hard (crack) edges
     // read the luma whatever this says.
     ColourGradient edges = ColourGradient::luma;
 };
