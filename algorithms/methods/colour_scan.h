@@ -73,16 +73,18 @@ inline I16x8 load4_high(const std::uint8_t* p) {
 // the rounded value is V's high half). Unclamped (V in [0, 2^24) on the span): the high halves
 // subtract in 16 bits and square exactly (|error| <= 255), the low halves (the fractions) are
 // garbage that the shift drops. Clamped: the rounded value clamped to [0, maxval] first.
+// In unsigned 16-bit lanes, which wrap: the square of the wrapped difference is the square of the
+// error modulo 2^16, which it is below.
 template <bool Clamp>
 inline I32x4 squared(const std::uint8_t* s, U32x4 V, std::int32_t maxval) {
+    typedef std::uint16_t U16x8 __attribute__((vector_size(16)));
     if (Clamp) {
         I32x4 r = I32x4(V) >> 16;
         r = r < 0 ? 0 : r;
         r = r > maxval ? maxval : r;
-        const I16x8 e = load4_high(s) - I16x8(r << 16);
-        return I32x4(U32x4(e * e) >> 16);
+        V = U32x4(r) << 16;
     }
-    const I16x8 e = load4_high(s) - I16x8(V);
+    const U16x8 e = U16x8(load4_high(s)) - U16x8(V);
     return I32x4(U32x4(e * e) >> 16);
 }
 
