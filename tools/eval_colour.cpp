@@ -7,10 +7,13 @@
 //     --density sum|max|luma   ED/ERDED MMSODD over the channels
 //     --shared             one wedge line-search position for all channels
 //     --luma-greedy        ERDGPI's greedy loop on the luma (the cheap alternative)
+//     --edges luma|dizenzo|max  ERD step 1's gradient (ColourChoices::edges)
 //     --fit N              wedge refit iterations (GenerateOptions::wedge_fit)
+//     --flips N            rounds of data-dependent flips after the refit (GenerateOptions::flips)
 //     --real               greedy errors against the real-valued planes (round_values off)
-//     --verify             also check the mesh: the CDT of its points and constraints verifies and
-//                          has its faces, every wedge's faces carry one value in every channel
+//     --verify             also check the mesh: the triangulation of its points and constraints
+//                          (with the flips that give its faces: api::triangulate) is valid and has
+//                          its faces, every wedge's faces carry one value in every channel
 //     --no-psnr            stop after the method (bench/run.sh: load and mesh only); prints N
 // Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
 // the model's reconstruction.
@@ -25,6 +28,7 @@
 #include "algorithms/imaging/colour.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/reconstruct.h"
+#include "api/erd.h"
 #include "kernel/cdt.h"
 
 namespace {
@@ -45,18 +49,15 @@ bool read_p6(const char* path, erd::Image* im) {
     return ok && w > 0;
 }
 
-// The CDT of m's points and constraints verifies and has m's faces; in every channel each wedge's
-// faces carry one corner value (ERD models). Returns the first problem, or "".
+// The triangulation of m's points and constraints, with the flips that give m's faces where
+// they are not Delaunay (api::triangulate, as the ERD methods' data-dependent flips made them),
+// is valid and has m's faces; in every channel each wedge's faces carry one corner value (ERD
+// models). Returns the first problem, or "".
 std::string verify(const erd::Model& m) {
     erd::Cdt cdt;
-    std::vector<erd::VertInd> ids;
     std::string why;
-    if (!cdt.reset(2 * m.width - 2, 2 * m.height - 2) || !cdt.insert_points(m.vertices, &ids)) return "rebuild failed";
-    for (const auto& c : m.constraints) {
-        erd::ConstraintReport rep;
-        if (!cdt.insert_constraint(ids[c[0]], ids[c[1]], &rep) || rep.dropped_crossing) return "constraint refused";
-    }
-    if (!cdt.verify(&why)) return why;
+    if (!erd::api::triangulate(m, &cdt)) return "rebuild failed";
+    if (!cdt.verify_topology(&why)) return why;
     if (cdt.face_count() != m.faces.size() || cdt.vertex_count() != m.vertices.size()) return "face or vertex count";
     // Model face and corner of (point of corner, point of next corner).
     std::map<std::pair<std::uint64_t, std::uint64_t>, std::pair<std::size_t, int>> corner;
@@ -102,7 +103,11 @@ int main(int argc, char** argv) {
         else if (a == "--shared") o.colour.shared_wedge_position = true;
         else if (a == "--luma-greedy") o.colour.greedy_on_luma = true;
         else if (a == "--fit" && i + 1 < argc) o.wedge_fit = std::atoi(argv[++i]);
-        else if (a == "--density" && i + 1 < argc) {
+        else if (a == "--flips" && i + 1 < argc) o.flips = std::atoi(argv[++i]);
+        else if (a == "--edges" && i + 1 < argc) {
+            const std::string e = argv[++i];
+            o.colour.edges = e == "dizenzo" ? erd::ColourGradient::dizenzo : e == "max" ? erd::ColourGradient::max : erd::ColourGradient::luma;
+        } else if (a == "--density" && i + 1 < argc) {
             const std::string d = argv[++i];
             o.colour.density = d == "max" ? erd::ColourDensity::max : d == "luma" ? erd::ColourDensity::luma : erd::ColourDensity::sum;
         } else {

@@ -4,7 +4,8 @@
 # against "mesh the luma, then fit the colours" (ColourChoices::greedy_on_luma). Runs
 # tools/eval_colour.cpp (the library, channel by channel reconstruction) until the erd program
 # reads colour. Every mesh is verified (eval_colour --verify). CHOICES=1 also measures the alternatives of docs/DECISIONS.md "Colour methods"
-# at 1% (written to out/eval/colour_choices.txt, not to RESULTS.md).
+# (at 1%; the edge detector's input and the flips at every density), written to
+# out/eval/colour_choices.txt with the defaults' rows, not to RESULTS.md.
 # Usage: tools/eval_colour.sh BUILD_DIR IMAGES_DIR
 set -u
 BUILD=${1:-build}
@@ -34,6 +35,9 @@ run_case() {
         *+dluma) flags=(--density luma) ;;
         *+shared) flags=(--shared) ;;
         *+nofit) flags=(--fit 0) ;;
+        *+noflips) flags=(--flips 0) ;;
+        *+dizenzo) flags=(--edges dizenzo) ;;
+        *+emax) flags=(--edges max) ;;
     esac
     echo "$v $img $d $("$EVAL" --verify "${flags[@]}" "$m" "$d" "$IMAGES/color/$img.ppm" 2>/dev/null || echo "failed -")"
 }
@@ -50,8 +54,12 @@ if [[ ${CHOICES:-0} == 1 ]]; then
     for v in gpi+sum erdgpi+sum ed+dmax ed+dluma erded+dmax erded+dluma erdgpi+shared erded+shared erdgpi+nofit erded+nofit; do
         for img in "${imgs[@]}"; do cases+=("$v $img 1"); done
     done
+    # The edge detector's input and the flips at every density.
+    for v in erdgpi+dizenzo erded+dizenzo erdgpi+emax erded+emax erdgpi+noflips erded+noflips; do
+        for img in "${imgs[@]}"; do for d in 0.5 1 2; do cases+=("$v $img $d"); done; done
+    done
     printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"$OUT/colour_choices.txt"
-    awk '$3 == 1' "$OUT/colour_raw.txt" >>"$OUT/colour_choices.txt"
+    cat "$OUT/colour_raw.txt" >>"$OUT/colour_choices.txt"
 fi
 
 # Median of column 1 of stdin.
@@ -65,7 +73,8 @@ section=$OUT/colour_section.md
     echo "reconstruction (ERD models 4x4 supersampled). One mesh and one set of constrained edges for"
     echo "the three channels, a value per channel at each vertex or wedge; erd defaults. \"luma mesh\""
     echo "= ERDGPI's greedy loop on the luma, then every wedge given its colour values and the"
-    echo "least-squares refit on that final mesh (the cheap alternative)."
+    echo "least-squares refit and flips on that final mesh (the cheap alternative). The ERD methods flip"
+    echo "edges on the error summed over the channels (one round, as gray)."
     echo
     echo "| image | density % | N | GPI | ERDGPI | ERDGPI - GPI | ED | ERDED | ERDED - ED | luma mesh | ERDGPI - luma mesh |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
@@ -80,8 +89,9 @@ section=$OUT/colour_section.md
     g2=$(awk '{ p[$1 " " $2 " " $3] = $4 } END { for (c in p) if (c ~ /^erded /) { split(c, f, " "); print p[c] - p["ed " f[2] " " f[3]] } }' "$OUT/colour_raw.txt" | median)
     g3=$(awk '{ p[$1 " " $2 " " $3] = $4 } END { for (c in p) if (c ~ /^erdgpi /) { split(c, f, " "); print p[c] - p["erdgpi+luma " f[2] " " f[3]] } }' "$OUT/colour_raw.txt" | median)
     echo "Medians over the ${#imgs[@]} images x 3 densities: ERDGPI - GPI $g1 dB (target >= +2.0),"
-    echo "ERDED - ED $g2 dB (target >= +3.0), ERDGPI - luma mesh $g3 dB. Meshes that verify (--verify: the CDT"
-    echo "of their points and constraints verifies and has their faces; each wedge one value per channel):"
+    echo "ERDED - ED $g2 dB (target >= +3.0), ERDGPI - luma mesh $g3 dB. Meshes that verify (--verify: the"
+    echo "triangulation of their points and constraints, with the flips that give their faces, is valid and"
+    echo "has their faces; each wedge one value per channel):"
     echo "$(awk '$4 != "failed"' "$OUT/colour_raw.txt" | wc -l) of $(wc -l <"$OUT/colour_raw.txt")."
     echo "<!-- /colour -->"
 } >"$section"

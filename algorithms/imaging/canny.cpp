@@ -21,6 +21,31 @@ using namespace canny_detail;
 
 namespace {
 
+// The gradient rows of step 1 (gradient_rows.h) from the image behind `sample`: a gray image's
+// sample(x, y), or a colour image's channels combined (ColourSample).
+struct ColourSample {
+    const Image* im;
+    ColourGradient how;
+};
+
+template <class Sample, class MagRow, class Emit>
+void step1_rows(int width, int W, int H, int y_begin, int y_end, const std::vector<double>& taps, Border border,
+                const Sample& sample, MagRow mag_row, Emit emit) {
+    gradient_rows(
+        W, H, y_begin, y_end, taps, border, [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); }, mag_row,
+        emit);
+}
+
+template <class MagRow, class Emit>
+void step1_rows(int width, int W, int H, int y_begin, int y_end, const std::vector<double>& taps, Border border,
+                const ColourSample& colour, MagRow mag_row, Emit emit) {
+    const Image& im = *colour.im;
+    colour_gradient_rows(
+        W, H, y_begin, y_end, taps, border, colour.how,
+        [&](int c, int Y, float* r) { half_pixel_row(width, Y, [&](int x, int y) { return im.at(x, y, c); }, r); },
+        mag_row, emit);
+}
+
 // Monotone bins from the bit pattern of a non-negative float (sign, exponent and 6 mantissa bits:
 // 32768 bins, each 1/64 of an octave wide), so a histogram needs no prior pass for the maximum.
 // Narrow bins make the streaming pass's bound on tau_low tight (within 1.1%): on bull at beta
@@ -283,9 +308,8 @@ struct EdgeDetector::Pass {
             while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
             low = std::max(guess, float(params.r * double(bin_floor(floor_bin))));
         };
-        gradient_rows(
-            W, H, 0, H, binomial_taps(params.smoothing_order), params.border,
-            [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); }, row,
+        step1_rows(
+            width, W, H, 0, H, binomial_taps(params.smoothing_order), params.border, sample, row,
             [&](int y, const float* ax, const float* ay) {
                 float* r = row(y);
                 r[-1] = r[0];
@@ -316,9 +340,8 @@ struct EdgeDetector::Pass {
         const std::vector<double> taps = binomial_taps(params.smoothing_order);
         for (std::size_t i = 0; i < blocks; ++i) {
             const int y = int(i) * kSampleStride + kSampleStride / 2;
-            gradient_rows(
-                W, H, y, y + int(kSampleRun), taps, params.border,
-                [&](int Y, float* r) { half_pixel_row(width, Y, sample, r); },
+            step1_rows(
+                width, W, H, y, y + int(kSampleRun), taps, params.border, sample,
                 [&](int Y) { return g.data() + (i * kSampleRun + std::size_t(Y - y)) * std::size_t(W); },
                 [](int, const float*, const float*) {});
         }
@@ -453,7 +476,7 @@ Status detect_once(int width, int height, Sample sample, const CannyParams& para
 
 }  // namespace
 
-EdgeDetector::EdgeDetector(const Image& im) : im_(im) {}
+EdgeDetector::EdgeDetector(const Image& im, ColourGradient colour) : im_(im), colour_(colour) {}
 EdgeDetector::~EdgeDetector() = default;
 
 Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, CannyStats* stats) {
@@ -464,7 +487,10 @@ Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, Cann
     pass_.reset();  // the old pass goes before the new one is made
     pass_.reset(new Pass);
     const std::size_t M = std::size_t(2 * im_.width - 1) * std::size_t(2 * im_.height - 1);
-    pass_->run(im_.width, im_.height, [&](int x, int y) { return im_.at(x, y); }, params, Pass::k_of(params.beta, M));
+    if (im_.channels == 3 && colour_ != ColourGradient::luma)
+        pass_->run(im_.width, im_.height, ColourSample{&im_, colour_}, params, Pass::k_of(params.beta, M));
+    else
+        pass_->run(im_.width, im_.height, [&](int x, int y) { return im_.at(x, y); }, params, Pass::k_of(params.beta, M));
     pass_->track(params, false, edges, stats);
     return Status::success();
 }

@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/filters.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/point_rings.h"
@@ -79,7 +80,9 @@ Status detect_edges(const Image& im, const CannyParams& params, Grid<std::uint8_
 // destruction; the image must outlive the detector.
 class EdgeDetector {
 public:
-    explicit EdgeDetector(const Image& im);
+    // A three-channel image is detected on its colour gradient as `colour` says (dizenzo or max;
+    // luma is the caller's: it passes the luma plane).
+    explicit EdgeDetector(const Image& im, ColourGradient colour = ColourGradient::dizenzo);
     ~EdgeDetector();
     EdgeDetector(const EdgeDetector&) = delete;
     EdgeDetector& operator=(const EdgeDetector&) = delete;
@@ -94,6 +97,7 @@ public:
 
 private:
     const Image& im_;
+    ColourGradient colour_;
     std::unique_ptr<Pass> pass_;
 };
 

@@ -11,6 +11,12 @@ namespace erd {
 // weights of the CLI's PNG conversion. A gray image is returned as is.
 Image luma_of(const Image& im);
 
+// The gradient of edge detection's step 1 on a colour image (canny.h EdgeDetector; docs/
+// DECISIONS.md "Colour methods"): that of the luma plane (the caller passes the luma image), Di
+// Zenzo's (the structure tensor's largest eigenvalue and its eigenvector over the three channels'
+// gradients), or the largest channel's gradient.
+enum class ColourGradient { luma, dizenzo, max };
+
 // How colour_mmsodd combines the channels' MMSODDs (docs/DECISIONS.md "Colour methods").
 enum class ColourDensity {
     sum,   // d = d_R + d_G + d_B

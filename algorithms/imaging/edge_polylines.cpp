@@ -6,8 +6,8 @@
 
 namespace erd {
 
-EdgePolylines::EdgePolylines(const Image& image, bool hard)
-    : image_(image), hard_(hard), detector_(image), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1) {}
+EdgePolylines::EdgePolylines(const Image& image, bool hard, const Image* gradient, ColourGradient colour)
+    : image_(image), hard_(hard), detector_(gradient ? *gradient : image, colour), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1) {}
 
 Status EdgePolylines::detect(const CannyParams& canny) {
     if (have_edges_ && canny.beta == canny_.beta && canny.r == canny_.r && canny.modified == canny_.modified)

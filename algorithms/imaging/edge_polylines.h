@@ -45,7 +45,10 @@ enum class CrackRule { keep_sides, plain };
 class EdgePolylines {
 public:
     // hard: crack edges (crack_edges with canny.beta and canny.r), simplified by `crack` below.
-    explicit EdgePolylines(const Image& image, bool hard = false);
+    // gradient: the image whose gradient the (soft) detection reads when not `image` (a colour
+    // image, combined as `colour` says; colour.h ColourGradient); may be null.
+    explicit EdgePolylines(const Image& image, bool hard = false, const Image* gradient = nullptr,
+                           ColourGradient colour = ColourGradient::dizenzo);
     // Steps 1.1 and 1.2: edges with these parameters, traced into polylines.
     // Reports `stage` from `from` to `to` during each detect(): after the detector, the linking
     // and the tracing.

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/filters.h"
 
 namespace erd {
@@ -65,59 +66,134 @@ inline void central_differences(const float* __restrict mid, const float* __rest
 // is ever held: f (w x h, extended by `border`) is smoothed with the binomial along y (a ring of
 // taps.size() rows of f), then along x, and the central differences of three smoothed rows give
 // row y. This is exactly the composed filter (derivative * binomial) applied to the extended
-// signal. Rows y_begin .. y_end - 1 are made (0, h: all): fill(Y, row) writes row Y of f (w
-// floats), asked for once each, in increasing Y, from c + 1 rows above y_begin (rows of f are
-// clamped to the image, so a row's values do not depend on where the range starts).
-// mag_row(y) is where the magnitudes of row y go (w floats); then emit(y, gx, gy) with the
-// components of row y, whose buffers stay valid until row y + 2 is emitted.
-template <class Fill, class MagRow, class Emit>
-void gradient_rows(int w, int h, int y_begin, int y_end, const std::vector<double>& taps, Border border, Fill fill,
-                   MagRow mag_row, Emit emit) {
-    const int m = int(taps.size()), c = m / 2;
-    const std::vector<float> bt(taps.begin(), taps.end());
-    const int wf = round8(w);      // f rows and gradient rows, zero past w
-    const int ns = round8(w + 2);  // smoothed rows: columns -1 .. ns - 2
-    const int lf = c + 1;          // frame of t on the left (the extension rule fills it)
-    std::vector<float> ring(std::size_t(m) * std::size_t(wf), 0.0f), zero(std::size_t(wf), 0.0f);
-    std::vector<float> tbuf(std::size_t(lf + ns + c + 8), 0.0f), sbuf(std::size_t(3) * std::size_t(ns + 8), 0.0f);
-    std::vector<float> comp(std::size_t(4) * std::size_t(wf), 0.0f);  // gx, gy for two rows
-    std::vector<float> sq(std::size_t(wf), 0.0f);                      // gx^2 + gy^2
-    std::vector<const float*> src(static_cast<std::size_t>(m), nullptr);
-    float* const t = tbuf.data() + lf;
-    int made = std::max(0, y_begin - 1 - c);  // next row of f to generate
-    auto f_row = [&](int Y) -> const float* {
-        if (Y < 0 || Y >= h) {
-            if (border == Border::zero) return zero.data();
-            Y = Y < 0 ? 0 : h - 1;
-        }
-        for (; made <= Y; ++made) fill(made, ring.data() + std::size_t(made % m) * std::size_t(wf));
-        return ring.data() + std::size_t(Y % m) * std::size_t(wf);
+// signal. Rows are made from y_begin on, one next() each, in increasing y: fill(Y, row) writes
+// row Y of f (w floats), asked for once each, in increasing Y, from c + 1 rows above y_begin
+// (rows of f are clamped to the image, so a row's values do not depend on where the range
+// starts). next() returns gx, gy and gx^2 + gy^2 of the row (valid until the row two further is
+// made).
+template <class Fill>
+class GradientStream {
+public:
+    GradientStream(int w, int h, int y_begin, const std::vector<double>& taps, Border border, Fill fill)
+        : w_(w), h_(h), m_(int(taps.size())), c_(m_ / 2), wf_(round8(w)), ns_(round8(w + 2)), lf_(c_ + 1),
+          border_(border), fill_(fill), bt_(taps.begin(), taps.end()),
+          ring_(std::size_t(m_) * std::size_t(wf_), 0.0f), zero_(std::size_t(wf_), 0.0f),
+          tbuf_(std::size_t(lf_ + ns_ + c_ + 8), 0.0f), sbuf_(std::size_t(3) * std::size_t(ns_ + 8), 0.0f),
+          comp_(std::size_t(4) * std::size_t(wf_), 0.0f), sq_(std::size_t(wf_), 0.0f),
+          src_(static_cast<std::size_t>(m_), nullptr), made_(std::max(0, y_begin - 1 - c_)) {
+        smooth(y_begin - 1);
+        smooth(y_begin);
+    }
+
+    struct Row {
+        const float* gx;
+        const float* gy;
+        const float* sq;
     };
-    auto s_row = [&](int y) { return sbuf.data() + std::size_t((y + 3) % 3) * std::size_t(ns + 8); };
-    // Smoothed row y (y = -1 .. h) into s_row(y): column pass into t, extension of t (a column of
-    // the extended f repeats column 0 or w-1, or is zero, so t's frame does the same), row pass.
-    auto smooth = [&](int y) {
-        for (int k = 0; k < m; ++k) src[std::size_t(k)] = f_row(y + c - k);  // largest row first
-        weighted_sum(src.data(), bt.data(), m, t, wf);
-        for (int i = 1; i <= lf; ++i) {
-            t[-i] = border == Border::zero ? 0.0f : t[0];
-            t[w - 1 + i] = border == Border::zero ? 0.0f : t[w - 1];
-        }
-        for (int k = 0; k < m; ++k) src[std::size_t(k)] = t - 1 + c - k;
-        weighted_sum(src.data(), bt.data(), m, s_row(y), ns);
-    };
-    smooth(y_begin - 1);
-    smooth(y_begin);
-    for (int y = y_begin; y < y_end; ++y) {
+    Row next(int y) {
         smooth(y + 1);
         const float* mid = s_row(y) + 1;
         const float* up = s_row(y - 1) + 1;
         const float* down = s_row(y + 1) + 1;
-        float* gx = comp.data() + std::size_t(2 * (y & 1)) * std::size_t(wf);
-        float* gy = gx + wf;
-        central_differences(mid, up, down, gx, gy, sq.data(), wf);
+        float* gx = comp_.data() + std::size_t(2 * (y & 1)) * std::size_t(wf_);
+        float* gy = gx + wf_;
+        central_differences(mid, up, down, gx, gy, sq_.data(), wf_);
+        return Row{gx, gy, sq_.data()};
+    }
+
+private:
+    const float* f_row(int Y) {
+        if (Y < 0 || Y >= h_) {
+            if (border_ == Border::zero) return zero_.data();
+            Y = Y < 0 ? 0 : h_ - 1;
+        }
+        for (; made_ <= Y; ++made_) fill_(made_, ring_.data() + std::size_t(made_ % m_) * std::size_t(wf_));
+        return ring_.data() + std::size_t(Y % m_) * std::size_t(wf_);
+    }
+    float* s_row(int y) { return sbuf_.data() + std::size_t((y + 3) % 3) * std::size_t(ns_ + 8); }
+    // Smoothed row y (y = -1 .. h) into s_row(y): column pass into t, extension of t (a column of
+    // the extended f repeats column 0 or w-1, or is zero, so t's frame does the same), row pass.
+    void smooth(int y) {
+        float* const t = tbuf_.data() + lf_;
+        for (int k = 0; k < m_; ++k) src_[std::size_t(k)] = f_row(y + c_ - k);  // largest row first
+        weighted_sum(src_.data(), bt_.data(), m_, t, wf_);
+        for (int i = 1; i <= lf_; ++i) {
+            t[-i] = border_ == Border::zero ? 0.0f : t[0];
+            t[w_ - 1 + i] = border_ == Border::zero ? 0.0f : t[w_ - 1];
+        }
+        for (int k = 0; k < m_; ++k) src_[std::size_t(k)] = t - 1 + c_ - k;
+        weighted_sum(src_.data(), bt_.data(), m_, s_row(y), ns_);
+    }
+
+    int w_, h_, m_, c_;
+    int wf_;  // f rows and gradient rows, zero past w
+    int ns_;  // smoothed rows: columns -1 .. ns - 2
+    int lf_;  // frame of t on the left (the extension rule fills it)
+    Border border_;
+    Fill fill_;
+    std::vector<float> bt_, ring_, zero_, tbuf_, sbuf_;
+    std::vector<float> comp_;  // gx, gy for two rows
+    std::vector<float> sq_;    // gx^2 + gy^2
+    std::vector<const float*> src_;
+    int made_;  // next row of f to generate
+};
+
+// Rows y_begin .. y_end - 1 of the gradient of f (GradientStream; 0, h: all): mag_row(y) is where
+// the magnitudes of row y go (w floats); then emit(y, gx, gy) with the components of row y, whose
+// buffers stay valid until row y + 2 is emitted.
+template <class Fill, class MagRow, class Emit>
+void gradient_rows(int w, int h, int y_begin, int y_end, const std::vector<double>& taps, Border border, Fill fill,
+                   MagRow mag_row, Emit emit) {
+    GradientStream<Fill> g(w, h, y_begin, taps, border, fill);
+    for (int y = y_begin; y < y_end; ++y) {
+        const auto r = g.next(y);
         float* __restrict mag = mag_row(y);
-        for (int x = 0; x < w; ++x) mag[x] = std::sqrt(sq[std::size_t(x)]);
+        for (int x = 0; x < w; ++x) mag[x] = std::sqrt(r.sq[std::size_t(x)]);
+        emit(y, r.gx, r.gy);
+    }
+}
+
+// The gradient of a colour image's three channels combined into one (ColourGradient), row by row
+// as gradient_rows: fill(c, Y, row) writes row Y of channel c's f.
+//   dizenzo: the largest eigenvalue of the structure tensor sum_c (gx_c, gy_c)^T (gx_c, gy_c) is
+//            the squared magnitude, its eigenvector the direction (Di Zenzo 1986);
+//   max:     the gradient of the channel with the largest magnitude.
+template <class Fill, class MagRow, class Emit>
+void colour_gradient_rows(int w, int h, int y_begin, int y_end, const std::vector<double>& taps, Border border,
+                          ColourGradient how, Fill fill, MagRow mag_row, Emit emit) {
+    auto channel = [&](int c) { return [&fill, c](int Y, float* r) { fill(c, Y, r); }; };
+    using Channel = decltype(channel(0));
+    GradientStream<Channel> g0(w, h, y_begin, taps, border, channel(0)), g1(w, h, y_begin, taps, border, channel(1)),
+        g2(w, h, y_begin, taps, border, channel(2));
+    std::vector<float> comp(std::size_t(4) * std::size_t(w), 0.0f);  // gx, gy for two rows
+    for (int y = y_begin; y < y_end; ++y) {
+        const auto a = g0.next(y), b = g1.next(y), c = g2.next(y);
+        float* gx = comp.data() + std::size_t(2 * (y & 1)) * std::size_t(w);
+        float* gy = gx + w;
+        float* __restrict mag = mag_row(y);
+        for (std::size_t x = 0; x < std::size_t(w); ++x) {
+            if (how == ColourGradient::max) {
+                const auto& p = a.sq[x] >= b.sq[x] ? (a.sq[x] >= c.sq[x] ? a : c) : (b.sq[x] >= c.sq[x] ? b : c);
+                gx[x] = p.gx[x];
+                gy[x] = p.gy[x];
+                mag[x] = std::sqrt(p.sq[x]);
+                continue;
+            }
+            const double xx = double(a.gx[x]) * a.gx[x] + double(b.gx[x]) * b.gx[x] + double(c.gx[x]) * c.gx[x];
+            const double yy = double(a.gy[x]) * a.gy[x] + double(b.gy[x]) * b.gy[x] + double(c.gy[x]) * c.gy[x];
+            const double xy = double(a.gx[x]) * a.gy[x] + double(b.gx[x]) * b.gy[x] + double(c.gx[x]) * c.gy[x];
+            const double lambda = 0.5 * (xx + yy + std::sqrt((xx - yy) * (xx - yy) + 4.0 * xy * xy));
+            // The eigenvector of lambda, from the better conditioned of the two rows of the tensor.
+            double ex = xx >= yy ? lambda - yy : xy, ey = xx >= yy ? xy : lambda - xx;
+            const double len = std::sqrt(ex * ex + ey * ey), g = std::sqrt(lambda);
+            if (len > 0.0) {
+                ex *= g / len;
+                ey *= g / len;
+            }
+            gx[x] = float(ex);
+            gy[x] = float(ey);
+            mag[x] = float(g);
+        }
         emit(y, static_cast<const float*>(gx), static_cast<const float*>(gy));
     }
 }

@@ -25,21 +25,40 @@ void ErdChannels::assign_all(const Cdt& cdt) {
 }
 
 void ErdChannels::fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats,
-                      const ProgressHook& progress) {
+                      const ProgressHook& progress, const std::vector<std::vector<double>>* priors) {
     std::vector<const Image*> planes;
     std::vector<ErdModel*> models;
+    std::vector<const std::vector<double>*> prior;
     for (std::size_t c = 0; c < models_.size(); ++c) {
         planes.push_back(&planes_[c]);
         models.push_back(models_[c].get());
+        if (priors) prior.push_back(&(*priors)[c]);
     }
     std::vector<WedgeFitStats> each;
-    fit_wedge_values(cdt, planes, options, models, &each, nullptr, progress);
+    fit_wedge_values(cdt, planes, options, models, &each, priors ? &prior : nullptr, progress);
     *stats = WedgeFitStats();
     for (const WedgeFitStats& s : each) {
         stats->iterations = s.iterations > stats->iterations ? s.iterations : stats->iterations;
         stats->sse_before += s.sse_before;
         stats->sse_after += s.sse_after;
     }
+}
+
+std::vector<std::vector<double>> ErdChannels::values() const {
+    std::vector<std::vector<double>> out(models_.size());
+    for (std::size_t c = 0; c < models_.size(); ++c)
+        for (std::size_t i = 0; i < models_[c]->entry_count(); ++i) out[c].push_back(models_[c]->entry_value(i));
+    return out;
+}
+
+void ErdChannels::flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const {
+    std::vector<const Image*> planes;
+    std::vector<const ErdModel*> models;
+    for (std::size_t c = 0; c < models_.size(); ++c) {
+        planes.push_back(&planes_[c]);
+        models.push_back(models_[c].get());
+    }
+    improve_by_flips(cdt, planes, models, max_flips, stats, seed_faces);
 }
 
 void ErdChannels::to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const {

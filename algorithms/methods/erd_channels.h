@@ -11,6 +11,7 @@
 
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/flips.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/result.h"
 #include "algorithms/methods/wedge_fit.h"
@@ -34,7 +35,14 @@ public:
     void assign_all(const Cdt& cdt);
     // fit_wedge_values on every channel with options, each channel drawn towards and bounded
     // around its current (line-search) values; the stats add the channels' squared errors.
-    void fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats, const ProgressHook& progress = {});
+    // priors: channel c's values to draw towards and bound around instead of its current ones
+    // (the line-search values when a refit already moved them); may be null.
+    void fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats, const ProgressHook& progress = {},
+             const std::vector<std::vector<double>>* priors = nullptr);
+    // Every channel's current values (ErdModel::entry_value), channel by channel.
+    std::vector<std::vector<double>> values() const;
+    // Data-dependent flips (flips.h) on the squared error summed over the channels.
+    void flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const;
     // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 

@@ -45,9 +45,9 @@ private:
 class StepOneCounter : public ConstraintPointCounter {
 public:
     // budget: the most constrained points the parameter selection accepts (0.7 N there).
-    StepOneCounter(const Image& image, LengthRule rule, double eps_unit, bool hard, bool fallback, double budget,
-                   StepProgress* progress)
-        : chain_(image, hard), rule_(rule), eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget),
+    StepOneCounter(const Image& image, const Image* gradient, ColourGradient colour, LengthRule rule, double eps_unit,
+                   bool hard, bool fallback, double budget, StepProgress* progress)
+        : chain_(image, hard, gradient, colour), rule_(rule), eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget),
           progress_(progress) {}
 
     void detect(double beta, double r) override {
@@ -227,7 +227,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
 
     StepProgress progress(options.progress, options.request.simple >= 0 ? 1 : 2);
     if (options.detect) {
-        StepOneCounter counter(image, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
+        StepOneCounter counter(image, options.colour, options.colour_gradient, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
                                0.7 * double(options.target), &progress);
         out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                         counter);

@@ -41,6 +41,10 @@ struct InitialMeshOptions {
     // User constraints (GenerateOptions::constraints; may be null) and whether to detect edges.
     const std::vector<Polyline>* constraints = nullptr;
     bool detect = true;
+    // Colour (issue 17): the colour image whose gradient soft-edge detection reads instead of the
+    // image given (its luma), combined as colour_gradient says; null: the image given.
+    const Image* colour = nullptr;
+    ColourGradient colour_gradient = ColourGradient::luma;
     // "initial mesh" with the fraction done: each edge detection, each count, the insertion.
     ProgressHook progress;
 };

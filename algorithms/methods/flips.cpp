@@ -1,6 +1,7 @@
 #include "algorithms/methods/flips.h"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "kernel/raster.h"
@@ -9,54 +10,77 @@ namespace erd {
 
 namespace {
 
-// Squared error of the plane through (p_i, z_i) over the pixels the triangle owns.
+constexpr std::size_t kMaxChannels = 3;
+
+// Squared error of the plane through (p_i, z_i) over the pixels the triangle owns, summed over
+// the channels (planes[c] with values z_i[c]; one scan of the triangle for all of them).
 class TriangleError {
 public:
-    TriangleError(const Image& image, const Cdt& cdt) : image_(image), domain_{cdt.max_x(), cdt.max_y()} {}
+    TriangleError(std::vector<const Image*> planes, const Cdt& cdt)
+        : planes_(std::move(planes)), domain_{cdt.max_x(), cdt.max_y()} {}
 
-    double operator()(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2) {
+    double operator()(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2,
+                      const double* z2) {
         if (scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_) == 0) return 0.0;
-        SpanPlane plane;
-        plane.set(p0, z0, p1, z1, p2, z2);
-        const double dv = 2.0 * plane.gx;
-        double sse = 0.0;
-        for (const Span& sp : spans_) {
-            const std::uint16_t* px = &image_.samples[std::size_t(sp.y) * std::size_t(image_.width)];
-            double v = plane.at(double(2 * sp.x_begin), double(2 * sp.y));
-            for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, v += dv) {
-                const double d = v - double(px[i]);
-                sse += d * d;
+        double total = 0.0;
+        for (std::size_t c = 0; c < planes_.size(); ++c) {
+            const Image& image = *planes_[c];
+            SpanPlane plane;
+            plane.set(p0, z0[c], p1, z1[c], p2, z2[c]);
+            const double dv = 2.0 * plane.gx;
+            double sse = 0.0;
+            for (const Span& sp : spans_) {
+                const std::uint16_t* px = &image.samples[std::size_t(sp.y) * std::size_t(image.width)];
+                double v = plane.at(double(2 * sp.x_begin), double(2 * sp.y));
+                for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, v += dv) {
+                    const double d = v - double(px[i]);
+                    sse += d * d;
+                }
             }
+            total = c == 0 ? sse : total + sse;
         }
-        return sse;
+        return total;
+    }
+    double operator()(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2) {
+        return (*this)(p0, &z0, p1, &z1, p2, &z2);
     }
 
 private:
-    const Image& image_;
+    std::vector<const Image*> planes_;
     RasterDomain domain_;
     std::vector<Span> spans_;
 };
 
-}  // namespace
-
-void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
-                      const std::vector<FaceInd>* seed_faces, MeshSystems* systems, double min_share) {
+// The flip loop of one or C channels: channel c's corner values from models[c] on planes[c].
+// systems (one channel only) as in flips.h.
+void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
+                   std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces,
+                   MeshSystems* systems, double min_share) {
     FlipStats st;
-    if (systems && !systems->matches(*cdt)) systems = nullptr;
-    TriangleError tri_error(image, *cdt);
+    if (systems && (models.size() != 1 || !systems->matches(*cdt))) systems = nullptr;
+    TriangleError triangle_error(planes, *cdt);
+    const std::size_t C = models.size();
     const std::size_t nf = cdt->face_count();
     std::vector<double> face_sse(nf, -1.0);  // < 0: not computed yet
-    auto corner = [&](EdgeInd e) { return model.corner_value(*cdt, e); };
+    auto corner = [&](EdgeInd e) { return models[0]->corner_value(*cdt, e); };
+    // The squared error over the triangle of the corners at the origins of e0, e1, e2.
+    auto tri_error = [&](EdgeInd e0, EdgeInd e1, EdgeInd e2) {
+        double z[3][kMaxChannels];
+        const EdgeInd e[3] = {e0, e1, e2};
+        for (int i = 0; i < 3; ++i)
+            for (std::size_t c = 0; c < C; ++c) z[i][c] = models[c]->corner_value(*cdt, e[i]);
+        return triangle_error(cdt->point(cdt->org(e0)), z[0], cdt->point(cdt->org(e1)), z[1], cdt->point(cdt->org(e2)),
+                              z[2]);
+    };
     auto sse_of = [&](FaceInd f) {
         if (face_sse[f] < 0) {
             const EdgeInd e = 3 * f;
             if (systems) {
-                face_sse[f] = systems->get(*cdt, image, f).sse(corner(e), corner(e + 1), corner(e + 2));
+                face_sse[f] = systems->get(*cdt, *planes[0], f).sse(corner(e), corner(e + 1), corner(e + 2));
                 if (face_sse[f] < 0) face_sse[f] = 0;  // an exact fit's rounding residue
                 return face_sse[f];
             }
-            face_sse[f] = tri_error(cdt->point(cdt->org(e)), corner(e), cdt->point(cdt->org(e + 1)), corner(e + 1),
-                                    cdt->point(cdt->org(e + 2)), corner(e + 2));
+            face_sse[f] = tri_error(e, e + 1, e + 2);
         }
         return face_sse[f];
     };
@@ -92,12 +116,9 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
         const EdgeInd t = cdt->twin(e);
         // Faces (a,b,c) and (b,a,d) -> (c,a,d) and (d,b,c) (kernel/cdt.h).
         const EdgeInd ea = e, eb = next_edge(e), ec = prev_edge(e), ed = prev_edge(t);
-        const LatticePoint a = cdt->point(cdt->org(ea)), b = cdt->point(cdt->org(eb));
-        const LatticePoint c = cdt->point(cdt->org(ec)), d = cdt->point(cdt->org(ed));
-        const double za = corner(ea), zb = corner(eb), zc = corner(ec), zd = corner(ed);
         const double before = sse_of(face_of(e)) + sse_of(face_of(t));
         if (before < skip_below) continue;
-        const double s1 = tri_error(c, zc, a, za, d, zd), s2 = tri_error(d, zd, b, zb, c, zc);
+        const double s1 = tri_error(ec, ea, ed), s2 = tri_error(ed, eb, ec);
         ++st.tested;
         // A flip must win by more than rounding: the squared error then falls at every flip and
         // no edge flips back and forth.
@@ -120,11 +141,23 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
     if (stats) *stats = st;
 }
 
+}  // namespace
+
+void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
+                      const std::vector<FaceInd>* seed_faces, MeshSystems* systems, double min_share) {
+    flip_channels(cdt, {&image}, {&model}, max_flips, stats, seed_faces, systems, min_share);
+}
+
+void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
+                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) {
+    flip_channels(cdt, planes, models, max_flips, stats, seed_faces, nullptr, 0.0);
+}
+
 void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
                       MeshSystems* systems, MoveStats* stats) {
     MoveStats st;
     if (!systems || !systems->matches(*cdt)) return;
-    TriangleError tri_error(image, *cdt);
+    TriangleError tri_error({&image}, *cdt);
     auto corner = [&](EdgeInd e) { return model.corner_value(*cdt, e); };
     std::vector<EdgeInd> star;
     std::vector<double> zs;  // per star corner: (z_a, z_b) of the face (v, a, b)

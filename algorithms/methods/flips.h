@@ -35,6 +35,11 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
                       const std::vector<FaceInd>* seed_faces = nullptr, MeshSystems* systems = nullptr,
                       double min_share = 0.0);
 
+// The same for a colour model (issue 17): channel c's values from models[c] on planes[c], the
+// squared error summed over the channels (no systems, no skip).
+void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
+                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces = nullptr);
+
 struct MoveStats {
     std::size_t moves = 0;   // vertices moved
     std::size_t tested = 0;  // positions whose error was measured

@@ -6,6 +6,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "algorithms/methods/colour_scan.h"
 #include "algorithms/methods/heap.h"
 #include "kernel/raster_rows.h"
 
@@ -185,6 +186,8 @@ public:
         if (!options.round_values)
             for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
         track_max_ = options.max_error >= 0.0;
+        if (image.channels == 3 && image.maxval <= 255 && options.round_values && options.max_channel_error)
+            planes_.build(image.samples.data(), std::size_t(image.width) * std::size_t(image.height));
         if (options.supersampled) {
             const std::size_t w = std::size_t(image.width), h = std::size_t(image.height);
             sub_.assign(16 * w * h, 0.0f);
@@ -489,6 +492,12 @@ private:
         const std::size_t width = std::size_t(image_.width);
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
+        // 8-bit images, rounded, by the largest channel error (the default): the fixed-point scan.
+        if (round && by_max && !planes_.empty() && fixed_scan(planes, p0, p1, p2, &sum, &best, &bx, &by)) {
+            if (best >= 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
+            settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
+            return;
+        }
         // The owned pixels as spans (the ownership rule of OwnedRows, which the gray scan walks).
         scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_);
         for (const Span& sp : spans_) {
@@ -506,6 +515,73 @@ private:
         }
         if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
         settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
+    }
+
+    // The colour scan of 8-bit RGB in fixed point (colour_scan.h) over the pixels the face p0 p1 p2
+    // owns: *sum, *best (the largest squared channel error of the candidate, -1 for none) and the
+    // candidate (*bx, *by). Each channel's plane is held in 32.32 fixed point from pixel p0, and
+    // each span starts from it exactly (a span's 16.16 start is within 2^-16 of the plane). False,
+    // touching nothing, for a face whose planes are too steep for the lanes (more than 2^14 a pixel:
+    // slivers; the double scan takes those).
+    bool fixed_scan(const SpanPlane* planes, LatticePoint p0, LatticePoint p1, LatticePoint p2, double* sum,
+                    double* best, std::int32_t* bx, std::int32_t* by) {
+        constexpr double one = 4294967296.0, offset = 4611686018427387904.0;  // 2^32, 2^62
+        // round(x * 2^32) without a libm call: the offset keeps the truncation a floor.
+        const auto fixed = [&](double x) { return std::int64_t(std::uint64_t(x * one + offset + 0.5) - std::uint64_t(offset)); };
+        constexpr double steep = 16384.0;
+        std::int64_t Z[3], GX[3], GY[3];
+        std::int32_t dV[3];
+        for (int c = 0; c < 3; ++c) {
+            const SpanPlane& q = planes[c];
+            const double gx = 2.0 * q.gx, gy = 2.0 * q.gy, z = q.at(double(p0.x), double(p0.y)) + 0.5;
+            if (!(gx > -steep && gx < steep && gy > -steep && gy < steep && z > -steep && z < steep)) return false;
+            Z[c] = fixed(z);
+            GX[c] = fixed(gx);
+            GY[c] = fixed(gy);
+            dV[c] = std::int32_t((GX[c] + 32768) >> 16);
+        }
+        const std::int64_t i0 = p0.x / 2, j0 = p0.y / 2, top = (std::int64_t(image_.maxval) + 1) << 16, lim = 1 << 30;
+        const std::int32_t maxval = std::int32_t(image_.maxval);
+        const std::size_t width = std::size_t(image_.width);
+        const std::uint8_t* const plane[3] = {planes_.plane(0), planes_.plane(1), planes_.plane(2)};
+        colour_scan::Steps steps;
+        steps.set(dV);
+        std::uint64_t isum = 0;
+        std::int32_t ibest = -1, cx = 0, cy = 0;
+        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
+        for (RowRun part; rows.next(&part);) {
+            for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                std::int64_t lo, hi;
+                run.columns(&lo, &hi);
+                if (lo > hi) continue;
+                const std::int64_t j = run.j, n = hi - lo;
+                std::int32_t V0[3];
+                bool clamp = false;
+                for (int c = 0; c < 3; ++c) {
+                    const std::int64_t a = (Z[c] + (lo - i0) * GX[c] + (j - j0) * GY[c]) >> 16, e = a + n * dV[c];
+                    if (std::min(a, e) < 0 || std::max(a, e) >= top) {
+                        // Cannot happen on a basic model's faces (their planes stay within the
+                        // corner values); kept so that the lanes hold every value exactly.
+                        if (a < -lim || a > lim || e < -lim || e > lim) return false;
+                        clamp = true;
+                    }
+                    V0[c] = std::int32_t(a);
+                }
+                const std::size_t at = std::size_t(j) * width;
+                const std::uint8_t* const s[3] = {plane[0] + at + std::size_t(lo), plane[1] + at + std::size_t(lo),
+                                                  plane[2] + at + std::size_t(lo)};
+                const std::int32_t x0 = std::int32_t(lo), x1 = std::int32_t(hi);
+                const bool moved =
+                    clamp ? colour_scan::scan_span<true>(s, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx)
+                          : colour_scan::scan_span<false>(s, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx);
+                if (moved) cy = std::int32_t(j);
+            }
+        }
+        *sum = double(isum);
+        *best = double(ibest);
+        *bx = cx;
+        *by = cy;
+        return true;
     }
 
     // Stores face f's new error sum and candidate error (the candidate point is in faces_[f])
@@ -548,6 +624,7 @@ private:
     double corner_[4] = {0, 0, 0, 0};
     std::vector<FaceInd> owner_;
     std::vector<Span> spans_, touched_;
+    ColourPlanes planes_;  // 8-bit colour, rounded: the channels as planes for the fixed-point scan
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
     int channels_ = 1;

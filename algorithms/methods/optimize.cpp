@@ -32,6 +32,22 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
     }
 }
 
+void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* model,
+                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats) {
+    std::vector<FaceInd> seed;  // as the gray rounds above
+    for (int round = 0; round < options.flips; ++round) {
+        FlipStats fs;
+        model->flip(cdt, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed);
+        seed = std::move(fs.changed);
+        if (fs.flips == 0) break;
+        if (options.wedge_fit > 0) {
+            WedgeFitStats again;
+            model->fit(*cdt, wedge_fit_options(options), &again, {}, line_search);
+            if (stats) stats->sse_after = again.sse_after;
+        }
+    }
+}
+
 void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& given, Model* model,
                           WedgeFitStats* stats) {
     if (!given.optimize) return;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/options.h"
 #include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
@@ -28,6 +29,11 @@ namespace erd {
 // step with the flips so the refits after them skip the pass over the pixels.
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
                        const std::vector<double>* line_search, WedgeFitStats* stats, MeshSystems* systems = nullptr);
+
+// The same for a colour model: flips on the error summed over the channels, each channel's refit
+// drawn towards (*line_search)[c].
+void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* model,
+                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats);
 
 // Replaces *model (a basic model of cdt) by the optimised one: refitted values, flipped faces.
 // Does nothing unless options.optimize.

@@ -32,6 +32,10 @@ struct ColourChoices {
     // The cheap alternative, for comparison only: ERDGPI's greedy loop on the luma plane and its
     // gray model; the colour values are then assigned and refit on the final mesh.
     bool greedy_on_luma = false;
+    // The ERD methods' edge detection (step 1): on the luma's gradient, Di Zenzo's colour gradient
+    // or the largest channel's (colour.h ColourGradient). The edge kind and hard (crack) edges
+    // read the luma whatever this says.
+    ColourGradient edges = ColourGradient::luma;
 };
 
 // --edges: what the ERD methods take the image's edges to be (algorithms/imaging/edge_kind.h).

@@ -150,6 +150,10 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.hard_fallback = hard_fallback;
     mo.constraints = &options.constraints;
     mo.detect = options.detect;
+    if (image.channels > 1 && options.colour.edges != ColourGradient::luma) {
+        mo.colour = &image;
+        mo.colour_gradient = options.colour.edges;
+    }
     mo.progress = options.progress;
     st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
@@ -232,15 +236,30 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
     finish_erd_stats(mesh, model, timer, result);
 }
 
-void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
     if (options.wedge_fit > 0) {
-        // As gray's refit (prior and support bounds per channel); no flips in colour yet.
+        // As gray's refit (prior and support bounds per channel), then its flips.
+        std::vector<std::vector<double>> line_search;
+        if (options.flips) line_search = model->values();
         model->fit(cdt, wedge_fit_options(options), &result->stats.wedge_fit, options.progress);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
+        if (options.flips) {
+            const bool guard = result->model.edges == EdgeKind::hard;  // as gray's
+            Model before;
+            if (guard) {
+                before = result->model;
+                model->to_model(cdt, image.width, image.height, image.maxval, &before);
+            }
+            optimize_by_flips(&cdt, options, model, &line_search, &result->stats.wedge_fit);
+            model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+            if (guard && better_reconstruction(image, before, result->model, options.threads)) result->model = std::move(before);
+            timer->lap("flips");
+        }
     }
-    model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    if (!(options.wedge_fit > 0 && options.flips))
+        model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     finish_erd_stats(mesh, &model->channel(0), timer, result);
 }
 

@@ -83,8 +83,9 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
                        ErdModel* model, StageTimer* timer, GenerateResult* result,
                        const std::vector<double>* line_search_values = nullptr);
 // The same for a colour image: the refit of every channel with the same options, drawn towards
-// each channel's current (line-search) values (ErdChannels::fit); no flips; the C-channel model.
-void finish_erd_method(const Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+// each channel's current (line-search) values (ErdChannels::fit), the flips on the error summed
+// over the channels and the refit again (options.flips), the C-channel model.
+void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result);
 
 }  // namespace erd
