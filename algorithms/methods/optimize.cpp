@@ -7,7 +7,7 @@
 namespace erd {
 
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
-                       const std::vector<double>* line_search, WedgeFitStats* stats) {
+                       const std::vector<double>* line_search, WedgeFitStats* stats, WedgeFitCache* cache) {
     // Round 1 tries every edge; later rounds (after a refit moved the values) only the edges of
     // the faces the previous round flipped, where the refit moved the most.
     std::vector<FaceInd> seed;
@@ -18,7 +18,7 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
         if (fs.flips == 0) break;
         if (options.wedge_fit > 0) {
             WedgeFitStats again;
-            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search);
+            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, cache);
             if (stats) stats->sse_after = again.sse_after;
         }
     }
@@ -33,8 +33,9 @@ void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& o
     erd.assign_all(*cdt);
     std::vector<double> samples;
     for (std::size_t i = 0; i < erd.entry_count(); ++i) samples.push_back(erd.entry_value(i));
-    if (options.wedge_fit > 0) fit_wedge_values(*cdt, image, wedge_fit_options(options), &erd, stats, &samples);
-    if (options.flips) optimize_by_flips(cdt, image, options, &erd, &samples, stats);
+    WedgeFitCache cache;
+    if (options.wedge_fit > 0) fit_wedge_values(*cdt, image, wedge_fit_options(options), &erd, stats, &samples, {}, &cache);
+    if (options.flips) optimize_by_flips(cdt, image, options, &erd, &samples, stats, &cache);
     *model = basic_model(*cdt, image);
     for (VertInd v = 0; v < model->vertices.size(); ++v) model->values[v] = erd.vertex_value(v);
 }

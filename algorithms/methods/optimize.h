@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "algorithms/methods/options.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/model.h"
@@ -23,9 +24,9 @@
 namespace erd {
 
 // Flips, then refits model's values (drawn towards line_search, wedge_fit.h) when
-// options.wedge_fit > 0.
+// options.wedge_fit > 0; `cache`, when given, holds the pixel pass of the refit before.
 void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& options, ErdModel* model,
-                       const std::vector<double>* line_search, WedgeFitStats* stats);
+                       const std::vector<double>* line_search, WedgeFitStats* stats, WedgeFitCache* cache = nullptr);
 
 // Replaces *model (a basic model of cdt) by the optimised one: refitted values, flipped faces.
 // Does nothing unless options.optimize.

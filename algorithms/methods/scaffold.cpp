@@ -204,8 +204,9 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             for (std::size_t i = 0; i < model->entry_count(); ++i) kept.push_back(model->entry_value(i));
             line_search_values = &kept;
         }
+        WedgeFitCache cache;  // the refit after the flips rescans only the flipped faces
         fit_wedge_values(cdt, image, wedge_fit_options(options), model, &result->stats.wedge_fit,
-                         line_search_values, options.progress);
+                         line_search_values, options.progress, options.flips ? &cache : nullptr);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
         if (options.flips) {
@@ -218,7 +219,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
                 before = result->model;  // keeps the fields to_model leaves alone (edges)
                 model->to_model(cdt, image.width, image.height, image.maxval, &before);
             }
-            optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit);
+            optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit, &cache);
             model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
             if (guard && better_reconstruction(image, before, result->model)) result->model = std::move(before);
             timer->lap("flips");

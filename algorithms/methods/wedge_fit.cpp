@@ -37,16 +37,47 @@ struct FaceSystem {
 
 // Assembles the face systems of every face that owns at least one pixel, for each of the N
 // images (one, or the channel planes of a colour image: their Gram matrices are the same, made
-// once); faces[k] holds image k's.
+// once); faces[k] holds image k's. A cache (one image only) gives the sums of unmoved faces.
+}  // namespace
+
+// Per face index: its corners when last scanned, whether it owned a pixel, and its sums (their
+// entries are looked up again each time: the model may have renumbered them).
+struct WedgeFitCache::Faces {
+    struct Face {
+        LatticePoint p[3];
+        bool valid = false;
+        bool owns = false;
+        FaceSystem sums;
+    };
+    std::vector<Face> at;
+};
+
+WedgeFitCache::WedgeFitCache() = default;
+WedgeFitCache::~WedgeFitCache() = default;
+
+namespace {
+
 template <int N>
-void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces) {
+void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces,
+                  WedgeFitCache::Faces* cache = nullptr) {
     const Lattice lattice = Lattice::pixels();
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
     for (int k = 0; k < N; ++k) faces[k].reserve(cdt.face_count());
+    if (N != 1) cache = nullptr;
+    if (cache) cache->at.resize(cdt.face_count());
     std::vector<Span> spans;
     for (FaceInd f = 0; f < cdt.face_count(); ++f) {
         const EdgeInd e = 3 * f;
         const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
+        WedgeFitCache::Faces::Face* kept = cache ? &cache->at[f] : nullptr;
+        if (kept && kept->valid && kept->p[0] == p0 && kept->p[1] == p1 && kept->p[2] == p2) {
+            if (!kept->owns) continue;
+            FaceSystem fs = kept->sums;
+            for (int j = 0; j < 3; ++j) fs.entry[j] = model.corner_entry(cdt, e + EdgeInd(j));
+            faces[0].push_back(fs);
+            continue;
+        }
+        if (kept) *kept = {{p0, p1, p2}, true, false, FaceSystem()};
         if (scan_triangle(lattice, domain, p0, p1, p2, &spans) == 0) continue;
         SpanPlane l0, l1;  // the weights of corners 0 and 1 as planes
         l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
@@ -94,6 +125,10 @@ void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& mo
                                 {g00, g01, g02, g11, g12, g22},
                                 {h0[k], h1[k], h2[k]},
                                 double(bb[k]), lo[k], hi[k]});
+        if (kept) {
+            kept->owns = true;
+            kept->sums = faces[0].back();
+        }
     }
 }
 
@@ -203,11 +238,13 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdMod
 }
 
 void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
-                      WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress) {
+                      WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress,
+                      WedgeFitCache* cache) {
     progress("wedge refit", 0.0);
     std::vector<FaceSystem> faces;
     const Image* one = &image;
-    face_systems<1>(cdt, &one, *model, &faces);
+    if (cache && !cache->faces) cache->faces.reset(new WedgeFitCache::Faces);
+    face_systems<1>(cdt, &one, *model, &faces, cache ? cache->faces.get() : nullptr);
     progress("wedge refit", 0.5);
     solve(faces, image, options, model, stats, prior, progress);
 }

@@ -10,6 +10,7 @@
 // A value no pixel depends on keeps its thesis value. Results are clamped to [0, maxval].
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "algorithms/model/erd_model.h"
@@ -37,10 +38,27 @@ struct WedgeFitOptions {
     double support_bounds = -1.0;  // margin (fraction of the range) of the bounds; < 0: off
 };
 
+// The pixel pass of a refit, kept for the next refit of the same image: a face whose three
+// corners are where they were (in the same order) has the same pixels and the same sums, so the
+// refit after the flips rescans only the faces the flips made. The values it gives are the
+// ones a fresh pass gives, bit for bit.
+class WedgeFitCache {
+public:
+    WedgeFitCache();
+    ~WedgeFitCache();
+    WedgeFitCache(const WedgeFitCache&) = delete;
+    WedgeFitCache& operator=(const WedgeFitCache&) = delete;
+
+    struct Faces;
+    std::unique_ptr<Faces> faces;
+};
+
 // As above with options. `prior`, when given, holds z_ls for the first prior->size() entries
 // (the values start from the model's current ones); other entries use their current value.
+// `cache`, when given, is read and updated (it must have seen only this image).
 void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions& options, ErdModel* model,
-                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr, ProgressHook progress = {});
+                      WedgeFitStats* stats, const std::vector<double>* prior = nullptr, ProgressHook progress = {},
+                      WedgeFitCache* cache = nullptr);
 
 // The same for the channels of a colour image on one triangulation (models[c] on planes[c], all
 // with the same wedges): each channel's refit as above with the same options, the pixel pass
