@@ -35,9 +35,6 @@ struct FaceSystem {
     }
 };
 
-// Assembles the face systems of every face that owns at least one pixel, for each of the N
-// images (one, or the channel planes of a colour image: their Gram matrices are the same, made
-// once); faces[k] holds image k's. A cache (one image only) gives the sums of unmoved faces.
 }  // namespace
 
 // Per face index: its corners when last scanned, whether it owned a pixel, and its sums (their
@@ -57,6 +54,9 @@ WedgeFitCache::~WedgeFitCache() = default;
 
 namespace {
 
+// Assembles the face systems of every face that owns at least one pixel, for each of the N
+// images (one, or the channel planes of a colour image: their Gram matrices are the same, made
+// once); faces[k] holds image k's. A cache (one image only) gives the sums of unmoved faces.
 template <int N>
 void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces,
                   WedgeFitCache::Faces* cache = nullptr) {
