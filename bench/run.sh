@@ -126,7 +126,8 @@ fi
 # scale (issue 18): whole process at -d 1 on `erd synth` images (8-bit with noise; a 16-bit
 # heightmap without noise), and on the photos, side by side with fogleman/hmm when HMM_SRC names
 # a local checkout of it (built here, outside the repository, into $OUT), else against our GPI.
-# hmm meshes to the same vertex count (-p N -e 0) and writes STL. Targets: erdgpi and erded
+# hmm meshes to the same vertex count (-p N -e 0) and writes STL; the 16-bit heightmap is a PNG,
+# which both read (hmm's reader takes 16 bits from PNG only). Targets: erdgpi and erded
 # <= 1.0x hmm's CPU time, within 2x GPI; peak RSS <= 32 bytes per pixel for every method.
 # SCALE_SIZES (default "512 1024 2048") adds 4096 8192; SCALE_RUNS (default 3) runs per case.
 SCALE_SIZES=${SCALE_SIZES:-512 1024 2048}
@@ -148,7 +149,7 @@ scale_case() {
     px=$((w * h)); n=$(( (px + 50) / 100 ))
     if [[ -n $HMM ]]; then
         read -r wall hcpu rss < <("$TIMEIT" "$SCALE_RUNS" "$HMM" -z 1 -e 0 -p "$n" -q "$img" "$OUT/scale.stl" || echo "- - -")
-        if [[ $hcpu == - ]]; then hcpu=""; echo "scale $label: hmm could not mesh it (its reader takes 8-bit images)"
+        if [[ $hcpu == - ]]; then hcpu=""; echo "scale $label: hmm could not mesh it"
         else printf 'scale %-16s %-7s cpu %8s ms  %6s B/px\n' "$label" hmm "$hcpu" "$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')"; fi
     fi
     for m in gpi ed erded erdgpi; do
@@ -159,16 +160,17 @@ scale_case() {
         bpx=$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')
         verdict=$(awk -v b="$bpx" 'BEGIN { print (b <= 32) ? "ok" : "over" }')
         printf 'scale %-16s %-7s cpu %8s ms  %6s B/px %-4s  %s\n' "$label" "$m" "$cpu" "$bpx" "$verdict" \
-            "$(awk -v c="$cpu" -v r="$ref" -v h="$hcpu" 'BEGIN { if (r > 0) printf "%.2fx %s", c / r, (h != "" ? "hmm" : "gpi") }')"
+            "$(awk -v c="$cpu" -v r="$ref" -v h="$hcpu" -v g="$gcpu" 'BEGIN { if (r > 0) printf "%.2fx %s", c / r, (h != "" ? "hmm" : "gpi");
+                                                                     if (h != "" && g > 0) printf "  %.2fx gpi", c / g }')"
     done
 }
 for s in $SCALE_SIZES; do
     "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/synth$s.pgm" && scale_case "synth $s" "$OUT/synth$s.pgm" &&
         scale_case "synth $s soft" "$OUT/synth$s.pgm" --edges soft
-    "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/height$s.pgm" && scale_case "height16 $s" "$OUT/height$s.pgm"
+    "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/height$s.png" && scale_case "height16 $s" "$OUT/height$s.png"
 done
 for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pgm"; done
-rm -f "$OUT"/synth*.pgm "$OUT"/height*.pgm "$OUT"/scale.*
+rm -f "$OUT"/synth*.pgm "$OUT"/height*.png "$OUT"/scale.*
 # ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
 # colour (issue 17): each method on kodim03 (768 x 512) at 1% in colour beside the same method on

@@ -84,17 +84,15 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         const std::uint8_t di = dist[i];
         std::uint32_t nb[8];
         sp->ring(i, nb);
-        if (head < sources) {
-            std::uint8_t c = 0;
-            for (const std::uint32_t j : nb) c += j != kNoPoint && (flag[j] & kMain);
-            main_nb[i] = c;
-        }
+        std::uint8_t mains_around = 0;  // kept for sources only (main_nb below)
         for (int d = 0; d < 8; ++d) {
             const std::uint32_t j = nb[d];
             if (j == kNoPoint) continue;
+            const std::uint8_t fj = flag[j];
+            mains_around = std::uint8_t(mains_around + ((fj & kMain) != 0));
             const std::uint32_t lj = label[j];
             if (lj == 0) {
-                if (di < reach && (flag[j] & (kSecondary | kMain)) == kSecondary) {
+                if (di < reach && (fj & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
                     dist[j] = std::uint8_t(di + 1);
                     back[j] = std::uint8_t((d + 4) & 7);
@@ -105,6 +103,8 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
                 else meetings.push_back({j, i});
             }
         }
+        // After the ring: back[j] was set above only at secondary points, never at a source.
+        if (head < sources) main_nb[i] = mains_around;
     }
     queue.resize(sources);
     // One link per pair of components: the first found, i.e. (nearly) the shortest.

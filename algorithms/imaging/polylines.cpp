@@ -1,11 +1,45 @@
 #include "algorithms/imaging/polylines.h"
 
 #include <cstddef>
+#include <cstdint>
 
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/set_points.h"
 
 namespace erd {
+
+namespace {
+
+// The links of a ring (polyline tracing below), their count, and the lowest set bit of a byte
+// (-1 for none), made once at compile time: tracing asks them once per point and link.
+struct RingTables {
+    std::uint8_t links[256] = {};
+    std::uint8_t degree[256] = {};
+    std::int8_t lowest[256] = {};
+
+    constexpr RingTables() {
+        for (unsigned ring = 0; ring < 256; ++ring) {
+            unsigned mask = 0;
+            for (unsigned d = 0; d < 8; ++d) {
+                if (!(ring & (1u << d))) continue;
+                if ((d & 1u) && (ring & ((1u << ((d + 7) & 7u)) | (1u << ((d + 1) & 7u))))) continue;
+                mask |= 1u << d;
+            }
+            links[ring] = std::uint8_t(mask);
+            std::uint8_t k = 0;
+            for (unsigned m = mask; m; m &= m - 1) ++k;
+            degree[ring] = k;
+            std::int8_t low = -1;
+            for (int d = 7; d >= 0; --d)
+                if (ring & (1u << d)) low = std::int8_t(d);
+            lowest[ring] = low;
+        }
+    }
+};
+
+constexpr RingTables kRingTables;
+
+}  // namespace
 
 std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges) {
     const int w = edges.width, h = edges.height;
@@ -31,25 +65,14 @@ std::vector<Polyline> trace_polylines(const SortedPoints& pts) {
     // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
     // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
     // cluster of mutual "junctions" out of one junction. Directions E, SE, S, SW, W, NW, N, NE.
+    // A point's links and degree depend on its ring alone (one table lookup per point).
     std::vector<std::uint8_t> links(n, 0), degree(n, 0), used(n, 0);  // used: one bit per direction
     for (std::uint32_t i = 0; i < n; ++i) {
         const unsigned ring = pts.mask(i);
-        unsigned mask = 0;
-        for (int d = 0; d < 8; ++d) {
-            if (!(ring & (1u << d))) continue;
-            if ((d & 1) && (ring & ((1u << ((d + 7) & 7)) | (1u << ((d + 1) & 7))))) continue;
-            mask |= 1u << d;
-        }
-        links[i] = std::uint8_t(mask);
-        int k = 0;
-        for (; mask; mask &= mask - 1) ++k;
-        degree[i] = std::uint8_t(k);
+        links[i] = kRingTables.links[ring];
+        degree[i] = kRingTables.degree[ring];
     }
-    auto free_link = [&](std::uint32_t i) {
-        for (int d = 0; d < 8; ++d)
-            if ((links[i] & ~used[i]) & (1u << d)) return d;
-        return -1;
-    };
+    auto free_link = [&](std::uint32_t i) { return int(kRingTables.lowest[links[i] & ~used[i] & 0xFFu]); };
     // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
     // no free link left, or the start again.
     // Each line is traced into one scratch buffer and copied out (one allocation a line instead of

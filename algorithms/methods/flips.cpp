@@ -1,6 +1,7 @@
 #include "algorithms/methods/flips.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -13,14 +14,17 @@ namespace {
 constexpr std::size_t kMaxChannels = 3;
 
 // Squared error of the plane through (p_i, z_i) over the pixels the triangle owns, summed over
-// the channels (planes[c] with values z_i[c]; one scan of the triangle for all of them).
+// the channels (planes[c] with values z_i[c]; one scan of the triangle for all of them). With a
+// `stop`, the sum ends after the first span where base + sum >= stop: the partial sum says all
+// a rejected flip needs (sums of squares only grow, and so does a rounded sum), for a fraction
+// of the pixels.
 class TriangleError {
 public:
     TriangleError(std::vector<const Image*> planes, const Cdt& cdt)
         : planes_(std::move(planes)), domain_{cdt.max_x(), cdt.max_y()} {}
 
     double operator()(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2,
-                      const double* z2) {
+                      const double* z2, double base = 0.0, double stop = std::numeric_limits<double>::infinity()) {
         if (scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_) == 0) return 0.0;
         double total = 0.0;
         for (std::size_t c = 0; c < planes_.size(); ++c) {
@@ -36,6 +40,7 @@ public:
                     const double d = v - double(px[i]);
                     sse += d * d;
                 }
+                if (base + (c == 0 ? sse : total + sse) >= stop) return c == 0 ? sse : total + sse;
             }
             total = c == 0 ? sse : total + sse;
         }
@@ -64,13 +69,13 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     std::vector<double> face_sse(nf, -1.0);  // < 0: not computed yet
     auto corner = [&](EdgeInd e) { return models[0]->corner_value(*cdt, e); };
     // The squared error over the triangle of the corners at the origins of e0, e1, e2.
-    auto tri_error = [&](EdgeInd e0, EdgeInd e1, EdgeInd e2) {
+    auto tri_error = [&](EdgeInd e0, EdgeInd e1, EdgeInd e2, double base, double stop) {
         double z[3][kMaxChannels];
         const EdgeInd e[3] = {e0, e1, e2};
         for (int i = 0; i < 3; ++i)
             for (std::size_t c = 0; c < C; ++c) z[i][c] = models[c]->corner_value(*cdt, e[i]);
         return triangle_error(cdt->point(cdt->org(e0)), z[0], cdt->point(cdt->org(e1)), z[1], cdt->point(cdt->org(e2)),
-                              z[2]);
+                              z[2], base, stop);
     };
     auto sse_of = [&](FaceInd f) {
         if (face_sse[f] < 0) {
@@ -80,7 +85,7 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
                 if (face_sse[f] < 0) face_sse[f] = 0;  // an exact fit's rounding residue
                 return face_sse[f];
             }
-            face_sse[f] = tri_error(e, e + 1, e + 2);
+            face_sse[f] = tri_error(e, e + 1, e + 2, 0.0, std::numeric_limits<double>::infinity());
         }
         return face_sse[f];
     };
@@ -118,11 +123,15 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
         const EdgeInd ea = e, eb = next_edge(e), ec = prev_edge(e), ed = prev_edge(t);
         const double before = sse_of(face_of(e)) + sse_of(face_of(t));
         if (before < skip_below) continue;
-        const double s1 = tri_error(ec, ea, ed), s2 = tri_error(ed, eb, ec);
-        ++st.tested;
         // A flip must win by more than rounding: the squared error then falls at every flip and
-        // no edge flips back and forth.
-        if (!(s1 + s2 < before - 1e-9 * (before + 1.0))) continue;
+        // no edge flips back and forth. A sum cut short at the limit is at least the limit, and
+        // so is the whole one: the same verdict; an accepted flip has both sums whole.
+        const double limit = before - 1e-9 * (before + 1.0);
+        ++st.tested;
+        const double s1 = tri_error(ec, ea, ed, 0.0, limit);
+        if (!(s1 < limit)) continue;
+        const double s2 = tri_error(ed, eb, ec, s1, limit);
+        if (!(s1 + s2 < limit)) continue;
         const EdgeInd diag = cdt->flip_edge(e);
         if (diag == noEdge) continue;
         ++st.flips;
