@@ -1,0 +1,87 @@
+#include "algorithms/methods/memory_estimate.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/colour.h"
+#include "algorithms/imaging/edge_kind.h"
+#include "algorithms/methods/erd_params.h"
+
+namespace erd {
+
+namespace {
+
+// The fit of docs/DECISIONS.md "Memory" (peak heap of `erd generate` less the process's own):
+// bytes per pixel, per vertex of the target and, for the ERD methods on soft edges, per point
+// the widest detection keeps; 64 KiB of fixed costs.
+struct Fit {
+    double per_pixel, per_point, per_kept;
+};
+constexpr Fit kEd{11.0, 190.0, 0.0};
+constexpr Fit kGpi{3.0, 200.0, 0.0};
+constexpr Fit kErdSoft{6.0, 500.0, 20.0};
+constexpr Fit kErdHard{24.0, 500.0, 0.0};
+constexpr double kFixed = 65536.0;
+
+std::size_t target_of(const GenerateOptions& o, int width, int height) {
+    const std::int64_t n = target_points(o, width, height);
+    return n > 0 ? std::size_t(n) : 0;
+}
+
+}  // namespace
+
+std::size_t memory_bound(const MethodInfo& method, int width, int height, int channels, const GenerateOptions& options) {
+    if (width < 1 || height < 1) return 0;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    const std::size_t c = std::size_t(std::max(1, channels));
+    return pixels * method.bytes_per_pixel * c + target_of(options, width, height) * method.bytes_per_point +
+           (std::size_t(1) << 16);
+}
+
+ErdMemoryBasis erd_memory_basis(const Image& gray, const GenerateOptions& o, std::size_t target, bool erded) {
+    ErdMemoryBasis b;
+    b.hard = o.edges == EdgeChoice::hard || (o.edges == EdgeChoice::automatic && measure_edge_kind(gray).is_hard());
+    if (b.hard) return b;
+    // The detections select_erd_params (erd_params.cpp) makes: the simple test at 0.055 unless
+    // -S is given, then the table's beta (or 0.03 for a simple image, or -b), then smaller ones
+    // that the first pass covers. The widest is the largest beta.
+    b.r = o.ratio >= 0 ? o.ratio : 0.4;
+    const double pixels = double(gray.width) * double(gray.height);
+    const double density = pixels > 0 ? 100.0 * double(target) / pixels : 0.0;
+    if (o.beta >= 0) {
+        b.beta = o.beta;
+    } else {
+        b.beta = o.simple == 0 ? 0.03 : erd_beta_table(erded ? ErdMethod::erded : ErdMethod::erdgpi, density);
+        if (o.simple < 0) b.beta = std::max(b.beta, 0.055);
+    }
+    if (o.simple < 0 && o.beta >= 0) b.beta = std::max(b.beta, 0.055);
+    CannyParams cp;
+    cp.beta = std::min(1.0, b.beta);
+    cp.r = b.r;
+    b.kept = estimated_kept_points(gray, cp);
+    return b;
+}
+
+std::size_t memory_estimate(const MethodInfo& method, const Image& image, const GenerateOptions& options) {
+    if (image.width < 1 || image.height < 1) return 0;
+    const double pixels = double(image.width) * double(image.height);
+    const double c = double(std::max(1, image.channels));
+    const double n = double(target_of(options, image.width, image.height));
+    double bytes = kFixed;
+    if (method.model == ModelKind::basic) {
+        const Fit& f = std::string(method.name) == "ed" ? kEd : kGpi;
+        bytes += f.per_pixel * pixels * c + f.per_point * n;
+    } else {
+        Image luma;
+        if (image.channels > 1) luma = luma_of(image);
+        const Image& gray = image.channels > 1 ? luma : image;
+        const ErdMemoryBasis b = erd_memory_basis(gray, options, std::size_t(n), std::string(method.name) == "erded");
+        const Fit& f = b.hard ? kErdHard : kErdSoft;
+        bytes += f.per_pixel * pixels + 2.0 * pixels * (c - 1.0) * 2.0 + f.per_point * n * c + f.per_kept * double(b.kept);
+    }
+    return std::min(std::size_t(bytes), memory_bound(method, image.width, image.height, image.channels, options));
+}
+
+}  // namespace erd
