@@ -42,7 +42,7 @@ std::size_t memory_bound(const MethodInfo& method, int width, int height, int ch
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     const std::size_t c = std::size_t(std::max(1, channels));
     return pixels * method.bytes_per_pixel * c + target_of(options, width, height) * method.bytes_per_point +
-           (std::size_t(1) << 16);
+           kMemoryBoundFixed;
 }
 
 ErdMemoryBasis erd_memory_basis(const Image& gray, const GenerateOptions& o, std::size_t target, bool erded) {

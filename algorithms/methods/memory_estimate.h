@@ -16,8 +16,12 @@
 
 namespace erd {
 
+// The fixed part of the bound: the fits' fixed costs beyond the process's own 2 MiB are 0.8-1.6 MB.
+constexpr std::size_t kMemoryBoundFixed = std::size_t(2) << 20;
+
 // Heap bytes at the peak of a run on a width x height image (channels as given), an upper bound
-// whatever the content. 0 for an empty size.
+// whatever the content: the registry's factors per pixel and per vertex + kMemoryBoundFixed.
+// 0 for an empty size.
 std::size_t memory_bound(const MethodInfo& method, int width, int height, int channels, const GenerateOptions& options);
 
 // Heap bytes at the peak of a run on this image: within 25% of the measured peak on photos,
