@@ -327,7 +327,11 @@ struct EdgeDetector::Pass {
         const float guess = float(kGuessMargin * params.r * double(g[k]));
         const double scale = double(W) * double(H) / double(n);
         *expected = std::size_t(double(count_at_least(g.data(), n, guess)) * scale);
-        if (at_estimate) *at_estimate = std::size_t(double(count_at_least(g.data(), n, float(params.r * double(g[k])))) * scale);
+        if (at_estimate) {
+            // The pass keeps no zero magnitude (a flat image keeps nothing).
+            const float bound = std::max(float(params.r * double(g[k])), std::nextafter(0.0f, 1.0f));
+            *at_estimate = std::size_t(double(count_at_least(g.data(), n, bound)) * scale);
+        }
         return guess;
     }
 
@@ -460,11 +464,10 @@ std::size_t estimated_kept_points(const Image& im, const CannyParams& params) {
     EdgeDetector::Pass pass;
     pass.pl = Plane(2 * im.width - 1, 2 * im.height - 1);
     const std::size_t M = std::size_t(pass.pl.w) * std::size_t(pass.pl.h);
-    std::size_t expected = 0, at_estimate = 0;
-    const float guess = pass.sampled_bound(
-        im.width, [&](int x, int y) { return im.at(x, y); }, params, EdgeDetector::Pass::k_of(params.beta, M), &expected,
-        &at_estimate);
-    return guess > 0.0f ? std::min(at_estimate, M) : M;  // too few rows to sample: the whole grid bounds it
+    std::size_t expected = 0, at_estimate = M;  // too few rows to sample: the whole grid bounds it
+    pass.sampled_bound(im.width, [&](int x, int y) { return im.at(x, y); }, params,
+                       EdgeDetector::Pass::k_of(params.beta, M), &expected, &at_estimate);
+    return std::min(at_estimate, M);
 }
 
 EdgeDetector::EdgeDetector(const Image& im) : im_(im) {}
