@@ -188,6 +188,7 @@ mem_case() {
     px=$((w * h))
     for d in $MEM_DENSITIES; do
         for m in gpi ed erded erdgpi; do
+            [[ $# -gt 0 && $m != erd* ]] && continue  # the flags are the ERD methods': gpi and ed ran already
             extra=(); [[ $m == erd* ]] && extra=("$@")
             rm -f "$OUT/mem.json"
             if ! "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -d "$d" -i "$img" -o "$OUT/mem.$m" --stats "$OUT/mem.json" >/dev/null 2>&1; then
