@@ -9,6 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/reconstruct.h"
@@ -100,31 +101,33 @@ Options thesis_options() {
 std::size_t memory_estimate(Method m, int width, int height, const Options& options) {
     const MethodInfo* e = entry_of(m);
     if (!e || width < 1 || height < 1) return 0;
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    std::int64_t n = target_points(options.generate, width, height);
-    if (n < 0) n = 0;
-    // The registry's factors (measured, with headroom); 64 KiB covers fixed costs on tiny images.
-    return pixels * e->bytes_per_pixel + std::size_t(n) * e->bytes_per_point + (std::size_t(1) << 16);
+    return memory_bound(*e, width, height, 1, options.generate);
+}
+
+std::size_t memory_estimate(Method m, const ImageView& image, const Options& options) {
+    const MethodInfo* e = entry_of(m);
+    Image copy;
+    if (!e || !copy_view(image, &copy)) return 0;
+    return erd::memory_estimate(*e, copy, options.generate);
 }
 
 Status generate(Method m, const ImageView& image, const Options& options, Model* model, GenerateInfo* info) {
     if (!model) return Status::bad_input("generate: no model to fill");
-    if (options.max_memory) {
-        // The size checks of copy_view come first so the estimate never sees a nonsense size.
-        if (image.width >= 1 && image.height >= 1) {
-            std::size_t need = memory_estimate(m, image.width, image.height, options);
-            if (need > options.max_memory)
-                return Status::failure("meshing a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                                       " image with " + method_name(m) + " needs about " + std::to_string(need) +
-                                       " bytes, more than max_memory " + std::to_string(options.max_memory));
-        }
-    }
     const MethodInfo* entry = entry_of(m);
     if (!entry) return Status::bad_input("generate: no such method");
 
     Image copy;
     Status st = copy_view(image, &copy);
     if (!st) return st;
+    if (options.max_memory) {
+        // From the content (the ERD methods sample step 1's gradient), once the copy exists:
+        // the size alone bounds an edge-rich image and would refuse most photos 3 times over.
+        const std::size_t need = erd::memory_estimate(*entry, copy, options.generate);
+        if (need > options.max_memory)
+            return Status::failure("meshing a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                   " image with " + method_name(m) + " needs about " + std::to_string(need) +
+                                   " bytes, more than max_memory " + std::to_string(options.max_memory));
+    }
     GenerateResult result;
     st = entry->run(copy, options.generate, &result);
     if (!st) return st;

@@ -85,7 +85,8 @@ struct Options {
     // parameters.
     GenerateOptions generate;
     ExactMode exact = ExactMode::fail;
-    // Refuse (Code::runtime, before allocating) when memory_estimate() exceeds this many bytes.
+    // Refuse (Code::runtime, before meshing) when memory_estimate(m, image, options) exceeds this
+    // many bytes.
     // 0 = no limit.
     std::size_t max_memory = 0;
     // Threads: generate.threads (1 by default; 0 = the machine's processors) runs the image
@@ -107,10 +108,16 @@ struct GenerateInfo {
     std::vector<StageTime> stages;  // wall time per stage
 };
 
-// Upper estimate of the bytes a generate() call allocates at its peak for a width x height
-// image with this method and target (the model it returns included). See docs/DECISIONS.md,
-// "Memory", for how it was measured.
+// Upper bound of the bytes a generate() call allocates at its peak for a width x height gray
+// image with this method and target (the model it returns included), whatever the content: the
+// edge-richest images measured, so 2-4 times the peak of a photo with an ERD method.
 std::size_t memory_estimate(Method m, int width, int height, const Options& options);
+
+// The same peak estimated from the image itself, within 25% of the measured peak (docs/DECISIONS.md
+// "Memory" has the table): ED and GPI from the size and the target; ERDED and ERDGPI also from
+// the edge kind and the points step 1 keeps, which a sample of 1.6% of its rows gives (a few
+// percent of step 1's time). Never above the bound above. max_memory is checked against this one.
+std::size_t memory_estimate(Method m, const ImageView& image, const Options& options);
 
 // Meshes `image` with method `m`. *model receives the mesh (coordinates doubled, faces with
 // positive orientation; algorithms/model/model.h), with the view's channel count (a colour view

@@ -173,6 +173,56 @@ for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pg
 rm -f "$OUT"/synth*.pgm "$OUT"/height*.png "$OUT"/scale.*
 # ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
+# memory (issues 18, 19): the peak memory of every method at -d 1 and 0.1, one run per case,
+# whole process (getrusage from --stats), on `erd synth` images (hard by measurement, and soft
+# with --edges soft: its noise under Canny is the edge-richest step 1 there is), 16-bit
+# heightmaps and the photos. Targets: peak <= 32 bytes per pixel; the estimate the memory cap
+# compares (memory_estimate_bytes) within 25% of the peak. MEM_SIZES (default "512 1024 2048";
+# "4096 8192" for the issue's whole range), MEM_DENSITIES (default "1 0.1").
+MEM_SIZES=${MEM_SIZES:-512 1024 2048}
+MEM_DENSITIES=${MEM_DENSITIES:-1 0.1}
+mem_over=0 mem_off=0 mem_cases=0
+# mem_case LABEL IMAGE [ERD FLAGS...]: one line per method and density.
+mem_case() {
+    local label=$1 img=$2 w h px d m peak est extra bpx err
+    shift 2
+    read -r w h < <("$ERD" info "$img" | awk '/^size:/ { print $2, $4 }')
+    px=$((w * h))
+    for d in $MEM_DENSITIES; do
+        for m in gpi ed erded erdgpi; do
+            [[ $# -gt 0 && $m != erd* ]] && continue  # the flags are the ERD methods': gpi and ed ran already
+            extra=(); [[ $m == erd* ]] && extra=("$@")
+            rm -f "$OUT/mem.json"
+            if ! "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -d "$d" -i "$img" -o "$OUT/mem.$m" --stats "$OUT/mem.json" >/dev/null 2>&1; then
+                echo "memory $label $m -d $d: erd generate failed"; mem_over=$((mem_over + 1)); continue
+            fi
+            peak=$(sed -n 's/.*"peak_memory_bytes":\([0-9]*\).*/\1/p' "$OUT/mem.json")
+            est=$(sed -n 's/.*"memory_estimate_bytes":\([0-9]*\).*/\1/p' "$OUT/mem.json")
+            bpx=$(awk -v r="$peak" -v p="$px" 'BEGIN { printf "%.1f", r / p }')
+            err=$(awk -v e="$est" -v r="$peak" 'BEGIN { printf "%+.0f", 100 * (e / r - 1) }')
+            awk -v b="$bpx" 'BEGIN { exit !(b > 32) }' && mem_over=$((mem_over + 1))
+            awk -v e="$err" 'BEGIN { exit !(e > 25 || e < -25) }' && mem_off=$((mem_off + 1))
+            mem_cases=$((mem_cases + 1))
+            printf 'memory %-16s -d %-4s %-7s peak %8.1f MB %6s B/px %-4s  estimate %8.1f MB %5s%% %s\n' "$label" "$d" "$m" \
+                "$(awk -v r="$peak" 'BEGIN { printf "%.1f", r / 1048576 }')" "$bpx" \
+                "$(awk -v b="$bpx" 'BEGIN { print (b <= 32) ? "ok" : "over" }')" \
+                "$(awk -v e="$est" 'BEGIN { printf "%.1f", e / 1048576 }')" "$err" \
+                "$(awk -v e="$err" 'BEGIN { print (e <= 25 && e >= -25) ? "ok" : "off" }')"
+        done
+    done
+}
+for s in $MEM_SIZES; do
+    if "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/msynth$s.pgm"; then
+        mem_case "synth $s" "$OUT/msynth$s.pgm"
+        mem_case "synth $s soft" "$OUT/msynth$s.pgm" --edges soft
+    fi
+    "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/mheight$s.pgm" && mem_case "height16 $s" "$OUT/mheight$s.pgm"
+    rm -f "$OUT/msynth$s.pgm" "$OUT/mheight$s.pgm"
+done
+for f in lena peppers bull; do [[ -f $IMAGES/$f.pgm ]] && mem_case "$f" "$IMAGES/$f.pgm"; done
+rm -f "$OUT"/mem.*
+echo "memory: $mem_cases cases: $mem_over above 32 B/px, $mem_off with the estimate more than 25% off the peak"
+# ---------------------------------------------------------------------------------------------
 # colour (issue 17): each method on kodim03 (768 x 512) at 1% in colour beside the same method on
 # the image's luma, side by side in one run: whole process of tools/eval_colour.cpp --no-psnr
 # (read the P6, mesh; the library's methods, until the erd program reads colour), CPU medians,

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
@@ -272,13 +273,12 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     st = check_target(n, image.width, image.height);
     if (!st) return rep.fail(Status::bad_input(in + ": " + st.message));
 
-    // Refused up front when the estimated peak does not fit (cli/memory_cap.h).
-    api::Method api_method;
-    if (api::method_from_name(method->name, &api_method)) {
-        api::Options api_opt;
-        api_opt.generate = opt;
+    // Refused up front when the estimated peak does not fit (cli/memory_cap.h): estimated from
+    // the image read (algorithms/methods/memory_estimate.h), within 25% of the measured peak.
+    std::size_t need = 0;
+    {
         // The library's estimate plus the process itself (binary, stdio, buffers): 2 MiB.
-        const std::size_t need = api::memory_estimate(api_method, image.width, image.height, api_opt) + (std::size_t(2) << 20);
+        need = memory_estimate(*method, image, opt) + (std::size_t(2) << 20);
         const std::size_t cap = have_cap ? max_memory : available_memory();
         st = check_memory(need, cap, have_cap,
                           escape_name(in) + ": meshing " + std::to_string(image.width) + " x " + std::to_string(image.height) +
@@ -365,6 +365,7 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
         }
         gs.total_seconds = seconds_since(t_start);
         gs.peak_memory_bytes = peak_memory_bytes();
+        gs.memory_estimate_bytes = (long long)need;
         st = outputs.stage(stats_out, stats_json(gs));
         if (!st) return rep.fail(st);
     }

@@ -70,6 +70,7 @@ std::string stats_json(const GenerateStats& s) {
         stages += (i ? "," : "") + JsonObject().str("name", s.stages[i].name).num("seconds", s.stages[i].seconds).text();
     j.raw("stages", stages + "]");
     j.num("total_seconds", s.total_seconds).integer("peak_memory_bytes", s.peak_memory_bytes);
+    j.integer("memory_estimate_bytes", s.memory_estimate_bytes);
     if (s.has_psnr) j.num("psnr", s.psnr);
     return j.text() + "\n";
 }

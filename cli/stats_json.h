@@ -4,7 +4,7 @@
 //   points {requested, achieved}, vertices, faces, constrained_vertices, constrained_edges,
 //   dropped_constraints, parameters ({beta, r, l, epsilon, simple, edges} or null for ED/GPI),
 //   stop (greedy stop rule, or null), stages [{name, seconds}], total_seconds,
-//   peak_memory_bytes, psnr (only with --psnr-report; null when infinite).
+//   peak_memory_bytes, memory_estimate_bytes, psnr (only with --psnr-report; null when infinite).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -33,6 +33,7 @@ struct GenerateStats {
     std::vector<StageTime> stages;   // the method's stages, then the CLI's (read, write, psnr)
     double total_seconds = 0;        // wall time of the whole command
     long long peak_memory_bytes = 0; // getrusage ru_maxrss
+    long long memory_estimate_bytes = 0;  // what the memory cap compared (the estimate + the process's 2 MiB)
     bool has_psnr = false;
     double psnr = 0;
 };

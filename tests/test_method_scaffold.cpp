@@ -9,6 +9,7 @@
 #include "algorithms/imaging/edge_polylines.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/exact_count.h"
+#include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/scaffold.h"
 #include "api/erd.h"
@@ -34,7 +35,7 @@ TEST_CASE("method registry: one row per method, read by the API and the thesis n
         api::Options o;
         o.generate.points = 100;
         CHECK(api::memory_estimate(ids[i], 100, 100, o) ==
-              10000 * table[i].bytes_per_pixel + 100 * table[i].bytes_per_point + 65536);
+              10000 * table[i].bytes_per_pixel + 100 * table[i].bytes_per_point + kMemoryBoundFixed);
     }
     CHECK(table[0].model == ModelKind::basic);
     CHECK(table[3].model == ModelKind::erd);

@@ -330,7 +330,7 @@ struct EdgeDetector::Pass {
     // small to rank. *expected: the sample's count at or above the guess, scaled to the grid.
     template <class Sample>
     float sampled_bound(int width, Sample sample, const CannyParams& params, std::size_t k_high,
-                        std::size_t* expected) const {
+                        std::size_t* expected, std::size_t* at_estimate = nullptr) const {
         *expected = 0;
         const int W = pl.w, H = pl.h;
         const std::size_t blocks = std::size_t(H / kSampleStride), n = blocks * kSampleRun * std::size_t(W);
@@ -348,7 +348,13 @@ struct EdgeDetector::Pass {
         const std::size_t k = std::size_t(rank) - 1;  // the rank-th largest
         std::nth_element(g.begin(), g.begin() + std::ptrdiff_t(k), g.end(), std::greater<float>());
         const float guess = float(kGuessMargin * params.r * double(g[k]));
-        *expected = std::size_t(double(count_at_least(g.data(), n, guess)) * (double(W) * double(H)) / double(n));
+        const double scale = double(W) * double(H) / double(n);
+        *expected = std::size_t(double(count_at_least(g.data(), n, guess)) * scale);
+        if (at_estimate) {
+            // The pass keeps no zero magnitude (a flat image keeps nothing).
+            const float bound = std::max(float(params.r * double(g[k])), std::nextafter(0.0f, 1.0f));
+            *at_estimate = std::size_t(double(count_at_least(g.data(), n, bound)) * scale);
+        }
         return guess;
     }
 
@@ -475,6 +481,17 @@ Status detect_once(int width, int height, Sample sample, const CannyParams& para
 }
 
 }  // namespace
+
+std::size_t estimated_kept_points(const Image& im, const CannyParams& params) {
+    if (im.width <= 0 || im.height <= 0 || !check_params(params)) return 0;
+    EdgeDetector::Pass pass;
+    pass.pl = Plane(2 * im.width - 1, 2 * im.height - 1);
+    const std::size_t M = std::size_t(pass.pl.w) * std::size_t(pass.pl.h);
+    std::size_t expected = 0, at_estimate = M;  // too few rows to sample: the whole grid bounds it
+    pass.sampled_bound(im.width, [&](int x, int y) { return im.at(x, y); }, params,
+                       EdgeDetector::Pass::k_of(params.beta, M), &expected, &at_estimate);
+    return std::min(at_estimate, M);
+}
 
 EdgeDetector::EdgeDetector(const Image& im, ColourGradient colour) : im_(im), colour_(colour) {}
 EdgeDetector::~EdgeDetector() = default;

@@ -101,6 +101,12 @@ private:
     std::unique_ptr<Pass> pass_;
 };
 
+// How many points the streaming pass of a detection with these parameters keeps (its strong
+// points, hardly more), estimated from the rows it samples for its own first bound: about 3% of
+// a pass. The peak memory of step 1 grows with it (api/erd.h memory_estimate). The whole
+// half-pixel grid for an image too small to sample; 0 for an empty image or bad parameters.
+std::size_t estimated_kept_points(const Image& im, const CannyParams& params);
+
 // The width x height edge map (1 = edge) of points from EdgeDetector::detect.
 Grid<std::uint8_t> edge_map(const SortedPoints& points, int width, int height);
 

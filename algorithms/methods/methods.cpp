@@ -9,13 +9,12 @@ namespace erd {
 
 namespace {
 
-// Memory factors: the peak resident memory of `erd generate` (/usr/bin/time, max RSS) on bull,
-// lena, bull at 2x, a synth image of 1024x768 and 2048x2048 and white noise at 0.5% and 3%, less
-// the 2 MiB of the process itself, fitted as bytes per pixel + bytes per vertex: ED 11 + 185,
-// GPI 3 + 184; ERDED and ERDGPI 90 + 900 on the edge-rich images (synth, noise), 32 B/pixel in
-// all on bull (the edge planes and polylines grow with the edges). The factors are 3-12% above
-// every measured ED and GPI peak; for the ERD methods they are the edge-rich case, so an image
-// with few edges uses 3-4 times less (docs/DECISIONS.md, Memory).
+// Memory factors of the size bound (memory_estimate.h memory_bound): the peak resident memory of
+// `erd generate` (/usr/bin/time, max RSS) on bull, lena, bull at 2x, a synth image of 1024x768
+// and 2048x2048 and white noise at 0.5% and 3%, less the 2 MiB of the process itself, fitted as
+// bytes per pixel + bytes per vertex: ED 11 + 185, GPI 3 + 184; ERDED and ERDGPI 90 + 900 on the
+// edge-rich images (synth, noise). A bound whatever the content, so 3-4 times the peak of a
+// photo with an ERD method; the cap uses the estimate from the image (docs/DECISIONS.md, Memory).
 const MethodInfo kMethods[] = {
     {"ed", "error diffusion on the MMSODD (thesis 3.2.1, ywb), basic model", ModelKind::basic, "ywb", "idnotpx", 12, 200,
      generate_ed},
