@@ -39,6 +39,20 @@ void random_points(Cdt* cdt, int count, std::uint32_t seed) {
     }
 }
 
+// A ridge image's initial ERD mesh with `extra` random points (seeded) and its wedge values: the
+// mesh the flip and move tests change; *constraints gets its constrained edges before.
+ErdModel ridge_mesh(const Image& im, std::uint32_t seed, Cdt* cdt, std::vector<std::array<VertInd, 2>>* constraints) {
+    InitialMeshOptions mo;
+    mo.target = 150;
+    InitialMesh mesh;
+    REQUIRE(build_initial_mesh(im, mo, cdt, &mesh).ok());
+    random_points(cdt, 60, seed);
+    cdt->export_constraints(constraints);
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(*cdt);
+    return model;
+}
+
 }  // namespace
 
 TEST_CASE("kernel flip_edge: unconstrained convex edges only; a flip twice is the identity", "[flips][kernel]") {
@@ -75,16 +89,9 @@ TEST_CASE("kernel flip_edge: unconstrained convex edges only; a flip twice is th
 
 TEST_CASE("data-dependent flips lower the squared error and keep constraints and wedges", "[flips]") {
     const Image im = ridge(48, 40);
-    InitialMeshOptions mo;
-    mo.target = 150;
     Cdt cdt;
-    InitialMesh mesh;
-    REQUIRE(build_initial_mesh(im, mo, &cdt, &mesh).ok());
-    random_points(&cdt, 60, 3);
     std::vector<std::array<VertInd, 2>> cons_before, cons_after;
-    cdt.export_constraints(&cons_before);
-    ErdModel model(im, WedgeValueOptions{});
-    model.assign_all(cdt);
+    ErdModel model = ridge_mesh(im, 3, &cdt, &cons_before);
     FlipStats fs;
     improve_by_flips(&cdt, im, model, 100000, &fs);
     CHECK(fs.flips > 0);
@@ -126,17 +133,10 @@ TEST_CASE("kernel move_vertex: free interior vertices only, inside their star", 
 
 TEST_CASE("vertex moves lower the squared error and keep the count, constraints and topology", "[flips]") {
     const Image im = ridge(48, 40);
-    InitialMeshOptions mo;
-    mo.target = 150;
     Cdt cdt;
-    InitialMesh mesh;
-    REQUIRE(build_initial_mesh(im, mo, &cdt, &mesh).ok());
-    random_points(&cdt, 60, 5);
     std::vector<std::array<VertInd, 2>> cons_before, cons_after;
-    cdt.export_constraints(&cons_before);
+    ErdModel model = ridge_mesh(im, 5, &cdt, &cons_before);
     const std::size_t n = cdt.vertex_count();
-    ErdModel model(im, WedgeValueOptions{});
-    model.assign_all(cdt);
     MeshSystems systems;
     WedgeFitOptions o;
     WedgeFitStats before;
