@@ -21,11 +21,9 @@ Grid<double> colour_mmsodd(const Image& im, int smoothing_order, ColourDensity h
     if (im.channels == 1) return mmsodd(im, smoothing_order, threads);
     if (how == ColourDensity::luma) return mmsodd(luma_of(im), smoothing_order, threads);
     Grid<double> d = mmsodd_channel(im, 0, smoothing_order, threads);
-    for (int c = 1; c < im.channels; ++c) {
-        const Grid<double> dc = mmsodd_channel(im, c, smoothing_order, threads);
-        for (std::size_t i = 0; i < d.size(); ++i)
-            d.data[i] = how == ColourDensity::sum ? d.data[i] + dc.data[i] : std::max(d.data[i], dc.data[i]);
-    }
+    for (int c = 1; c < im.channels; ++c)
+        mmsodd_channel_into(im, c, smoothing_order, how == ColourDensity::sum ? MmsoddInto::add : MmsoddInto::max, &d,
+                            threads);
     return d;
 }
 

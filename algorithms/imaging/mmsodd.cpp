@@ -28,7 +28,7 @@ namespace {
 // mmsodd_zero's threads can run side by side.
 template <class T>
 void mmsodd_zero_rows(const T* samples, int w, int h, const std::vector<double>& b, std::size_t stride, int y0, int y1,
-                      Grid<double>* grid) {
+                      MmsoddInto into, Grid<double>* grid) {
     Grid<double>& out = *grid;
 
     // Noise removal first, then the derivatives, as two filtering passes that each extend their
@@ -81,7 +81,8 @@ void mmsodd_zero_rows(const T* samples, int w, int h, const std::vector<double>&
             const double fxx = (mid[x + 2] + mid[x]) - 2.0 * mid[x + 1];
             const double fyy = (down[x + 1] + up[x + 1]) - 2.0 * mid[x + 1];
             const double fxy = 0.25 * ((down[x + 2] - down[x]) - (up[x + 2] - up[x]));
-            o[x] = mmsodd_value(fxx, fyy, fxy);
+            const double v = mmsodd_value(fxx, fyy, fxy);
+            o[x] = into == MmsoddInto::store ? v : into == MmsoddInto::add ? o[x] + v : std::max(o[x], v);
         }
     }
 }
@@ -90,12 +91,18 @@ void mmsodd_zero_rows(const T* samples, int w, int h, const std::vector<double>&
 // the c + 2 rows above it that the band before it smoothed too, a cost only a band that short
 // would notice.
 template <class T>
+void mmsodd_zero_into(const T* samples, int w, int h, const std::vector<double>& b, int threads, std::size_t stride,
+                      MmsoddInto into, Grid<double>* out) {
+    if (w <= 0 || h <= 0) return;
+    parallel_rows(0, std::size_t(h), threads, std::max<std::size_t>(16, rows_for(std::size_t(1) << 15, std::size_t(w))), [&](std::size_t y0, std::size_t y1) {
+        mmsodd_zero_rows(samples, w, h, b, stride, int(y0), int(y1), into, out);
+    });
+}
+
+template <class T>
 Grid<double> mmsodd_zero(const T* samples, int w, int h, const std::vector<double>& b, int threads, std::size_t stride = 1) {
     Grid<double> out(w, h);
-    if (w <= 0 || h <= 0) return out;
-    parallel_rows(0, std::size_t(h), threads, std::max<std::size_t>(16, rows_for(std::size_t(1) << 15, std::size_t(w))), [&](std::size_t y0, std::size_t y1) {
-        mmsodd_zero_rows(samples, w, h, b, stride, int(y0), int(y1), &out);
-    });
+    mmsodd_zero_into(samples, w, h, b, threads, stride, MmsoddInto::store, &out);
     return out;
 }
 
@@ -131,6 +138,12 @@ Grid<double> mmsodd(const Image& im, int smoothing_order, int threads) {
 Grid<double> mmsodd_channel(const Image& im, int channel, int smoothing_order, int threads) {
     return mmsodd_zero(im.samples.data() + channel, im.width, im.height, smoothing_taps(smoothing_order), threads,
                        std::size_t(im.channels));
+}
+
+void mmsodd_channel_into(const Image& im, int channel, int smoothing_order, MmsoddInto into, Grid<double>* out,
+                         int threads) {
+    mmsodd_zero_into(im.samples.data() + channel, im.width, im.height, smoothing_taps(smoothing_order), threads,
+                     std::size_t(im.channels), into, out);
 }
 
 }  // namespace erd

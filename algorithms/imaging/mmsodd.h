@@ -29,6 +29,13 @@ Grid<double> mmsodd(const Image& im, int smoothing_order, int threads = 1);
 // without the plane's copy.
 Grid<double> mmsodd_channel(const Image& im, int channel, int smoothing_order, int threads = 1);
 
+// How mmsodd_channel_into combines a channel's value v with *out's (of the image's size): out = v,
+// out + v, or max(out, v), pixel by pixel. The channels of a colour density are combined into
+// one plane so, without a second image-sized plane.
+enum class MmsoddInto { store, add, max };
+void mmsodd_channel_into(const Image& im, int channel, int smoothing_order, MmsoddInto into, Grid<double>* out,
+                         int threads = 1);
+
 // The MMSODD by its definition: the passes above with whole-image filters, any border, four
 // image-sized temporaries. mmsodd() serves Border::replicate with it; tests use it as the
 // reference for the one-sweep form of the zero border.
