@@ -63,8 +63,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool ok = framed_read(framer, stream, chunk, &bytes, &reads);
     if (ok && stream.compare(0, bytes.size(), bytes) != 0) std::abort();
     if (kind == 0) {
-        const bool bad_start = stream.size() >= 2 && static_cast<unsigned char>(stream[0]) != 0x89 &&
-                               !(stream[0] == 'P' && (stream[1] == '2' || stream[1] == '5'));
+        // A start no reader takes is refused from the first read (PNG, JPEG, PGM/PPM, PAM are
+        // read further, as cli/framing.cpp frames them).
+        const auto u = [&](std::size_t i) { return static_cast<unsigned char>(stream[i]); };
+        const bool jpeg = stream.size() >= 3 && u(0) == 0xff && u(1) == 0xd8 && u(2) == 0xff;
+        const bool pnm = stream[0] == 'P' && (stream[1] == '2' || stream[1] == '3' || stream[1] == '5' ||
+                                              stream[1] == '6' || stream[1] == '7');
+        const bool bad_start = stream.size() >= 2 && u(0) != 0x89 && !jpeg && !pnm;
         if (bad_start && reads > 1) std::abort();
         erd::Image whole, framed;
         std::string w;

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "algorithms/imaging/synth.h"
@@ -18,6 +19,12 @@ using namespace output_test;
 
 TEST_CASE("memory estimate: within 25% of the measured peak of erd generate", "[memory]") {
     if (!erd_test::need_binary()) return;
+    if (std::getenv("ERD_SANITIZED")) {
+        // The sanitizers' shadow memory and quarantine multiply every peak; the plain build's
+        // run of this test is the check.
+        WARN("sanitized build: the estimate is fitted to the plain binary's peaks, not compared here");
+        return;
+    }
     using namespace erd_test;
     TempDir dir;
     const std::string synth = dir.file("s.pgm"), height = dir.file("h.pgm");

@@ -88,6 +88,8 @@ def generate(
     alpha_min: float = ...,
     alpha_max: float = ...,
     edge_zero_radius: int = ...,
+    flips: int = ...,
+    moves: int = ...,
     aa_errors: int = ...,
     triangles: int = ...,
     maxval: int = ...,

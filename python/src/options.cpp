@@ -47,6 +47,7 @@ const std::vector<Spec>& specs() {
         {"alpha_max", Kind::real, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.alpha_max = v; }},
         {"edge_zero_radius", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.edge_zero_radius = int(v); }},
         {"flips", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.flips = int(v); }},
+        {"moves", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.moves = int(v); }},
         {"aa_errors", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.supersampled_errors = v == 1; }},
         {"maxval", Kind::integer, 1, 65535, [](GenerateArgs* a, double v) { a->maxval = (long long)v; }},
         {"max_memory", Kind::integer, 0, 9e18, [](GenerateArgs* a, double v) { a->options.max_memory = std::size_t(v); }},
