@@ -32,7 +32,7 @@ for src in $targets; do
     # FUZZ_SHORT_SECONDS caps the targets of FUZZ_SHORT (make test's smoke runs keep them short).
     [[ " ${FUZZ_SHORT:-fuzz_framing fuzz_erdz} " == *" $name "* && -n ${FUZZ_SHORT_SECONDS:-} ]] && (( secs > FUZZ_SHORT_SECONDS )) && secs=$FUZZ_SHORT_SECONDS
     if $B/$name "$corpus" $( [[ -d $seeds ]] && echo "$seeds") $dict -max_total_time="$secs" \
-        -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
+        -artifact_prefix=$B/ -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >$B/$name.log 2>&1; then
         execs=$(grep -E 'stat::number_of_executed_units' $B/$name.log | awk '{print $2}')
         echo "PASS $name execs=$execs corpus=$(ls "$corpus" | wc -l) seconds=$secs"
     else

@@ -39,8 +39,9 @@ constexpr std::uint64_t kFreeSamples = std::uint64_t(1) << 22;
 // A DHT segment's tables (payload p, len bytes): each a class/id byte, 16 code counts summing to
 // at most 256, then that many symbols. stb 2.27 builds its tables from counts summing above 256
 // and writes past its 257-entry array (found by fuzz_jpeg: fuzz/corpus/fuzz_jpeg/
-// regress_dht_over_256), so they are refused here first.
-Status check_dht(const unsigned char* p, std::size_t len) {
+// regress_dht_over_256), so they are refused here first. Each table read sets its bit in
+// *defined: bit id for DC tables, bit 4 + id for AC tables.
+Status check_dht(const unsigned char* p, std::size_t len, unsigned* defined) {
     std::size_t i = 0;
     while (i < len) {
         if (len - i < 17) return Status::bad_input("JPEG corrupt: Huffman table (DHT) cut short");
@@ -49,7 +50,31 @@ Status check_dht(const unsigned char* p, std::size_t len) {
         for (std::size_t k = 1; k <= 16; ++k) n += p[i + k];
         if (n > 256) return Status::bad_input("JPEG corrupt: Huffman table (DHT) with " + std::to_string(n) + " codes (at most 256)");
         if (len - i - 17 < n) return Status::bad_input("JPEG corrupt: Huffman table (DHT) longer than its segment");
+        *defined |= 1u << ((p[i] >> 4) * 4 + (p[i] & 15));
         i += 17 + n;
+    }
+    return Status::success();
+}
+
+// A scan header (SOS payload p, len bytes) may only use Huffman tables defined before it: stb
+// 2.27 decodes with whatever its unset table holds and indexes past its arrays (found by
+// fuzz_jpeg: regress_scan_undefined_table). A baseline scan uses its components' DC and AC
+// tables; a progressive DC scan the DC table on its first pass (Ah = 0) and none when refining;
+// a progressive AC scan the AC table.
+Status check_sos(const unsigned char* p, std::size_t len, unsigned defined, bool progressive) {
+    if (len < 1 || len < 1 + 2 * std::size_t(p[0]) + 3 || p[0] == 0)
+        return Status::bad_input("JPEG corrupt: scan header (SOS) of " + std::to_string(len + 2) + " bytes");
+    const unsigned ns = p[0];
+    const unsigned ss = p[1 + 2 * ns], ah = p[3 + 2 * ns] >> 4;
+    const bool dc = !progressive || (ss == 0 && ah == 0), ac = !progressive || ss > 0;
+    for (unsigned c = 0; c < ns; ++c) {
+        const unsigned td = p[2 + 2 * c] >> 4, ta = p[2 + 2 * c] & 15;
+        const char* missing = dc && (td > 3 || !(defined >> td & 1))        ? "DC"
+                              : ac && (ta > 3 || !(defined >> (4 + ta) & 1)) ? "AC"
+                                                                              : nullptr;
+        if (missing)
+            return Status::bad_input(std::string("JPEG corrupt: a scan uses Huffman table ") + missing + " " +
+                                     std::to_string(*missing == 'D' ? td : ta) + ", which no DHT segment before it defines");
     }
     return Status::success();
 }
@@ -60,6 +85,7 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
     if (n < 3 || d[0] != 0xff || d[1] != 0xd8 || d[2] != 0xff) return Status::bad_input(wrong_magic(d, n));
     std::size_t pos = 2;
     bool frame = false;
+    unsigned tables = 0;  // Huffman tables defined so far (check_dht)
     for (;;) {
         if (pos >= n) return Status::bad_input("JPEG truncated: the file ends before the image data (no SOS marker)");
         if (d[pos] != 0xff)
@@ -76,7 +102,7 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
         if (pos + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
         const unsigned char* s = d + pos + 2;
         if (m == 0xc4)
-            if (Status st = check_dht(s, len - 2); !st) return st;
+            if (Status st = check_dht(s, len - 2, &tables); !st) return st;
         if (const char* kind = unsupported_frame(m))
             return Status::bad_input(std::string("JPEG is ") + kind + " (frame marker " + hex2(m) +
                                      "): erd reads baseline and progressive Huffman JPEG; convert it to PNG");
@@ -105,24 +131,30 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
             hd->width = int(w);
             hd->height = int(h);
         }
+        if (m == 0xda) {  // start of scan: entropy-coded data follows
+            if (!frame) return Status::bad_input("JPEG corrupt: image data (SOS) before any frame header");
+            if (Status st = check_sos(s, len - 2, tables, hd->progressive); !st) return st;
+            pos += len;
+            break;
+        }
         pos += len;
-        if (m == 0xda) break;  // start of scan: entropy-coded data follows
     }
-    if (!frame) return Status::bad_input("JPEG corrupt: image data (SOS) before any frame header");
     // In entropy-coded data every FF byte is followed by 00 or a marker, so FF D9 after the first
     // scan is the end-of-image marker; a file without it was cut short (stb would decode the
     // missing part as flat gray without a word).
-    // The Huffman tables between the scans of a progressive file are checked the same way (FF C4
-    // is a marker there too).
+    // The Huffman tables and scan headers between the scans of a progressive file are checked the
+    // same way (FF C4 and FF DA are markers there too).
     bool end = false;
     for (std::size_t k = pos; k + 1 < n; ++k) {
         if (d[k] != 0xff) continue;
-        if (d[k + 1] == 0xd9) { end = true; break; }
-        if (d[k + 1] != 0xc4) continue;
-        if (k + 4 > n) return Status::bad_input("JPEG truncated: the file ends inside the FFC4 marker");
+        const unsigned m = d[k + 1];
+        if (m == 0xd9) { end = true; break; }
+        if (m != 0xc4 && m != 0xda) continue;
+        if (k + 4 > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " marker");
         const std::size_t len = std::size_t(d[k + 2]) << 8 | d[k + 3];
-        if (len < 2 || k + 2 + len > n) return Status::bad_input("JPEG truncated: the file ends inside the FFC4 segment");
-        if (Status st = check_dht(d + k + 4, len - 2); !st) return st;
+        if (len < 2 || k + 2 + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
+        Status st = m == 0xc4 ? check_dht(d + k + 4, len - 2, &tables) : check_sos(d + k + 4, len - 2, tables, hd->progressive);
+        if (!st) return st;
         k += 1 + len;
     }
     if (!end) return Status::bad_input("JPEG truncated: no end-of-image marker (FF D9) after the image data");

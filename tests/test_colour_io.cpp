@@ -161,7 +161,8 @@ TEST_CASE("JPEG seeds: gray, colour 4:2:0 and 4:4:4, progressive 1xN, equal chan
     for (const Bad& b : {Bad{"truncated.jpg", "JPEG truncated: no end-of-image marker"},
                          Bad{"cmyk_8x8.jpg", "JPEG has 4 components (CMYK or YCCK)"},
                          Bad{"progressive_huge.jpg", "JPEG 16000 x 16000 in 549 bytes is more than 4096 samples a byte"},
-                         Bad{"regress_dht_over_256", "Huffman table (DHT) with 2023 codes (at most 256)"}}) {
+                         Bad{"regress_dht_over_256", "Huffman table (DHT) with 2023 codes (at most 256)"},
+                         Bad{"regress_scan_undefined_table", "a scan uses Huffman table AC 1, which no DHT segment before it defines"}}) {
         INFO(b.file);
         Image im;
         erd::Status s = decode(slurp(d + b.file), &im);
@@ -175,6 +176,13 @@ TEST_CASE("JPEG seeds: gray, colour 4:2:0 and 4:4:4, progressive 1xN, equal chan
     arith[sof + 1] = '\xc9';
     Image im;
     CHECK_THAT(decode(arith, &im).message, Catch::Contains("JPEG is arithmetic-coded"));
+    // A baseline scan naming a DC table no DHT defined (the seed defines DC 0 and AC 0 only).
+    std::string undefined = slurp(d + "gray_8x8.jpg");
+    const std::size_t sos = undefined.find("\xff\xda");
+    REQUIRE(sos != std::string::npos);
+    REQUIRE(undefined[sos + 6] == '\x00');  // Td/Ta of the one component
+    undefined[sos + 6] = '\x20';
+    CHECK_THAT(decode(undefined, &im).message, Catch::Contains("a scan uses Huffman table DC 2, which no DHT segment before it defines"));
 }
 
 TEST_CASE("hostile colour inputs: one line each, Code::input", "[io][colour]") {
