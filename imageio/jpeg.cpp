@@ -36,6 +36,27 @@ const char* unsupported_frame(unsigned m) {
 constexpr std::uint64_t kMaxSamplesPerByte = 4096;
 constexpr std::uint64_t kFreeSamples = std::uint64_t(1) << 22;
 
+// What the markers before a scan have defined: Huffman tables (bit id for DC, 4 + id for AC),
+// quantisation tables (bit id), and the frame's components (id, quantisation table).
+struct Tables {
+    unsigned huffman = 0, quant = 0;
+    unsigned components = 0;
+    unsigned char id[3] = {}, quant_of[3] = {};
+};
+
+// A DQT segment's tables: each a precision/id byte, then 64 values of 1 or 2 bytes.
+Status check_dqt(const unsigned char* p, std::size_t len, unsigned* defined) {
+    std::size_t i = 0;
+    while (i < len) {
+        const unsigned pq = p[i] >> 4, tq = p[i] & 15;
+        if (pq > 1 || tq > 3) return Status::bad_input("JPEG corrupt: quantisation table (DQT) with a bad precision or id");
+        if (len - i - 1 < 64 * (pq + 1)) return Status::bad_input("JPEG corrupt: quantisation table (DQT) cut short");
+        *defined |= 1u << tq;
+        i += 1 + 64 * (pq + 1);
+    }
+    return Status::success();
+}
+
 // A DHT segment's tables (payload p, len bytes): each a class/id byte, 16 code counts summing to
 // at most 256, then that many symbols. stb 2.27 builds its tables from counts summing above 256
 // and writes past its 257-entry array (found by fuzz_jpeg: fuzz/corpus/fuzz_jpeg/
@@ -56,12 +77,14 @@ Status check_dht(const unsigned char* p, std::size_t len, unsigned* defined) {
     return Status::success();
 }
 
-// A scan header (SOS payload p, len bytes) may only use Huffman tables defined before it: stb
-// 2.27 decodes with whatever its unset table holds and indexes past its arrays (found by
-// fuzz_jpeg: regress_scan_undefined_table). A baseline scan uses its components' DC and AC
-// tables; a progressive DC scan the DC table on its first pass (Ah = 0) and none when refining;
-// a progressive AC scan the AC table.
-Status check_sos(const unsigned char* p, std::size_t len, unsigned defined, bool progressive) {
+// A scan header (SOS payload p, len bytes) may only use tables defined before it: stb 2.27
+// decodes with whatever its unset tables hold (uninitialised memory), indexes past its Huffman
+// arrays (found by fuzz_jpeg: regress_scan_undefined_table) and multiplies by garbage
+// quantisation values (regress_scan_undefined_quant). A baseline scan uses its components' DC and
+// AC tables; a progressive DC scan the DC table on its first pass (Ah = 0) and none when refining;
+// a progressive AC scan the AC table. Each component's quantisation table must be defined too.
+Status check_sos(const unsigned char* p, std::size_t len, const Tables& t, bool progressive) {
+    const unsigned defined = t.huffman;
     if (len < 1 || len < 1 + 2 * std::size_t(p[0]) + 3 || p[0] == 0)
         return Status::bad_input("JPEG corrupt: scan header (SOS) of " + std::to_string(len + 2) + " bytes");
     const unsigned ns = p[0];
@@ -75,6 +98,10 @@ Status check_sos(const unsigned char* p, std::size_t len, unsigned defined, bool
         if (missing)
             return Status::bad_input(std::string("JPEG corrupt: a scan uses Huffman table ") + missing + " " +
                                      std::to_string(*missing == 'D' ? td : ta) + ", which no DHT segment before it defines");
+        for (unsigned f = 0; f < t.components; ++f)
+            if (t.id[f] == p[1 + 2 * c] && !(t.quant >> (t.quant_of[f] & 15) & 1))
+                return Status::bad_input("JPEG corrupt: a scan uses quantisation table " + std::to_string(t.quant_of[f]) +
+                                         ", which no DQT segment before it defines");
     }
     return Status::success();
 }
@@ -85,7 +112,7 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
     if (n < 3 || d[0] != 0xff || d[1] != 0xd8 || d[2] != 0xff) return Status::bad_input(wrong_magic(d, n));
     std::size_t pos = 2;
     bool frame = false;
-    unsigned tables = 0;  // Huffman tables defined so far (check_dht)
+    Tables tables;  // defined so far
     for (;;) {
         if (pos >= n) return Status::bad_input("JPEG truncated: the file ends before the image data (no SOS marker)");
         if (d[pos] != 0xff)
@@ -102,7 +129,9 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
         if (pos + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
         const unsigned char* s = d + pos + 2;
         if (m == 0xc4)
-            if (Status st = check_dht(s, len - 2, &tables); !st) return st;
+            if (Status st = check_dht(s, len - 2, &tables.huffman); !st) return st;
+        if (m == 0xdb)
+            if (Status st = check_dqt(s, len - 2, &tables.quant); !st) return st;
         if (const char* kind = unsupported_frame(m))
             return Status::bad_input(std::string("JPEG is ") + kind + " (frame marker " + hex2(m) +
                                      "): erd reads baseline and progressive Huffman JPEG; convert it to PNG");
@@ -130,6 +159,11 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
                 return Status::bad_input("JPEG corrupt: frame header too short for its " + std::to_string(hd->components) + " components");
             hd->width = int(w);
             hd->height = int(h);
+            tables.components = unsigned(hd->components);
+            for (int c = 0; c < hd->components; ++c) {
+                tables.id[c] = s[6 + 3 * c];
+                tables.quant_of[c] = s[8 + 3 * c];
+            }
         }
         if (m == 0xda) {  // start of scan: entropy-coded data follows
             if (!frame) return Status::bad_input("JPEG corrupt: image data (SOS) before any frame header");
@@ -142,18 +176,20 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
     // In entropy-coded data every FF byte is followed by 00 or a marker, so FF D9 after the first
     // scan is the end-of-image marker; a file without it was cut short (stb would decode the
     // missing part as flat gray without a word).
-    // The Huffman tables and scan headers between the scans of a progressive file are checked the
-    // same way (FF C4 and FF DA are markers there too).
+    // The Huffman and quantisation tables and the scan headers between the scans of a progressive
+    // file are checked the same way (FF C4, FF DB and FF DA are markers there too).
     bool end = false;
     for (std::size_t k = pos; k + 1 < n; ++k) {
         if (d[k] != 0xff) continue;
         const unsigned m = d[k + 1];
         if (m == 0xd9) { end = true; break; }
-        if (m != 0xc4 && m != 0xda) continue;
+        if (m != 0xc4 && m != 0xda && m != 0xdb) continue;
         if (k + 4 > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " marker");
         const std::size_t len = std::size_t(d[k + 2]) << 8 | d[k + 3];
         if (len < 2 || k + 2 + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
-        Status st = m == 0xc4 ? check_dht(d + k + 4, len - 2, &tables) : check_sos(d + k + 4, len - 2, tables, hd->progressive);
+        Status st = m == 0xc4   ? check_dht(d + k + 4, len - 2, &tables.huffman)
+                    : m == 0xdb ? check_dqt(d + k + 4, len - 2, &tables.quant)
+                                : check_sos(d + k + 4, len - 2, tables, hd->progressive);
         if (!st) return st;
         k += 1 + len;
     }

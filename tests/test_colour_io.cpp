@@ -162,7 +162,8 @@ TEST_CASE("JPEG seeds: gray, colour 4:2:0 and 4:4:4, progressive 1xN, equal chan
                          Bad{"cmyk_8x8.jpg", "JPEG has 4 components (CMYK or YCCK)"},
                          Bad{"progressive_huge.jpg", "JPEG 16000 x 16000 in 549 bytes is more than 4096 samples a byte"},
                          Bad{"regress_dht_over_256", "Huffman table (DHT) with 2023 codes (at most 256)"},
-                         Bad{"regress_scan_undefined_table", "a scan uses Huffman table AC 1, which no DHT segment before it defines"}}) {
+                         Bad{"regress_scan_undefined_table", "a scan uses Huffman table AC 1, which no DHT segment before it defines"},
+                         Bad{"regress_scan_undefined_quant", "a scan uses quantisation table 0, which no DQT segment before it defines"}}) {
         INFO(b.file);
         Image im;
         erd::Status s = decode(slurp(d + b.file), &im);
@@ -183,6 +184,11 @@ TEST_CASE("JPEG seeds: gray, colour 4:2:0 and 4:4:4, progressive 1xN, equal chan
     REQUIRE(undefined[sos + 6] == '\x00');  // Td/Ta of the one component
     undefined[sos + 6] = '\x20';
     CHECK_THAT(decode(undefined, &im).message, Catch::Contains("a scan uses Huffman table DC 2, which no DHT segment before it defines"));
+    // A frame component naming a quantisation table no DQT defined (the seed defines table 0).
+    std::string unquant = slurp(d + "gray_8x8.jpg");
+    REQUIRE(unquant[sof + 12] == '\x00');  // Tq of the one component
+    unquant[sof + 12] = '\x03';
+    CHECK_THAT(decode(unquant, &im).message, Catch::Contains("a scan uses quantisation table 3, which no DQT segment before it defines"));
 }
 
 TEST_CASE("hostile colour inputs: one line each, Code::input", "[io][colour]") {
