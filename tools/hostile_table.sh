@@ -442,6 +442,10 @@ case_ "JPEG progressive, 16000x16000 in 549 bytes" 2 info progressive_huge.jpg
 case_ "JPEG CMYK" 2 info cmyk_8x8.jpg
 cp "$J/regress_dht_over_256" dht.jpg
 case_ "JPEG Huffman table of 2023 codes (stb overflow)" 2 info dht.jpg
+cp "$J/regress_scan_undefined_table" undefined.jpg
+case_ "JPEG scan with a Huffman table no DHT defines (stb reads past its tables, then asserts)" 2 info undefined.jpg
+cp "$J/regress_scan_undefined_quant" noquant.jpg
+case_ "JPEG without a quantisation table (stb multiplies by uninitialised memory)" 2 info noquant.jpg
 case_ "JPEG progressive 1x7 (info)" 0 info progressive_1x7.jpg
 case_ "JPEG progressive 1x7 (generate)" 2 generate -q -m gpi -i progressive_1x7.jpg -o o.model -n 4
 case_ "JPEG start marker only" 2 info soi.jpg
