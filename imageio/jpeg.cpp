@@ -84,7 +84,6 @@ Status check_dht(const unsigned char* p, std::size_t len, unsigned* defined) {
 // AC tables; a progressive DC scan the DC table on its first pass (Ah = 0) and none when refining;
 // a progressive AC scan the AC table. Each component's quantisation table must be defined too.
 Status check_sos(const unsigned char* p, std::size_t len, const Tables& t, bool progressive) {
-    const unsigned defined = t.huffman;
     if (len < 1 || len < 1 + 2 * std::size_t(p[0]) + 3 || p[0] == 0)
         return Status::bad_input("JPEG corrupt: scan header (SOS) of " + std::to_string(len + 2) + " bytes");
     const unsigned ns = p[0];
@@ -92,8 +91,8 @@ Status check_sos(const unsigned char* p, std::size_t len, const Tables& t, bool 
     const bool dc = !progressive || (ss == 0 && ah == 0), ac = !progressive || ss > 0;
     for (unsigned c = 0; c < ns; ++c) {
         const unsigned td = p[2 + 2 * c] >> 4, ta = p[2 + 2 * c] & 15;
-        const char* missing = dc && (td > 3 || !(defined >> td & 1))        ? "DC"
-                              : ac && (ta > 3 || !(defined >> (4 + ta) & 1)) ? "AC"
+        const char* missing = dc && (td > 3 || !(t.huffman >> td & 1))        ? "DC"
+                              : ac && (ta > 3 || !(t.huffman >> (4 + ta) & 1)) ? "AC"
                                                                               : nullptr;
         if (missing)
             return Status::bad_input(std::string("JPEG corrupt: a scan uses Huffman table ") + missing + " " +
@@ -104,6 +103,16 @@ Status check_sos(const unsigned char* p, std::size_t len, const Tables& t, bool 
                                          ", which no DQT segment before it defines");
     }
     return Status::success();
+}
+
+// The segments that define or use tables (DHT, DQT, SOS), wherever they are in the file; others pass.
+Status check_tables(unsigned m, const unsigned char* p, std::size_t len, Tables* t, bool progressive) {
+    switch (m) {
+        case 0xc4: return check_dht(p, len, &t->huffman);
+        case 0xdb: return check_dqt(p, len, &t->quant);
+        case 0xda: return check_sos(p, len, *t, progressive);
+        default: return Status::success();
+    }
 }
 
 }  // namespace
@@ -128,10 +137,8 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
         if (len < 2) return Status::bad_input("JPEG corrupt: marker " + hex2(m) + " has length " + std::to_string(len));
         if (pos + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
         const unsigned char* s = d + pos + 2;
-        if (m == 0xc4)
-            if (Status st = check_dht(s, len - 2, &tables.huffman); !st) return st;
-        if (m == 0xdb)
-            if (Status st = check_dqt(s, len - 2, &tables.quant); !st) return st;
+        if (m == 0xda && !frame) return Status::bad_input("JPEG corrupt: image data (SOS) before any frame header");
+        if (Status st = check_tables(m, s, len - 2, &tables, hd->progressive); !st) return st;
         if (const char* kind = unsupported_frame(m))
             return Status::bad_input(std::string("JPEG is ") + kind + " (frame marker " + hex2(m) +
                                      "): erd reads baseline and progressive Huffman JPEG; convert it to PNG");
@@ -165,13 +172,8 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
                 tables.quant_of[c] = s[8 + 3 * c];
             }
         }
-        if (m == 0xda) {  // start of scan: entropy-coded data follows
-            if (!frame) return Status::bad_input("JPEG corrupt: image data (SOS) before any frame header");
-            if (Status st = check_sos(s, len - 2, tables, hd->progressive); !st) return st;
-            pos += len;
-            break;
-        }
         pos += len;
+        if (m == 0xda) break;  // start of scan: entropy-coded data follows
     }
     // In entropy-coded data every FF byte is followed by 00 or a marker, so FF D9 after the first
     // scan is the end-of-image marker; a file without it was cut short (stb would decode the
@@ -187,10 +189,7 @@ Status jpeg_header(const unsigned char* d, std::size_t n, const ImageLimits& lim
         if (k + 4 > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " marker");
         const std::size_t len = std::size_t(d[k + 2]) << 8 | d[k + 3];
         if (len < 2 || k + 2 + len > n) return Status::bad_input("JPEG truncated: the file ends inside the " + hex2(m) + " segment");
-        Status st = m == 0xc4   ? check_dht(d + k + 4, len - 2, &tables.huffman)
-                    : m == 0xdb ? check_dqt(d + k + 4, len - 2, &tables.quant)
-                                : check_sos(d + k + 4, len - 2, tables, hd->progressive);
-        if (!st) return st;
+        if (Status st = check_tables(m, d + k + 4, len - 2, &tables, hd->progressive); !st) return st;
         k += 1 + len;
     }
     if (!end) return Status::bad_input("JPEG truncated: no end-of-image marker (FF D9) after the image data");
