@@ -223,33 +223,85 @@ for f in lena peppers bull; do [[ -f $IMAGES/$f.pgm ]] && mem_case "$f" "$IMAGES
 rm -f "$OUT"/mem.*
 echo "memory: $mem_cases cases: $mem_over above 32 B/px, $mem_off with the estimate more than 25% off the peak"
 # ---------------------------------------------------------------------------------------------
-# colour (issue 17): each method on kodim03 (768 x 512) at 1% in colour beside the same method on
-# the image's luma, side by side in one run: whole process of tools/eval_colour.cpp --no-psnr
-# (read the P6, mesh; the library's methods, until the erd program reads colour), CPU medians,
-# peak RSS, and with CALLGRIND=1 the instruction counts. Targets: colour <= 1.6x the CPU time
-# (instructions) and <= 1.5x the peak memory of gray.
-COLOUR_IMG=$IMAGES/color/kodim03.ppm
-if [[ -f $COLOUR_IMG && -f $(dirname "$ERD")/liberd.a ]]; then
-    EVC=$(dirname "$ERD")/eval_colour
-    if ${CXX:-g++} -O2 -std=c++17 -I. tools/eval_colour.cpp "$(dirname "$ERD")/liberd.a" -o "$EVC"; then
-        for m in gpi ed erded erdgpi; do
-            read -r _ gcpu grss < <("$TIMEIT" "$RUNS" "$EVC" --no-psnr --luma "$m" 1 "$COLOUR_IMG" || echo "- - -")
-            read -r _ ccpu crss < <("$TIMEIT" "$RUNS" "$EVC" --no-psnr "$m" 1 "$COLOUR_IMG" || echo "- - -")
-            ir=""
-            if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
-                gi=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EVC" --no-psnr --luma "$m" 1 "$COLOUR_IMG" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
-                ci=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EVC" --no-psnr "$m" 1 "$COLOUR_IMG" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
-                ir=$(awk -v g="$gi" -v c="$ci" 'BEGIN { printf "  instr gray %.0fM colour %.0fM = %.2fx", g / 1e6, c / 1e6, c / g }')
-            fi
-            printf 'colour %-7s kodim03 1%%: cpu gray %6s ms colour %6s ms = %sx  rss gray %6s KB colour %6s KB = %sx%s\n' \
-                "$m" "$gcpu" "$ccpu" "$(awk -v g="$gcpu" -v c="$ccpu" 'BEGIN { if (g > 0) printf "%.2f", c / g }')" \
-                "$grss" "$crss" "$(awk -v g="$grss" -v c="$crss" 'BEGIN { if (g > 0) printf "%.2f", c / g }')" "$ir"
+# colour (issue 17): each method on the seven colour images (Kodak kodim01-06, house) at 0.5, 1
+# and 2%, `erd generate` on the PPM beside `erd generate` on a PGM of its luma (BT.601, written by
+# tools/eval_colour.cpp --write-luma), alternating within one run: CPU medians of COLOUR_RUNS
+# (default 3) runs and peak RSS per case, then per method the median and the worst of the 21
+# ratios. With CALLGRIND=1 also the instruction ratio of each 1% case (the parent process: erd
+# forks its output commit). Targets: colour <= 1.6x the CPU time and <= 1.5x the peak memory of
+# gray (medians).
+COLOUR_DIR=$IMAGES/color
+EVC=$(dirname "$ERD")/eval_colour
+if [[ -d $COLOUR_DIR && -f $(dirname "$ERD")/liberd.a ]] &&
+   ${CXX:-g++} -O2 -std=c++17 -I. tools/eval_colour.cpp "$(dirname "$ERD")/liberd.a" -o "$EVC"; then
+    colour_rows=$OUT/colour.rows
+    : >"$colour_rows"
+    for f in kodim01 kodim02 kodim03 kodim04 kodim05 kodim06 house_color; do
+        img=$COLOUR_DIR/$f.ppm
+        [[ -f $img ]] || continue
+        "$EVC" --write-luma "$OUT/luma.pgm" gpi 1 "$img" || continue
+        for m in gpi ed erdgpi erded; do
+            out=$OUT/c.model; [[ $m == erd* ]] && out=$OUT/c.erd
+            for d in 0.5 1 2; do
+                read -r _ gcpu grss < <("$TIMEIT" "${COLOUR_RUNS:-3}" "$ERD" generate -q -m "$m" -d "$d" -i "$OUT/luma.pgm" -o "$out" || echo "- - -")
+                read -r _ ccpu crss < <("$TIMEIT" "${COLOUR_RUNS:-3}" "$ERD" generate -q -m "$m" -d "$d" -i "$img" -o "$out" || echo "- - -")
+                gi=- ci=-
+                if [[ $CALLGRIND == 1 && $d == 1 ]] && command -v valgrind >/dev/null; then
+                    for side in gray colour; do
+                        src=$img; [[ $side == gray ]] && src=$OUT/luma.pgm
+                        n=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate -q -m "$m" -d "$d" -i "$src" -o "$out" 2>&1 >/dev/null |
+                            sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+                        if [[ $side == gray ]]; then gi=$n; else ci=$n; fi
+                    done
+                fi
+                echo "$m $f $d $gcpu $ccpu $grss $crss $gi $ci" >>"$colour_rows"
+            done
         done
-    else
-        echo "colour: tools/eval_colour.cpp did not build; skipped"
+    done
+    rm -f "$OUT/luma.pgm" "$OUT/c.model" "$OUT/c.erd"
+    awk '
+        $4 != "-" && $5 != "-" && $4 > 0 && $6 > 0 {
+            t = $5 / $4; r = $7 / $6
+            printf "colour %-6s %-7s %3s%%: cpu gray %7.1f ms colour %7.1f ms = %.2fx  rss gray %6d KB colour %6d KB = %.2fx%s\n",
+                $1, $2, $3, $4, $5, t, $6, $7, r, ($8 != "-" && $9 != "-" && $8 > 0) ? sprintf("  instr %.0fM / %.0fM = %.2fx", $9 / 1e6, $8 / 1e6, $9 / $8) : ""
+            n[$1]++; T[$1, n[$1]] = t; R[$1, n[$1]] = r
+        }
+        function median(A, m, k,   i, j, v, x) {
+            for (i = 1; i <= k; ++i) v[i] = A[m, i]
+            for (i = 2; i <= k; ++i) for (j = i; j > 1 && v[j - 1] > v[j]; --j) { x = v[j]; v[j] = v[j - 1]; v[j - 1] = x }
+            return k % 2 ? v[(k + 1) / 2] : (v[k / 2] + v[k / 2 + 1]) / 2
+        }
+        function worst(A, m, k,   i, w) { w = 0; for (i = 1; i <= k; ++i) if (A[m, i] > w) w = A[m, i]; return w }
+        END {
+            split("gpi ed erdgpi erded", ms, " ")
+            for (i = 1; i <= 4; ++i) if (n[ms[i]])
+                printf "colour %-6s %d cases: cpu median %.2fx worst %.2fx (target 1.6x)  rss median %.2fx worst %.2fx (target 1.5x)\n",
+                    ms[i], n[ms[i]], median(T, ms[i], n[ms[i]]), worst(T, ms[i], n[ms[i]]), median(R, ms[i], n[ms[i]]), worst(R, ms[i], n[ms[i]])
+        }' "$colour_rows" | tee "$OUT/colour.out"
+    # COLOUR_RESULTS=docs/RESULTS.md also writes the medians there (section colour-cost).
+    if [[ -n ${COLOUR_RESULTS:-} ]]; then
+        . tools/results_section.sh
+        {
+            echo "<!-- colour-cost: written by make bench (bench/run.sh) with COLOUR_RESULTS -->"
+            echo "## Colour cost (issue 17): colour over gray on the luma"
+            echo
+            echo "\`erd generate\` on each colour PPM beside the same method on a PGM of its luma, whole process,"
+            echo "default threads (the CPU time counts them all), the 7 colour images at 0.5, 1 and 2% (21 cases a"
+            echo "method), CPU medians of ${COLOUR_RUNS:-3} runs and peak RSS per case; the table gives the median and the"
+            echo "worst of the 21 ratios. Written"
+            echo "on $(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo '?'); load $(cut -d' ' -f1-3 /proc/loadavg)."
+            echo
+            echo "| method | CPU time median | worst | peak RSS median | worst |"
+            echo "|---|---:|---:|---:|---:|"
+            awk '/ cases: / { printf "| %s | %s | %s | %s | %s |\n", $2, $7, $9, $14, $16 }' "$OUT/colour.out"
+            echo
+            echo "Targets: CPU time <= 1.6x and peak memory <= 1.5x (medians)."
+            echo "<!-- /colour-cost -->"
+        } >"$OUT/colour.section"
+        put_section colour-cost "$OUT/colour.section" "$COLOUR_RESULTS"
     fi
 else
-    echo "colour: $COLOUR_IMG or $(dirname "$ERD")/liberd.a missing; skipped"
+    echo "colour: $COLOUR_DIR or tools/eval_colour.cpp (against $(dirname "$ERD")/liberd.a) missing; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
 # threads (issue 18, "Two cores"): the image stages (MMSODD, density, reconstruction, PSNR;

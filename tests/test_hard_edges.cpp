@@ -203,6 +203,29 @@ TEST_CASE("hard edges: ERDGPI and ERDED make exactly N points, verified meshes, 
     CHECK(said);
 }
 
+TEST_CASE("hard edges in colour: both runs, the better kept by RGB-PSNR, verified", "[hardedges][colour]") {
+    // A drawing's three channels made different (not gray), so the colour methods mesh it.
+    const Image g = picture("drawing", 0);
+    Image im(g.width, g.height, g.maxval, 3);
+    for (std::size_t i = 0; i < g.samples.size(); ++i) {
+        im.samples[3 * i] = g.samples[i];
+        im.samples[3 * i + 1] = std::uint16_t(g.maxval - g.samples[i]);
+        im.samples[3 * i + 2] = std::uint16_t(g.samples[i] / 2 + (i % 7 == 0 ? 1 : 0));
+    }
+    for (const char* method : {"erdgpi", "erded"}) {
+        INFO(method);
+        const GenerateResult r = run(method, im, 1.0, EdgeChoice::automatic);
+        CHECK(r.model.channels == 3);
+        CHECK(r.model.edges == EdgeKind::hard);
+        CHECK(r.model.size() == r.requested);
+        test::check_model(r.model);
+        REQUIRE(check_triangulation(r.model).ok());
+        REQUIRE(r.stats.erd.plain_psnr > 0);
+        REQUIRE(r.stats.erd.exact_psnr > 0);
+        CHECK(psnr_of(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
+    }
+}
+
 TEST_CASE("hard edges: erd generate --edges, the header in the file, reconstruct by point evaluation", "[hardedges][cli]") {
     REQUIRE(binary_available());
     TempDir t;

@@ -15,6 +15,8 @@
 //                          (with the flips that give its faces: api::triangulate) is valid and has
 //                          its faces, every wedge's faces carry one value in every channel
 //     --no-psnr            stop after the method (bench/run.sh: load and mesh only); prints N
+//     --write-luma FILE    write the image's luma as an 8-bit P5 and stop (bench/run.sh's gray
+//                          side of the colour rows: erd generate on it)
 // Prints "PSNR VERTICES": the RGB-PSNR (MSE averaged over the channels and pixels, peak 255) of
 // the model's reconstruction.
 #include <cmath>
@@ -92,6 +94,7 @@ std::string verify(const erd::Model& m) {
 int main(int argc, char** argv) {
     erd::GenerateOptions o;
     bool luma = false, measure = true, check = false;
+    const char* luma_out = nullptr;
     int i = 1;
     for (; i < argc && argv[i][0] == '-' && argv[i][1] == '-'; ++i) {
         const std::string a = argv[i];
@@ -99,6 +102,7 @@ int main(int argc, char** argv) {
         else if (a == "--no-psnr") measure = false;
         else if (a == "--verify") check = true;
         else if (a == "--real") o.round_values = false;
+        else if (a == "--write-luma" && i + 1 < argc) luma_out = argv[++i];
         else if (a == "--sum-channels") o.colour.max_channel_error = false;
         else if (a == "--shared") o.colour.shared_wedge_position = true;
         else if (a == "--luma-greedy") o.colour.greedy_on_luma = true;
@@ -125,7 +129,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "eval_colour: unknown method or unreadable P6 image\n");
         return 2;
     }
-    if (luma) im = erd::luma_of(im);
+    if (luma || luma_out) im = erd::luma_of(im);
+    if (luma_out) {
+        FILE* f = std::fopen(luma_out, "wb");
+        bool ok = f && std::fprintf(f, "P5\n%d %d\n255\n", im.width, im.height) > 0;
+        for (std::size_t k = 0; ok && k < im.samples.size(); ++k) ok = std::fputc(int(im.samples[k]), f) != EOF;
+        if (f && std::fclose(f) != 0) ok = false;
+        if (!ok) std::fprintf(stderr, "eval_colour: cannot write %s\n", luma_out);
+        return ok ? 0 : 1;
+    }
     o.density = std::atof(argv[i + 1]);
     o.density_given = true;
     erd::GenerateResult r;

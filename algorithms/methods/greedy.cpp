@@ -186,8 +186,6 @@ public:
         if (!options.round_values)
             for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
         track_max_ = options.max_error >= 0.0;
-        if (image.channels == 3 && image.maxval <= 255 && options.round_values && options.max_channel_error)
-            planes_.build(image.samples.data(), std::size_t(image.width) * std::size_t(image.height));
         if (options.supersampled) {
             const std::size_t w = std::size_t(image.width), h = std::size_t(image.height);
             sub_.assign(16 * w * h, 0.0f);
@@ -493,7 +491,7 @@ private:
         double sum = 0.0, best = -1.0;
         std::int32_t bx = 0, by = 0;
         // 8-bit images, rounded, by the largest channel error (the default): the fixed-point scan.
-        if (round && by_max && !planes_.empty() && fixed_scan(planes, p0, p1, p2, &sum, &best, &bx, &by)) {
+        if (round && by_max && image_.maxval <= 255 && fixed_scan(planes, p0, p1, p2, &sum, &best, &bx, &by)) {
             if (best >= 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
             settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
             return;
@@ -543,7 +541,7 @@ private:
         const std::int64_t i0 = p0.x / 2, j0 = p0.y / 2, top = (std::int64_t(image_.maxval) + 1) << 16, lim = 1 << 30;
         const std::int32_t maxval = std::int32_t(image_.maxval);
         const std::size_t width = std::size_t(image_.width);
-        const std::uint8_t* const plane[3] = {planes_.plane(0), planes_.plane(1), planes_.plane(2)};
+        const std::uint16_t *samples = image_.samples.data(), *end = samples + image_.samples.size();
         colour_scan::Steps steps;
         steps.set(dV);
         std::uint64_t isum = 0;
@@ -568,12 +566,15 @@ private:
                     V0[c] = std::int32_t(a);
                 }
                 const std::size_t at = std::size_t(j) * width;
-                const std::uint8_t* const s[3] = {plane[0] + at + std::size_t(lo), plane[1] + at + std::size_t(lo),
-                                                  plane[2] + at + std::size_t(lo)};
+                const std::uint16_t* s = samples + 3 * (at + std::size_t(lo));
+                if (run.j < run.j_end) {  // the next row's samples (the interleaved image is 6 bytes a pixel)
+                    __builtin_prefetch(s + 3 * width);
+                    __builtin_prefetch(s + 3 * width + 3 * (hi - lo));
+                }
                 const std::int32_t x0 = std::int32_t(lo), x1 = std::int32_t(hi);
                 const bool moved =
-                    clamp ? colour_scan::scan_span<true>(s, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx)
-                          : colour_scan::scan_span<false>(s, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx);
+                    clamp ? colour_scan::scan_span<true>(s, end, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx)
+                          : colour_scan::scan_span<false>(s, end, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx);
                 if (moved) cy = std::int32_t(j);
             }
         }
@@ -624,7 +625,6 @@ private:
     double corner_[4] = {0, 0, 0, 0};
     std::vector<FaceInd> owner_;
     std::vector<Span> spans_, touched_;
-    ColourPlanes planes_;  // 8-bit colour, rounded: the channels as planes for the fixed-point scan
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
     int channels_ = 1;

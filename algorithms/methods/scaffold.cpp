@@ -265,8 +265,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
 
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
     Status st = run(image, options, true, result);
-    // Colour keeps the first run until metrics' psnr compares colour images (issue 17, colour-io).
-    if (!st || result->model.edges != EdgeKind::hard || image.channels > 1) return st;
+    if (!st || result->model.edges != EdgeKind::hard) return st;
     GenerateResult exact;
     if (!(st = run(image, options, false, &exact))) return st;
     double db[2] = {0, 0};
