@@ -72,7 +72,7 @@ const CommandLine kRender = {
     "render",
     "erd render MODEL -o OUT.svg|OUT.png [--scale S] [--crop X,Y,W,H] [--vertices] [--no-edges]\n"
     "                  [--over IMAGE | --over-reconstruction | --error ORIGINAL [--error-max E]]\n"
-    "       erd render MODEL -o OUT.svg --vector [--scale S] [--crop X,Y,W,H] [--seams layered|crisp|none]",
+    "       erd render MODEL -o OUT.svg --vector [--scale S] [--crop X,Y,W,H] [--seams layered|crisp|none] [--ramp levels|smooth]",
     "Draws the triangulation of a .model or .erd file: ordinary edges thin and blue, constrained edges\n"
     "(the model's discontinuities: where the two faces beside an edge of an .erd model give an endpoint\n"
     "different values) thick and red. SVG is written as text; PNG is drawn with anti-aliased lines.",
@@ -89,6 +89,7 @@ const CommandLine kRender = {
         {0, "error-max", "E", "error shown as white in the error map (default maxval / 8)"},
         {0, "vector", nullptr, "SVG of the approximating function itself: each face a triangle filled with its plane as a linear gradient"},
         {0, "seams", "layered|crisp|none", "--vector: how seams between anti-aliased triangles are avoided (default layered)"},
+        {0, "ramp", "levels|smooth", "--vector: each face's gradient paints its plane rounded to 8-bit levels as erd reconstruct does (default), or the plane itself"},
         kProgressOption,
     },
     "no warnings", 1, 1, "expected one MODEL",
@@ -121,10 +122,14 @@ static int run_render(const Args& args, const Reporter& rep) {
         else if (seams == "crisp") vopt.seams = SeamFix::crisp;
         else if (seams == "none") vopt.seams = SeamFix::none;
         else return rep.usage("--seams wants layered, crisp or none, not '" + seams + "'");
+        const std::string ramp = args.str("ramp", "levels");
+        if (ramp == "levels") vopt.ramp = Ramp::levels;
+        else if (ramp == "smooth") vopt.ramp = Ramp::smooth;
+        else return rep.usage("--ramp wants levels or smooth, not '" + ramp + "'");
         vopt.scale = opt.scale > 0 ? opt.scale : 1;
         vopt.crop_x = opt.crop_x, vopt.crop_y = opt.crop_y, vopt.crop_w = opt.crop_w, vopt.crop_h = opt.crop_h;
-    } else if (args.has("seams")) {
-        return rep.usage("--seams goes with --vector");
+    } else if (args.has("seams") || args.has("ramp")) {
+        return rep.usage(std::string(args.has("seams") ? "--seams" : "--ramp") + " goes with --vector");
     }
     opt.vertices = args.has("vertices");
     opt.edges = !args.has("no-edges");

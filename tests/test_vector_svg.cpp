@@ -12,6 +12,8 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
@@ -175,12 +177,85 @@ TEST_CASE("render --vector: options that do not go with it are refused", "[vecto
     CHECK(run_erd(base + "-o " + sh_quote(dir.file("a.svg")) + " --vector --over " + sh_quote(dir.file("s.pgm"))).status == 2);
     CHECK(run_erd(base + "-o " + sh_quote(dir.file("a.svg")) + " --vector --seams blur").status == 2);
     CHECK(run_erd(base + "-o " + sh_quote(dir.file("a.svg")) + " --seams crisp").status == 2);
+    CHECK(run_erd(base + "-o " + sh_quote(dir.file("a.svg")) + " --vector --ramp steps").status == 2);
+    CHECK(run_erd(base + "-o " + sh_quote(dir.file("a.svg")) + " --ramp smooth").status == 2);
     CHECK(!exists(dir.file("a.svg")));
     RunResult r = run_erd(base + "-o " + sh_quote(dir.file("c.svg")) + " --vector --seams crisp --crop 8,4,16,12 --scale 2");
     REQUIRE(r.status == 0);
     const std::string c = slurp(dir.file("c.svg"));
     CHECK(c.find("width=\"32\" height=\"24\" viewBox=\"7.5 3.5 16 12\" shape-rendering=\"crispEdges\"") != std::string::npos);
     CHECK(c.find("<use") == std::string::npos);
+}
+
+namespace {
+
+// The stops of template `id` in svg: (offset, level in `channel`'s component; -1 gray).
+std::vector<std::pair<double, int>> template_stops(const std::string& svg, const std::string& id, int channel) {
+    const std::size_t begin = svg.find("<linearGradient id=\"" + id + "\" gradientUnits=\"userSpaceOnUse\">");
+    const std::size_t end = svg.find("</linearGradient>", begin);
+    std::vector<std::pair<double, int>> stops;
+    if (begin == std::string::npos || end == std::string::npos) return stops;
+    const std::string t = svg.substr(begin, end - begin);
+    std::regex stop_re("<stop(?: offset=\"([.0-9]+)\")?(?: stop-color=\"#([0-9a-f]+)\")?/>");
+    for (auto it = std::sregex_iterator(t.begin(), t.end(), stop_re); it != std::sregex_iterator(); ++it) {
+        const std::string off = (*it)[1], hex = (*it)[2];
+        int level = 0;  // no stop-color: black
+        if (!hex.empty()) {
+            const int digits = hex.size() == 3 ? 1 : 2, k = channel < 0 ? 0 : channel;
+            level = int(std::strtol(hex.substr(std::size_t(k * digits), std::size_t(digits)).c_str(), nullptr, 16)) * (digits == 1 ? 17 : 1);
+        }
+        stops.push_back({off.empty() ? 0.0 : std::stod(off), level});
+    }
+    return stops;
+}
+
+// What a renderer paints at gradient parameter t in [0, 1] (levels, unrounded): the colour
+// interpolated between the stops around t; at a repeated offset the later stop holds from there on.
+double paint_stops(const std::vector<std::pair<double, int>>& s, double t) {
+    std::size_t k = 0;
+    while (k + 1 < s.size() && s[k + 1].first <= t) ++k;
+    if (k + 1 == s.size()) return s[k].second;
+    const double w = (t - s[k].first) / (s[k + 1].first - s[k].first);
+    return s[k].second + w * (s[k + 1].second - s[k].second);
+}
+
+}  // namespace
+
+TEST_CASE("render --vector: the levels ramp paints each plane rounded to levels, smooth the plane", "[vector]") {
+    // Every face's gradient runs its template from its plane's 0 point to its 255 point (the
+    // test above), so a template that paints floor(255 t + 1/2) at t paints the rounded plane.
+    REQUIRE(binary_available());
+    TempDir dir;
+    REQUIRE(run_erd("synth -W 32 -H 24 -o " + sh_quote(dir.file("s.pgm"))).status == 0);
+    REQUIRE(run_erd("generate -q -m gpi -i " + sh_quote(dir.file("s.pgm")) + " -d 5 -o " + sh_quote(dir.file("s.model"))).status == 0);
+    erd::Model m;
+    REQUIRE(erd::read_model(slurp(dir.file("s.model")), erd::ModelFileKind::basic, &m).ok());
+    const erd::Model colour = colour_of(m);
+    for (const erd::Ramp ramp : {erd::Ramp::levels, erd::Ramp::smooth}) {
+        erd::VectorSvgOptions o;
+        o.ramp = ramp;
+        std::string gray, rgb;
+        REQUIRE(erd::render_vector_svg(m, o, &gray).ok());
+        REQUIRE(erd::render_vector_svg(colour, o, &rgb).ok());
+        const std::pair<const std::string*, int> cases[4] = {{&gray, -1}, {&rgb, 0}, {&rgb, 1}, {&rgb, 2}};
+        const char* ids[4] = {"_", "_r", "_g", "_b"};
+        for (int i = 0; i < 4; ++i) {
+            const auto stops = template_stops(*cases[i].first, ids[i], cases[i].second);
+            INFO("template " << ids[i] << (ramp == erd::Ramp::levels ? " levels" : " smooth"));
+            REQUIRE(stops.size() == (ramp == erd::Ramp::levels ? 512u : 2u));
+            for (int k = 0; k < 255 * 64; ++k) {
+                const double z = k / 64.0 + 1.0 / 128;  // never a half level
+                const double painted = paint_stops(stops, z / 255);
+                if (ramp == erd::Ramp::levels) CHECK(painted == std::floor(z + 0.5));
+                else CHECK(std::fabs(painted - z) < 1e-9);
+            }
+        }
+    }
+    // The CLI's default is levels; --ramp smooth gives the two-stop template.
+    REQUIRE(run_erd("render " + sh_quote(dir.file("s.model")) + " -o " + sh_quote(dir.file("l.svg")) + " --vector").status == 0);
+    REQUIRE(run_erd("render " + sh_quote(dir.file("s.model")) + " -o " + sh_quote(dir.file("s.svg")) + " --vector --ramp smooth").status == 0);
+    CHECK(template_stops(slurp(dir.file("l.svg")), "_", -1).size() == 512);
+    CHECK(template_stops(slurp(dir.file("s.svg")), "_", -1).size() == 2);
 }
 
 TEST_CASE("render --vector: colour model files become three screened layers", "[vector][colour]") {

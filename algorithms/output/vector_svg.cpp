@@ -74,6 +74,20 @@ struct Pt {
 // The gradient templates: gray black to white; colour black to pure red, green, blue.
 const char* const kTemplate[4] = {"_", "_r", "_g", "_b"};
 
+// A template's <linearGradient> (userSpaceOnUse; the faces' gradients set its end points) for one
+// channel (-1 gray): smooth, two stops (level 0 at offset 0, 255 at 1: the plane itself); levels,
+// the plane rounded to the nearest level, floor(z + 1/2), as erd reconstruct writes it: two stops
+// at each half level (k + 1/2) / 255, level k below and k + 1 from there on, 512 stops in all.
+std::string ramp_template(const char* id, int channel, Ramp ramp) {
+    std::string t = std::string("<linearGradient id=\"") + id + "\" gradientUnits=\"userSpaceOnUse\"><stop/>";
+    if (ramp == Ramp::levels)
+        for (int k = 0; k < 255; ++k) {
+            const std::string at = "<stop offset=\"" + short_num((k + 0.5) / 255, 6) + "\" stop-color=\"";
+            t += at + level_hex(k, channel) + "\"/>" + at + level_hex(k + 1, channel) + "\"/>";
+        }
+    return t + "<stop offset=\"1\" stop-color=\"" + level_hex(255, channel) + "\"/></linearGradient>\n";
+}
+
 // The paint of a face with corners p (user units) and values z (8-bit levels) in one channel
 // (-1 gray, else 0..2): one colour when flat, else a gradient on the channel's template (written
 // to *defs the first time those end points occur in that channel).
@@ -158,11 +172,9 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
     t += ">\n<desc>erd vector: " + std::to_string(m.width) + "x" + std::to_string(m.height) + ", " +
          std::to_string(m.vertices.size()) + " vertices, " + std::to_string(m.faces.size()) + " faces</desc>\n";
     if (C == 1) {
-        t += "<linearGradient id=\"_\" gradientUnits=\"userSpaceOnUse\"><stop/><stop offset=\"1\" stop-color=\"#fff\"/></linearGradient>\n";
+        t += ramp_template(kTemplate[0], -1, o.ramp);
     } else {
-        for (int c = 0; c < 3; ++c)
-            t += std::string("<linearGradient id=\"") + kTemplate[c + 1] + "\" gradientUnits=\"userSpaceOnUse\"><stop/><stop offset=\"1\" stop-color=\"" +
-                 level_hex(255, c) + "\"/></linearGradient>\n";
+        for (int c = 0; c < 3; ++c) t += ramp_template(kTemplate[c + 1], c, o.ramp);
     }
 
     std::unordered_map<std::string, std::string> gradients;  // template and end points -> id

@@ -36,10 +36,18 @@ namespace erd {
 // the anti-aliased layer (the seams show).
 enum class SeamFix { layered, crisp, none };
 
+// What a face's gradient paints (docs/DECISIONS.md, "Vector SVG"). levels: the plane rounded to
+// 8-bit levels, as erd reconstruct writes it (a template of 512 stops, two at each half level,
+// shared by every face: about 23 KB once a channel). A renderer that dithers gradients (chromium
+// does, a fixed 2x2 pattern of up to 3/8 of a level) then paints each level exactly. smooth: the
+// plane itself (two stops), which such a renderer dithers before it rounds.
+enum class Ramp { levels, smooth };
+
 struct VectorSvgOptions {
     double scale = 1;  // output pixels per image pixel (the width and height attributes)
     int crop_x = 0, crop_y = 0, crop_w = 0, crop_h = 0;  // pixels; crop_w or crop_h 0: whole image
     SeamFix seams = SeamFix::layered;
+    Ramp ramp = Ramp::levels;
 };
 
 // Faces whose three values (8-bit units) lie within this range are filled with one colour.
