@@ -27,6 +27,7 @@
 #include "algorithms/model/model_topology.h"
 #include "kernel/predicates.h"
 #include "kernel/raster.h"
+#include "kernel/raster_rows.h"
 #include "kernel/row_parallel.h"
 
 namespace erd {
@@ -42,7 +43,11 @@ struct Prepared {
     ModelTopology own;                     // built here unless the caller passes one
     const ModelTopology* topo = nullptr;   // own or the caller's
     RasterDomain dom;
-    std::vector<double> vertex_value;  // the function's value at each vertex (mean of wedges), [v*C + c]
+    // The function's value at vertex v in channel c (the mean of its wedges), computed where it is
+    // used: point evaluation needs it at the vertices on pixels, supersampling at the corners only.
+    double vertex_value(const Model& m, std::uint32_t v, std::size_t c) const {
+        return m.kind == ModelKind::erd ? vertex_wedges(m, *topo, v, int(c)).mean : m.values[v * std::size_t(m.channels) + c];
+    }
     std::vector<SpanPlane> planes;     // per face and channel, through its corner values, [f*C + c]
 };
 
@@ -127,10 +132,6 @@ Status prepare(const Model& m, bool count_pixels, const ModelTopology* given, Pr
                                          std::to_string(i / std::size_t(m.width)) + ") is owned by " +
                                          (owned[i] == 0 ? "no face" : "several faces"));
     }
-    p->vertex_value.resize(nv * C);
-    for (std::uint32_t v = 0; v < nv; ++v)
-        for (std::size_t c = 0; c < C; ++c)
-            p->vertex_value[v * C + c] = erd ? vertex_wedges(m, topo, v, int(c)).mean : m.values[v * C + c];
     p->planes.resize(nf * C);
     for (std::size_t f = 0; f < nf; ++f) {
         const auto& fc = m.faces[f];
@@ -288,7 +289,7 @@ void point_evaluation(const Model& m, const Prepared& p, Image* out, ProgressHoo
         const LatticePoint q = m.vertices[v];
         if (q.x % 2 == 0 && q.y % 2 == 0)
             for (std::size_t c = 0; c < C; ++c)
-                px[(std::size_t(q.y / 2) * W + std::size_t(q.x / 2)) * C + c] = to_sample(p.vertex_value[v * C + c], maxval);
+                px[(std::size_t(q.y / 2) * W + std::size_t(q.x / 2)) * C + c] = to_sample(p.vertex_value(m, std::uint32_t(v), c), maxval);
     }
 }
 
@@ -330,51 +331,87 @@ struct SubRow {
     }
 };
 
-// Adds the sub-samples of one face's spans on Lattice::supersample() to the pixel sums `acc`,
-// whose row 0 is pixel row `row0`. Each pixel gets its additions sub-row by sub-row, as a plain
-// span-by-span pass would; where all four sub-rows of a pixel row cover pixels whole, those
+// One face's plane on Lattice::supersample() in fine units (scale 4 is a power of two: no
+// rounding is added), taken once per face and channel.
+struct FinePlane {
+    double z0 = 0.0, gx = 0.0, gy = 0.0, x0 = 0.0, y0 = 0.0;
+    RowPlane rp{0.0};
+    FinePlane() = default;
+    explicit FinePlane(const SpanPlane& pl)
+        : z0(pl.z0), gx(pl.gx / Lattice::supersample().scale), gy(pl.gy / Lattice::supersample().scale),
+          x0(pl.x0 * Lattice::supersample().scale), y0(pl.y0 * Lattice::supersample().scale),
+          rp(gx * Lattice::supersample().step_x) {}
+};
+
+// Adds the sub-samples of one pixel row of a face, its n = 1..4 sub-row spans in order, to the
+// pixel sums `acc`, whose row 0 is pixel row `row0`. Each pixel gets its additions sub-row by
+// sub-row, as a plain span-by-span pass would; where all four sub-rows cover pixels whole, those
 // pixels take their four terms in one pass (one load and store, four independent chains of v).
-void add_spans(const SpanPlane& pl, const Span* spans, std::size_t n, double* acc, std::size_t W, std::size_t row0) {
+void add_pixel_row(const FinePlane& fp, const Span* spans, int n, double* acc, std::size_t W, std::size_t row0) {
     const Lattice l = Lattice::supersample();
-    // The plane in fine units (scale 4 is a power of two: no rounding is added).
-    const double gx = pl.gx / l.scale, gy = pl.gy / l.scale, x0 = pl.x0 * l.scale, y0 = pl.y0 * l.scale;
-    const RowPlane rp(gx * l.step_x);
+    const RowPlane& rp = fp.rp;
     const auto start = [&](const Span& s) {
         double* row = acc + (std::size_t(s.y >> 2) - row0) * W;
-        const double v = pl.z0 + gx * (double(l.fine_x(s.x_begin)) - x0) + gy * (double(l.fine_y(s.y)) - y0);
+        const double v = fp.z0 + fp.gx * (double(l.fine_x(s.x_begin)) - fp.x0) + fp.gy * (double(l.fine_y(s.y)) - fp.y0);
         return SubRow{row, v, s.x_begin, s.x_end};
     };
-    for (std::size_t k = 0; k < n;) {
-        // One span per row, rows in order: spans k..k+3 are the four sub-rows of one pixel row
-        // when the first is sub-row 0 and the fourth three rows further.
-        if (k + 3 < n && (spans[k].y & 3) == 0 && spans[k + 3].y == spans[k].y + 3) {
-            SubRow r[4] = {start(spans[k]), start(spans[k + 1]), start(spans[k + 2]), start(spans[k + 3])};
-            const std::int32_t p0 = std::max({r[0].first_whole(), r[1].first_whole(), r[2].first_whole(), r[3].first_whole()});
-            const std::int32_t p1 = std::min({r[0].end_whole(), r[1].end_whole(), r[2].end_whole(), r[3].end_whole()});
-            if (p0 < p1) {
-                for (SubRow& s : r) {
-                    s.head(rp);
-                    s.wholes(p0, rp);
-                }
-                double* row = r[0].row;
-                double v0 = r[0].v, v1 = r[1].v, v2 = r[2].v, v3 = r[3].v;
-                for (std::int32_t x = p0; x < p1; ++x, v0 += rp.four, v1 += rp.four, v2 += rp.four, v3 += rp.four)
-                    row[x] = row[x] + (4.0 * v0 + rp.six) + (4.0 * v1 + rp.six) + (4.0 * v2 + rp.six) + (4.0 * v3 + rp.six);
-                r[0].v = v0, r[1].v = v1, r[2].v = v2, r[3].v = v3;
-                for (SubRow& s : r) {
-                    s.i = p1 << 2;
-                    s.wholes(s.end_whole(), rp);
-                    s.tail(rp);
-                }
-                k += 4;
-                continue;
+    if (n == 4) {  // sub-rows 0..3 of the pixel row
+        SubRow r[4] = {start(spans[0]), start(spans[1]), start(spans[2]), start(spans[3])};
+        const std::int32_t p0 = std::max({r[0].first_whole(), r[1].first_whole(), r[2].first_whole(), r[3].first_whole()});
+        const std::int32_t p1 = std::min({r[0].end_whole(), r[1].end_whole(), r[2].end_whole(), r[3].end_whole()});
+        if (p0 < p1) {
+            for (SubRow& s : r) {
+                s.head(rp);
+                s.wholes(p0, rp);
             }
+            double* row = r[0].row;
+            double v0 = r[0].v, v1 = r[1].v, v2 = r[2].v, v3 = r[3].v;
+            for (std::int32_t x = p0; x < p1; ++x, v0 += rp.four, v1 += rp.four, v2 += rp.four, v3 += rp.four)
+                row[x] = row[x] + (4.0 * v0 + rp.six) + (4.0 * v1 + rp.six) + (4.0 * v2 + rp.six) + (4.0 * v3 + rp.six);
+            r[0].v = v0, r[1].v = v1, r[2].v = v2, r[3].v = v3;
+            for (SubRow& s : r) {
+                s.i = p1 << 2;
+                s.wholes(s.end_whole(), rp);
+                s.tail(rp);
+            }
+            return;
         }
-        SubRow s = start(spans[k++]);
+    }
+    for (int k = 0; k < n; ++k) {
+        SubRow s = start(spans[k]);
         s.head(rp);
         s.wholes(s.end_whole(), rp);
         s.tail(rp);
     }
+}
+
+// Adds the sub-samples face (a, b, c) owns in sub-rows j_begin..j_end to the sums of its C
+// channels (plane c of `acc` for channel c, plane samples apart), walking the face's rows
+// (kernel/raster_rows.h) and handing each pixel row's sub-row spans on as soon as the row is
+// complete: no list of spans, one walk for all channels. The additions are those of scanning the
+// face's spans and adding them span by span, in the same order (pixel rows are disjoint sums).
+void add_face(const FinePlane* fp, std::size_t C, LatticePoint a, LatticePoint b, LatticePoint c, RasterDomain dom,
+              std::int32_t j_begin, std::int32_t j_end, double* acc, std::size_t plane, std::size_t W, std::size_t row0) {
+    OwnedRows rows(Lattice::supersample(), dom, a, b, c, j_begin, j_end);
+    Span g[4];
+    int n = 0;
+    const auto flush = [&] {
+        if (C == 1) add_pixel_row(fp[0], g, n, acc, W, row0);
+        else
+            for (std::size_t k = 0; k < C; ++k) add_pixel_row(fp[k], g, n, acc + k * plane, W, row0);
+        n = 0;
+    };
+    for (RowRun part; rows.next(&part);) {
+        for (RowRun run = part; run.j <= run.j_end; run.step()) {
+            std::int64_t lo, hi;
+            run.columns(&lo, &hi);
+            if (lo > hi) continue;
+            const std::int32_t j = std::int32_t(run.j);
+            if (n > 0 && (j >> 2) != (g[0].y >> 2)) flush();
+            g[n++] = Span{j, std::int32_t(lo), std::int32_t(hi)};
+        }
+    }
+    if (n > 0) flush();
 }
 
 // One addition to a pixel's sum made after all faces' interior sub-samples; `sample` is the
@@ -415,7 +452,7 @@ std::vector<LateTerm> late_terms(const Model& m, const Prepared& p) {
         const LatticePoint q = m.vertices[v];
         if ((q.x == 0 || q.x == mx) && (q.y == 0 || q.y == my))
             for (std::size_t c = 0; c < C; ++c)
-                late.push_back({((q.y == 0 ? 0 : H - 1) * W + (q.x == 0 ? 0 : W - 1)) * C + c, 4.0 * p.vertex_value[v * C + c]});
+                late.push_back({((q.y == 0 ? 0 : H - 1) * W + (q.x == 0 ? 0 : W - 1)) * C + c, 4.0 * p.vertex_value(m, std::uint32_t(v), c)});
     }
     fix_discontinuities(m, p, Lattice::supersample(), [&](std::int32_t i, std::int32_t j, int c, double mean, double owner) {
         late.push_back({(std::size_t(j >> 2) * W + std::size_t(i >> 2)) * C + std::size_t(c), mean - owner});
@@ -473,7 +510,6 @@ void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook p
     const RowParts parts(0, nb, threads, rows_for(std::size_t(1) << 15, band * W * C));
     run_parts(parts, [&](std::size_t part, std::size_t b0, std::size_t b1) {
         std::vector<double> acc(plane * C);
-        std::vector<Span> spans;
         for (std::size_t b = b0; b < b1; ++b) {
             // Progress from the calling thread's part alone (the hook need not be thread-safe).
             if (part == 0) progress("reconstruct", double(b - b0) / double(b1 - b0));
@@ -481,13 +517,11 @@ void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook p
             for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
                 const std::uint32_t f = band_faces[k];
                 const auto& fc = m.faces[f];
-                // The band's sub-rows only: a face spanning several bands is scanned in pieces.
-                scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans,
-                              std::int32_t(4 * row0), std::int32_t(4 * (row0 + rows) - 1));
-                if (C == 1) add_spans(p.planes[f], spans.data(), spans.size(), acc.data(), W, row0);
-                else
-                    for (std::size_t c = 0; c < C; ++c)
-                        add_spans(p.planes[f * C + c], spans.data(), spans.size(), acc.data() + c * plane, W, row0);
+                FinePlane fp[3];
+                for (std::size_t c = 0; c < C; ++c) fp[c] = FinePlane(p.planes[f * C + c]);
+                // The band's sub-rows only: a face spanning several bands is walked in pieces.
+                add_face(fp, C, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], p.dom, std::int32_t(4 * row0),
+                         std::int32_t(4 * (row0 + rows) - 1), acc.data(), plane, W, row0);
             }
             for (std::uint32_t k = late_first[b]; k < late_first[b + 1]; ++k) {
                 const LateTerm& t = late[band_late[k]];
