@@ -36,8 +36,7 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
     Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
     if (!st) return st;
     if (is_erdz(text)) {
-        if (!(st = decode_erdz(text, out, info))) return Status::error(st.code, escape_name(path) + ": " + st.message);
-        if (topo && !(st = build_topology(*out, topo))) return Status::error(st.code, escape_name(path) + ": " + st.message);
+        if (!(st = decode_erdz_topology(text, out, topo, info))) return Status::error(st.code, escape_name(path) + ": " + st.message);
         return st;
     }
     if (info) *info = ErdzInfo();

@@ -128,6 +128,17 @@ void check_round_trip(const Model& m, double step) {
         }
     }
     CHECK(worst <= info.step / 2 + 1e-9);
+    // The adjacency the decoder hands back is build_topology's, and the same model.
+    Model dt;
+    erd::ModelTopology topo, built;
+    REQUIRE(erd::decode_erdz_topology(bytes, &dt, &topo).ok());
+    CHECK(dt.faces == d.faces);
+    CHECK(dt.vertices == d.vertices);
+    CHECK(dt.corner_values == d.corner_values);
+    REQUIRE(erd::build_topology(dt, &built).ok());
+    CHECK(topo.twin == built.twin);
+    CHECK(topo.corner_begin == built.corner_begin);
+    CHECK(topo.corners == built.corners);
     // The decoded model reconstructs, into an image of its channels.
     erd::Image rec;
     const erd::Status rs = erd::reconstruct(d, erd::supersampled(d), &rec);

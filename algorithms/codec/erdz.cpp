@@ -343,6 +343,10 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
 }
 
 Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const ErdzLimits& limits) {
+    return decode_erdz_topology(bytes, out, nullptr, info, limits);
+}
+
+Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology* topo, ErdzInfo* info, const ErdzLimits& limits) {
     const auto bad = [](const std::string& what) { return Status::bad_input(what); };
     if (!is_erdz(bytes)) return bad("not an .erdz file (no ERDZ magic)");
     if (bytes.size() < 5) return bad("the file ends inside its header");
@@ -444,6 +448,21 @@ Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info, const E
         m.constraints.push_back({std::min(a, b), std::max(a, b)});
     }
     std::sort(m.constraints.begin(), m.constraints.end());
+    static_assert(noEdge == kNoHalfEdge, "a border half-edge has the same mark in both");
+    if (topo) {
+        // Model half-edge 3f + k is the kernel's half-edge 3f + k (face f, from its vertex k), so
+        // twins carry over (noEdge is kNoHalfEdge); the fans are counted as build_topology does.
+        ModelTopology& t = *topo;
+        t.twin.resize(3 * nf);
+        for (EdgeInd e = 0; e < 3 * nf; ++e) t.twin[e] = r.cdt.twin(e);
+        t.corner_begin.assign(nv + 1, 0);
+        for (const auto& f : m.faces)
+            for (std::uint32_t v : f) ++t.corner_begin[v + 1];
+        for (std::size_t v = 0; v < nv; ++v) t.corner_begin[v + 1] += t.corner_begin[v];
+        t.corners.assign(3 * nf, 0);
+        std::vector<std::uint32_t> fill(t.corner_begin.begin(), t.corner_begin.end() - 1);
+        for (std::size_t e = 0; e < 3 * nf; ++e) t.corners[fill[m.faces[e / 3][e % 3]]++] = std::uint32_t(e);
+    }
     if (info)
         fill_info(version, method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second, sec[3].second},
                   bytes.size(), free_points, chains, flips, q.size(), info);

@@ -46,6 +46,7 @@
 #include <string>
 
 #include "algorithms/model/model.h"
+#include "algorithms/model/model_topology.h"
 #include "kernel/status.h"
 
 namespace erd {
@@ -89,5 +90,11 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
 // Decodes a whole file into *out; every problem is one Status (input) naming the section.
 Status decode_erdz(const std::string& bytes, Model* out, ErdzInfo* info = nullptr,
                    const ErdzLimits& limits = ErdzLimits());
+
+// decode_erdz, also handing back the model's adjacency (*topo, as build_topology(*out) gives it)
+// from the triangulation the decoder rebuilt: the model's faces are its faces in order, so the
+// twins are the kernel's and only the vertex fans are counted (no directed-edge search).
+Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology* topo, ErdzInfo* info = nullptr,
+                            const ErdzLimits& limits = ErdzLimits());
 
 }  // namespace erd
