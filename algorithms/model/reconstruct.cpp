@@ -334,9 +334,8 @@ struct SubRow {
 // One face's plane on Lattice::supersample() in fine units (scale 4 is a power of two: no
 // rounding is added), taken once per face and channel.
 struct FinePlane {
-    double z0 = 0.0, gx = 0.0, gy = 0.0, x0 = 0.0, y0 = 0.0;
-    RowPlane rp{0.0};
-    FinePlane() = default;
+    double z0, gx, gy, x0, y0;
+    RowPlane rp;
     explicit FinePlane(const SpanPlane& pl)
         : z0(pl.z0), gx(pl.gx / Lattice::supersample().scale), gy(pl.gy / Lattice::supersample().scale),
           x0(pl.x0 * Lattice::supersample().scale), y0(pl.y0 * Lattice::supersample().scale),
@@ -517,8 +516,9 @@ void supersampling(const Model& m, const Prepared& p, Image* out, ProgressHook p
             for (std::uint32_t k = face_first[b]; k < face_first[b + 1]; ++k) {
                 const std::uint32_t f = band_faces[k];
                 const auto& fc = m.faces[f];
-                FinePlane fp[3];
-                for (std::size_t c = 0; c < C; ++c) fp[c] = FinePlane(p.planes[f * C + c]);
+                // Channel 0's plane stands in for the channels a gray model lacks (never read).
+                const FinePlane fp[3] = {FinePlane(p.planes[f * C]), FinePlane(p.planes[f * C + (C > 1 ? 1 : 0)]),
+                                         FinePlane(p.planes[f * C + (C > 1 ? 2 : 0)])};
                 // The band's sub-rows only: a face spanning several bands is walked in pieces.
                 add_face(fp, C, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], p.dom, std::int32_t(4 * row0),
                          std::int32_t(4 * (row0 + rows) - 1), acc.data(), plane, W, row0);
