@@ -1,4 +1,5 @@
-// Decode time of .erdz files, in process: file bytes -> Model (decode_erdz), then -> image by
+// Decode time of .erdz files, in process: file bytes -> Model and its adjacency
+// (decode_erdz_topology, as erd reconstruct reads a file), then -> image by
 // point evaluation and by the model's own reconstruction (4x4 supersampled for a soft-edged ERD
 // model, else the same point evaluation). Medians of N runs of each, and the best run (on a
 // shared machine the best is the closest to the unloaded cost).
@@ -49,9 +50,10 @@ int main(int argc, char** argv) {
         for (int i = 0; i < n; ++i) {
             for (int mode = 0; mode < 3; ++mode) {
                 const auto t0 = std::chrono::steady_clock::now();
-                erd::Status st = erd::decode_erdz(bytes, &m);
+                erd::ModelTopology topo;
+                erd::Status st = erd::decode_erdz_topology(bytes, &m, &topo);
                 erd::Image im;
-                if (st && mode > 0) st = erd::reconstruct(m, mode == 2 && erd::supersampled(m), &im);
+                if (st && mode > 0) st = erd::reconstruct(m, topo, mode == 2 && erd::supersampled(m), &im);
                 const double t = ms_since(t0);
                 if (!st) {
                     std::fprintf(stderr, "%s: %s\n", argv[a], st.message.c_str());
