@@ -175,8 +175,8 @@ struct RowRun {
 // constant steppers.
 class OwnedRows {
 public:
-    OwnedRows(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b, LatticePoint c,
-              std::int32_t j_begin = INT32_MIN, std::int32_t j_end = INT32_MAX) {
+    [[gnu::always_inline]] OwnedRows(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b, LatticePoint c,
+                                     std::int32_t j_begin = INT32_MIN, std::int32_t j_end = INT32_MAX) {
         using namespace raster_detail;
         if (!setup(l, d, a, b, c, &s_)) return;
         // Rows and columns of the bounding box, clipped to the closed domain (and rows to the
@@ -211,7 +211,7 @@ public:
     std::size_t max_rows() const { return part_ == 3 ? 0 : std::size_t(j1_ - j0_ + 1); }
 
     // The next run of rows; false when there is none left. A run may hold rows that own nothing.
-    bool next(RowRun* run) {
+    [[gnu::always_inline]] bool next(RowRun* run) {
         using namespace raster_detail;
         for (; part_ < 3; ++part_) {
             std::int64_t first, last;

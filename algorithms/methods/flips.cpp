@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernel/raster.h"
+#include "kernel/raster_rows.h"
 
 namespace erd {
 
@@ -25,6 +26,7 @@ public:
 
     double operator()(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2,
                       const double* z2, double base = 0.0, double stop = std::numeric_limits<double>::infinity()) {
+        if (planes_.size() == 1) return gray(p0, z0[0], p1, z1[0], p2, z2[0], base, stop);
         if (scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_) == 0) return 0.0;
         double total = 0.0;
         for (std::size_t c = 0; c < planes_.size(); ++c) {
@@ -51,6 +53,36 @@ public:
     }
 
 private:
+    // One channel: the rows walked directly (kernel/raster_rows.h), so a sum stopped early stops
+    // the walk too; the same rows, values and additions as the span loop above.
+    double gray(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2, double base,
+                double stop) const {
+        const Image& image = *planes_[0];
+        SpanPlane plane;
+        plane.set(p0, z0, p1, z1, p2, z2);
+        const double dv = 2.0 * plane.gx;
+        const std::uint16_t* const samples = image.samples.data();
+        const std::size_t width = std::size_t(image.width);
+        double sse = 0.0;
+        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
+        for (RowRun part; rows.next(&part);) {
+            for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                std::int64_t lo64, hi64;
+                run.columns(&lo64, &hi64);
+                if (lo64 > hi64) continue;
+                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
+                const std::uint16_t* px = samples + std::size_t(j) * width;
+                double v = plane.at(double(2 * lo), double(2 * j));
+                for (std::int32_t i = lo; i <= hi; ++i, v += dv) {
+                    const double d = v - double(px[i]);
+                    sse += d * d;
+                }
+                if (base + sse >= stop) return sse;
+            }
+        }
+        return sse;
+    }
+
     std::vector<const Image*> planes_;
     RasterDomain domain_;
     std::vector<Span> spans_;
@@ -214,7 +246,8 @@ void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::
         double s = 0;
         for (std::size_t i = 0; i < star.size() && s < bound; ++i) {
             const EdgeInd e = star[i];
-            s += tri_error(p, zv, cdt->point(cdt->dest(e)), zs[2 * i], cdt->point(cdt->org(prev_edge(e))), zs[2 * i + 1]);
+            const double z[3] = {zv, zs[2 * i], zs[2 * i + 1]};
+            s += tri_error(p, &z[0], cdt->point(cdt->dest(e)), &z[1], cdt->point(cdt->org(prev_edge(e))), &z[2], s, bound);
         }
         if (!(s < bound) || !cdt->move_vertex(v, p)) continue;
         ++st.moves;

@@ -6,16 +6,19 @@
 #include <vector>
 
 #include "kernel/raster.h"
+#include "kernel/raster_rows.h"
 
 namespace erd {
 
 namespace {
 
 // The systems of the triangle (p0, p1, p2) for each of the N images (one, or the channel planes
-// of a colour image: the Gram matrix is the same, made once), over the pixels in spans.
+// of a colour image: the Gram matrix is the same, made once), over the pixels the triangle owns.
+// The rows are the triangle's owned rows, top to bottom, walked directly (kernel/raster_rows.h):
+// the rows and columns scan_triangle's spans hold, without the list in between.
 template <int N>
-void accumulate(const std::vector<Span>& spans, const Image* const* images, LatticePoint p0, LatticePoint p1,
-                LatticePoint p2, FaceSystem* out) {
+void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
+                FaceSystem* out) {
     SpanPlane l0, l1;  // the weights of corners 0 and 1 as planes
     l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
     l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
@@ -28,7 +31,15 @@ void accumulate(const std::vector<Span>& spans, const Image* const* images, Latt
     std::uint64_t bb[N] = {};  // sum b^2 in integers: exact, and what the double sum gave while exact
     std::uint16_t lo[N], hi[N];
     for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0;
-    for (const Span& sp : spans) {
+    bool owns = false;
+    OwnedRows rows(Lattice::pixels(), domain, p0, p1, p2);
+    for (RowRun part; rows.next(&part);) {
+      for (RowRun run = part; run.j <= run.j_end; run.step()) {
+        std::int64_t lo64, hi64;
+        run.columns(&lo64, &hi64);
+        if (lo64 > hi64) continue;
+        owns = true;
+        const Span sp{std::int32_t(run.j), std::int32_t(lo64), std::int32_t(hi64)};
         const double Y = double(2 * sp.y);
         const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
         const std::uint16_t* px[N];
@@ -54,7 +65,9 @@ void accumulate(const std::vector<Span>& spans, const Image* const* images, Latt
                 hi[k] = v > hi[k] ? v : hi[k];
             }
         }
+      }
     }
+    if (!owns) return;
     for (int k = 0; k < N; ++k) {
         FaceSystem& fs = out[k];
         const double g[6] = {g00, g01, g02, g11, g12, g22};
@@ -73,16 +86,14 @@ void accumulate(const std::vector<Span>& spans, const Image* const* images, Latt
 // images; faces[k] holds image k's.
 template <int N>
 void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces) {
-    const Lattice lattice = Lattice::pixels();
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
     for (int k = 0; k < N; ++k) faces[k].reserve(cdt.face_count());
-    std::vector<Span> spans;
     for (FaceInd f = 0; f < cdt.face_count(); ++f) {
         const EdgeInd e = 3 * f;
         const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
-        if (scan_triangle(lattice, domain, p0, p1, p2, &spans) == 0) continue;
         FaceSystem fs[N];
-        accumulate<N>(spans, images, p0, p1, p2, fs);
+        accumulate<N>(images, domain, p0, p1, p2, fs);
+        if (!fs[0].owns) continue;
         const std::uint32_t entry[3] = {model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1),
                                         model.corner_entry(cdt, e + 2)};
         for (int k = 0; k < N; ++k) {
@@ -190,12 +201,10 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
 
 }  // namespace
 
-FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
-                       std::vector<Span>* spans) {
+FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2) {
     FaceSystem fs;
-    if (scan_triangle(Lattice::pixels(), domain, p0, p1, p2, spans) == 0) return fs;
     const Image* one = &image;
-    accumulate<1>(*spans, &one, p0, p1, p2, &fs);
+    accumulate<1>(&one, domain, p0, p1, p2, &fs);
     return fs;
 }
 
@@ -203,7 +212,7 @@ const FaceSystem& MeshSystems::get(const Cdt& cdt, const Image& image, FaceInd f
     if (stale[f]) {
         const EdgeInd e = 3 * f;
         faces[f] = face_system(image, RasterDomain{cdt.max_x(), cdt.max_y()}, cdt.point(cdt.org(e)),
-                               cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)), &spans_);
+                               cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)));
         stale[f] = 0;
     }
     return faces[f];
@@ -233,13 +242,11 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
         systems->faces.assign(cdt.face_count(), FaceSystem());
         systems->stale.assign(cdt.face_count(), 0);
         const RasterDomain domain{cdt.max_x(), cdt.max_y()};
-        std::vector<Span> spans;
         faces.reserve(cdt.face_count());
         for (FaceInd f = 0; f < cdt.face_count(); ++f) {
             const EdgeInd e = 3 * f;
             FaceSystem& fs = systems->faces[f];
-            fs = face_system(image, domain, cdt.point(cdt.org(e)), cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)),
-                             &spans);
+            fs = face_system(image, domain, cdt.point(cdt.org(e)), cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)));
             if (!fs.owns) continue;
             for (int j = 0; j < 3; ++j) fs.entry[j] = model->corner_entry(cdt, e + EdgeInd(j));
             faces.push_back(fs);

@@ -49,10 +49,9 @@ struct FaceSystem {
 };
 
 // The system of the triangle with corners p0, p1, p2 in that order (the order of a face's
-// corners 0, 1, 2) over the pixels it owns; spans is scratch. Bit for bit what the refit's own
-// pass over the pixels makes for such a face.
-FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
-                       std::vector<Span>* spans);
+// corners 0, 1, 2) over the pixels it owns. Bit for bit what the refit's own pass over the
+// pixels makes for such a face.
+FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2);
 
 // The systems of a mesh's faces by face slot, kept in step with the mesh: the refit fills them
 // when they are missing, and the flips (flips.h) rewrite those of the faces they flip, so the
@@ -67,8 +66,6 @@ struct MeshSystems {
     void mark(FaceInd f) { stale[f] = 1; }
     // The system of face f, made again first when stale.
     const FaceSystem& get(const Cdt& cdt, const Image& image, FaceInd f);
-private:
-    std::vector<Span> spans_;
 };
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
