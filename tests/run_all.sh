@@ -130,7 +130,7 @@ else
 fi
 
 stage
-echo "== vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd reconstruct's image"
+echo "== vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
 # Installs chromium and librsvg2-bin when missing (as the Makefile installs its packages); without
 # any renderer the stage is counted as skipped, never as passed.
 for pkg in chromium:chromium rsvg-convert:librsvg2-bin; do
