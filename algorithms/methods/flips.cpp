@@ -27,26 +27,42 @@ public:
     double operator()(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2,
                       const double* z2, double base = 0.0, double stop = std::numeric_limits<double>::infinity()) {
         if (planes_.size() == 1) return gray(p0, z0[0], p1, z1[0], p2, z2[0], base, stop);
-        if (scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_) == 0) return 0.0;
-        double total = 0.0;
-        for (std::size_t c = 0; c < planes_.size(); ++c) {
-            const Image& image = *planes_[c];
-            SpanPlane plane;
-            plane.set(p0, z0[c], p1, z1[c], p2, z2[c]);
-            const double dv = 2.0 * plane.gx;
-            double sse = 0.0;
-            for (const Span& sp : spans_) {
-                const std::uint16_t* px = &image.samples[std::size_t(sp.y) * std::size_t(image.width)];
-                double v = plane.at(double(2 * sp.x_begin), double(2 * sp.y));
-                for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, v += dv) {
-                    const double d = v - double(px[i]);
-                    sse += d * d;
-                }
-                if (base + (c == 0 ? sse : total + sse) >= stop) return c == 0 ? sse : total + sse;
-            }
-            total = c == 0 ? sse : total + sse;
+        // Colour: one walk of the rows for all channels, each channel's sum in its own pixel
+        // order, added as (c0 + c1) + c2. A sum stopped early is at least `stop` as the whole one
+        // is; an accepted flip has whole sums, the same as a channel-by-channel loop's.
+        const std::size_t C = planes_.size();
+        SpanPlane plane[kMaxChannels];
+        double dv[kMaxChannels], sse[kMaxChannels] = {};
+        for (std::size_t c = 0; c < C; ++c) {
+            plane[c].set(p0, z0[c], p1, z1[c], p2, z2[c]);
+            dv[c] = 2.0 * plane[c].gx;
         }
-        return total;
+        const std::size_t width = std::size_t(planes_[0]->width);
+        const auto total = [&] {
+            double t = sse[0];
+            for (std::size_t c = 1; c < C; ++c) t += sse[c];
+            return t;
+        };
+        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
+        for (RowRun part; rows.next(&part);) {
+            for (RowRun run = part; run.j <= run.j_end; run.step()) {
+                std::int64_t lo64, hi64;
+                run.columns(&lo64, &hi64);
+                if (lo64 > hi64) continue;
+                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
+                for (std::size_t c = 0; c < C; ++c) {
+                    const std::uint16_t* px = planes_[c]->samples.data() + std::size_t(j) * width;
+                    double v = plane[c].at(double(2 * lo), double(2 * j)), e = sse[c];
+                    for (std::int32_t i = lo; i <= hi; ++i, v += dv[c]) {
+                        const double d = v - double(px[i]);
+                        e += d * d;
+                    }
+                    sse[c] = e;
+                }
+                if (base + total() >= stop) return total();
+            }
+        }
+        return total();
     }
     double operator()(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2) {
         return (*this)(p0, &z0, p1, &z1, p2, &z2);
@@ -85,7 +101,6 @@ private:
 
     std::vector<const Image*> planes_;
     RasterDomain domain_;
-    std::vector<Span> spans_;
 };
 
 // The flip loop of one or C channels: channel c's corner values from models[c] on planes[c].
