@@ -25,14 +25,23 @@ public:
         : planes_(std::move(planes)), domain_{cdt.max_x(), cdt.max_y()} {}
 
     double operator()(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2,
-                      const double* z2, double base = 0.0, double stop = std::numeric_limits<double>::infinity()) {
-        if (planes_.size() == 1) return gray(p0, z0[0], p1, z1[0], p2, z2[0], base, stop);
-        // Colour: one walk of the rows for all channels, each channel's sum in its own pixel
-        // order, added as (c0 + c1) + c2. A sum stopped early is at least `stop` as the whole one
-        // is; an accepted flip has whole sums, the same as a channel-by-channel loop's.
-        const std::size_t C = planes_.size();
-        SpanPlane plane[kMaxChannels];
-        double dv[kMaxChannels], sse[kMaxChannels] = {};
+                      const double* z2, double base = 0.0, double stop = std::numeric_limits<double>::infinity()) const {
+        return planes_.size() == 1 ? walk<1>(p0, z0, p1, z1, p2, z2, base, stop) : walk<3>(p0, z0, p1, z1, p2, z2, base, stop);
+    }
+    double operator()(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2) const {
+        return (*this)(p0, &z0, p1, &z1, p2, &z2);
+    }
+
+private:
+    // The rows walked once for all C channels (1 or 3: the planes a model has), each channel's sum in its
+    // own pixel order, added as (c0 + c1) + c2; a sum stopped early (after the first row where
+    // base + sum >= stop) stops the walk too. A stopped sum is at least `stop`, as the whole one
+    // is; an accepted flip has whole sums.
+    template <std::size_t C>
+    double walk(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2, const double* z2,
+                double base, double stop) const {
+        SpanPlane plane[C];
+        double dv[C], sse[C] = {};
         for (std::size_t c = 0; c < C; ++c) {
             plane[c].set(p0, z0[c], p1, z1[c], p2, z2[c]);
             dv[c] = 2.0 * plane[c].gx;
@@ -63,40 +72,6 @@ public:
             }
         }
         return total();
-    }
-    double operator()(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2) {
-        return (*this)(p0, &z0, p1, &z1, p2, &z2);
-    }
-
-private:
-    // One channel: the rows walked directly (kernel/raster_rows.h), so a sum stopped early stops
-    // the walk too; the same rows, values and additions as the span loop above.
-    double gray(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2, double base,
-                double stop) const {
-        const Image& image = *planes_[0];
-        SpanPlane plane;
-        plane.set(p0, z0, p1, z1, p2, z2);
-        const double dv = 2.0 * plane.gx;
-        const std::uint16_t* const samples = image.samples.data();
-        const std::size_t width = std::size_t(image.width);
-        double sse = 0.0;
-        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
-        for (RowRun part; rows.next(&part);) {
-            for (RowRun run = part; run.j <= run.j_end; run.step()) {
-                std::int64_t lo64, hi64;
-                run.columns(&lo64, &hi64);
-                if (lo64 > hi64) continue;
-                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
-                const std::uint16_t* px = samples + std::size_t(j) * width;
-                double v = plane.at(double(2 * lo), double(2 * j));
-                for (std::int32_t i = lo; i <= hi; ++i, v += dv) {
-                    const double d = v - double(px[i]);
-                    sse += d * d;
-                }
-                if (base + sse >= stop) return sse;
-            }
-        }
-        return sse;
     }
 
     std::vector<const Image*> planes_;
