@@ -31,9 +31,10 @@ typedef std::uint32_t U32x4 __attribute__((vector_size(16)));
 typedef std::uint16_t U16x8 __attribute__((vector_size(16)));
 
 // The twelve samples of four consecutive RGB pixels at p (each <= 255), in their interleaved
-// order, into the high halves of three vectors' 32-bit lanes (the low halves zero): two
-// overlapping 16-byte loads (samples 0-7 and 4-11) and an unpack against zero per vector. Reads no sample at or past `end`: a group that would is
-// copied into zeros first (the image's last pixels only); end null: no check (the caller knows).
+// order, into the high halves of three vectors' 32-bit lanes (the low halves zero): two 16-byte
+// loads (samples 0-7 and 8-15: the next pixel's too, unused) and an unpack against zero per vector.
+// Reads no sample at or past `end`: a group that would is copied into zeros first (the image's
+// last pixels only); end null: no check (the caller knows).
 inline void load4_rgb(const std::uint16_t* p, const std::uint16_t* end, U16x8 out[3]) {
     U16x8 a, b;
     if (!end || end - p >= 16) {
