@@ -119,7 +119,8 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
     Image copy;
     Status st = copy_view(image, &copy);
     if (!st) return st;
-    if (options.max_memory) {
+    // The content estimate is never above the size bound: made only when the bound does not fit.
+    if (options.max_memory && memory_bound(*entry, image.width, image.height, image.channels, options.generate) > options.max_memory) {
         // From the content (the ERD methods sample step 1's gradient), once the copy exists:
         // the size alone bounds an edge-rich image and would refuse most photos 3 times over.
         const std::size_t need = erd::memory_estimate(*entry, copy, options.generate);

@@ -373,3 +373,31 @@ else
     echo "codec: lena.pgm, bull.pgm or $(dirname "$ERD")/liberd.a missing; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# quality (issue 16): the default ERDGPI and ERDED on the 12 thesis cases, whole process, side by
+# side with QUALITY_BASE (an erd binary built from the commit before issue 16, 78877d8, or any
+# build to compare with) in the same run, runs alternating case by case. Target: CPU time
+# <= 1.5x the base's in every case. Without QUALITY_BASE: skipped (there is nothing to divide by).
+if [[ -n ${QUALITY_BASE:-} && -x ${QUALITY_BASE:-} ]]; then
+    echo "quality: CPU ms medians of $RUNS, this build / QUALITY_BASE=$QUALITY_BASE (target <= 1.5x); load $(cut -d' ' -f1-3 /proc/loadavg)"
+    ratios=()
+    for m in erdgpi erded; do
+        for c in "bull 0.125" "bull 0.25" "bull 0.5" "bull 1" "lena 0.5" "lena 1" "lena 2" "lena 3" \
+                 "peppers 0.5" "peppers 1" "peppers 2" "peppers 3"; do
+            set -- $c
+            [[ -f $IMAGES/$1.pgm ]] || { echo "quality: $IMAGES/$1.pgm missing"; continue; }
+            read -r _ cpu_new _ < <("$TIMEIT" "$RUNS" "$ERD" generate -m $m -i "$IMAGES/$1.pgm" -d $2 -o "$OUT/q.erd")
+            read -r _ cpu_base _ < <("$TIMEIT" "$RUNS" "$QUALITY_BASE" generate -m $m -i "$IMAGES/$1.pgm" -d $2 -o "$OUT/q.erd")
+            r=$(awk -v a="$cpu_new" -v b="$cpu_base" 'BEGIN { printf "%.3f", a / b }')
+            ratios+=("$m $r")
+            printf 'quality %-7s %-8s %5s%%  cpu %7s ms  base %7s ms  %sx\n' $m $1 $2 "$cpu_new" "$cpu_base" "$r"
+        done
+    done
+    for m in erdgpi erded; do
+        printf '%s\n' "${ratios[@]}" | awk -v m=$m '$1 == m { print $2 }' | sort -g | awk -v m=$m '{ r[++n] = $1 } END {
+            med = n % 2 ? r[(n + 1) / 2] : (r[n / 2] + r[n / 2 + 1]) / 2
+            printf "quality %s: median %.3fx, worst %.3fx of the base (target <= 1.5x)\n", m, med, r[n] }'
+    done
+    rm -f "$OUT/q.erd"
+else
+    echo "quality: QUALITY_BASE (an erd binary of the commit before issue 16) not given; skipped"
+fi

@@ -48,7 +48,7 @@ TEST_CASE("generate --thesis is the thesis's settings; our defaults differ; flag
             gen(m, "--wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1", m + "-s.erd");
         const std::string ours = gen(m, "", m + "-d.erd");
         const std::string ours_spelled =
-            gen(m, "--thesis --wedge-fit 6 --flips 1 --moves 1 --alpha-min 0.75 --alpha-max 1 --edge-zero-radius 1 --edges auto --aa-errors 0", m + "-o.erd");
+            gen(m, "--thesis --wedge-fit 6 --flips 2 --moves 2 --alpha-min 0.75 --alpha-max 1 --edge-zero-radius 1 --edges auto --aa-errors 0", m + "-o.erd");
         CHECK(!thesis.empty());
         CHECK(thesis == spelled);
         CHECK(thesis != ours);

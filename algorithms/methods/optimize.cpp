@@ -1,5 +1,8 @@
 #include "algorithms/methods/optimize.h"
 
+#include <algorithm>
+#include <cstdint>
+
 #include "algorithms/methods/flips.h"
 #include "algorithms/methods/scaffold.h"
 #include "algorithms/methods/wedge_fit.h"
@@ -10,6 +13,15 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
                        const std::vector<double>* line_search, WedgeFitStats* stats, MeshSystems* systems) {
     // Round 1 tries every edge; later rounds (after a refit moved the values) only the edges of
     // the faces the previous round flipped, where the refit moved the most.
+    // Each refit here starts from the values of the one before, which a few flips or moves have
+    // barely changed: half the first refit's CG steps do (docs/DECISIONS.md "Mesh optimisation").
+    WedgeFitOptions later = wedge_fit_options(options);
+    later.iterations = (later.iterations + 1) / 2;
+    auto refit = [&] {
+        WedgeFitStats again;
+        fit_wedge_values(*cdt, image, later, model, &again, line_search, {}, systems);
+        if (stats) stats->sse_after = again.sse_after;
+    };
     std::vector<FaceInd> seed;
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
@@ -17,24 +29,26 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
                          options.flip_min_share);
         seed = std::move(fs.changed);
         if (fs.flips == 0 && options.moves == 0) break;
-        if (options.wedge_fit > 0) {
-            WedgeFitStats again;
-            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, systems);
-            if (stats) stats->sse_after = again.sse_after;
-        }
-        if (round < options.moves && systems && options.wedge_fit > 0) {
+        const bool moves = round < options.moves && systems && options.wedge_fit > 0;
+        // After round 1, a round's few flips leave the values where they were: its moves follow
+        // them directly, with one refit after both.
+        if (options.wedge_fit > 0 && (round == 0 || !moves)) refit();
+        if (moves) {
             MoveStats ms;
-            improve_by_moves(cdt, image, *model, options.move_step, options.move_min_gain, systems, &ms);
-            WedgeFitStats again;
-            fit_wedge_values(*cdt, image, wedge_fit_options(options), model, &again, line_search, {}, systems);
-            if (stats) stats->sse_after = again.sse_after;
+            // Coarse to fine: each round's moves take half the step of the round before (at
+            // least half a pixel).
+            const std::int32_t step = std::max<std::int32_t>(1, options.move_step >> round);
+            improve_by_moves(cdt, image, *model, step, options.move_min_gain, systems, &ms);
+            refit();
         }
     }
 }
 
 void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* model,
                        const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats) {
-    std::vector<FaceInd> seed;  // as the gray rounds above
+    std::vector<FaceInd> seed;  // as the gray rounds above, their refits with half the steps too
+    WedgeFitOptions later = wedge_fit_options(options);
+    later.iterations = (later.iterations + 1) / 2;
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
         model->flip(cdt, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed);
@@ -42,7 +56,7 @@ void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* mo
         if (fs.flips == 0) break;
         if (options.wedge_fit > 0) {
             WedgeFitStats again;
-            model->fit(*cdt, wedge_fit_options(options), &again, {}, line_search);
+            model->fit(*cdt, later, &again, {}, line_search);
             if (stats) stats->sse_after = again.sse_after;
         }
     }

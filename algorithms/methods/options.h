@@ -72,11 +72,11 @@ struct GenerateOptions {
                                  // (algorithms/methods/wedge_fit.h WedgeFitOptions)
     int refit_stages = 0;        // ERDGPI (ours): refit the wedge values this many times during
                                  // refinement, so later insertions see the refitted errors
-    int moves = 1;               // ERD (ours): rounds (of the flips') with vertex moves + refit
-    int move_step = 2;           // their step in doubled lattice units
-    double move_min_gain = 0.03; // moves predicted to gain less than this share of the error are not tried
-    double flip_min_share = 0.1;  // quadrilaterals below this share of the mean error are not tried
-    int flips = 1;               // ERD (ours): rounds of data-dependent flips + refit after the refit
+    int moves = 2;               // ERD (ours): rounds (of the flips') with vertex moves + refit
+    int move_step = 2;           // their first round's step in doubled lattice units (halved each round after)
+    double move_min_gain = 0.05; // moves predicted to gain less than this share of the error are not tried
+    double flip_min_share = 0.2;  // quadrilaterals below this share of the mean error are not tried
+    int flips = 2;               // ERD (ours): rounds of data-dependent flips + refit after the refit
     bool optimize = false;       // ED, GPI (--optimize, ours): least-squares vertex values
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
