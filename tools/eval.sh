@@ -111,10 +111,16 @@ echo "eval: ${#cases[@]} cases (${variants[*]}), $JOBS at a time; outputs under 
 printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"$OUT/raw.txt"
 
 # ---- docs/RESULTS.md ----
-# The codec table (make codec-bench) is kept: saved here, put back after the rewrite.
+# The sections `make codec-bench` (codec) and `make bench` (colour-cost) write are kept: saved
+# here, put back after the rewrite (colour-cost after the colour table it follows).
+keep_section() {
+    : >"$OUT/$1_section.md"
+    [[ -f $RESULTS ]] && awk -v m="$1" 'index($0, "<!-- " m) == 1 { on = 1 } on { print } $0 == "<!-- /" m " -->" { on = 0 }' \
+        "$RESULTS" >"$OUT/$1_section.md"
+}
+keep_section codec
+keep_section colour-cost
 codec_keep=$OUT/codec_section.md
-: >"$codec_keep"
-[[ -f $RESULTS ]] && awk '/^<!-- codec/ { on = 1 } on { print } /^<!-- \/codec -->/ { on = 0 }' "$RESULTS" >"$codec_keep"
 {
     echo "# Results"
     echo
@@ -205,4 +211,5 @@ if [[ -s $codec_keep ]]; then source tools/results_section.sh; put_section codec
 bash tools/eval_hard.sh "$ERD" "$IMAGES"
 # The colour table (issue 17): its own marked section too.
 bash tools/eval_colour.sh "$(dirname "$ERD")" "$IMAGES"
+if [[ -s $OUT/colour-cost_section.md ]]; then source tools/results_section.sh; put_section colour-cost "$OUT/colour-cost_section.md" "$RESULTS"; fi
 grep -E "^(## |Met|Median)" "$RESULTS"
