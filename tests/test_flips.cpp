@@ -9,6 +9,8 @@
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/flips.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/methods/optimize.h"
+#include "algorithms/methods/scaffold.h"
 #include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/erd_model.h"
 #include "algorithms/model/metrics.h"
@@ -163,6 +165,50 @@ TEST_CASE("vertex moves lower the squared error and keep the count, constraints 
     Model m;
     model.to_model(cdt, im.width, im.height, im.maxval, &m);
     test::check_model(m);
+}
+
+TEST_CASE("rounds of moves go coarse to fine: one pixel, then half a pixel", "[flips]") {
+    const Image im = ridge(48, 40);
+    // Displacements of the vertices after `moves` rounds (doubled units): round 1 steps 2, round 2
+    // steps 1, so an odd component shows a second-round move and moves 1 leaves every one even.
+    auto displacements = [&](int moves) {
+        Cdt cdt;
+        std::vector<std::array<VertInd, 2>> cons;
+        ErdModel model = ridge_mesh(im, 5, &cdt, &cons);
+        std::vector<LatticePoint> before;
+        for (VertInd v = 0; v < cdt.vertex_count(); ++v) before.push_back(cdt.point(v));
+        GenerateOptions o;
+        o.flips = 2;
+        o.moves = moves;
+        o.move_min_gain = 0;
+        MeshSystems systems;
+        WedgeFitStats st;
+        fit_wedge_values(cdt, im, wedge_fit_options(o), &model, &st, nullptr, {}, &systems);
+        optimize_by_flips(&cdt, im, o, &model, nullptr, &st, &systems);
+        std::string why;
+        INFO(why);
+        CHECK(cdt.verify_topology(&why));
+        REQUIRE(cdt.vertex_count() == before.size());
+        std::vector<LatticePoint> d;
+        for (VertInd v = 0; v < cdt.vertex_count(); ++v)
+            d.push_back({cdt.point(v).x - before[v].x, cdt.point(v).y - before[v].y});
+        return d;
+    };
+    int odd = 0, moved = 0;
+    for (const LatticePoint& d : displacements(2)) {
+        CHECK(std::abs(d.x) <= 3);
+        CHECK(std::abs(d.y) <= 3);
+        odd += (d.x % 2 != 0 || d.y % 2 != 0);
+        moved += (d.x != 0 || d.y != 0);
+    }
+    CHECK(moved > 0);
+    CHECK(odd > 0);
+    for (const LatticePoint& d : displacements(1)) {
+        CHECK(d.x % 2 == 0);
+        CHECK(d.y % 2 == 0);
+        CHECK(std::abs(d.x) <= 2);
+        CHECK(std::abs(d.y) <= 2);
+    }
 }
 
 TEST_CASE("regularised refit: values stay within their pixels' range and near a weakly supported line-search value",
