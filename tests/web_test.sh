@@ -21,7 +21,8 @@ IMAGES=$1; SHOT=${2:-}
 command -v chromium >/dev/null || { echo "SKIP: chromium not installed"; exit 77; }
 command -v node >/dev/null && command -v npm >/dev/null || { echo "SKIP: node/npm not installed"; exit 77; }
 for f in lena.pgm color/kodim03.ppm; do [[ -f $IMAGES/$f ]] || { echo "FAIL: $IMAGES/$f missing"; exit 1; }; done
-make -s web >/dev/null || { echo "FAIL: make web"; exit 1; }
+# -j2: one em++ per source (Makefile web/build/obj), on both cores.
+make -s -j2 web >/dev/null || { echo "FAIL: make web"; exit 1; }
 if [[ ! -d web/node_modules/playwright-core ]]; then
     (cd web && npm ci --no-audit --no-fund >/dev/null 2>&1) || { echo "SKIP: npm ci could not install playwright-core (web/package-lock.json)"; exit 77; }
 fi
