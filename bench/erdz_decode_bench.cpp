@@ -3,7 +3,8 @@
 // point evaluation and by the model's own reconstruction (4x4 supersampled for a soft-edged ERD
 // model, else the same point evaluation). Medians of N runs of each, and the best run (on a
 // shared machine the best is the closest to the unloaded cost).
-// Usage: erdz_decode_bench N FILE.erdz...
+// Usage: erdz_decode_bench [-j THREADS] N FILE.erdz...   (THREADS for the reconstruction, as
+// erd reconstruct -j: default 1, 0 = one per processor, the CLI's default)
 // Prints per file: "FILE W H decode MED BEST  +point MED BEST  +own MED BEST" (ms).
 #include <algorithm>
 #include <chrono>
@@ -35,8 +36,13 @@ struct Times {
 }  // namespace
 
 int main(int argc, char** argv) {
+    int threads = 1;
+    if (argc > 2 && std::string(argv[1]) == "-j") {
+        threads = std::atoi(argv[2]);
+        argv += 2, argc -= 2;
+    }
     if (argc < 3) {
-        std::fprintf(stderr, "usage: erdz_decode_bench N FILE.erdz...\n");
+        std::fprintf(stderr, "usage: erdz_decode_bench [-j THREADS] N FILE.erdz...\n");
         return 2;
     }
     const int n = std::max(1, std::atoi(argv[1]));
@@ -53,7 +59,7 @@ int main(int argc, char** argv) {
                 erd::ModelTopology topo;
                 erd::Status st = erd::decode_erdz_topology(bytes, &m, &topo);
                 erd::Image im;
-                if (st && mode > 0) st = erd::reconstruct(m, topo, mode == 2 && erd::supersampled(m), &im);
+                if (st && mode > 0) st = erd::reconstruct(m, topo, mode == 2 && erd::supersampled(m), &im, {}, threads);
                 const double t = ms_since(t0);
                 if (!st) {
                     std::fprintf(stderr, "%s: %s\n", argv[a], st.message.c_str());

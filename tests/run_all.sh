@@ -61,59 +61,45 @@ fi
 echo "== unit tests (the ASan+UBSan build runs beside them)"
 ERD_BIN=build/erd ERD_IMAGES=$IMAGES build/erd_tests 2>&1 | tee "$log/unit" | tail -3
 count_catch "$log/unit" "${PIPESTATUS[0]}"
-
 stage
-# The sanitized unit tests and the fuzz smoke runs each use one core: they run side by side (the
-# sanitized tests in the background, their result printed after the fuzz runs), which takes the
-# longer of the two instead of their sum on a 2-core machine.
-echo "== unit tests under ASan+UBSan (started once built; they run beside the fuzz smoke runs)"
-[[ -n $asan_build_pid ]] && wait "$asan_build_pid"
-asan_pid=""
-if [[ $(cat "$log/asan-build.rc" 2>/dev/null) == 0 ]]; then
-    ( ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      ERD_BIN=build-asan/erd ERD_IMAGES=$IMAGES ERD_SANITIZED=1 build-asan/erd_tests >"$log/asan" 2>&1
-      echo $? >"$log/asan.rc" ) &
-    asan_pid=$!
-else
-    tail -20 "$log/asan-build"; echo "sanitizer build failed"; failed=$((failed + 1))
-fi
 
-stage
-echo "== fuzz smoke runs"
-if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
-    FUZZ_SHORT_SECONDS=${FUZZ_SHORT_SECONDS:-3} bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-20}" >"$log/fuzz" 2>&1
-    cat "$log/fuzz" | grep -E "^(fuzz|PASS|FAIL)|ERROR|SUMMARY|Test unit written" || true
-    p=$(grep -c '^PASS' "$log/fuzz"); f=$(grep -c '^FAIL' "$log/fuzz")
-    passed=$((passed + p)); failed=$((failed + f))
-fi
-
-if [[ -n $asan_pid ]]; then
-    wait "$asan_pid"
-    stage
-    echo "== unit tests under ASan+UBSan: result"
+# The stages after the unit tests, as functions: each prints its lines and adds to passed /
+# failed / skipped. run_job runs one in a subshell of its own (its lines to $log/NAME.out, its
+# counts and seconds to $log/NAME.count), so that jobs can run side by side; show_job prints a
+# finished job's lines under its heading and adds its counts, in the order the stages are listed.
+stage_asan() {
+    if [[ $(cat "$log/asan-build.rc" 2>/dev/null) != 0 ]]; then
+        tail -20 "$log/asan-build"; echo "sanitizer build failed"; failed=$((failed + 1)); return
+    fi
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+        ERD_BIN=build-asan/erd ERD_IMAGES=$IMAGES ERD_SANITIZED=1 build-asan/erd_tests >"$log/asan" 2>&1
+    local rc=$?
     tail -3 "$log/asan"
-    count_catch "$log/asan" "$(cat "$log/asan.rc" 2>/dev/null || echo 1)"
-fi
+    count_catch "$log/asan" "$rc"
+}
 
-stage
-echo "== embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
-if make -s -j2 embedded >"$log/embedded" 2>&1; then
-    grep -E '^(library|example|estimated|erdgpi)' "$log/embedded" || true
-    passed=$((passed + 1))
-else
-    tail -20 "$log/embedded"; echo "embedded build or example failed"; failed=$((failed + 1))
-fi
+stage_embedded() {
+    if make -s -j2 embedded >"$log/embedded" 2>&1; then
+        grep -E '^(library|example|estimated|erdgpi)' "$log/embedded" || true
+        passed=$((passed + 1))
+    else
+        tail -20 "$log/embedded"; echo "embedded build or example failed"; failed=$((failed + 1))
+    fi
+}
 
-stage
-echo "== python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
-if make -s python >"$log/python-build" 2>&1; then
+stage_python() {
+    if ! make -s python >"$log/python-build" 2>&1; then
+        tail -20 "$log/python-build"; echo "python package build failed (pybind11, numpy or pytest missing?)"; failed=$((failed + 1))
+        return
+    fi
     grep '^python: built' "$log/python-build" || true
+    local images_abs rc line p=0 f=0
     images_abs=$(cd "$IMAGES" 2>/dev/null && pwd)
     (cd python && ERD_BIN=$PWD/../build/erd ERD_IMAGES=$images_abs PYTHONPATH=$PWD \
         /usr/bin/python3 -m pytest -q -p no:cacheprovider tests) >"$log/pytest" 2>&1
     rc=$?
     tail -3 "$log/pytest"
-    line=$(tail -1 "$log/pytest"); p=0; f=0   # "1 failed, 54 passed in 9.1s", "2 errors in ..."
+    line=$(tail -1 "$log/pytest")   # "1 failed, 54 passed in 9.1s", "2 errors in ..."
     [[ $line =~ ([0-9]+)\ passed ]] && p=${BASH_REMATCH[1]}
     [[ $line =~ ([0-9]+)\ failed ]] && f=${BASH_REMATCH[1]}
     [[ $line =~ ([0-9]+)\ error ]] && f=$((f + BASH_REMATCH[1]))
@@ -125,17 +111,8 @@ if make -s python >"$log/python-build" 2>&1; then
     else
         tail -20 "$log/venv"; echo "pip install into a venv failed"; failed=$((failed + 1))
     fi
-else
-    tail -20 "$log/python-build"; echo "python package build failed (pybind11, numpy or pytest missing?)"; failed=$((failed + 1))
-fi
+}
 
-stage
-echo "== vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
-# Installs chromium and librsvg2-bin when missing (as the Makefile installs its packages); without
-# any renderer the stage is counted as skipped, never as passed.
-for pkg in chromium:chromium rsvg-convert:librsvg2-bin; do
-    command -v "${pkg%%:*}" >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${pkg#*:}" >/dev/null 2>&1 || true
-done
 # Runs one browser stage (a script whose exit 77 means "skipped") and counts it once.
 browser_stage() {
     local name=$1; shift
@@ -148,15 +125,66 @@ browser_stage() {
         *) failed=$((failed + 1)) ;;
     esac
 }
-if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm && -f $IMAGES/color/kodim03.ppm ]]; then
-    browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm" "$IMAGES/color/kodim03.ppm"
-else
-    echo "FAILED: $IMAGES/bull.pgm, lena.pgm or color/kodim03.ppm missing"; failed=$((failed + 1))
-fi
 
+stage_vector() {
+    if [[ -f $IMAGES/bull.pgm && -f $IMAGES/lena.pgm && -f $IMAGES/color/kodim03.ppm ]]; then
+        browser_stage vector tools/svg_browser_psnr.sh build/erd "$IMAGES/bull.pgm" "$IMAGES/lena.pgm" "$IMAGES/color/kodim03.ppm"
+    else
+        echo "FAILED: $IMAGES/bull.pgm, lena.pgm or color/kodim03.ppm missing"; failed=$((failed + 1))
+    fi
+}
+
+stage_web() { browser_stage web tests/web_test.sh "$IMAGES"; }
+
+run_job() {
+    local name=$1 fn=$2 t0=$SECONDS
+    ( passed=0; failed=0; skipped=0; $fn; echo "$passed $failed $skipped $(( SECONDS - t0 ))" >"$log/$name.count" ) >"$log/$name.out" 2>&1
+}
+
+show_job() {
+    local name=$1 heading=$2 p=0 f=1 s=0 t=?
+    echo "== $heading"
+    cat "$log/$name.out" 2>/dev/null
+    [[ -f $log/$name.count ]] && read -r p f s t <"$log/$name.count"
+    [[ -f $log/$name.count ]] || echo "the $name stage did not finish"
+    passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
+    echo "   ($t s)"
+}
+
+# Installs chromium and librsvg2-bin when missing (as the Makefile installs its packages); without
+# any renderer the browser stages are counted as skipped, never as passed.
+for pkg in chromium:chromium rsvg-convert:librsvg2-bin; do
+    command -v "${pkg%%:*}" >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${pkg#*:}" >/dev/null 2>&1 || true
+done
+# The Python and web stages' packages too, here and one after the other: the stages run side by
+# side, and two apt-gets at once would fight over dpkg's lock. A failure shows in its stage.
+make -s python-deps /usr/bin/em++ >"$log/stage-deps" 2>&1 || true
+
+# Two chains on the two cores: the sanitized unit tests, then the embedded build, the Python
+# package and the vector SVG renderers, in the background; the fuzz smoke runs (one core: a
+# target at a time for a fixed time) and then the web page in the foreground. Each chain is
+# about 7 minutes; one after the other they took 9.
+echo "== unit tests under ASan+UBSan, embedded build, python, vector SVG (in the background, beside the fuzz smoke runs and the web page; printed below)"
+[[ -n $asan_build_pid ]] && wait "$asan_build_pid"
 stage
-echo "== web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
-browser_stage web tests/web_test.sh "$IMAGES"
+( run_job asan stage_asan; run_job embedded stage_embedded; run_job python stage_python; run_job vector stage_vector ) &
+chain_pid=$!
+
+echo "== fuzz smoke runs"
+if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
+    FUZZ_SHORT_SECONDS=${FUZZ_SHORT_SECONDS:-3} bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-20}" >"$log/fuzz" 2>&1
+    cat "$log/fuzz" | grep -E "^(fuzz|PASS|FAIL)|ERROR|SUMMARY|Test unit written" || true
+    p=$(grep -c '^PASS' "$log/fuzz"); f=$(grep -c '^FAIL' "$log/fuzz")
+    passed=$((passed + p)); failed=$((failed + f))
+fi
+stage
+run_job web stage_web
+wait "$chain_pid"
+show_job asan "unit tests under ASan+UBSan: result"
+show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
+show_job python "python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
+show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
+show_job web "web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
 
 stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"
