@@ -361,7 +361,10 @@ if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm && -f $(dirname "$ERD")/liberd.
         "$ERD" generate -q --method erdgpi -d 3 --step 2 -i "$IMAGES/lena.pgm" -o "$OUT/lena3.erdz"
         "$ERD" generate -q --method erdgpi -d 0.125 --step 2 -i "$IMAGES/bull.pgm" -o "$OUT/bull0125.erdz"
         echo "codec: FILE W H  decode median best  +point median best  +own median best (ms; target +own <= 20 for 512x512)"
-        "$EDB" "$RUNS" "$OUT/lena3.erdz" "$OUT/bull0125.erdz"
+        echo "codec: one thread (-j 1)"
+        "$EDB" -j 1 "$RUNS" "$OUT/lena3.erdz" "$OUT/bull0125.erdz"
+        echo "codec: one thread per processor (-j 0, erd reconstruct's default)"
+        "$EDB" -j 0 "$RUNS" "$OUT/lena3.erdz" "$OUT/bull0125.erdz"
         if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
             valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EDB" 1 "$OUT/lena3.erdz" 2>&1 >/dev/null |
                 sed -n 's/.*Collected : \([0-9]*\).*/codec lena3: \1 instructions (one run of decode, +point, +own)/p'
