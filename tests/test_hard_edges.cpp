@@ -9,6 +9,7 @@
 
 #include "algorithms/imaging/drawings.h"
 #include "algorithms/imaging/edge_kind.h"
+#include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
@@ -201,6 +202,53 @@ TEST_CASE("hard edges: ERDGPI and ERDED make exactly N points, verified meshes, 
     bool said = false;
     for (const std::string& line : result_lines(r.stats)) said = said || line.rfind("edges: hard (measured: ", 0) == 0;
     CHECK(said);
+}
+
+TEST_CASE("hard edges: the run without the fallback is skipped only where it would repeat the first", "[hardedges]") {
+    // hard_fallback reaches only step 1's counts: where no count took the plain curves, step 1
+    // (parameters, curves, mesh) is the same without the fallback, so run_erd_method's second run
+    // would repeat the first. Across sizes the fallback both fires (tiny N) and does not.
+    int fired = 0, quiet = 0;
+    for (const char* kind : {"drawing", "cartoon", "map"}) {
+        const Image im = picture(kind, 0);
+        for (std::size_t n : {30, 200, 1000, 4000}) {
+            INFO(kind << " N " << n);
+            InitialMeshOptions mo;
+            mo.target = n;
+            mo.hard_edges = true;
+            InitialMesh with, without;
+            Cdt a, b;
+            REQUIRE(build_initial_mesh(im, mo, &a, &with).ok());
+            mo.hard_fallback = false;
+            REQUIRE(build_initial_mesh(im, mo, &b, &without).ok());
+            CHECK_FALSE(without.plain_fallback);
+            if (with.plain_fallback) {
+                ++fired;
+                continue;
+            }
+            ++quiet;
+            CHECK(with.params.beta == without.params.beta);
+            CHECK(with.params.l == without.params.l);
+            CHECK(with.params.eps == without.params.eps);
+            CHECK(with.params.r == without.params.r);
+            CHECK(with.params.constrained_points == without.params.constrained_points);
+            CHECK(with.polylines == without.polylines);
+            CHECK(with.n0 == without.n0);
+            CHECK(a.vertex_count() == b.vertex_count());
+        }
+    }
+    CHECK(fired > 0);
+    CHECK(quiet > 0);
+    // Through the method: no fallback, one run, both PSNRs the model's; with it, two runs.
+    for (double d : {0.15, 5.0}) {
+        const Image im = picture("drawing", 0);
+        const GenerateResult r = run("erdgpi", im, d, EdgeChoice::hard);
+        INFO("density " << d << " fallback " << r.stats.erd.plain_fallback);
+        REQUIRE(r.stats.erd.plain_psnr > 0);
+        CHECK(psnr_of(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
+        CHECK(r.stats.erd.plain_fallback == (d < 1));  // the tiny mesh needs the plain curves, the large one not
+        if (!r.stats.erd.plain_fallback) CHECK(r.stats.erd.plain_psnr == r.stats.erd.exact_psnr);
+    }
 }
 
 TEST_CASE("hard edges in colour: both runs, the better kept by RGB-PSNR, verified", "[hardedges][colour]") {

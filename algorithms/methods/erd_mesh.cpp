@@ -66,8 +66,10 @@ public:
         const std::vector<Polyline>* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
         // Hard edges: the side-keeping curves when they fit the budget, else plain Douglas-Peucker
         // on the same cracks (docs/DECISIONS.md "Hard edges").
-        if (hard_ && fallback_ && double(distinct_points(*kept)) > budget_)
+        if (hard_ && fallback_ && double(distinct_points(*kept)) > budget_) {
             kept = &chain_.simplify(l, eps * eps_unit_, rule_, CrackRule::plain);
+            fell_back_ = true;
+        }
         if (chain_.generation() != counted_) {
             counted_ = chain_.generation();
             count_ = distinct_points(*kept);
@@ -77,6 +79,7 @@ public:
     }
 
     const Status& status() const { return status_; }
+    bool fell_back() const { return fell_back_; }  // some count took the plain curves
     void release_detector() { chain_.release_detector(); }
     Grid<std::uint8_t> edges() const { return chain_.edge_map(); }
     std::vector<Polyline>& kept() { return chain_.kept(); }
@@ -92,6 +95,7 @@ private:
     StepProgress* progress_;
     Status status_;
     std::size_t counted_ = 0, count_ = 0;  // distinct points of simplification number counted_
+    bool fell_back_ = false;
 };
 
 std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
@@ -236,6 +240,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
         if (progress.cancelled()) return Status::failure(kCancelled);
         out->edges = counter.edges();
         out->polylines = std::move(counter.kept());
+        out->plain_fallback = counter.fell_back();
         out->constraint_points = out->params.constrained_points;
     } else {
         out->params = ErdParams();

@@ -57,6 +57,9 @@ struct InitialMesh {
     std::size_t dropped_crossing = 0;  // constraint pieces refused by the kernel (crossings)
     std::size_t dropped_polylines = 0; // polylines left out because the mesh would exceed N
     std::size_t n0 = 0;                // vertices of the initial mesh (corners included)
+    // Some count of the parameter selection took the plain curves (hard_fallback): only then can
+    // a run without the fallback come out differently.
+    bool plain_fallback = false;
 };
 
 // Builds the initial mesh of image into cdt (reset first). User constraints (options.constraints)

@@ -64,6 +64,7 @@ struct ErdStepStats {
     // ERDED and ERDGPI with hard edges runs both treatments of over-budget crack curves (erd_mesh.h
     // hard_fallback) and keeps the better: their point-reconstruction PSNRs (0: not run).
     double plain_psnr = 0, exact_psnr = 0;
+    bool plain_fallback = false;  // step 1's selection took the plain curves somewhere (InitialMesh)
 };
 
 // Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.
