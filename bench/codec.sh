@@ -3,7 +3,7 @@
 # WebP (cwebp), all from Debian packages (installed here with apt-get when missing).
 #
 # For each image and density: ERDGPI and GPI (METHODS=) make the mesh, `erd convert` writes it
-# as .erdz at steps 1 .. 8 (the RD points of erd) and at the coarsest step within 0.25 dB of
+# as .erdz at steps 1 .. 32 (the RD points of erd) and at the coarsest step within 0.25 dB of
 # step 1's PSNR (`--step-psnr`, the table's rows). Each other codec is swept over its quality / rate, decoded,
 # and measured with `erd psnr`; its bpp at erd's PSNR is interpolated linearly in (PSNR, log bpp)
 # between the two sweep points around it ("<" / ">" when outside the sweep).
@@ -83,7 +83,7 @@ PY
         ext=erd; [[ $meth == gpi || $meth == ed ]] && ext=model
         base=$W/$img-$d-$meth
         "$ERD" generate -q --method $meth -i "$src" -d "$d" -o "$base.$ext"
-        for s in 1 2 3 4 6 8; do
+        for s in 1 2 3 4 6 8 11 16 23 32; do
             "$ERD" convert -q "$base.$ext" "$base-s$s.erdz" --step $s
             "$ERD" reconstruct "$base-s$s.erdz" -o "$base-s$s.$ext_img"
             printf "%s\terd-%s\td%s-s%s\t%s\t%s\n" "$img" $meth "$d" $s "$(bpp $(bits_of "$base-s$s.erdz") $px)" \
