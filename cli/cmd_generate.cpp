@@ -31,6 +31,7 @@
 #include "cli/model_file.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
+#include "cli/rd_search.h"
 #include "cli/stats_json.h"
 #include "cli/suggest.h"
 
@@ -44,7 +45,7 @@ const CommandLine kGenerate = {
     "generate",
     "erd generate --method NAME [-i IMAGE]... [-d D | -n N] -o OUT [-t TRI] [-p POLY] [-x 0|1|2] "
     "[--max-error E] [--psnr P] [--triangles T] [--thesis] [--max-memory SIZE] [--stats FILE] [--psnr-report] "
-    "[-j JOBS] [--summary FILE] [--step Q | --bpp B | --step-psnr P] [-q]",
+    "[-j JOBS] [--summary FILE] [--step Q | --bpp B | --step-psnr P [--choose-density]] [-q]",
     "Mesh an image. N = round(D*W*H/100) with -d (default 3%), or -n N.\n"
     "Many images: several -i or a folder, and outputs named by a pattern with {name} (the input's\n"
     "name without its extension): erd generate -m erdgpi -i photos/ -o out/{name}.erd -j 4 --summary s.csv.\n"
@@ -99,6 +100,7 @@ const CommandLine kGenerate = {
         {0, "step", "Q", ".erdz: value quantisation step (default 1)"},
         {0, "bpp", "B", ".erdz: the finest step whose file has at most B bits per pixel"},
         {0, "step-psnr", "P", ".erdz: the coarsest step whose decoded model reconstructs at P dB or more"},
+        {0, "choose-density", nullptr, ".erdz with --bpp or --step-psnr: choose the density too (0.0625-8%): the best PSNR within B bpp, or the smallest file at P dB"},
     },
     "no summary or progress lines", 0, 0, nullptr,
     methods_help,
@@ -249,6 +251,8 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     st = check_model_name(out, *method);
     if (!st) return rep.fail(st);
     if (codec.given && !erdz_name(out)) return rep.usage("--step, --bpp and --step-psnr apply to .erdz outputs only");
+    if (codec.choose_density && (a.has("density") || a.has("points")))
+        return rep.usage("--choose-density chooses the density: not with -d or -n");
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
@@ -269,7 +273,10 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     const double read_seconds = seconds_since(t0);
 
     // Same checks the methods make, here first so the message names the flags.
-    std::int64_t n = target_points(opt, image.width, image.height);
+    // --choose-density: the densest mesh it may try bounds the memory.
+    GenerateOptions sized = opt;
+    if (codec.choose_density) sized.density = kChoiceMaxDensity, sized.density_given = true;
+    std::int64_t n = target_points(sized, image.width, image.height);
     st = check_target(n, image.width, image.height);
     if (!st) return rep.fail(Status::bad_input(in + ": " + st.message));
 
@@ -282,8 +289,8 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
         // The library's figures plus the process itself (binary, stdio, buffers): 2 MiB.
         const std::size_t process = std::size_t(2) << 20;
         const std::size_t cap = have_cap ? max_memory : available_memory();
-        const std::size_t bound = memory_bound(*method, image.width, image.height, image.channels, opt) + process;
-        if ((cap != 0 && bound > cap) || !stats_out.empty()) need = memory_estimate(*method, image, opt) + process;
+        const std::size_t bound = memory_bound(*method, image.width, image.height, image.channels, sized) + process;
+        if ((cap != 0 && bound > cap) || !stats_out.empty()) need = memory_estimate(*method, image, sized) + process;
         st = check_memory(need, cap, have_cap,
                           escape_name(in) + ": meshing " + std::to_string(image.width) + " x " + std::to_string(image.height) +
                               " with " + method->name + " at " + std::to_string(n) + " points");
@@ -294,7 +301,10 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     opt.progress = progress.hook();
     opt.threads = threads;
     GenerateResult res;
-    st = method->run(image, opt, &res);
+    std::string bytes, codec_note;
+    DensityChoice choice;
+    if (codec.choose_density) st = choose_density(*method, image, opt, codec, &res, &bytes, &choice);
+    else st = method->run(image, opt, &res);
     progress.finish();
     if (!st && st.code == Code::input && !constraints_in.empty() && st.message.rfind("constraints: ", 0) == 0)
         return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message.substr(13)));
@@ -317,10 +327,21 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     // Every output is staged (a temporary beside its target) and committed together at the end,
     // so a failure anywhere leaves every old file as it was (cli/outputs.h).
     t0 = std::chrono::steady_clock::now();
-    std::string bytes, codec_note;
     codec.erdz.method = method->name;
-    st = model_bytes_for(out, res.model, &image, codec, &bytes, &codec_note);
-    if (!st) return rep.fail(st);
+    if (codec.choose_density) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "density %g%% (%zu tried): step %g, %.4f bpp, %.4f dB", choice.density,
+                      choice.trials.size(), choice.rate.step, choice.rate.bpp, choice.rate.psnr);
+        codec_note = buf;
+        for (const DensityTrial& t : choice.trials) {
+            std::snprintf(buf, sizeof buf, "  tried %g%%: %s step %g, %.4f bpp, %.4f dB", t.density, t.rate.met ? "" : "(not met)",
+                          t.rate.step, t.rate.bpp, t.rate.psnr);
+            rep.detail(std::string("erdz: ") + buf);
+        }
+    } else {
+        st = model_bytes_for(out, res.model, &image, codec, &bytes, &codec_note);
+        if (!st) return rep.fail(st);
+    }
     if (!codec_note.empty()) rep.detail("erdz: " + codec_note);
     st = outputs.stage(out, bytes);
     if (!st) return rep.fail(st);

@@ -14,6 +14,9 @@ void parse_codec_options(const Args& a, CodecChoice* c, Status* st) {
     if (a.has("step")) c->erdz.step = a.real("step", 1.0, 1.0 / 256.0, 1e6, st);
     if (a.has("bpp")) c->target.bpp = a.real("bpp", 0.0, 0.0, 1e6, st, true);
     if (a.has("step-psnr")) c->target.psnr = a.real("step-psnr", 0.0, 0.0, 1000.0, st, true);
+    c->choose_density = a.has("choose-density");
+    if (c->choose_density && !a.has("bpp") && !a.has("step-psnr") && st->ok())
+        *st = Status::bad_input("--choose-density needs a target: --bpp B or --step-psnr P");
 }
 
 Status model_bytes_for(const std::string& path, const Model& m, const Image* original, const CodecChoice& c,
@@ -32,6 +35,9 @@ Status model_bytes_for(const std::string& path, const Model& m, const Image* ori
         if (c.target.psnr > 0.0)
             std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp, %.4f dB%s", rr.step, rr.encodings, rr.bpp,
                           rr.psnr, rr.met ? "" : " (target not met: the finest step)");
+        else if (original)
+            std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp, %.4f dB%s", rr.step, rr.encodings, rr.bpp,
+                          rr.psnr, rr.met ? "" : " (target not met: the coarsest step)");
         else
             std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp%s", rr.step, rr.encodings, rr.bpp,
                           rr.met ? "" : " (target not met: the coarsest step)");

@@ -16,6 +16,7 @@ struct CodecChoice {
     ErdzOptions erdz;
     RateTarget target;  // bpp or psnr > 0: the step is searched (erdz_rate.h)
     bool given = false; // any of the flags was given
+    bool choose_density = false;  // --choose-density: the density is searched too (cli/rd_search.h)
 };
 
 // Parses --step Q, --bpp B, --step-psnr P (at most one); the first bad value sets *st.

@@ -3,6 +3,8 @@
 // flags get one line and exit 2. Small synthetic images (about a second).
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "tests/erd_run.h"
@@ -60,4 +62,67 @@ TEST_CASE("erdz through the CLI: bad files and misplaced flags", "[erdz][cli]") 
     RunResult k = run_erd("convert " + sh_quote(z) + " " + sh_quote(dir.file("m.erd")));
     CHECK(k.status == 2);
     CHECK(k.err.find("basic model") != std::string::npos);
+}
+
+namespace {
+
+// The last "X bpp, Y dB" of an erdz note line (generate -v).
+bool note_figures(const std::string& err, const std::string& lead, double* bpp, double* db) {
+    const std::size_t at = err.rfind(lead);
+    if (at == std::string::npos) return false;
+    const std::size_t line_end = err.find('\n', at);
+    const std::string line = err.substr(at, line_end == std::string::npos ? std::string::npos : line_end - at);
+    const std::size_t unit = line.rfind(" bpp, ");
+    if (unit == std::string::npos || unit == 0) return false;
+    const std::size_t start = line.rfind(' ', unit - 1) + 1;
+    return std::sscanf(line.c_str() + start, "%lf bpp, %lf dB", bpp, db) == 2;
+}
+
+}  // namespace
+
+TEST_CASE("erdz through the CLI: --choose-density trades the point count against the step", "[erdz][cli]") {
+    if (!need_binary()) return;
+    TempDir dir;
+    const std::string img = dir.file("s.pgm");
+    REQUIRE(run_erd("synth -W 128 -H 96 -o " + sh_quote(img)).status == 0);
+    const std::string gen = "generate -v --method erdgpi -i " + sh_quote(img) + " ";
+    // A size target: the chosen file fits and reconstructs at least as well as the fixed 2%
+    // (one of the densities tried) within the same size.
+    RunResult fixed = run_erd(gen + "-d 2 --bpp 0.5 -o " + sh_quote(dir.file("f.erdz")));
+    REQUIRE(fixed.status == 0);
+    RunResult chosen = run_erd(gen + "--bpp 0.5 --choose-density -o " + sh_quote(dir.file("c.erdz")));
+    INFO(chosen.err);
+    REQUIRE(chosen.status == 0);
+    double fb = 0, fdb = 0, cb = 0, cdb = 0;
+    REQUIRE(note_figures(fixed.err, "erdz: step", &fb, &fdb));
+    REQUIRE(note_figures(chosen.err, "erdz: density", &cb, &cdb));
+    CHECK(chosen.err.find("tried 2%:") != std::string::npos);
+    CHECK(cb <= 0.5);
+    CHECK(cdb >= fdb);
+    // The note's PSNR is the file's: reconstruct it and measure.
+    REQUIRE(run_erd("reconstruct " + sh_quote(dir.file("c.erdz")) + " -o " + sh_quote(dir.file("c.pgm"))).status == 0);
+    RunResult p = run_erd("psnr " + sh_quote(img) + " " + sh_quote(dir.file("c.pgm")));
+    REQUIRE(p.status == 0);
+    CHECK(std::abs(std::stod(p.out) - cdb) < 1e-3);
+    RunResult j = run_erd("info --json " + sh_quote(dir.file("c.erdz")));
+    const std::size_t tb = j.out.find("\"total_bits\":");
+    REQUIRE(tb != std::string::npos);
+    CHECK(std::stod(j.out.substr(tb + 13)) / (128.0 * 96.0) <= 0.5);
+    // A quality target: the chosen file reaches it and is no larger than the fixed 2%'s.
+    fixed = run_erd(gen + "-d 2 --step-psnr 35 -o " + sh_quote(dir.file("f2.erdz")));
+    REQUIRE(fixed.status == 0);
+    chosen = run_erd(gen + "--step-psnr 35 --choose-density -o " + sh_quote(dir.file("c2.erdz")));
+    REQUIRE(chosen.status == 0);
+    REQUIRE(note_figures(fixed.err, "erdz: step", &fb, &fdb));
+    REQUIRE(note_figures(chosen.err, "erdz: density", &cb, &cdb));
+    CHECK(cdb >= 35.0);
+    CHECK(cb <= fb);
+    // Unreachable targets and misplaced flags: one line, exit 2.
+    RunResult r = run_erd(gen + "--step-psnr 200 --choose-density -o " + sh_quote(dir.file("x.erdz")));
+    CHECK(r.status == 2);
+    CHECK(r.err.find("no density up to 8% reaches 200 dB") != std::string::npos);
+    CHECK(!exists(dir.file("x.erdz")));
+    CHECK(run_erd(gen + "--choose-density -o " + sh_quote(dir.file("x.erdz"))).status == 2);
+    CHECK(run_erd(gen + "-d 1 --bpp 0.5 --choose-density -o " + sh_quote(dir.file("x.erdz"))).status == 2);
+    CHECK(run_erd(gen + "--bpp 0.5 --choose-density -o " + sh_quote(dir.file("x.erd"))).status == 2);
 }

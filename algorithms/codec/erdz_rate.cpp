@@ -69,7 +69,7 @@ Status encode_erdz_for(const Model& m, const Image* original, const RateTarget& 
     result->step = inf.step;
     result->bpp = double(inf.total_bits) / pixels;
     result->met = met;
-    if (by_psnr) {
+    if (original && original->width == m.width && original->height == m.height && original->channels == m.channels) {
         Model decoded;
         Image rec;
         if (!(st = decode_erdz(*out, &decoded))) return st;

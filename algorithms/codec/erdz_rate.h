@@ -21,13 +21,14 @@ struct RateTarget {
 struct RateResult {
     double step = 0.0;
     double bpp = 0.0;
-    double psnr = 0.0;   // of the decoded model against the original (psnr targets only)
+    double psnr = 0.0;   // of the decoded model against `original` (when given, of the model's size)
     bool met = false;    // false: no step on the grid meets the target; the nearest one was taken
     int encodings = 0;   // steps tried
 };
 
 // Encodes m (options.method as given, options.step chosen) into *out. `original` is needed for
-// a psnr target only (may be null otherwise); it must have m's size and channels.
+// a psnr target (it must have m's size and channels); given with a bpp target, it gives the
+// chosen file's PSNR too (one more decode and reconstruction).
 Status encode_erdz_for(const Model& m, const Image* original, const RateTarget& target, ErdzOptions options,
                        std::string* out, ErdzInfo* info, RateResult* result);
 
