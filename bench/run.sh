@@ -130,6 +130,8 @@ fi
 # which both read (hmm's reader takes 16 bits from PNG only). Targets: erdgpi and erded
 # <= 1.0x hmm's CPU time, within 2x GPI; peak RSS <= 32 bytes per pixel for every method.
 # SCALE_SIZES (default "512 1024 2048") adds 4096 8192; SCALE_RUNS (default 3) runs per case.
+# Each line has the CPU time per pixel, so the sizes make the growth table (docs/DECISIONS.md
+# "Scale"), and with CALLGRIND=1 the instructions per pixel up to SCALE_CALLGRIND_MAX.
 SCALE_SIZES=${SCALE_SIZES:-512 1024 2048}
 SCALE_RUNS=${SCALE_RUNS:-3}
 HMM=""
@@ -159,9 +161,18 @@ scale_case() {
         ref=${hcpu:-$gcpu}
         bpx=$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')
         verdict=$(awk -v b="$bpx" 'BEGIN { print (b <= 32) ? "ok" : "over" }')
-        printf 'scale %-16s %-7s cpu %8s ms  %6s B/px %-4s  %s\n' "$label" "$m" "$cpu" "$bpx" "$verdict" \
+        # The growth columns: CPU ns per pixel, and with CALLGRIND=1 instructions per pixel (sizes
+        # up to SCALE_CALLGRIND_MAX, default 1024: callgrind runs about 50 times slower).
+        ipx=""
+        if [[ $CALLGRIND == 1 && $w -le ${SCALE_CALLGRIND_MAX:-1024} ]] && command -v valgrind >/dev/null; then
+            ipx=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -n "$n" -i "$img" \
+                      -o "$OUT/scale.$m" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | sort -n | tail -1)
+            ipx=$(awk -v i="$ipx" -v p="$px" 'BEGIN { if (i > 0) printf "  %.0f instr/px", i / p }')
+        fi
+        printf 'scale %-16s %-7s cpu %8s ms  %6s ns/px  %6s B/px %-4s  %s%s\n' "$label" "$m" "$cpu" \
+            "$(awk -v c="$cpu" -v p="$px" 'BEGIN { printf "%.0f", c * 1e6 / p }')" "$bpx" "$verdict" \
             "$(awk -v c="$cpu" -v r="$ref" -v h="$hcpu" -v g="$gcpu" 'BEGIN { if (r > 0) printf "%.2fx %s", c / r, (h != "" ? "hmm" : "gpi");
-                                                                     if (h != "" && g > 0) printf "  %.2fx gpi", c / g }')"
+                                                                     if (h != "" && g > 0) printf "  %.2fx gpi", c / g }')" "$ipx"
     done
 }
 for s in $SCALE_SIZES; do
