@@ -32,16 +32,14 @@ Status model_bytes_for(const std::string& path, const Model& m, const Image* ori
         RateResult rr;
         Status st = encode_erdz_for(m, original, c.target, c.erdz, bytes, &info, &rr);
         if (!st) return Status::error(st.code, escape_name(path) + ": " + st.message);
-        if (c.target.psnr > 0.0)
-            std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp, %.4f dB%s", rr.step, rr.encodings, rr.bpp,
-                          rr.psnr, rr.met ? "" : " (target not met: the finest step)");
-        else if (original)
-            std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp, %.4f dB%s", rr.step, rr.encodings, rr.bpp,
-                          rr.psnr, rr.met ? "" : " (target not met: the coarsest step)");
-        else
-            std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp%s", rr.step, rr.encodings, rr.bpp,
-                          rr.met ? "" : " (target not met: the coarsest step)");
+        std::snprintf(buf, sizeof buf, "step %g from %d encodings: %.4f bpp", rr.step, rr.encodings, rr.bpp);
         *note = buf;
+        // The file's PSNR, which erdz_rate.h measures whenever the original (of the model's size) is given.
+        if (original && original->width == m.width && original->height == m.height && original->channels == m.channels) {
+            std::snprintf(buf, sizeof buf, ", %.4f dB", rr.psnr);
+            *note += buf;
+        }
+        if (!rr.met) *note += c.target.psnr > 0.0 ? " (target not met: the finest step)" : " (target not met: the coarsest step)";
         return st;
     }
     Status st = encode_model_file(path, m, c.erdz, bytes, &info);

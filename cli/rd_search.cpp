@@ -23,13 +23,9 @@ Status choose_density(const MethodInfo& method, const Image& image, GenerateOpti
     *choice = DensityChoice();
     const double pixels = double(image.width) * double(image.height);
     bool have = false;
-    // One density: a run of the method, then the step search for the target.
-    const auto trial = [&](double d, bool* met) -> Status {
-        for (const DensityTrial& t : choice->trials)
-            if (t.density == d) {
-                *met = t.rate.met;
-                return Status::success();
-            }
+    // One density: a run of the method, then the step search for the target (its result is
+    // choice->trials.back()).
+    const auto trial = [&](double d) -> Status {
         options.density = d;
         options.density_given = true;
         options.progress = {};
@@ -42,7 +38,6 @@ Status choose_density(const MethodInfo& method, const Image& image, GenerateOpti
         RateResult rr;
         if (!(st = encode_erdz_for(r.model, &image, codec.target, eo, &b, nullptr, &rr))) return st;
         choice->trials.push_back({d, rr});
-        *met = rr.met;
         if (!have || better(rr, choice->rate, by_psnr)) {
             have = true;
             choice->density = d;
@@ -58,11 +53,10 @@ Status choose_density(const MethodInfo& method, const Image& image, GenerateOpti
         if (d / 100.0 * pixels < 8.0) continue;  // too few points to mesh
         const RateResult best_before = choice->rate;
         const bool had = have && choice->rate.met;
-        bool met = false;
-        Status st = trial(d, &met);
+        Status st = trial(d);
         if (!st) return st;
         // Denser files only grow: past the first density whose coarsest step is too big, stop.
-        if (!by_psnr && !met) break;
+        if (!by_psnr && !choice->trials.back().rate.met) break;
         if (had) worse = better(choice->rate, best_before, by_psnr) ? 0 : worse + 1;
         if (worse == 2) break;
     }
@@ -71,9 +65,7 @@ Status choose_density(const MethodInfo& method, const Image& image, GenerateOpti
         for (double f : {std::pow(2.0, -0.25), std::pow(2.0, 0.25)}) {
             const double d = best * f;
             if (d / 100.0 * pixels < 8.0 || d > kChoiceMaxDensity) continue;
-            bool met = false;
-            Status st = trial(d, &met);
-            if (!st) return st;
+            if (Status st = trial(d); !st) return st;
         }
     }
     if (!have) return Status::bad_input("--choose-density: the image is too small to mesh at any density tried");

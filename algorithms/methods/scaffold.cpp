@@ -267,22 +267,23 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
     Status st = run(image, options, true, result);
     if (!st || result->model.edges != EdgeKind::hard) return st;
+    const auto point_psnr = [&](const Model& m, double* db) {
+        Image rec;
+        Status s = reconstruct(m, false, &rec, {}, options.threads);
+        return s ? psnr(image, rec, db, options.threads) : s;
+    };
+    double plain = 0;
+    if (!(st = point_psnr(result->model, &plain))) return st;
     // When no count fell back to the plain curves, the run without the fallback is this run step
     // for step (the same counts, so the same parameters and mesh): its model and PSNR are these.
-    const bool same = !result->stats.erd.plain_fallback;
-    GenerateResult exact;
-    if (!same && !(st = run(image, options, false, &exact))) return st;
-    double db[2] = {0, 0};
-    const GenerateResult* r[2] = {result, &exact};
-    for (int i = 0; i < (same ? 1 : 2); ++i) {
-        Image rec;
-        if (!(st = reconstruct(r[i]->model, false, &rec, {}, options.threads)) || !(st = psnr(image, rec, &db[i], options.threads)))
-            return st;
+    double exact = plain;
+    if (result->stats.erd.plain_fallback) {
+        GenerateResult other;
+        if (!(st = run(image, options, false, &other)) || !(st = point_psnr(other.model, &exact))) return st;
+        if (exact > plain) *result = std::move(other);
     }
-    if (same) db[1] = db[0];
-    if (db[1] > db[0]) *result = std::move(exact);
-    result->stats.erd.plain_psnr = db[0];
-    result->stats.erd.exact_psnr = db[1];
+    result->stats.erd.plain_psnr = plain;
+    result->stats.erd.exact_psnr = exact;
     return Status::success();
 }
 
