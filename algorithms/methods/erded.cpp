@@ -106,11 +106,14 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
     if (k > 0 && options.ed_select == 0) {
         pts = random_points(occupied, k, options.seed);
     } else if (k > 0) {
+        // The pixels of the half-pixel edge map, which is freed before the density plane exists
+        // (the two were the run's peak on photos).
+        const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
+        mesh.edges = Grid<std::uint8_t>();
         // The MMSODD plane becomes the density in place; the wedge-value line search computes
         // its values where it needs them (the same values), so no second plane is kept.
         Grid<double> density = ed_density(colour_mmsodd(image, 5, options.colour.density, options.threads), 0.5, options.threads);
         options.progress("sample selection", 0.3);
-        const Grid<std::uint8_t> on_edge = edge_cells(mesh.edges, image.width, image.height);
         const int rad = std::max(0, options.edge_zero_radius);
         // Only the edge pixels are visited (the map is mostly empty); the zeros written do not
         // depend on the order.
