@@ -22,18 +22,19 @@ namespace {
 // of the fit is raised to 196: the re-measure through --stats found it 18-23% low at 5%. The hard
 // ERD per-vertex bytes are raised by 190 (ERDGPI) and 100 (ERDED) for issue 16's moves and the
 // refit systems kept through the flips: synth 1024^2 at 3% was 25-26% and 17% low without.
-// ERDED frees the half-pixel edge map before its density plane exists: its hard fit is made
-// again (31 runs of synth and 16-bit heightmaps, 512^2 to 2048^2 and 640 x 480, -d 0.1 to 5) and
-// its soft per-pixel bytes are lowered by the 2.8 that fit 32 soft runs best.
+// ERDED frees the half-pixel edge map before its density plane exists, and the refit solves the
+// mesh's own face systems instead of a copy: the hard ERDED fit is made again (31 runs of synth
+// and 16-bit heightmaps, 512^2 to 2048^2 and 640 x 480, -d 0.1 to 5), and the other ERD fits lose
+// the per-pixel and per-vertex bytes that fit their runs best (docs/DECISIONS.md "Memory").
 struct Fit {
     double fixed, per_pixel, per_point, per_kept, per_pixel_channel, per_point_channel;
 };
 constexpr Fit kEd{2917281, 11.54, 172.7, 0.00, 4.64, 0.0};
 constexpr Fit kGpi{2899655, 3.59, 196.0, 0.00, 2.08, 5.5};
-constexpr Fit kErdedSoft{2033498, 6.67, 245.8, 19.24, 2.17, 331.6};
-constexpr Fit kErdgpiSoft{2945654, 1.23, 223.0, 22.19, 0.00, 409.1};
-constexpr Fit kErdedHard{1049031, 13.53, 492.1, 0.00, 0.00, 0.0};
-constexpr Fit kErdgpiHard{3690434, 10.07, 600.1, 0.00, 0.00, 0.0};
+constexpr Fit kErdedSoft{2033498, 6.67, 126.8, 19.24, 2.17, 331.6};
+constexpr Fit kErdgpiSoft{2945654, 1.23, 88.0, 22.19, 0.00, 409.1};
+constexpr Fit kErdedHard{3130602, 13.59, 488.4, 0.00, 0.00, 0.0};
+constexpr Fit kErdgpiHard{3690434, 10.07, 518.1, 0.00, 0.00, 0.0};
 constexpr double kProcess = 2.0 * 1048576.0;  // the CLI adds it (cmd_generate.cpp)
 
 std::size_t target_of(const GenerateOptions& o, int width, int height) {

@@ -105,7 +105,8 @@ void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& mo
 
 double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>& x) {
     double sse = 0;
-    for (const FaceSystem& fs : faces) sse += fs.sse(x[fs.entry[0]], x[fs.entry[1]], x[fs.entry[2]]);
+    for (const FaceSystem& fs : faces)
+        if (fs.owns) sse += fs.sse(x[fs.entry[0]], x[fs.entry[1]], x[fs.entry[2]]);
     return sse > 0 ? sse : 0.0;  // an exact fit can leave a rounding residue below zero
 }
 
@@ -120,6 +121,7 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
     auto normal_times = [&](const std::vector<double>& v, std::vector<double>* out) {
         std::fill(out->begin(), out->end(), 0.0);
         for (const FaceSystem& fs : faces) {
+            if (!fs.owns) continue;
             double gv[3];
             fs.gram_times(v[fs.entry[0]], v[fs.entry[1]], v[fs.entry[2]], gv);
             for (int j = 0; j < 3; ++j) (*out)[fs.entry[j]] += gv[j];
@@ -137,7 +139,8 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
     // values of big and small faces converge at the same rate (10 steps then do what 30 did).
     std::vector<double> scale(n, lambda);
     for (const FaceSystem& fs : faces)
-        for (int j = 0; j < 3; ++j) scale[fs.entry[j]] += fs.g[j == 0 ? 0 : j == 1 ? 3 : 5];
+        if (fs.owns)
+            for (int j = 0; j < 3; ++j) scale[fs.entry[j]] += fs.g[j == 0 ? 0 : j == 1 ? 3 : 5];
     for (double& c : scale) c = c > 1e-12 ? 1.0 / std::sqrt(c) : 0.0;
 
     std::vector<double> x(n), y(n, 0.0), s(n), p(n), ps(n), q(n), x0(n);
@@ -149,7 +152,8 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
     normal_times(x, &q);
     std::fill(s.begin(), s.end(), 0.0);
     for (const FaceSystem& fs : faces)
-        for (int j = 0; j < 3; ++j) s[fs.entry[j]] += fs.h[j];
+        if (fs.owns)
+            for (int j = 0; j < 3; ++j) s[fs.entry[j]] += fs.h[j];
     for (std::size_t i = 0; i < n; ++i) s[i] = scale[i] * (s[i] + lambda * x0[i] - q[i]);
     p = s;
     double gamma = dot(s, s);
@@ -177,7 +181,7 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
         std::vector<double> a(n), b(n);
         for (std::size_t i = 0; i < n; ++i) a[i] = b[i] = x0[i];
         for (const FaceSystem& fs : faces)
-            for (int j = 0; j < 3; ++j) {
+            for (int j = 0; j < 3 && fs.owns; ++j) {
                 const std::uint32_t k = fs.entry[j];
                 if (double(fs.lo) < a[k]) a[k] = double(fs.lo);
                 if (double(fs.hi) > b[k]) b[k] = double(fs.hi);
@@ -229,32 +233,34 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
                       WedgeFitStats* stats, const std::vector<double>* prior, ProgressHook progress,
                       MeshSystems* systems) {
     progress("wedge refit", 0.0);
-    std::vector<FaceSystem> faces;
-    if (systems && systems->matches(cdt)) {
-        // The same list, in the same order, as the pass over the pixels would make.
-        faces.reserve(cdt.face_count());
-        for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-            if (!systems->get(cdt, image, f).owns) continue;
-            faces.push_back(systems->faces[f]);
-            for (int j = 0; j < 3; ++j) faces.back().entry[j] = model->corner_entry(cdt, 3 * f + EdgeInd(j));
+    if (systems) {
+        // The systems by face slot are solved in place (the faces that own no pixel are skipped
+        // there): the same faces in the same order as the pass over the pixels lists, without a
+        // second copy of them beside the mesh's.
+        if (systems->matches(cdt)) {
+            for (FaceInd f = 0; f < cdt.face_count(); ++f) systems->get(cdt, image, f);
+        } else {
+            systems->faces.assign(cdt.face_count(), FaceSystem());
+            systems->stale.assign(cdt.face_count(), 0);
+            const RasterDomain domain{cdt.max_x(), cdt.max_y()};
+            for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+                const EdgeInd e = 3 * f;
+                systems->faces[f] =
+                    face_system(image, domain, cdt.point(cdt.org(e)), cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)));
+            }
         }
-    } else if (systems) {
-        systems->faces.assign(cdt.face_count(), FaceSystem());
-        systems->stale.assign(cdt.face_count(), 0);
-        const RasterDomain domain{cdt.max_x(), cdt.max_y()};
-        faces.reserve(cdt.face_count());
         for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-            const EdgeInd e = 3 * f;
             FaceSystem& fs = systems->faces[f];
-            fs = face_system(image, domain, cdt.point(cdt.org(e)), cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)));
-            if (!fs.owns) continue;
-            for (int j = 0; j < 3; ++j) fs.entry[j] = model->corner_entry(cdt, e + EdgeInd(j));
-            faces.push_back(fs);
+            if (fs.owns)
+                for (int j = 0; j < 3; ++j) fs.entry[j] = model->corner_entry(cdt, 3 * f + EdgeInd(j));
         }
-    } else {
-        const Image* one = &image;
-        face_systems<1>(cdt, &one, *model, &faces);
+        progress("wedge refit", 0.5);
+        solve(systems->faces, image, options, model, stats, prior, progress);
+        return;
     }
+    std::vector<FaceSystem> faces;
+    const Image* one = &image;
+    face_systems<1>(cdt, &one, *model, &faces);
     progress("wedge refit", 0.5);
     solve(faces, image, options, model, stats, prior, progress);
 }
