@@ -82,38 +82,67 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
     }
 }
 
+// A face system's terms of one more channel of a colour image: those that depend on the samples
+// (the Gram matrix and the entries depend on the triangle alone, and are channel 0's).
+struct ChannelTerms {
+    double h[3];
+    double bb;
+    std::uint16_t lo, hi;
+};
+
 // Assembles the face systems of every face that owns at least one pixel, for each of the N
-// images; faces[k] holds image k's.
+// images: faces holds image 0's, more[k - 1] image k's own terms.
 template <int N>
-void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces) {
+void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces,
+                  std::vector<ChannelTerms>* more) {
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
-    for (int k = 0; k < N; ++k) faces[k].reserve(cdt.face_count());
+    faces->reserve(cdt.face_count());
+    for (int k = 1; k < N; ++k) more[k - 1].reserve(cdt.face_count());
     for (FaceInd f = 0; f < cdt.face_count(); ++f) {
         const EdgeInd e = 3 * f;
         const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
         FaceSystem fs[N];
         accumulate<N>(images, domain, p0, p1, p2, fs);
         if (!fs[0].owns) continue;
-        const std::uint32_t entry[3] = {model.corner_entry(cdt, e), model.corner_entry(cdt, e + 1),
-                                        model.corner_entry(cdt, e + 2)};
-        for (int k = 0; k < N; ++k) {
-            for (int j = 0; j < 3; ++j) fs[k].entry[j] = entry[j];
-            faces[k].push_back(fs[k]);
-        }
+        for (int j = 0; j < 3; ++j) fs[0].entry[j] = model.corner_entry(cdt, e + EdgeInd(j));
+        faces->push_back(fs[0]);
+        for (int k = 1; k < N; ++k)
+            more[k - 1].push_back(ChannelTerms{{fs[k].h[0], fs[k].h[1], fs[k].h[2]}, fs[k].bb, fs[k].lo, fs[k].hi});
     }
 }
 
-double total_sse(const std::vector<FaceSystem>& faces, const std::vector<double>& x) {
+// The systems solve() reads: faces, with the data terms of `terms` instead of their own when given
+// (another channel of the same faces).
+struct Systems {
+    const std::vector<FaceSystem>& faces;
+    const std::vector<ChannelTerms>* terms = nullptr;
+    const double* h(std::size_t i) const { return terms ? (*terms)[i].h : faces[i].h; }
+    double bb(std::size_t i) const { return terms ? (*terms)[i].bb : faces[i].bb; }
+    std::uint16_t lo(std::size_t i) const { return terms ? (*terms)[i].lo : faces[i].lo; }
+    std::uint16_t hi(std::size_t i) const { return terms ? (*terms)[i].hi : faces[i].hi; }
+    // FaceSystem::sse with face i's Gram matrix and these terms.
+    double sse(std::size_t i, double a, double b, double c) const {
+        double gv[3];
+        faces[i].gram_times(a, b, c, gv);
+        const double* hh = h(i);
+        return (a * gv[0] + b * gv[1] + c * gv[2]) - 2.0 * (a * hh[0] + b * hh[1] + c * hh[2]) + bb(i);
+    }
+};
+
+double total_sse(const Systems& sys, const std::vector<double>& x) {
     double sse = 0;
-    for (const FaceSystem& fs : faces)
-        if (fs.owns) sse += fs.sse(x[fs.entry[0]], x[fs.entry[1]], x[fs.entry[2]]);
+    for (std::size_t i = 0; i < sys.faces.size(); ++i) {
+        const FaceSystem& fs = sys.faces[i];
+        if (fs.owns) sse += sys.sse(i, x[fs.entry[0]], x[fs.entry[1]], x[fs.entry[2]]);
+    }
     return sse > 0 ? sse : 0.0;  // an exact fit can leave a rounding residue below zero
 }
 
 // The CGLS refit of model's values from its face systems (regularised as options says; prior as
 // for fit_wedge_values).
-void solve(const std::vector<FaceSystem>& faces, const Image& image, const WedgeFitOptions& options, ErdModel* model,
+void solve(const Systems& sys, const Image& image, const WedgeFitOptions& options, ErdModel* model,
            WedgeFitStats* stats, const std::vector<double>* prior, const ProgressHook& progress) {
+    const std::vector<FaceSystem>& faces = sys.faces;
     const std::size_t n = model->entry_count();
     const double lambda = options.prior_weight > 0 ? options.prior_weight : 0.0;
 
@@ -147,13 +176,13 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
     for (std::size_t i = 0; i < n; ++i) x[i] = model->entry_value(i);
     // The value each one is drawn towards and bounded around: its line-search value.
     for (std::size_t i = 0; i < n; ++i) x0[i] = prior && i < prior->size() ? (*prior)[i] : x[i];
-    if (stats) stats->sse_before = total_sse(faces, x);
+    if (stats) stats->sse_before = total_sse(sys, x);
     // s = S (A^T b + lambda x0 - (A^T A + lambda I) x), the preconditioned residual at y = 0.
     normal_times(x, &q);
     std::fill(s.begin(), s.end(), 0.0);
-    for (const FaceSystem& fs : faces)
-        if (fs.owns)
-            for (int j = 0; j < 3; ++j) s[fs.entry[j]] += fs.h[j];
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        if (faces[f].owns)
+            for (int j = 0; j < 3; ++j) s[faces[f].entry[j]] += sys.h(f)[j];
     for (std::size_t i = 0; i < n; ++i) s[i] = scale[i] * (s[i] + lambda * x0[i] - q[i]);
     p = s;
     double gamma = dot(s, s);
@@ -180,11 +209,11 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
     if (options.support_bounds >= 0) {
         std::vector<double> a(n), b(n);
         for (std::size_t i = 0; i < n; ++i) a[i] = b[i] = x0[i];
-        for (const FaceSystem& fs : faces)
-            for (int j = 0; j < 3 && fs.owns; ++j) {
-                const std::uint32_t k = fs.entry[j];
-                if (double(fs.lo) < a[k]) a[k] = double(fs.lo);
-                if (double(fs.hi) > b[k]) b[k] = double(fs.hi);
+        for (std::size_t f = 0; f < faces.size(); ++f)
+            for (int j = 0; j < 3 && faces[f].owns; ++j) {
+                const std::uint32_t k = faces[f].entry[j];
+                if (double(sys.lo(f)) < a[k]) a[k] = double(sys.lo(f));
+                if (double(sys.hi(f)) > b[k]) b[k] = double(sys.hi(f));
             }
         for (std::size_t i = 0; i < n; ++i) {
             const double m = options.support_bounds * (b[i] - a[i]);
@@ -199,7 +228,7 @@ void solve(const std::vector<FaceSystem>& faces, const Image& image, const Wedge
     }
     if (stats) {
         stats->iterations = it;
-        stats->sse_after = total_sse(faces, x);
+        stats->sse_after = total_sse(sys, x);
     }
 }
 
@@ -255,14 +284,14 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
                 for (int j = 0; j < 3; ++j) fs.entry[j] = model->corner_entry(cdt, 3 * f + EdgeInd(j));
         }
         progress("wedge refit", 0.5);
-        solve(systems->faces, image, options, model, stats, prior, progress);
+        solve(Systems{systems->faces}, image, options, model, stats, prior, progress);
         return;
     }
     std::vector<FaceSystem> faces;
     const Image* one = &image;
-    face_systems<1>(cdt, &one, *model, &faces);
+    face_systems<1>(cdt, &one, *model, &faces, nullptr);
     progress("wedge refit", 0.5);
-    solve(faces, image, options, model, stats, prior, progress);
+    solve(Systems{faces}, image, options, model, stats, prior, progress);
 }
 
 void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, const WedgeFitOptions& options,
@@ -277,12 +306,16 @@ void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, c
         return;
     }
     progress("wedge refit", 0.0);
-    std::vector<FaceSystem> faces[3];
-    face_systems<3>(cdt, planes.data(), *models[0], faces);
+    // One list of systems (channel 0's) and the other channels' own terms beside it: the three
+    // channels' wedges are the same, so are their entries and Gram matrices.
+    std::vector<FaceSystem> faces;
+    std::vector<ChannelTerms> more[2];
+    face_systems<3>(cdt, planes.data(), *models[0], &faces, more);
     progress("wedge refit", 0.5);
     // The progress of the last channel's iterations stands for all three (it must not go back).
     for (std::size_t c = 0; c < 3; ++c)
-        solve(faces[c], *planes[c], options, models[c], &(*stats)[c], prior(c), c == 2 ? progress : ProgressHook());
+        solve(Systems{faces, c == 0 ? nullptr : &more[c - 1]}, *planes[c], options, models[c], &(*stats)[c], prior(c),
+              c == 2 ? progress : ProgressHook());
 }
 
 }  // namespace erd
