@@ -63,7 +63,8 @@ struct ErdStepStats {
     std::size_t hard_steps = 0, soft_steps = 0;  // strong steps (algorithms/imaging/edge_kind.h)
     // ERDED and ERDGPI with hard edges runs both treatments of over-budget crack curves (erd_mesh.h
     // hard_fallback) and keeps the better: their point-reconstruction PSNRs (0: not run; equal
-    // when no count of step 1 fell back, so the second run was not needed).
+    // when no count of step 1 fell back, so the second run was not needed). During a run,
+    // plain_psnr holds the run's own PSNR when the flips' guard measured it (else 0).
     double plain_psnr = 0, exact_psnr = 0;
     bool plain_fallback = false;  // step 1's selection took the plain curves somewhere (InitialMesh)
 };

@@ -164,14 +164,16 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
 
 namespace {
 
-// True when a's point-evaluated reconstruction has a higher PSNR than b's (false on any error).
-bool better_reconstruction(const Image& image, const Model& a, const Model& b, int threads) {
+// Keeps the better of `before` and *after by the PSNR of their point-evaluated reconstructions
+// (*after on a tie or any error), and returns the kept one's PSNR (0 after an error).
+double keep_better(const Image& image, Model* before, Model* after, int threads) {
     Image ra, rb;
     double pa = 0, pb = 0;
-    if (!reconstruct(a, false, &ra, {}, threads) || !psnr(image, ra, &pa, threads) ||
-        !reconstruct(b, false, &rb, {}, threads) || !psnr(image, rb, &pb, threads))
-        return false;
-    return pa > pb;
+    if (!reconstruct(*before, false, &ra, {}, threads) || !psnr(image, ra, &pa, threads) ||
+        !reconstruct(*after, false, &rb, {}, threads) || !psnr(image, rb, &pb, threads))
+        return 0.0;
+    if (pa > pb) *after = std::move(*before);
+    return pa > pb ? pa : pb;
 }
 
 // The end of finish_erd_method once result->model is made: the step-1 facts and the wedge-value
@@ -228,7 +230,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             }
             optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit, &systems);
             model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
-            if (guard && better_reconstruction(image, before, result->model, options.threads)) result->model = std::move(before);
+            if (guard) result->stats.erd.plain_psnr = keep_better(image, &before, &result->model, options.threads);
             timer->lap("flips");
         }
     }
@@ -255,7 +257,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             }
             optimize_by_flips(&cdt, options, model, &line_search, &result->stats.wedge_fit);
             model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
-            if (guard && better_reconstruction(image, before, result->model, options.threads)) result->model = std::move(before);
+            if (guard) result->stats.erd.plain_psnr = keep_better(image, &before, &result->model, options.threads);
             timer->lap("flips");
         }
     }
@@ -265,6 +267,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
 }
 
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
+    result->stats.erd.plain_psnr = 0;
     Status st = run(image, options, true, result);
     if (!st || result->model.edges != EdgeKind::hard) return st;
     const auto point_psnr = [&](const Model& m, double* db) {
@@ -272,14 +275,17 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
         Status s = reconstruct(m, false, &rec, {}, options.threads);
         return s ? psnr(image, rec, db, options.threads) : s;
     };
-    double plain = 0;
-    if (!(st = point_psnr(result->model, &plain))) return st;
+    // The flips' guard measured it already (finish_erd_method), unless it did not run.
+    double plain = result->stats.erd.plain_psnr;
+    if (plain <= 0 && !(st = point_psnr(result->model, &plain))) return st;
     // When no count fell back to the plain curves, the run without the fallback is this run step
     // for step (the same counts, so the same parameters and mesh): its model and PSNR are these.
     double exact = plain;
     if (result->stats.erd.plain_fallback) {
         GenerateResult other;
-        if (!(st = run(image, options, false, &other)) || !(st = point_psnr(other.model, &exact))) return st;
+        if (!(st = run(image, options, false, &other))) return st;
+        exact = other.stats.erd.plain_psnr;
+        if (exact <= 0 && !(st = point_psnr(other.model, &exact))) return st;
         if (exact > plain) *result = std::move(other);
     }
     result->stats.erd.plain_psnr = plain;
