@@ -40,64 +40,78 @@ EdgeKindStats measure_edge_kind(const Image& im) {
     return s;
 }
 
-Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r) {
-    const int W = im.width, H = im.height, GW = 2 * W - 1, GH = 2 * H - 1;
-    // The step at each crack, read from the samples (no plane of steps): 4 bytes per pixel for
-    // the map, a 64 Ki histogram for the quantile.
-    const auto step = [&](int X, int Y) {  // (X, Y) a crack midpoint: X + Y odd
-        const int x = X / 2, y = Y / 2;
-        return X % 2 ? std::abs(int(im.at(x + 1, y)) - int(im.at(x, y))) : std::abs(int(im.at(x, y + 1)) - int(im.at(x, y)));
-    };
+CrackDetector::CrackDetector(const Image& im) : im_(im), hist_(std::size_t(im.maxval) + 1, 0) {
+    // Every crack's step, row by row: between horizontal neighbours, then to the row below.
+    const std::size_t W = std::size_t(im.width), H = std::size_t(im.height);
+    for (std::size_t y = 0; y < H; ++y) {
+        const std::uint16_t* s = im.samples.data() + y * W;
+        for (std::size_t x = 0; x + 1 < W; ++x) ++hist_[std::size_t(std::abs(int(s[x + 1]) - int(s[x])))];
+        if (y + 1 < H)
+            for (std::size_t x = 0; x < W; ++x) ++hist_[std::size_t(std::abs(int(s[x + W]) - int(s[x])))];
+    }
+    cracks_ = 2 * W * H - W - H;
+}
+
+Grid<std::uint8_t> CrackDetector::detect(double beta, double r) const {
+    const int W = im_.width, H = im_.height, GW = 2 * W - 1, GH = 2 * H - 1;
     Grid<std::uint8_t> map(GW, GH, 0);
-    std::vector<std::size_t> hist(65536, 0);
-    std::size_t cracks = 0;
-    for (int Y = 0; Y < GH; ++Y)
-        for (int X = 1 - Y % 2; X < GW; X += 2) ++hist[std::size_t(step(X, Y))], ++cracks;
-    if (cracks == 0) return map;
-    const std::size_t k = std::min(cracks, std::max<std::size_t>(1, std::size_t(beta * double(cracks) + 0.5)));
+    if (cracks_ == 0) return map;
+    const std::size_t k = std::min(cracks_, std::max<std::size_t>(1, std::size_t(beta * double(cracks_) + 0.5)));
     std::size_t above = 0;
-    int q = 65535;
-    for (; q > 0 && above + hist[std::size_t(q)] < k; --q) above += hist[std::size_t(q)];
-    const double high = std::max(double(q), 0.5 * kStrongStep * double(im.maxval));  // q: the k-th largest step
+    int q = int(hist_.size()) - 1;  // no step is above maxval
+    for (; q > 0 && above + hist_[std::size_t(q)] < k; --q) above += hist_[std::size_t(q)];
+    const double high = std::max(double(q), 0.5 * kStrongStep * double(im_.maxval));  // q: the k-th largest step
     const double low = std::max(1.0, r * high);
-    // Hysteresis over cracks that share a pixel corner.
+    // A crack's step, (X, Y) its midpoint (X + Y odd): between pixels (X/2, Y/2) and the next one
+    // right (X odd) or down (Y odd).
+    const std::uint16_t* px = im_.samples.data();
+    const auto step = [&](int X, int Y) {
+        const std::size_t i = std::size_t(Y >> 1) * std::size_t(W) + std::size_t(X >> 1);
+        return double(std::abs(int(px[i + ((X & 1) ? 1 : std::size_t(W))]) - int(px[i])));
+    };
+    // Hysteresis over cracks that share a pixel corner, from the cracks at or above `high`.
     std::vector<std::pair<int, int>> stack;
-    for (int Y = 0; Y < GH; ++Y)
-        for (int X = 1 - Y % 2; X < GW; X += 2)
-            if (double(step(X, Y)) >= high) {
-                map(X, Y) = 1;
+    for (int Y = 0; Y < GH; ++Y) {
+        std::uint8_t* row = map.data.data() + std::size_t(Y) * std::size_t(GW);
+        for (int X = 1 - (Y & 1); X < GW; X += 2)
+            if (step(X, Y) >= high) {
+                row[X] = 1;
                 stack.push_back({X, Y});
             }
-    const auto corner_cracks = [&](int X, int Y, std::pair<int, int> out[4]) {
-        out[0] = {X, Y - 1}, out[1] = {X, Y + 1}, out[2] = {X - 1, Y}, out[3] = {X + 1, Y};
+    }
+    const auto visit = [&](int X, int Y) {
+        if (X < 0 || Y < 0 || X >= GW || Y >= GH) return;
+        std::uint8_t& m = map.data[std::size_t(Y) * std::size_t(GW) + std::size_t(X)];
+        if (!m && step(X, Y) >= low) {
+            m = 1;
+            stack.push_back({X, Y});
+        }
     };
     while (!stack.empty()) {
         const auto [X, Y] = stack.back();
         stack.pop_back();
-        std::pair<int, int> corners[2];
-        if (X % 2) corners[0] = {X, Y - 1}, corners[1] = {X, Y + 1};
-        else corners[0] = {X - 1, Y}, corners[1] = {X + 1, Y};
-        for (const auto& [cx, cy] : corners) {
-            if (!map.inside(cx, cy)) continue;
-            std::pair<int, int> cr[4];
-            corner_cracks(cx, cy, cr);
-            for (const auto& [qx, qy] : cr)
-                if (map.inside(qx, qy) && !map(qx, qy) && double(step(qx, qy)) >= low) {
-                    map(qx, qy) = 1;
-                    stack.push_back({qx, qy});
-                }
+        // The crack's two ends (pixel corners, both coordinates odd), each with its four cracks.
+        for (int side = -1; side <= 1; side += 2) {
+            const int cx = (X & 1) ? X : X + side, cy = (X & 1) ? Y + side : Y;
+            if (cx < 0 || cy < 0 || cx >= GW || cy >= GH) continue;
+            visit(cx, cy - 1);
+            visit(cx, cy + 1);
+            visit(cx - 1, cy);
+            visit(cx + 1, cy);
         }
     }
-    for (int Y = 1; Y < GH; Y += 2)
-        for (int X = 1; X < GW; X += 2) {
-            std::pair<int, int> cr[4];
-            corner_cracks(X, Y, cr);
-            int set = 0;
-            for (const auto& [qx, qy] : cr) set += map.inside(qx, qy) && map(qx, qy);
-            if (set >= 2) map(X, Y) = 1;
-        }
+    // A pixel corner is on an edge where two or more of its cracks are.
+    for (int Y = 1; Y < GH; Y += 2) {
+        std::uint8_t* row = map.data.data() + std::size_t(Y) * std::size_t(GW);
+        const std::uint8_t* up = row - GW;
+        const std::uint8_t* down = row + GW;  // Y + 1 <= GH - 1: Y is odd and GH is odd
+        for (int X = 1; X < GW; X += 2)
+            if (up[X] + down[X] + row[X - 1] + row[X + 1] >= 2) row[X] = 1;
+    }
     return map;
 }
+
+Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r) { return CrackDetector(im).detect(beta, r); }
 
 Polyline simplify_cracks(const Polyline& line, double epsilon) {
     const std::size_t n = line.size();

@@ -47,6 +47,19 @@ EdgeKindStats measure_edge_kind(const Image& im);
 // shared pixel corner join them.
 Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r);
 
+// The same for several (beta, r) on one image (ERD's parameter selection): the histogram of the
+// steps is made once. The image must outlive the detector.
+class CrackDetector {
+public:
+    explicit CrackDetector(const Image& im);
+    Grid<std::uint8_t> detect(double beta, double r) const;
+
+private:
+    const Image& im_;
+    std::vector<std::size_t> hist_;  // cracks per step, 0 .. maxval
+    std::size_t cracks_ = 0;
+};
+
 // Douglas-Peucker for a polyline traced on a crack map that keeps every pixel on its side: a
 // piece a..b is replaced by the segment a-b only when no point is further than epsilon (doubled
 // units) from it and each crack midpoint's two pixels lie strictly on either side of it, the

@@ -23,7 +23,8 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     if (hard_) {
         if (!(canny.beta > 0 && canny.beta <= 1) || !(canny.r >= 0 && canny.r <= 1))
             return Status::bad_input("crack edges: beta must be in (0, 1] and r in [0, 1]");
-        cracks_ = crack_edges(image_, canny.beta, canny.r);
+        if (!cracker_) cracker_.emplace(image_);  // the steps' histogram, once per image
+        cracks_ = cracker_->detect(canny.beta, canny.r);
         progress_(stage_, from_ + (to_ - from_) * 0.6);
         traced_ = trace_polylines(cracks_);
         progress_(stage_, to_);

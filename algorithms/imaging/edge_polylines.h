@@ -6,10 +6,12 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/douglas_peucker.h"
+#include "algorithms/imaging/edge_kind.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/polylines.h"
@@ -79,6 +81,7 @@ private:
     double from_ = 0, to_ = 1;
     bool hard_;
     CrackRule crack_ = CrackRule::keep_sides;
+    std::optional<CrackDetector> cracker_;  // hard: made by the first detection
     Grid<std::uint8_t> cracks_;  // hard: the last detection's crack map
     EdgeDetector detector_;
     int map_w_, map_h_;  // the half-pixel grid
