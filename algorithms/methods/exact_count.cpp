@@ -41,16 +41,29 @@ std::size_t add_densest(const Grid<double>& density, const Grid<std::uint8_t>& o
     const std::uint32_t w = std::uint32_t(density.width);
     std::vector<std::uint8_t> taken(density.size(), 0);
     for (LatticePoint p : *pts) taken[pixel_index(density, p)] = 1;
-    std::vector<std::uint32_t> cand;
-    for (std::size_t i = 0; i < density.size(); ++i)
-        if (!taken[i] && !occupied.data[i]) cand.push_back(std::uint32_t(i));
-    const std::size_t need = std::min(k - pts->size(), cand.size());
-    std::partial_sort(cand.begin(), cand.begin() + std::ptrdiff_t(need), cand.end(), [&](std::uint32_t a, std::uint32_t b) {
+    // The `want` densest free pixels (ties: the lower index first), kept in a heap whose top is
+    // the least dense of them: memory for them alone, not a list of every free pixel.
+    const auto before = [&](std::uint32_t a, std::uint32_t b) {
         return density.data[a] > density.data[b] || (density.data[a] == density.data[b] && a < b);
-    });
-    for (std::size_t i = 0; i < need; ++i)
-        pts->push_back({std::int32_t(2 * (cand[i] % w)), std::int32_t(2 * (cand[i] / w))});
-    return need;
+    };
+    const std::size_t want = k - pts->size();
+    std::vector<std::uint32_t> best;
+    best.reserve(std::min(want, density.size()));
+    for (std::size_t i = 0; i < density.size(); ++i) {
+        if (taken[i] || occupied.data[i]) continue;
+        const std::uint32_t c = std::uint32_t(i);
+        if (best.size() < want) {
+            best.push_back(c);
+            std::push_heap(best.begin(), best.end(), before);
+        } else if (before(c, best.front())) {
+            std::pop_heap(best.begin(), best.end(), before);
+            best.back() = c;
+            std::push_heap(best.begin(), best.end(), before);
+        }
+    }
+    std::sort(best.begin(), best.end(), before);
+    for (const std::uint32_t c : best) pts->push_back({std::int32_t(2 * (c % w)), std::int32_t(2 * (c / w))});
+    return best.size();
 }
 
 std::size_t lower_threshold_to_exact(const Grid<double>& sigma, std::size_t want, const DiffusionParams& params,
