@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -91,6 +93,74 @@ TEST_CASE("edge kind: --edges auto picks hard for a drawing and soft for its blu
     CHECK(run("erdgpi", soft, 1, EdgeChoice::automatic).model.edges == EdgeKind::soft);
     CHECK(run("erdgpi", soft, 1, EdgeChoice::hard).model.edges == EdgeKind::hard);
     CHECK(run("erdgpi", hard, 1, EdgeChoice::soft).model.edges == EdgeKind::soft);
+}
+
+namespace {
+
+// crack_edges as edge_kind.h defines it, written out plainly: every crack's step sorted to find
+// the beta-quantile, then hysteresis as a fixed point (a crack >= low joins while it shares a
+// pixel corner with a set crack), then the corners with two set cracks or more.
+Grid<std::uint8_t> crack_definition(const Image& im, double beta, double r) {
+    const int GW = 2 * im.width - 1, GH = 2 * im.height - 1;
+    Grid<std::uint8_t> map(GW, GH, 0);
+    Grid<int> step(GW, GH, -1);
+    std::vector<int> all;
+    for (int Y = 0; Y < GH; ++Y)
+        for (int X = 0; X < GW; ++X) {
+            if ((X + Y) % 2 == 0) continue;
+            const int x = X / 2, y = Y / 2;
+            step(X, Y) = std::abs(int(im.at(x + X % 2, y + Y % 2)) - int(im.at(x, y)));
+            all.push_back(step(X, Y));
+        }
+    if (all.empty()) return map;
+    std::sort(all.begin(), all.end(), std::greater<int>());
+    const std::size_t k = std::min(all.size(), std::max<std::size_t>(1, std::size_t(beta * double(all.size()) + 0.5)));
+    const double high = std::max(double(all[k - 1]), 0.5 * kStrongStep * double(im.maxval));
+    const double low = std::max(1.0, r * high);
+    for (int Y = 0; Y < GH; ++Y)
+        for (int X = 0; X < GW; ++X) map(X, Y) = step(X, Y) >= 0 && double(step(X, Y)) >= high;
+    const auto set_near = [&](int X, int Y) {  // a set crack shares an end (a pixel corner) with (X, Y)
+        const int ends[2][2] = {{X % 2 ? X : X - 1, X % 2 ? Y - 1 : Y}, {X % 2 ? X : X + 1, X % 2 ? Y + 1 : Y}};
+        for (const auto& e : ends) {
+            const int around[4][2] = {{e[0], e[1] - 1}, {e[0], e[1] + 1}, {e[0] - 1, e[1]}, {e[0] + 1, e[1]}};
+            for (const auto& q : around)
+                if (map.inside(e[0], e[1]) && map.inside(q[0], q[1]) && map(q[0], q[1])) return true;
+        }
+        return false;
+    };
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (int Y = 0; Y < GH; ++Y)
+            for (int X = 0; X < GW; ++X)
+                if (step(X, Y) >= 0 && !map(X, Y) && double(step(X, Y)) >= low && set_near(X, Y)) map(X, Y) = 1, grew = true;
+    }
+    for (int Y = 1; Y < GH; Y += 2)
+        for (int X = 1; X < GW; X += 2) map(X, Y) = map(X, Y - 1) + map(X, Y + 1) + map(X - 1, Y) + map(X + 1, Y) >= 2;
+    return map;
+}
+
+}  // namespace
+
+TEST_CASE("crack edges: one detector, many (beta, r), each the definition's map", "[hardedges]") {
+    std::uint32_t seed = 12345;
+    const auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+    const int sizes[][2] = {{1, 1}, {1, 9}, {9, 1}, {7, 5}, {40, 31}};
+    for (const auto& wh : sizes)
+        for (const std::uint32_t maxval : {255u, 65535u}) {
+            Image im(wh[0], wh[1], maxval);
+            // Blocks of flat values with noise: steps of every size, long crack curves.
+            for (int y = 0; y < im.height; ++y)
+                for (int x = 0; x < im.width; ++x)
+                    im.at(x, y) = std::uint16_t((((x / 6 + y / 5) % 3) * (maxval / 3) + next() % (maxval / 16 + 1)) % (maxval + 1));
+            const CrackDetector detector(im);
+            for (const double beta : {0.01, 0.05, 0.3, 1.0})
+                for (const double r : {0.0, 0.4, 1.0}) {
+                    INFO(wh[0] << " x " << wh[1] << " maxval " << maxval << " beta " << beta << " r " << r);
+                    const Grid<std::uint8_t> want = crack_definition(im, beta, r);
+                    CHECK(detector.detect(beta, r).data == want.data);
+                    CHECK(crack_edges(im, beta, r).data == want.data);
+                }
+        }
 }
 
 TEST_CASE("crack edges: the simplified curves keep every pixel next to a crack on its side", "[hardedges]") {
