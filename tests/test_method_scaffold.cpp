@@ -2,6 +2,7 @@
 // exact-count rules and policy, the thesis preset, step 1 in one home, the typed statistics.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -64,6 +65,26 @@ TEST_CASE("exact count: the two tie rules and the top-up", "[methods]") {
     CHECK(c == std::vector<LatticePoint>{{0, 0}, {0, 2}, {4, 2}, {2, 0}});
     CHECK(adjust_to_exact(d2, occupied, 2, &c) == 2);
     CHECK(c.size() == 2);
+    // More wanted than free pixels: every free one, densest first (ties in row-major order).
+    std::vector<LatticePoint> e = {{2, 0}};
+    CHECK(adjust_to_exact(d2, occupied, 100, &e) == 4);
+    CHECK(e == std::vector<LatticePoint>{{2, 0}, {0, 2}, {4, 2}, {0, 0}, {4, 0}});
+    // A larger grid against a plain sort of every free pixel (the heap keeps only the wanted).
+    Grid<double> d3(37, 23, 0.0);
+    Grid<std::uint8_t> occ3(37, 23, 0);
+    for (int y = 0; y < 23; ++y)
+        for (int x = 0; x < 37; ++x) {
+            d3(x, y) = double((x * 7 + y * 13) % 11) / 10.0;  // many ties
+            occ3(x, y) = (x + 2 * y) % 9 == 0;
+        }
+    std::vector<LatticePoint> f = {{4, 4}}, want = f;
+    std::vector<int> order;
+    for (int i = 0; i < 37 * 23; ++i)
+        if (!occ3.data[std::size_t(i)] && i != 2 * 37 + 2) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](int p, int q) { return d3.data[std::size_t(p)] > d3.data[std::size_t(q)]; });
+    for (int k = 0; k < 60; ++k) want.push_back({2 * (order[std::size_t(k)] % 37), 2 * (order[std::size_t(k)] / 37)});
+    CHECK(adjust_to_exact(d3, occ3, 61, &f) == 60);
+    CHECK(f == want);
 }
 
 TEST_CASE("exact-count policy and the thesis preset live in the library", "[methods]") {
