@@ -7,6 +7,8 @@
 # step 1's PSNR (`--step-psnr`, the table's rows). Each other codec is swept over its quality / rate, decoded,
 # and measured with `erd psnr`; its bpp at erd's PSNR is interpolated linearly in (PSNR, log bpp)
 # between the two sweep points around it ("<" / ">" when outside the sweep).
+# For each row, erd's own search at the row's PSNR (ERDGPI --step-psnr P --choose-density, codec
+# "erd-choose" in rd.tsv) adds the point a user asking erd for that quality gets.
 # Outputs: OUT/rd.tsv (every point), OUT/table.md (the RESULTS.md table), OUT/rd.png (the plot).
 # Usage: bench/codec.sh [OUT]   (ERD=build/erd, IMAGES=../shared/images, CASES="bull:0.125 ...",
 # REUSE=1 keeps the JPEG / JPEG 2000 / WebP sweeps already in OUT/rd.tsv)
@@ -94,7 +96,22 @@ PY
         "$ERD" convert -q "$base.$ext" "$base.erdz" --step-psnr "$target" -i "$src"
         "$ERD" reconstruct "$base.erdz" -o "$base.$ext_img"
         "$ERD" info --json "$base.erdz" >"$base.json"
-        printf "%s\t%s\t%s\t%s\t%s\n" "$img" "$d" $meth "$(psnr_of "$src" "$base.$ext_img")" "$base.json" >>"$rows"
+        row_psnr=$(psnr_of "$src" "$base.$ext_img")
+        # erd's own answer at the row's PSNR (CHOOSE=0: none): ERDGPI with --step-psnr and
+        # --choose-density, the point count traded against the step by erd's search rather than
+        # read off the grid above; a file written and measured like the others.
+        chosen=-
+        if [[ ${CHOOSE:-1} != 0 ]] &&
+            "$ERD" generate -v --method erdgpi -i "$src" --step-psnr "$row_psnr" --choose-density -o "$base-cd.erdz" >"$base-cd.log" 2>&1; then
+            cd_d=$(sed -n 's/.*erdz: density \([0-9.]*\)% .*/\1/p' "$base-cd.log" | tail -1)
+            cd_s=$("$ERD" info --json "$base-cd.erdz" | python3 -c 'import json,sys; print("%g" % json.load(sys.stdin)["step"])')
+            "$ERD" reconstruct "$base-cd.erdz" -o "$base-cd.$ext_img"
+            cd_bpp=$(bpp $(bits_of "$base-cd.erdz") $px)
+            cd_psnr=$(psnr_of "$src" "$base-cd.$ext_img")
+            printf "%s\terd-choose\td%s-s%s\t%s\t%s\n" "$img" "$cd_d" "$cd_s" "$cd_bpp" "$cd_psnr" >>"$rd"
+            chosen="d$cd_d-s$cd_s:$cd_bpp:$cd_psnr"
+        fi
+        printf "%s\t%s\t%s\t%s\t%s\t%s\n" "$img" "$d" $meth "$row_psnr" "$base.json" "$chosen" >>"$rows"
     done
 done
 
@@ -117,7 +134,7 @@ if [[ $RESULTS != none ]]; then
         echo "(4x4 supersampled). The other codecs at that PSNR: JPEG \`cjpeg -optimize\` (quality 2-90),"
         echo "JPEG 2000 \`opj_compress -I -r\` (the irreversible 9/7 wavelet, JPEG 2000's lossy one; without -I OpenJPEG takes the reversible 5/3, 0.9-1.4 dB lower on bull at equal size; ratio 6-400, .j2k codestream), WebP \`cwebp -m 6\` (quality 0-90),"
         echo "interpolated in (PSNR, log bpp) between the sweep points around it; \"<x\": the codec's lowest setting"
-        echo "already beats the PSNR at x bpp, \">x\": its highest does not reach it. (erd +N%) = erd's bpp relative to that codec's (negative: erd smaller). erd envelope: the cheapest erd point at that PSNR over both methods, all densities and steps (interpolated); the next column names the cheapest measured point that reaches it (the point count traded against the step)."
+        echo "already beats the PSNR at x bpp, \">x\": its highest does not reach it. (erd +N%) = erd's bpp relative to that codec's (negative: erd smaller). erd envelope: the cheapest erd point at that PSNR over both methods, all densities and steps (interpolated); the next column names the cheapest measured point that reaches it (the point count traded against the step). erd's search: the file \`erd generate -m erdgpi --step-psnr P --choose-density\` writes for the row's PSNR P (density and step its choice), measured like the others; it is one of the envelope's points."
         echo
         cat "$OUT/table.md"
         echo
