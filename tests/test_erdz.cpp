@@ -109,7 +109,7 @@ void check_round_trip(const Model& m, double step) {
     CHECK(dinfo.method == "test");
     CHECK(dinfo.total_bits == info.total_bits);
     CHECK(dinfo.flips == info.flips);
-    CHECK(dinfo.version == 2);
+    CHECK(dinfo.version == 3);
     CHECK(d.kind == m.kind);
     CHECK(d.channels == m.channels);
     CHECK(d.width == m.width);
@@ -339,7 +339,7 @@ TEST_CASE("erdz: version 1 files (no flips section) are still read", "[erdz]") {
     CHECK(d.vertices.size() == 77);
     CHECK(d.faces.size() == 145);
     CHECK(info.header_bits + info.position_bits + info.edge_bits + info.value_bits == info.total_bits);
-    // Written again, it is a version-2 file of the same model.
+    // Written again, it is a version-3 file of the same model.
     std::string again;
     erd::ErdzOptions o;
     o.step = info.step;
@@ -349,6 +349,52 @@ TEST_CASE("erdz: version 1 files (no flips section) are still read", "[erdz]") {
     CHECK(d2.vertices == d.vertices);
     CHECK(d2.values == d.values);
     CHECK(faces_of(d2, 0) == faces_of(d, 0));
+}
+
+TEST_CASE("erdz: version 2 files (fixed-step bit models, plainer contexts) are still read", "[erdz]") {
+    // Committed seeds written by the version-2 encoder; the sums are those the version-2 decoder
+    // gave, so a file read with version 3's models (which may still decode) is caught.
+    struct Seed {
+        const char* path;
+        std::size_t faces;
+        double values, corners;
+    };
+    const Seed seeds[] = {{"fuzz/corpus/fuzz_erdz/v2_colour.erdz", 236, 42442.0, 243990.0},
+                          {"fuzz/corpus/fuzz_erdz/v2_erded.erdz", 226, 17569.0, 96466.0},
+                          {"fuzz/corpus/fuzz_erdz/v2_erdgpi.erdz", 236, 18530.0, 106688.0},
+                          {"fuzz/corpus/fuzz_erdz/v2_gpi.erdz", 236, 18141.0, 0.0},
+                          {"fuzz/corpus/fuzz_erdz/v2_hard.erdz", 236, 18520.5, 106598.0}};
+    for (const Seed& seed : seeds) {
+        INFO(seed.path);
+        const std::string bytes = read_bytes(seed.path);
+        REQUIRE(bytes.size() > 5);
+        REQUIRE(bytes[4] == 2);
+        Model d;
+        erd::ErdzInfo info;
+        const erd::Status st = erd::decode_erdz(bytes, &d, &info);
+        INFO(st.message);
+        REQUIRE(st.ok());
+        CHECK(info.version == 2);
+        CHECK(d.vertices.size() == 123);
+        CHECK(d.faces.size() == seed.faces);
+        double values = 0, corners = 0;
+        for (double v : d.values) values += v;
+        for (const auto& c : d.corner_values) corners += c[0] + c[1] + c[2];
+        CHECK(values == seed.values);
+        CHECK(corners == seed.corners);
+        // Written again, it is a version-3 file of the same model.
+        std::string again;
+        erd::ErdzOptions o;
+        o.step = info.step;
+        erd::ErdzInfo info3;
+        REQUIRE(erd::encode_erdz(d, o, &again, &info3).ok());
+        CHECK(info3.version == 3);
+        Model d3;
+        REQUIRE(erd::decode_erdz(again, &d3).ok());
+        CHECK(d3.vertices == d.vertices);
+        CHECK(d3.values == d.values);
+        CHECK(faces_of(d3, 0) == faces_of(d, 0));
+    }
 }
 
 TEST_CASE("erdz: every truncation and many damaged bytes are refused with one line", "[erdz]") {
@@ -366,8 +412,8 @@ TEST_CASE("erdz: every truncation and many damaged bytes are refused with one li
     }
     CHECK(!erd::decode_erdz(bytes + "x", &d).ok());
     std::string bad = bytes;
-    bad[4] = 3;
-    CHECK(erd::decode_erdz(bad, &d).message.find("version 3") != std::string::npos);
+    bad[4] = 4;
+    CHECK(erd::decode_erdz(bad, &d).message.find("version 4") != std::string::npos);
     // Flipped bits: refused or decoded into a valid model, never a crash (the fuzzer goes further).
     int refused = 0;
     for (std::size_t i = 5; i < bytes.size(); i += 3) {

@@ -19,7 +19,8 @@ using codec::Chain;
 using codec::Rebuilt;
 
 constexpr char kMagic[4] = {'E', 'R', 'D', 'Z'};
-constexpr int kVersion = 2;  // 2 added the flips section; 1 is still read
+// 2 added the flips section, 3 the warm bit models and new contexts (erdz.h); all are read.
+constexpr int kVersion = codec::kErdzVersion;
 constexpr std::size_t kMaxMethod = 32;
 
 void put_varint(std::string* out, std::uint64_t v) {
@@ -352,7 +353,7 @@ Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology*
     if (bytes.size() < 5) return bad("the file ends inside its header");
     const int version = std::uint8_t(bytes[4]);
     if (version < 1 || version > kVersion)
-        return bad(".erdz version " + std::to_string(version) + " is not supported (this erd reads 1 and 2)");
+        return bad(".erdz version " + std::to_string(version) + " is not supported (this erd reads 1 to " + std::to_string(kVersion) + ")");
     const int nsec = section_count(version);
     Reader rd{bytes, 5};
     std::array<std::uint64_t, 9> h{};
@@ -398,18 +399,18 @@ Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology*
     const double step = double(h[6]) / 256.0;
     codec::Lattice lat{width, height, h[7] == 1};
     std::vector<LatticePoint> free_points;
-    Status st = codec::decode_positions(data(0), sec[0].second, lat, &free_points);
+    Status st = codec::decode_positions(data(0), sec[0].second, lat, version, &free_points);
     if (!st) return st;
     std::vector<Chain> chains;
     const std::uint64_t max_steps = 3 * std::uint64_t(2 * W - 1) * std::uint64_t(2 * H - 1);
-    if (!(st = codec::decode_chains(data(1), sec[1].second, width, height, !erd, max_steps, &chains))) return st;
+    if (!(st = codec::decode_chains(data(1), sec[1].second, width, height, !erd, max_steps, version, &chains))) return st;
     Rebuilt r;
     if (!(st = codec::rebuild(width, height, free_points, chains, &r))) return st;
     std::uint64_t flips = 0;
     if (sec[2].second > 0 && !(st = codec::decode_flips(data(2), sec[2].second, &r.cdt, &flips))) return st;
     codec::number_units(erd, &r);
     std::vector<std::int64_t> q;
-    if (!(st = codec::decode_values(data(3), sec[3].second, r.graph, C, &q))) return st;
+    if (!(st = codec::decode_values(data(3), sec[3].second, r.graph, C, version, &q))) return st;
     for (std::int64_t k : q)
         if (std::fabs(double(k) * step) > 1e9) return bad("values section: a value above 1e9 in magnitude");
 

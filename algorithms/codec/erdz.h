@@ -2,17 +2,18 @@
 // self-describing container whose sections are range-coded (algorithms/codec/range_coder.h).
 //
 // Layout (integers are LEB128 varints unless said otherwise):
-//   magic      the 4 bytes "ERDZ", then the version byte (2; version 1, still read, had no flips
-//              section)
+//   magic      the 4 bytes "ERDZ", then the version byte (3; 2 and 1 are still read: version 1
+//              had no flips section, versions 1 and 2 adapted every BitModel by fixed steps of
+//              1/32 and coded positions and values under the plainer contexts said below)
 //   header     width, height, maxval, channels (1 or 3), kind (0 basic, 1 erd), edges (0 soft,
 //              1 hard), step (the value quantisation step in 1/256ths, >= 1), lattice (0: free
 //              vertices on the even lattice, 1: on the doubled lattice), the method's name
 //              (length byte + that many bytes of [a-z0-9_-], may be empty)
 //   sections   four, in this order, each its byte length (varint) then its range-coded bytes:
 //     positions  the vertices on no constrained edge, other than the four corners: occupancy of
-//                the lattice as a quadtree, one adaptive bit per child (context: level and how
-//                many earlier siblings were occupied; a last child that must be occupied is not
-//                coded)
+//                the lattice as a quadtree, one adaptive bit per child (context: level, how many
+//                children of the parent are occupied (not in 1, 2) and how many earlier siblings
+//                were occupied; a last child that must be occupied is not coded)
 //     edges      the constrained edges as chains: a chain starts at a position (coded relative
 //                to the previous chain's start) and goes on by steps (dx, dy) between its
 //                successive vertices; the chain's vertices are vertices of the model
@@ -21,7 +22,8 @@
 //     values     the values, quantised to integer multiples k of the step, in the order of the
 //                vertices sorted by (y, x): per vertex (basic) or per wedge (erd), per channel,
 //                k minus a prediction from the vertex's already-coded neighbours in that wedge,
-//                and in channels 1 and 2 also the residual of channel 0
+//                and in channels 1 and 2 also the residual of channel 0, under a context of the
+//                neighbours' spread (and, not in 1, 2, whether there is only one)
 //   Nothing may follow the last section.
 //
 // Topology is not stored. The decoder rebuilds the constrained Delaunay triangulation of the

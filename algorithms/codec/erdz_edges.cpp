@@ -106,9 +106,9 @@ std::string encode_chains(const std::vector<Chain>& chains) {
 }
 
 Status decode_chains(const unsigned char* data, std::size_t size, int width, int height, bool even,
-                     std::uint64_t max_steps, std::vector<Chain>* out) {
+                     std::uint64_t max_steps, int version, std::vector<Chain>* out) {
     out->clear();
-    RangeDecoder rc(data, size);
+    RangeDecoder rc(data, size, adaptation(version));
     Models m;
     const auto bad = [](const std::string& what) { return Status::bad_input("edges section: " + what); };
     const std::int64_t mx = 2 * std::int64_t(width) - 2, my = 2 * std::int64_t(height) - 2;

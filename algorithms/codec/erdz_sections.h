@@ -1,5 +1,6 @@
 // The four coded sections of an .erdz file (algorithms/codec/erdz.h has the layout): each an
-// encoder that returns the section's bytes and a decoder that checks everything it reads.
+// encoder that returns the section's bytes (the newest version, kErdzVersion) and a decoder
+// that checks everything it reads, for the file's version.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -10,9 +11,14 @@
 
 #include "kernel/cdt.h"
 #include "kernel/lattice.h"
+#include "algorithms/codec/range_coder.h"
 #include "kernel/status.h"
 
 namespace erd::codec {
+
+// The newest .erdz version (the encoders write it); the decoders read 1 .. kErdzVersion.
+constexpr int kErdzVersion = 3;
+inline Adaptation adaptation(int version) { return version <= 2 ? Adaptation::fixed : Adaptation::warm; }
 
 // The free vertices' lattice: cells (i, j) of a GW x GH grid, the point (2i, 2j) on the even
 // lattice of a W x H image (GW = W) or (i, j) on the doubled one (GW = 2W - 1).
@@ -27,7 +33,8 @@ struct Lattice {
 // quadtree order (Morton order of the cells), the order decoder_order puts them in.
 std::string encode_positions(const Lattice& lat, std::vector<LatticePoint> pts);
 void decoder_order(const Lattice& lat, std::vector<LatticePoint>* pts);
-Status decode_positions(const unsigned char* data, std::size_t size, const Lattice& lat, std::vector<LatticePoint>* out);
+Status decode_positions(const unsigned char* data, std::size_t size, const Lattice& lat, int version,
+                        std::vector<LatticePoint>* out);
 
 // Edges: segments between lattice points, each a constrained edge, as chains of points.
 using Chain = std::vector<LatticePoint>;
@@ -36,7 +43,7 @@ std::string encode_chains(const std::vector<Chain>& chains);
 // Points must lie in [0, 2W-2] x [0, 2H-2], on the even lattice when `even`; at most max_steps
 // steps in all.
 Status decode_chains(const unsigned char* data, std::size_t size, int width, int height, bool even,
-                     std::uint64_t max_steps, std::vector<Chain>* out);
+                     std::uint64_t max_steps, int version, std::vector<Chain>* out);
 
 // Flips (version 2): the edges flipped in the rebuilt triangulation *cdt (erdz_flips.cpp has the
 // visiting order). The encoder asks choose(a, b, c, d) whether to flip edge a-b into c-d (vertices
@@ -58,7 +65,7 @@ struct ValueGraph {
 };
 // q: units * channels quantised values, q[u * channels + c].
 std::string encode_values(const ValueGraph& g, int channels, const std::vector<std::int64_t>& q);
-Status decode_values(const unsigned char* data, std::size_t size, const ValueGraph& g, int channels,
+Status decode_values(const unsigned char* data, std::size_t size, const ValueGraph& g, int channels, int version,
                      std::vector<std::int64_t>* q);
 
 // The largest |k| a value section holds (values up to 1e9 at the finest step).

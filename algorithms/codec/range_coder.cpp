@@ -5,6 +5,20 @@ namespace {
 
 constexpr std::uint32_t kTop = 1u << 24;
 constexpr int kProbBits = 11, kAdapt = 5;
+constexpr std::uint16_t kWarmBits = 62;  // warm: the mean of the first 62 bits, then steps of 1/64
+
+void adapt(BitModel& m, int b, Adaptation how) {
+    if (how == Adaptation::fixed) {
+        if (b == 0) m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
+        else m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
+        return;
+    }
+    const int step = m.seen + 2;
+    if (m.seen < kWarmBits) ++m.seen;
+    const int target = b == 0 ? 1 << kProbBits : 0;
+    const int p = int(m.p) + (target - int(m.p)) / step;
+    m.p = static_cast<std::uint16_t>(p < 1 ? 1 : p > (1 << kProbBits) - 1 ? (1 << kProbBits) - 1 : p);
+}
 
 int bit_length(std::uint64_t n) {
     int k = 0;
@@ -60,8 +74,7 @@ void RangeEncoder::code(std::uint32_t p0, int b) {
 
 void RangeEncoder::bit(BitModel& m, int b) {
     code(m.p, b);
-    if (b == 0) m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
-    else m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
+    adapt(m, b, adaptation_);
 }
 
 void RangeEncoder::bit(CountModel& m, int b) {
@@ -85,7 +98,8 @@ std::string RangeEncoder::finish() {
     return std::move(out_);
 }
 
-RangeDecoder::RangeDecoder(const unsigned char* data, std::size_t size) : data_(data), size_(size) {
+RangeDecoder::RangeDecoder(const unsigned char* data, std::size_t size, Adaptation adaptation)
+    : data_(data), size_(size), adaptation_(adaptation) {
     if (next() != 0) good_ = false;
     for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | next();
 }
@@ -116,8 +130,7 @@ int RangeDecoder::code(std::uint32_t p0) {
 
 int RangeDecoder::bit(BitModel& m) {
     const int b = code(m.p);
-    if (b == 0) m.p = static_cast<std::uint16_t>(m.p + (((1u << kProbBits) - m.p) >> kAdapt));
-    else m.p = static_cast<std::uint16_t>(m.p - (m.p >> kAdapt));
+    adapt(m, b, adaptation_);
     return b;
 }
 

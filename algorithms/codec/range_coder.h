@@ -1,6 +1,5 @@
 // An adaptive binary range coder (the carry-less scheme of LZMA's rc: 32-bit range, 11-bit
-// probabilities adapted by 1/32 after each bit) and the integer codes the .erdz sections build
-// on it.
+// probabilities) and the integer codes the .erdz sections build on it.
 //
 // The encoder's flush writes exactly the bytes the decoder reads (5 at the start, one per
 // renormalisation), so a decoder that ends with bytes left over, or that had to read past the
@@ -13,10 +12,18 @@
 
 namespace erd::codec {
 
-// The probability that the next bit is 0, in 1/2048ths, adapted towards each bit coded with it.
+// The probability that the next bit is 0, in 1/2048ths, adapted towards each bit coded with it
+// as the coder's Adaptation says.
 struct BitModel {
     std::uint16_t p = 1024;
+    std::uint16_t seen = 0;  // bits coded with it (warm adaptation; stops counting at its limit)
 };
+
+// How a BitModel learns. fixed (.erdz versions 1 and 2): steps of 1/32 of the way towards each
+// bit. warm (version 3 on): the running mean of its first bits (steps 1/2, 1/3, ...), then steps
+// of 1/64: a model that sees few bits learns them at once, one that sees many holds its rate
+// closer (-0.7% of the codec table's bits, docs/DECISIONS.md ".erdz coding").
+enum class Adaptation { fixed, warm };
 
 // A bit whose rate is steady over a section: the probability is the count estimate
 // (n0 + 1/2) / (n + 1), halved counts past kHalveAt keep it loosely adaptive. It learns a skewed
@@ -30,6 +37,7 @@ struct CountModel {
 
 class RangeEncoder {
 public:
+    explicit RangeEncoder(Adaptation adaptation = Adaptation::warm) : adaptation_(adaptation) {}
     void bit(BitModel& m, int b);
     void bit(CountModel& m, int b);
     void direct_bits(std::uint32_t value, int count);  // equiprobable, most significant first
@@ -44,11 +52,12 @@ private:
     std::uint8_t cache_ = 0;
     std::uint64_t cache_size_ = 1;
     std::string out_;
+    Adaptation adaptation_;
 };
 
 class RangeDecoder {
 public:
-    RangeDecoder(const unsigned char* data, std::size_t size);
+    RangeDecoder(const unsigned char* data, std::size_t size, Adaptation adaptation = Adaptation::warm);
     int bit(BitModel& m);
     int bit(CountModel& m);
     std::uint32_t direct_bits(int count);
@@ -65,6 +74,7 @@ private:
     std::size_t size_, pos_ = 0;
     std::uint32_t range_ = 0xFFFFFFFFu, code_ = 0;
     bool good_ = true;
+    Adaptation adaptation_;
 };
 
 // Unsigned integers by an adaptive Elias-gamma code: the bit length of n + 1 in unary (one model
