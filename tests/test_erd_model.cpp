@@ -18,6 +18,7 @@
 #include "algorithms/methods/erded.h"
 #include "algorithms/methods/erdgpi.h"
 #include "algorithms/imaging/filters.h"
+#include "algorithms/imaging/synth.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
@@ -230,6 +231,40 @@ TEST_CASE("step 1: forced parameters and tiny N keep the mesh within N", "[erd]"
     CHECK(mesh.dropped_polylines > 0);
     std::string why;
     CHECK(cdt.verify(&why));
+}
+
+TEST_CASE("step 1: the simple test's shortcut builds the thesis's initial mesh, by either path", "[erd]") {
+    // Soft edges on noisy synth: at 512^2 the loop's first detection (0.028) already reaches the
+    // test's threshold (shortcut); at 256^2 it does not, so the test's own detection runs and the
+    // first is taken back from the side. At 3% there is no shortcut (the loop starts at 0.083).
+    struct Case {
+        int side;
+        std::size_t n;
+        double test_beta;
+    };
+    for (const Case& k : {Case{512, 2621, 0.028}, Case{256, 655, 0.055}, Case{256, 1966, 0.055}}) {
+        SynthParams sp;
+        sp.width = sp.height = k.side;
+        Image im;
+        REQUIRE(synth(sp, &im).ok());
+        InitialMeshOptions mo;
+        mo.target = k.n;
+        Cdt cdt_a, cdt_b;
+        InitialMesh a, b;
+        REQUIRE(build_initial_mesh(im, mo, &cdt_a, &a).ok());
+        mo.request.shortcut = false;
+        REQUIRE(build_initial_mesh(im, mo, &cdt_b, &b).ok());
+        INFO("synth " << k.side << " N " << k.n);
+        CHECK(a.params.simple_test_beta == k.test_beta);
+        CHECK(b.params.simple_test_beta == 0.055);
+        CHECK(a.params.simple == b.params.simple);
+        CHECK(a.params.beta == b.params.beta);
+        CHECK(a.params.l == b.params.l);
+        CHECK(a.params.eps == b.params.eps);
+        CHECK(a.params.constrained_points == b.params.constrained_points);
+        CHECK(a.polylines == b.polylines);
+        CHECK(a.edges.data == b.edges.data);
+    }
 }
 
 TEST_CASE("least-squares wedge refit reproduces a planar image and lowers the error", "[erd]") {

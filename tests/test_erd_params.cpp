@@ -27,7 +27,18 @@ struct FakeCounter : ConstraintPointCounter {
         epss.push_back(eps);
         return std::size_t(std::lround(fn(beta, l, eps)));
     }
+    std::vector<double> prepared;
+    int asides = 0;
+    void prepare(double b, double) override { prepared.push_back(b); }
+    void set_aside() override { ++asides; }
 };
+
+// The thesis's selection as written: the simple test's detection first.
+ErdParamRequest thesis_request() {
+    ErdParamRequest r;
+    r.shortcut = false;
+    return r;
+}
 
 }  // namespace
 
@@ -49,10 +60,12 @@ TEST_CASE("beta tables 3.1 and 3.2", "[erd]") {
 TEST_CASE("not simple: initial choices from the table, no loop needed", "[erd]") {
     // 1000 x 1000 image, N = 10000 (1%): 0.35N = 3500, 0.7N = 7000; grid threshold ~4.
     FakeCounter c([](double, int, double) { return 5000.0; });
-    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, thesis_request(), c);
     CHECK_FALSE(p.simple);
     CHECK(p.simple_test_points == 5000);
+    CHECK(p.simple_test_beta == 0.055);
     CHECK(c.betas.front() == 0.055);  // the simple test
+    CHECK(c.prepared.empty());
     CHECK(c.ls.front() == 5);
     CHECK(c.epss.front() == 1.0);
     CHECK(p.beta == 0.0280);
@@ -93,7 +106,7 @@ TEST_CASE("too few constrained points: eps := 1 and recount", "[erd]") {
 TEST_CASE("simple image test and -S override", "[erd]") {
     // Threshold 0.001 * 1999 * 1999 = 3996: 3000 points is simple.
     FakeCounter c([](double, int, double) { return 3000.0; });
-    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, thesis_request(), c);
     CHECK(p.simple);
     CHECK(p.beta == 0.03);
     CHECK(p.l == 1);
@@ -130,4 +143,63 @@ TEST_CASE("manual flags stay fixed", "[erd]") {
     ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, req, c2);
     CHECK(q.beta == 0.2);
     CHECK(q.loop_iterations == 1);  // nothing it may move
+}
+
+TEST_CASE("the simple test's shortcut: the loop's first detection decides when it reaches the threshold", "[erd]") {
+    // 1000 x 1000, N = 10000 (1%): the loop starts at 0.028; the test's threshold is 3996.
+    FakeCounter c([](double, int, double) { return 5000.0; });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    CHECK_FALSE(p.simple);
+    CHECK(p.simple_test_beta == 0.028);
+    CHECK(p.simple_test_points == 5000);
+    CHECK(c.prepared == std::vector<double>{0.055});  // the pass is made wide enough for the test
+    CHECK(c.betas == std::vector<double>{0.028, 0.028});  // the second is the loop's (a counter skips it)
+    CHECK(c.asides == 0);
+    CHECK(p.beta == 0.028);
+    CHECK(p.loop_iterations == 1);
+}
+
+TEST_CASE("the simple test's shortcut: below the threshold the test runs, the first detection set aside", "[erd]") {
+    // Fewer points at 0.028 than the threshold, more at 0.055: not simple, as the thesis decides.
+    FakeCounter c([](double beta, int, double) { return beta >= 0.055 ? 5000.0 : 3000.0; });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    CHECK_FALSE(p.simple);
+    CHECK(p.simple_test_beta == 0.055);
+    CHECK(p.simple_test_points == 5000);
+    CHECK(c.betas == std::vector<double>{0.028, 0.055, 0.028});
+    CHECK(c.asides == 1);
+    // A simple image: the loop then starts at 0.03.
+    FakeCounter s([](double, int, double) { return 3000.0; });
+    ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, s);
+    CHECK(q.simple);
+    CHECK(s.betas == std::vector<double>{0.028, 0.055, 0.03});
+}
+
+TEST_CASE("the simple test's shortcut: at 2.5% and above the loop starts at or above 0.055, no shortcut", "[erd]") {
+    FakeCounter c([](double, int, double) { return 200000.0; });
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 30000, {}, c);
+    CHECK(c.betas.front() == 0.055);
+    CHECK(c.prepared.empty());
+    CHECK(p.simple_test_beta == 0.055);
+}
+
+TEST_CASE("the simple test's shortcut decides as the test does when counts grow with beta", "[erd]") {
+    // Counts that grow with beta (as measured on every test image): over thresholds around the
+    // counts, densities and both methods, the shortcut's verdict and parameters are the thesis's.
+    static double scale = 1.0;
+    auto counts = [](double beta, int l, double eps) { return scale * 1e5 * beta * (5.0 / l) / eps; };
+    for (double sc : {0.1, 0.5, 0.7, 0.73, 0.75, 1.0, 2.0, 10.0})
+        for (std::size_t n : {1000u, 5000u, 10000u, 20000u})
+            for (ErdMethod m : {ErdMethod::erdgpi, ErdMethod::erded}) {
+                scale = sc;
+                FakeCounter a(counts), b(counts);
+                const ErdParams pa = select_erd_params(m, 1000, 1000, n, {}, a);
+                const ErdParams pb = select_erd_params(m, 1000, 1000, n, thesis_request(), b);
+                INFO("scale " << sc << " n " << n);
+                CHECK(pa.simple == pb.simple);
+                CHECK(pa.beta == pb.beta);
+                CHECK(pa.l == pb.l);
+                CHECK(pa.eps == pb.eps);
+                CHECK(pa.constrained_points == pb.constrained_points);
+            }
 }

@@ -501,6 +501,19 @@ Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, Cann
     Status st = check_params(params);
     if (!st) return st;
     if (pass_ && pass_->track(params, false, edges, stats)) return Status::success();
+    make_pass(params);
+    pass_->track(params, false, edges, stats);
+    return Status::success();
+}
+
+Status EdgeDetector::prepare(const CannyParams& widest) {
+    if (im_.width <= 0 || im_.height <= 0) return Status::bad_input("edge detection: empty image");
+    Status st = check_params(widest);
+    if (st && !pass_) make_pass(widest);
+    return st;
+}
+
+void EdgeDetector::make_pass(const CannyParams& params) {
     pass_.reset();  // the old pass goes before the new one is made
     pass_.reset(new Pass);
     const std::size_t M = std::size_t(2 * im_.width - 1) * std::size_t(2 * im_.height - 1);
@@ -508,8 +521,6 @@ Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, Cann
         pass_->run(im_.width, im_.height, ColourSample{&im_, colour_}, params, Pass::k_of(params.beta, M));
     else
         pass_->run(im_.width, im_.height, [&](int x, int y) { return im_.at(x, y); }, params, Pass::k_of(params.beta, M));
-    pass_->track(params, false, edges, stats);
-    return Status::success();
 }
 
 Status EdgeDetector::detect(const CannyParams& params, Grid<std::uint8_t>* edges, CannyStats* stats) {

@@ -91,11 +91,16 @@ public:
     // grid is plane index (Y + 1) * stride + X + 1 (a frame of at least one column; not linked).
     // edge_map() turns it into the map; trace_polylines (polylines.h) takes it as is.
     Status detect(const CannyParams& params, SortedPoints* edges, CannyStats* stats = nullptr);
+    // Makes the gradient pass for `widest` now, when none is kept, without detecting: later
+    // detections it covers (e.g. a smaller beta with the same r) then reuse it, whichever of them
+    // comes first.
+    Status prepare(const CannyParams& widest);
     void release();  // frees the kept pass
 
     struct Pass;  // defined in canny.cpp
 
 private:
+    void make_pass(const CannyParams& params);
     const Image& im_;
     ColourGradient colour_;
     std::unique_ptr<Pass> pass_;

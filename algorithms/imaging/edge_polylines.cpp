@@ -9,9 +9,41 @@ namespace erd {
 EdgePolylines::EdgePolylines(const Image& image, bool hard, const Image* gradient, ColourGradient colour)
     : image_(image), hard_(hard), detector_(gradient ? *gradient : image, colour), map_w_(2 * image.width - 1), map_h_(2 * image.height - 1) {}
 
+namespace {
+
+bool same_detection(const CannyParams& a, const CannyParams& b) {
+    return a.beta == b.beta && a.r == b.r && a.modified == b.modified;
+}
+
+}  // namespace
+
+Status EdgePolylines::prepare(const CannyParams& widest) {
+    return hard_ ? Status::success() : detector_.prepare(widest);
+}
+
+void EdgePolylines::set_aside() {
+    if (!have_edges_) return;
+    aside_ = Detection{canny_, stats_, std::move(edges_), std::move(cracks_), std::move(traced_)};
+    have_edges_ = have_kept_ = false;
+    edges_.clear();
+    std::vector<Polyline>().swap(kept_);
+}
+
 Status EdgePolylines::detect(const CannyParams& canny) {
-    if (have_edges_ && canny.beta == canny_.beta && canny.r == canny_.r && canny.modified == canny_.modified)
+    if (have_edges_ && same_detection(canny, canny_)) return Status::success();
+    if (aside_ && same_detection(canny, aside_->canny)) {
+        canny_ = aside_->canny;
+        stats_ = aside_->stats;
+        edges_ = std::move(aside_->edges);
+        cracks_ = std::move(aside_->cracks);
+        traced_ = std::move(aside_->traced);
+        aside_.reset();
+        have_edges_ = true;
+        have_kept_ = false;
+        std::vector<Polyline>().swap(kept_);
         return Status::success();
+    }
+    if (have_edges_) aside_.reset();  // a third detection: what was set aside is not wanted back
     canny_ = canny;
     have_edges_ = true;
     have_kept_ = false;

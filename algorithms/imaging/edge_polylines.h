@@ -61,6 +61,13 @@ public:
         to_ = to;
     }
     Status detect(const CannyParams& canny);
+    // Makes the detector's gradient pass for `widest` before any detection (soft edges; nothing
+    // for hard ones), so that detections with a smaller beta and then `widest` share it.
+    Status prepare(const CannyParams& widest);
+    // Sets the last detection (its points, polylines and stats) aside: a later detect() with its
+    // parameters takes it back instead of detecting again. One is kept, and only until a detect()
+    // with other parameters than its own and the current one's.
+    void set_aside();
     // Step 1.3 on the last detection: epsilon in doubled-coordinate units (pixels times
     // kEpsilonUnitsPerPixel; hard: times kHardEpsilonScale too). Returns the kept polylines.
     const std::vector<Polyline>& simplify(int min_length, double epsilon_units, LengthRule rule,
@@ -94,6 +101,14 @@ private:
     CannyStats stats_;
     SortedPoints edges_;  // of the last detection
     std::vector<Polyline> traced_, kept_;
+    struct Detection {
+        CannyParams canny;
+        CannyStats stats;
+        SortedPoints edges;
+        Grid<std::uint8_t> cracks;
+        std::vector<Polyline> traced;
+    };
+    std::optional<Detection> aside_;
 };
 
 // The whole chain in one call. Code::input for a negative or NaN epsilon or Canny parameters out

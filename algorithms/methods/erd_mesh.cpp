@@ -61,6 +61,15 @@ public:
         progress_->selection(3.0);
     }
 
+    void prepare(double beta, double r) override {
+        CannyParams cp;
+        cp.beta = beta;
+        cp.r = r;
+        Status st = chain_.prepare(cp);
+        if (!st.ok() && status_.ok()) status_ = st;
+    }
+    void set_aside() override { chain_.set_aside(); }
+
     std::size_t count(int l, double eps) override {
         if (progress_->cancelled()) return 0;
         const std::vector<Polyline>* kept = &chain_.simplify(l, eps * eps_unit_, rule_);

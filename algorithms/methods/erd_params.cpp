@@ -36,10 +36,29 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
     } else {
         // The test runs with the thesis's fixed choices (and the user's r): an image whose
         // initial mesh has fewer than 0.001 |half-pixel grid| constrained points is simple.
-        counter.detect(0.055, p.r);
-        p.simple_test_points = counter.count(5, 1.0);
+        constexpr double kTestBeta = 0.055;
         const double grid = double(2 * std::int64_t(width) - 1) * double(2 * std::int64_t(height) - 1);
-        p.simple = double(p.simple_test_points) < 0.001 * grid;
+        const double first = req.beta >= 0 ? req.beta : erd_beta_table(method, density * 100.0);
+        bool decided = false;
+        if (req.shortcut && first < kTestBeta) {
+            counter.prepare(kTestBeta, p.r);
+            counter.detect(first, p.r);
+            const std::size_t c = counter.count(5, 1.0);
+            if (double(c) >= 0.001 * grid) {
+                p.simple = false;
+                p.simple_test_points = c;
+                p.simple_test_beta = first;
+                decided = true;
+            } else {
+                counter.set_aside();
+            }
+        }
+        if (!decided) {
+            counter.detect(kTestBeta, p.r);
+            p.simple_test_points = counter.count(5, 1.0);
+            p.simple_test_beta = kTestBeta;
+            p.simple = double(p.simple_test_points) < 0.001 * grid;
+        }
     }
 
     if (p.simple) {

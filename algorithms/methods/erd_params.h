@@ -25,6 +25,10 @@ public:
     virtual void detect(double beta, double r) = 0;
     // Steps 1.2-1.3 on the last detection: polylines, Douglas-Peucker with eps, drop short ones.
     virtual std::size_t count(int l, double eps) = 0;
+    // Hints a counter may use: the widest detection still to come (make its shared work for
+    // that one first), and that the last detection will be wanted again after the next one.
+    virtual void prepare(double /*beta*/, double /*r*/) {}
+    virtual void set_aside() {}
 };
 
 // Parameters the user fixed by flag; a negative value (or simple = -1) means "choose".
@@ -34,6 +38,7 @@ struct ErdParamRequest {
     int l = -1;         // -l
     double eps = -1;    // -e
     int simple = -1;    // -S: -1 automatic, 0 simple, anything else not simple (thesis flag text)
+    bool shortcut = true;  // the simple test's shortcut (below); false: the thesis's test as written
 };
 
 // The chosen values and how they were reached (for stats).
@@ -44,6 +49,8 @@ struct ErdParams {
     double eps = 1;
     bool simple = false;
     std::size_t simple_test_points = 0;  // constrained points of the simple test (0 when -S given)
+    double simple_test_beta = 0;         // the beta they were counted at: 0.055, or the loop's first
+                                         // beta when the shortcut decided (0 when -S given)
     std::size_t constrained_points = 0;  // constrained points with the final parameters
     int loop_iterations = 0;             // edge detections in the selection loop
 };
@@ -57,6 +64,13 @@ constexpr int kErdParamMaxIterations = 24;
 
 // Runs the selection for a W x H image and target size n. The counter's last detection/count
 // on return are those of the chosen parameters.
+//
+// The shortcut (ours, req.shortcut): the loop of a non-simple image starts at the table's beta (or
+// -b), which below 2.5% is at most the simple test's 0.055, and a smaller beta has found fewer
+// constrained points on every image measured (docs/DECISIONS.md "Parameter selection"). So that
+// detection comes first, counted as the test counts (l 5, epsilon 1); when it already reaches
+// the test's threshold the image is not simple and the test's own detection is not made. Else
+// the test runs as written and the first detection is set aside for the loop.
 ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t n,
                             const ErdParamRequest& req, ConstraintPointCounter& counter);
 

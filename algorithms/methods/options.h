@@ -59,6 +59,9 @@ struct GenerateOptions {
     int min_length = -1;         // -l polyline minimum length
     double epsilon = -1.0;       // -e Douglas-Peucker tolerance
     int simple = -1;             // -S 0 simple, other nonsimple, -1 automatic
+    bool simple_shortcut = true; // (ours) the simple test decided by the loop's first detection when
+                                 // its count already reaches the test's threshold (erd_params.h);
+                                 // --thesis: always the test's own detection
     int wedge_rule = 1;          // -w 1 MMSODD line search, 0 fixed distance
     int wedge_order = 5;         // -s binomial filter order for the wedge-value MMSODD
     int startup = 0;             // -B ERDED error-diffusion startup: 0 mirror, 1 force, 2 none

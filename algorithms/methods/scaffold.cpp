@@ -55,6 +55,7 @@ void set_thesis_preset(GenerateOptions* o) {
     o->edge_zero_radius = 0;
     o->edges = EdgeChoice::soft;
     o->supersampled_errors = true;
+    o->simple_shortcut = false;
 }
 
 GenerateOptions thesis_options() {
@@ -117,7 +118,8 @@ WedgeValueOptions wedge_options(const GenerateOptions& options) {
 }
 
 ErdParamRequest param_request(const GenerateOptions& options) {
-    return ErdParamRequest{options.beta, options.ratio, options.min_length, options.epsilon, options.simple};
+    return ErdParamRequest{options.beta, options.ratio, options.min_length, options.epsilon, options.simple,
+                           options.simple_shortcut};
 }
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
