@@ -98,6 +98,8 @@ stage_python() {
     (cd python && ERD_BIN=$PWD/../build/erd ERD_IMAGES=$images_abs PYTHONPATH=$PWD \
         /usr/bin/python3 -m pytest -q -p no:cacheprovider tests) >"$log/pytest" 2>&1
     rc=$?
+    # A failure's assertion lines too: the summary line alone is cut at 80 columns.
+    [[ $rc -ne 0 ]] && grep -E '^(E  |[^ ]+\.py:[0-9]+: )' "$log/pytest" | head -20
     tail -3 "$log/pytest"
     line=$(tail -1 "$log/pytest")   # "1 failed, 54 passed in 9.1s", "2 errors in ..."
     [[ $line =~ ([0-9]+)\ passed ]] && p=${BASH_REMATCH[1]}
