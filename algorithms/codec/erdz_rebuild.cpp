@@ -108,8 +108,13 @@ void number_units(bool erd, Rebuilt* r) {
     std::uint32_t start = 0;
     for (std::size_t u = 0; u < units; ++u) {
         const auto b0 = raw.begin() + g.begin[u], b1 = raw.begin() + g.begin[u + 1];
-        for (auto it = b0 + (b0 != b1); it < b1; ++it)  // insertion sort: a dozen entries
-            for (auto j = it; j != b0 && *(j - 1) > *j; --j) std::iter_swap(j - 1, j);
+        for (auto it = b0 + (b0 != b1); it < b1; ++it) {  // insertion sort: a dozen entries
+            // Shifts rather than swaps: a swap's 8-byte reload of two fresh 4-byte stores stalls.
+            const std::uint32_t x = *it;
+            auto j = it;
+            for (; j != b0 && *(j - 1) > x; --j) *j = *(j - 1);
+            *j = x;
+        }
         g.begin[u] = start;
         for (auto it = b0; it != b1; ++it)
             if (it == b0 || *it != *(it - 1)) g.neighbour.push_back(*it);
