@@ -30,6 +30,14 @@ std::uint64_t pair_key(VertInd a, VertInd b) {
     return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
 }
 
+// An edge to visit in the next round: its vertex pair (the order of visits) and the half-edge from
+// the smaller vertex as it was then, a hint that a later flip may have made stale.
+struct Pending {
+    std::uint64_t key;
+    EdgeInd hint;
+    bool operator<(const Pending& o) const { return key < o.key; }
+};
+
 using FlipModels = std::array<CountModel, 2>;  // [cocircular]
 
 class FlipRun {
@@ -40,20 +48,23 @@ public:
     // bit). Stops with false once more than max_flips flips were made.
     template <class Decide>
     bool run(std::uint64_t max_flips, Decide decide) {
-        std::vector<std::uint64_t> next;
+        std::vector<Pending> next;
         for (EdgeInd e = 0; e < 3 * cdt_.face_count(); ++e) {
             const EdgeInd t = cdt_.twin(e);
             if (t == noEdge || t < e) continue;
             if (!visit(e, decide, &next, max_flips)) return false;
         }
-        std::vector<std::uint64_t> round;
+        std::vector<Pending> round;
         while (!next.empty()) {
             round.swap(next);
             next.clear();
             std::sort(round.begin(), round.end());
-            round.erase(std::unique(round.begin(), round.end()), round.end());
-            for (const std::uint64_t k : round) {
-                const EdgeInd e = cdt_.find_edge(VertInd(k >> 32), VertInd(k & 0xFFFFFFFFu));
+            round.erase(std::unique(round.begin(), round.end(), [](const Pending& a, const Pending& b) { return a.key == b.key; }),
+                        round.end());
+            for (const Pending& p : round) {
+                const VertInd a = VertInd(p.key >> 32), b = VertInd(p.key & 0xFFFFFFFFu);
+                // The half-edge a -> b is unique: the hint is it when its ends still say so.
+                const EdgeInd e = cdt_.org(p.hint) == a && cdt_.dest(p.hint) == b ? p.hint : cdt_.find_edge(a, b);
                 if (e != noEdge && !visit(e, decide, &next, max_flips)) return false;
             }
         }
@@ -64,7 +75,7 @@ public:
 
 private:
     template <class Decide>
-    bool visit(EdgeInd e, Decide& decide, std::vector<std::uint64_t>* next, std::uint64_t max_flips) {
+    bool visit(EdgeInd e, Decide& decide, std::vector<Pending>* next, std::uint64_t max_flips) {
         if (!cdt_.can_flip(e)) return true;
         const EdgeInd t = cdt_.twin(e);
         const LatticePoint pa = cdt_.point(cdt_.org(e)), pb = cdt_.point(cdt_.org(t)),
@@ -74,8 +85,12 @@ private:
         if (++flips_ > max_flips) return false;
         const EdgeInd d = cdt_.flip_edge(e);
         const EdgeInd dt = cdt_.twin(d);
-        for (const EdgeInd o : {next_edge(d), prev_edge(d), next_edge(dt), prev_edge(dt)})
-            next->push_back(pair_key(cdt_.org(o), cdt_.dest(o)));
+        for (const EdgeInd o : {next_edge(d), prev_edge(d), next_edge(dt), prev_edge(dt)}) {
+            const VertInd a = cdt_.org(o), b = cdt_.dest(o);
+            // The hint runs from the smaller vertex; a hull edge has no twin, and no visit.
+            const EdgeInd h = a < b ? o : cdt_.twin(o);
+            if (h != noEdge) next->push_back({pair_key(a, b), h});
+        }
         return true;
     }
 

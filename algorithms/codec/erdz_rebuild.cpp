@@ -1,6 +1,7 @@
 #include "algorithms/codec/erdz_rebuild.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace erd::codec {
 
@@ -54,6 +55,10 @@ void number_units(bool erd, Rebuilt* r) {
     r->corner_unit.assign(nh, 0);
     r->unit_begin.assign(nv + 1, 0);
     std::uint32_t units = 0;
+    // Every half-edge is the corner of its face at its origin, so the walk below meets each once;
+    // by_unit lists them in the walk's order, in which their units never decrease.
+    std::vector<EdgeInd> by_unit;
+    by_unit.reserve(nh);
     // Units: one per vertex (basic), else one per wedge, as Cdt::wedges() counts them (a run of
     // corners_around() between interior constrained edges; an interior vertex with one such edge
     // has one wedge), without its per-call allocations.
@@ -86,41 +91,43 @@ void number_units(bool erd, Rebuilt* r) {
             if (!first && !one && cdt.constrained(e) && !cdt.on_hull(e)) ++units;
             first = false;
             r->corner_unit[e] = units;
+            by_unit.push_back(e);
         }
         ++units;
     }
     r->unit_begin[nv] = units;
 
-    // Neighbour lists: the units of the other two corners of each face a unit covers, unique
-    // (counted, filled, then each short list sorted).
+    // Neighbour lists: the units of the other two corners of each face a unit covers, increasing
+    // and unique. The relation is symmetric (u's face has a corner of w exactly when w's face has
+    // one of u), so each unit w, taken in increasing order, is appended to the lists of the units
+    // beside its corners: every list fills in increasing order, with repeats side by side, and
+    // needs no sort (sorting a dozen entries per unit mispredicted most of its comparisons).
     ValueGraph& g = r->graph;
     g.begin.assign(std::size_t(units) + 1, 0);
     for (EdgeInd e = 0; e < nh; ++e) g.begin[r->corner_unit[e] + 1] += 2;
     for (std::size_t u = 0; u < units; ++u) g.begin[u + 1] += g.begin[u];
     std::vector<std::uint32_t> raw(g.begin.back()), fill(g.begin.begin(), g.begin.end() - 1);
-    for (EdgeInd e = 0; e < nh; ++e) {
-        const std::uint32_t u = r->corner_unit[e];
-        raw[fill[u]++] = r->corner_unit[next_edge(e)];
-        raw[fill[u]++] = r->corner_unit[prev_edge(e)];
+    for (const EdgeInd e : by_unit) {
+        const std::uint32_t w = r->corner_unit[e];
+        raw[fill[r->corner_unit[next_edge(e)]]++] = w;
+        raw[fill[r->corner_unit[prev_edge(e)]]++] = w;
     }
-    g.neighbour.clear();
-    g.neighbour.reserve(raw.size() / 2 + 1);
-    std::uint32_t start = 0;
+    // Unique in place, without a branch per entry (a unit appears once or twice, unpredictably).
+    std::uint32_t n = 0;
     for (std::size_t u = 0; u < units; ++u) {
-        const auto b0 = raw.begin() + g.begin[u], b1 = raw.begin() + g.begin[u + 1];
-        for (auto it = b0 + (b0 != b1); it < b1; ++it) {  // insertion sort: a dozen entries
-            // Shifts rather than swaps: a swap's 8-byte reload of two fresh 4-byte stores stalls.
-            const std::uint32_t x = *it;
-            auto j = it;
-            for (; j != b0 && *(j - 1) > x; --j) *j = *(j - 1);
-            *j = x;
+        const std::uint32_t b0 = g.begin[u], b1 = g.begin[u + 1];
+        g.begin[u] = n;
+        std::uint32_t last = ~0u;  // no unit: units stay below 2^32 - 1
+        for (std::uint32_t i = b0; i < b1; ++i) {
+            const std::uint32_t w = raw[i];
+            raw[n] = w;
+            n += w != last;
+            last = w;
         }
-        g.begin[u] = start;
-        for (auto it = b0; it != b1; ++it)
-            if (it == b0 || *it != *(it - 1)) g.neighbour.push_back(*it);
-        start = std::uint32_t(g.neighbour.size());
     }
-    g.begin[units] = start;
+    raw.resize(n);
+    g.neighbour = std::move(raw);
+    g.begin[units] = n;
 }
 
 }  // namespace erd::codec
