@@ -376,6 +376,9 @@ if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm && -f $(dirname "$ERD")/liberd.
         "$EDB" -j 1 "$RUNS" "$OUT/lena3.erdz" "$OUT/bull0125.erdz"
         echo "codec: one thread per processor (-j 0, erd reconstruct's default)"
         "$EDB" -j 0 "$RUNS" "$OUT/lena3.erdz" "$OUT/bull0125.erdz"
+        # The same file to image as a whole process: exec, read, decode, reconstruct, write the PGM.
+        bench_case "codec: erd reconstruct lena 3% .erdz" 20 -- "$ERD" reconstruct "$OUT/lena3.erdz" -o "$OUT/lena3.pgm"
+        bench_case "codec: erd reconstruct bull 0.125% .erdz" 60 -- "$ERD" reconstruct "$OUT/bull0125.erdz" -o "$OUT/bull0125.pgm"
         if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
             valgrind --tool=callgrind --callgrind-out-file=/dev/null "$EDB" 1 "$OUT/lena3.erdz" 2>&1 >/dev/null |
                 sed -n 's/.*Collected : \([0-9]*\).*/codec lena3: \1 instructions (one run of decode, +point, +own)/p'

@@ -40,15 +40,19 @@ void number_units(bool erd, Rebuilt* r) {
     const Cdt& cdt = r->cdt;
 
     const std::size_t nv = cdt.vertex_count(), nh = 3 * cdt.face_count();
-    // (y, x) order by one sort of packed keys (coordinates below 2^24, indices below 2^32).
-    std::vector<std::pair<std::uint64_t, VertInd>> keyed(nv);
-    for (VertInd i = 0; i < nv; ++i) {
-        const LatticePoint p = cdt.point(i);
-        keyed[i] = {(std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x), i};
-    }
-    std::sort(keyed.begin(), keyed.end());
-    r->order.resize(nv);
-    for (VertInd i = 0; i < nv; ++i) r->order[i] = keyed[i].second;
+    // (y, x) order (the points are distinct) by two stable counting passes over the lattice's
+    // columns, then its rows: linear in the vertices and the lattice side.
+    const auto counting_pass = [&](const std::vector<VertInd>& in, std::size_t size, auto coord, std::vector<VertInd>* out) {
+        std::vector<std::uint32_t> first(size + 1, 0);
+        for (const VertInd i : in) ++first[std::size_t(coord(cdt.point(i))) + 1];
+        for (std::size_t c = 0; c < size; ++c) first[c + 1] += first[c];
+        out->resize(in.size());
+        for (const VertInd i : in) (*out)[first[std::size_t(coord(cdt.point(i)))]++] = i;
+    };
+    std::vector<VertInd> by_x, all(nv);
+    for (VertInd i = 0; i < nv; ++i) all[i] = i;
+    counting_pass(all, std::size_t(cdt.max_x()) + 1, [](LatticePoint p) { return p.x; }, &by_x);
+    counting_pass(by_x, std::size_t(cdt.max_y()) + 1, [](LatticePoint p) { return p.y; }, &r->order);
     r->rank.assign(nv, 0);
     for (std::uint32_t k = 0; k < nv; ++k) r->rank[r->order[k]] = k;
 
