@@ -123,8 +123,10 @@ unit: $(BUILD)/erd $(BUILD)/erd_tests
 regenerate: $(BUILD)/erd $(BUILD)/erd_tests
 	ERD_REGENERATE=1 ERD_BIN=$(BUILD)/erd ERD_IMAGES=$(IMAGES) $(BUILD)/erd_tests "[generated]"
 
+# The objects carry libFuzzer's coverage hooks (-fsanitize=fuzzer-no-link) so that `make test`'s fuzz
+# smoke runs link them instead of compiling the library a second time with the same flags.
 asan:
-	$(MAKE) BUILD=build-asan CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
+	$(MAKE) BUILD=build-asan CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	  LDFLAGS="-fsanitize=address,undefined" ERD_LINK= build-asan/erd build-asan/erd_tests
 
 run: $(BUILD)/erd
