@@ -123,11 +123,13 @@ unit: $(BUILD)/erd $(BUILD)/erd_tests
 regenerate: $(BUILD)/erd $(BUILD)/erd_tests
 	ERD_REGENERATE=1 ERD_BIN=$(BUILD)/erd ERD_IMAGES=$(IMAGES) $(BUILD)/erd_tests "[generated]"
 
-# The objects carry libFuzzer's coverage hooks (-fsanitize=fuzzer-no-link) so that `make test`'s fuzz
-# smoke runs link them instead of compiling the library a second time with the same flags.
+# The sanitizer build in build-asan/: clang, ASan+UBSan, and libFuzzer's coverage hooks
+# (-fsanitize=fuzzer-no-link), so that fuzz/run.sh links the same objects into its targets.
+# ASAN_GOALS: what to build there (fuzz/run.sh asks for the libraries and the CLI objects only).
+ASAN_GOALS ?= build-asan/erd build-asan/erd_tests
 asan:
 	$(MAKE) BUILD=build-asan CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
-	  LDFLAGS="-fsanitize=address,undefined" ERD_LINK= build-asan/erd build-asan/erd_tests
+	  LDFLAGS="-fsanitize=address,undefined" ERD_LINK= $(ASAN_GOALS)
 
 run: $(BUILD)/erd
 	@bash tools/run.sh $(BUILD)/erd $(IMAGES)

@@ -1,22 +1,27 @@
 #!/usr/bin/env bash
 # Builds every fuzz/fuzz_*.cpp with libFuzzer + ASan + UBSan and runs each for SECONDS.
 # Prints "PASS name execs corpus" or "FAIL name" per target.
-# Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). FUZZ_BUILD=dir (default build-fuzz).
+# Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). Targets, corpora and
+# findings go to build-asan/, whose objects (make asan) the targets link.
 # FUZZ_SHORT_SECONDS=S caps the targets named in FUZZ_SHORT (default fuzz_framing fuzz_erdz) at S seconds.
 set -u
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
 shift || true
-B=${FUZZ_BUILD:-build-fuzz}
+B=build-asan
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all"
 FLAGS="-O1 -g -std=c++17 -I. -fno-omit-frame-pointer $SAN"
 if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ not found, skipped"; exit 0; fi
 mkdir -p $B
-# Library and CLI objects (all but main) with coverage instrumentation; rebuilt when sources change.
-# FUZZ_NOBUILD=1: use the objects already in $B (lets two runs share one build dir safely).
-[[ -n ${FUZZ_NOBUILD:-} ]] || make -s -j2 BUILD=$B CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-    $B/liberd.a $B/liberd_imageio.a $(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") || { echo "FAIL build"; exit 1; }
-objs="$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|") $B/liberd_imageio.a $B/liberd.a -lz"
+# The sanitizer build's library and CLI objects (all but main), with the coverage hooks; rebuilt
+# when sources change. FUZZ_NOBUILD=1: use the objects already there (lets two runs share them).
+cli_objs=$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|")
+[[ -n ${FUZZ_NOBUILD:-} ]] || make -s -j2 asan ASAN_GOALS="$B/liberd.a $B/liberd_imageio.a $cli_objs" || { echo "FAIL build"; exit 1; }
+# make does not rebuild for changed flags: a build-asan from before the hooks would fuzz blind.
+if ! nm $B/liberd.a 2>/dev/null | grep -q __sanitizer_cov_8bit_counters_init; then
+    echo "FAIL build: $B/liberd.a has no coverage hooks (made before make asan had them: rm -rf $B and run again)"; exit 1
+fi
+objs="$cli_objs $B/liberd_imageio.a $B/liberd.a -lz"
 status=0
 if [[ $# -gt 0 ]]; then targets=$(printf 'fuzz/%s.cpp ' "$@"); else targets=$(ls fuzz/fuzz_*.cpp); fi
 for src in $targets; do
