@@ -15,7 +15,7 @@ if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ not found, skipped"
 mkdir -p $B
 # The sanitizer build's library and CLI objects (all but main), with the coverage hooks; rebuilt
 # when sources change. FUZZ_NOBUILD=1: use the objects already there (lets two runs share them).
-cli_objs=$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|")
+cli_objs=$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|" | tr '\n' ' ')  # one line: make's goals
 [[ -n ${FUZZ_NOBUILD:-} ]] || make -s -j2 asan ASAN_GOALS="$B/liberd.a $B/liberd_imageio.a $cli_objs" || { echo "FAIL build"; exit 1; }
 # make does not rebuild for changed flags: a build-asan from before the hooks would fuzz blind.
 if ! nm $B/liberd.a 2>/dev/null | grep -q __sanitizer_cov_8bit_counters_init; then
