@@ -200,8 +200,10 @@ struct EdgeDetector::Pass {
     std::unique_ptr<float[]> mag;
     std::unique_ptr<std::uint8_t[]> flag;
     std::size_t n_kept = 0, capacity = 0;
-    // After it: the points at or above the final bound, linked once for every detection.
-    SortedPoints kept;
+    // After it: the points at or above the final bound as a set of cells, linked once for every
+    // detection, their g and their flag bytes (edge_linking.h: the pass's flags in the pass bits,
+    // one detection's in the others).
+    PointBits kept;
     std::vector<float> kept_mag;
     std::vector<std::uint8_t> kept_flag;
     std::vector<std::size_t> hist;          // exact for the bins >= floor_bin
@@ -244,23 +246,21 @@ struct EdgeDetector::Pass {
         // covers; with narrow bins they are hardly more than the first detection's strong points.
         // Compacted in place, then moved out one array at a time, each freed as soon as it is
         // copied: the peak is the stream's store plus one array of the kept points, not two stores.
+        // Their cells stay only as the bit plane.
         std::size_t n = 0;
         for_each_at_least(mag.get(), n_kept, low, [&](std::size_t k) {
             at[n] = at[k];
             mag[n] = mag[k];
-            flag[n] = flag[k];
+            flag[n] = std::uint8_t(flag[k] << kPassShift);
             ++n;
         });
-        kept = SortedPoints();
-        kept.stride = pl.stride;
-        kept.at.assign(at.get(), at.get() + n);
+        kept.build(at.get(), n, pl.stride);
         at.reset();
         kept_mag.assign(mag.get(), mag.get() + n);
         mag.reset();
         kept_flag.assign(flag.get(), flag.get() + n);
         flag.reset();
         n_kept = capacity = 0;
-        kept.link_rows();
     }
 
     // One streaming pass from the bound `guess` (0: none); false when the final bound is below
@@ -406,19 +406,29 @@ struct EdgeDetector::Pass {
         const float th = float(tau_high), tl = float(tau_low);
         if (tl < low) return false;  // strong points may be missing
 
-        // The kept points with g >= tau_low are the strong points; the others lose their flags.
+        // The kept points with g >= tau_low are the strong points, with the pass's flags this
+        // detection uses; the others have none. Every point loses the last detection's flags.
         StrongPoints sp;
         sp.points = &kept;
         sp.mag = g;
-        sp.flag.assign(n, 0);
+        sp.flag = kept_flag.data();
         const std::uint8_t used = params.modified ? std::uint8_t(kCandidate | kSecondary) : std::uint8_t(kCandidate);
-        for_each_at_least(g, n, tl, [&](std::size_t k) { sp.flag[k] = std::uint8_t(kept_flag[k] & used); });
-        for_each_at_least(g, n, th, [&](std::size_t k) {
-            if (sp.flag[k] & kCandidate) sp.seeds.push_back(std::uint32_t(k));
+        std::uint8_t* f = kept_flag.data();
+        std::size_t flagged = 0;
+        kept.for_each([&](std::uint32_t k, std::uint32_t p) {
+            std::uint8_t fk = std::uint8_t(f[k] & kPassFlags);
+            if (g[k] >= tl) {
+                fk = std::uint8_t(fk | ((fk >> kPassShift) & used));
+                flagged += (fk & used) != 0;
+                if ((fk & kCandidate) && g[k] >= th) sp.seeds.push_back(p);
+            }
+            f[k] = fk;
         });
 
-        // 4, 5.
+        // 4, 5. The search's queue holds every point it labels: the flagged points at most, and
+        // hardly fewer on noise (room for them up front: no copy while it grows).
         const bool join = params.modified && params.max_link > 0;
+        if (join) sp.mains.reserve(flagged);
         const std::size_t main_points = hysteresis(&sp, join);
         const std::size_t added = join ? join_components(&sp, params.max_link, tl) : 0;
 
@@ -426,8 +436,9 @@ struct EdgeDetector::Pass {
         SortedPoints mains;
         mains.stride = pl.stride;
         mains.at.reserve(sp.mains.size());
-        for (std::size_t k = 0; k < n; ++k)
-            if (sp.flag[k] & kMain) mains.at.push_back(kept.at[k]);
+        kept.for_each([&](std::uint32_t k, std::uint32_t p) {
+            if (f[k] & kMain) mains.at.push_back(p);
+        });
         sp = StrongPoints();
         if (release) clear();
         std::vector<std::uint8_t> alive(mains.size(), 1);

@@ -10,26 +10,50 @@ namespace erd {
 
 using namespace edge_flags;
 
+namespace {
+
+// The plane offsets of the eight ring directions.
+struct Offsets {
+    std::ptrdiff_t d[8];
+    explicit Offsets(std::ptrdiff_t stride) {
+        for (int k = 0; k < 8; ++k) d[k] = ring_offset(k, stride);
+    }
+    std::uint32_t step(std::uint32_t p, int k) const { return std::uint32_t(std::ptrdiff_t(p) + d[k]); }
+};
+
+inline unsigned link_of(std::uint8_t f) { return unsigned(f) >> kLinkShift; }
+inline std::uint8_t with_link(std::uint8_t f, unsigned v) {
+    return std::uint8_t((f & ~kLinkField) | (v << kLinkShift));
+}
+
+}  // namespace
+
 std::size_t hysteresis(StrongPoints* sp, bool labels) {
     if (labels) sp->label.assign(sp->size(), 0);
-    std::vector<std::uint32_t> stack;
+    const PointBits& pts = *sp->points;
+    const Offsets off(pts.stride());
+    std::uint8_t* flag = sp->flag;
+    std::vector<std::uint32_t> stack;  // cells
     std::uint32_t component = 0;
     for (const std::uint32_t s : sp->seeds) {
-        if (sp->flag[s] & kMain) continue;
-        sp->flag[s] |= kMain;
+        const std::uint32_t si = pts.index(s);
+        if (flag[si] & kMain) continue;
+        flag[si] |= kMain;
         stack.push_back(s);
         ++component;
         while (!stack.empty()) {
-            const std::uint32_t i = stack.back();
+            const std::uint32_t p = stack.back();
             stack.pop_back();
-            sp->mains.push_back(i);
+            const std::uint32_t i = pts.index(p);
+            sp->mains.push_back(p);
             if (labels) sp->label[i] = component;
             std::uint32_t nb[8];
-            sp->ring(i, nb);
-            for (const std::uint32_t j : nb) {
-                if (j != kNoPoint && (sp->flag[j] & (kCandidate | kMain)) == kCandidate) {
-                    sp->flag[j] |= kMain;
-                    stack.push_back(j);
+            pts.ring(p, i, nb);
+            for (int d = 0; d < 8; ++d) {
+                const std::uint32_t j = nb[d];
+                if (j != kNoPoint && (flag[j] & (kCandidate | kMain)) == kCandidate) {
+                    flag[j] |= kMain;
+                    stack.push_back(off.step(p, d));
                 }
             }
         }
@@ -45,20 +69,20 @@ std::size_t hysteresis(StrongPoints* sp, bool labels) {
 // component, each in the order grown), which is the order a labelling pass over them would find.
 std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     const std::size_t n = sp->size();
-    std::vector<std::uint8_t>& flag = sp->flag;
+    const PointBits& pts = *sp->points;
+    const Offsets off(pts.stride());
+    std::uint8_t* flag = sp->flag;
     std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
-    // dist and back are read only at labelled points: set for the sources below, and for a
-    // reached point when it is reached, so neither is initialised. back[j] is the direction
-    // (point_rings.h order) from j to the point it was reached from: a byte instead of an index.
+    // dist is read only at labelled points: set for the sources below, and for a reached point
+    // when it is reached, so it is not initialised. The way back from a reached point is the link
+    // field of its flags (edge_flags): a direction instead of an index.
     std::unique_ptr<std::uint8_t[]> dist(new std::uint8_t[n]);
-    std::unique_ptr<std::uint8_t[]> back(new std::uint8_t[n]);
     // The queue is the mains themselves, followed by the secondary points as they are reached
     // (cut off again after the search).
     std::vector<std::uint32_t>& queue = sp->mains;
     const std::size_t sources = queue.size();
-    for (const std::uint32_t i : queue) dist[i] = 0;
     // p has the smaller label; the pair's key is the two labels (read back when sorting).
-    struct Meeting { std::uint32_t p, q; };
+    struct Meeting { std::uint32_t p, q; };  // cells
     std::vector<Meeting> meetings;
     const std::uint8_t limit = std::uint8_t(max_link);
     // Every main point is taken from the queue before any reached point, and claims each free
@@ -67,60 +91,74 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     // distances to sum to at most limit): it would find no meeting and reach nothing further,
     // and is not labelled at all. This outermost shell is the largest.
     const std::uint8_t reach = limit >= 2 ? std::uint8_t(limit - 1) : limit;
-    // The number of main neighbours of each main point, for the climbs below: counted here from
-    // the rings the search reads anyway, and kept up to date as points become main (one ring
-    // per added point instead of one per main point). Kept in `back`, which is read only at
-    // points that are not main (a chain ends at the first main point).
-    std::uint8_t* main_nb = back.get();
-    auto became_main = [&](std::uint32_t i) {
+    // The number of main neighbours of each main point (up to 2: the climbs below ask for 1),
+    // for the climbs: counted here from the rings the search reads anyway, and kept up to date as
+    // points become main (one ring per added point instead of one per main point). Kept in the
+    // link field, which holds a way back only at points that are not main (a chain ends at the
+    // first main point).
+    auto became_main = [&](std::uint32_t p, std::uint32_t i) {
         std::uint32_t nb[8];
-        sp->ring(i, nb);
+        pts.ring(p, i, nb);
         for (const std::uint32_t j : nb)
-            if (j != kNoPoint && (flag[j] & kMain)) ++main_nb[j];
+            if (j != kNoPoint && (flag[j] & kMain)) {
+                const unsigned c = link_of(flag[j]);
+                flag[j] = with_link(flag[j], c < 2 ? c + 1 : 2);
+            }
     };
     for (std::size_t head = 0; head < queue.size(); ++head) {
-        const std::uint32_t i = queue[head];
+        const std::uint32_t p = queue[head];
+        const std::uint32_t i = pts.index(p);
         const std::uint32_t li = label[i];
-        const std::uint8_t di = dist[i];
+        const std::uint8_t di = head < sources ? 0 : dist[i];
         std::uint32_t nb[8];
-        sp->ring(i, nb);
-        std::uint8_t mains_around = 0;  // kept for sources only (main_nb below)
+        pts.ring(p, i, nb);
+        unsigned mains_around = 0;  // kept for sources only (the link field below)
         for (int d = 0; d < 8; ++d) {
             const std::uint32_t j = nb[d];
             if (j == kNoPoint) continue;
             const std::uint8_t fj = flag[j];
-            mains_around = std::uint8_t(mains_around + ((fj & kMain) != 0));
+            mains_around += (fj & kMain) != 0;
             const std::uint32_t lj = label[j];
             if (lj == 0) {
                 if (di < reach && (fj & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
                     dist[j] = std::uint8_t(di + 1);
-                    back[j] = std::uint8_t((d + 4) & 7);
-                    queue.push_back(j);
+                    flag[j] = with_link(fj, unsigned((d + 4) & 7));
+                    queue.push_back(off.step(p, d));
                 }
-            } else if (lj != li && std::uint32_t(di) + dist[j] <= limit) {
-                if (li < lj) meetings.push_back({i, j});
-                else meetings.push_back({j, i});
+            } else {
+                // A labelled point is a source (distance 0, main) or was reached (dist set).
+                const unsigned dj = (fj & kMain) ? 0u : dist[j];
+                if (lj != li && unsigned(di) + dj <= limit) {
+                    if (li < lj) meetings.push_back({p, off.step(p, d)});
+                    else meetings.push_back({off.step(p, d), p});
+                }
             }
         }
-        // After the ring: back[j] was set above only at secondary points, never at a source.
-        if (head < sources) main_nb[i] = mains_around;
+        // After the ring: the link field was set above only at secondary points, never at a source.
+        if (head < sources) flag[i] = with_link(flag[i], std::min(mains_around, 2u));
     }
     queue.resize(sources);
     // One link per pair of components: the first found, i.e. (nearly) the shortest.
     std::size_t added = 0;
-    auto key = [&](const Meeting& m) { return (std::uint64_t(label[m.p]) << 32) | label[m.q]; };
+    auto key = [&](const Meeting& m) {
+        return (std::uint64_t(label[pts.index(m.p)]) << 32) | label[pts.index(m.q)];
+    };
     std::stable_sort(meetings.begin(), meetings.end(), [&](const Meeting& a, const Meeting& c) { return key(a) < key(c); });
     for (std::size_t k = 0; k < meetings.size(); ++k) {
         if (k > 0 && key(meetings[k]) == key(meetings[k - 1])) continue;
-        for (std::uint32_t i : {meetings[k].p, meetings[k].q})
+        for (std::uint32_t p : {meetings[k].p, meetings[k].q}) {
+            std::uint32_t i = pts.index(p);
             while (!(flag[i] & kMain)) {  // a reached point: its chain ends at a main point
+                const int back = int(link_of(flag[i]));
                 flag[i] |= kMain;
-                became_main(i);
-                sp->mains.push_back(i);
+                became_main(p, i);
+                sp->mains.push_back(p);
                 ++added;
-                i = sp->points->neighbour(i, back[i]);
+                p = off.step(p, back);
+                i = pts.index(p);
             }
+        }
     }
 
     // Where an edge runs into a stronger one (the stem of a T), the last points before the
@@ -129,36 +167,39 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     // increasing, >= tau_low, at most max_link points) and keep the climb if it arrives next
     // to a different main component. Only strong points can be climbed to: the climb starts at
     // g >= tau_low and only rises.
-    std::vector<std::uint32_t> path;
+    struct Step { std::uint32_t p, i; };
+    std::vector<Step> path;
     for (std::size_t s = 0; s < sources; ++s) {
         const std::uint32_t end = sp->mains[s];  // the climbs below append to mains
-        if (main_nb[end] != 1) continue;
+        const std::uint32_t ei = pts.index(end);
+        if (link_of(flag[ei]) != 1) continue;
         std::uint32_t nb[8];
-        const std::uint32_t own = label[end];
+        const std::uint32_t own = label[ei];
         path.clear();
-        std::uint32_t cur = end;
+        Step cur{end, ei};
         bool joined = false;
         for (int step = 0; step <= max_link && !joined; ++step) {
-            sp->ring(cur, nb);
+            pts.ring(cur.p, cur.i, nb);
             for (const std::uint32_t j : nb)
                 if (j != kNoPoint && (flag[j] & kMain) && label[j] != own && label[j] != 0) joined = true;
             if (joined || step == max_link) break;
-            std::uint32_t best = kNoPoint;
-            float bg = sp->mag[cur];
-            for (const std::uint32_t j : nb) {
+            int best = -1;
+            float bg = sp->mag[cur.i];
+            for (int d = 0; d < 8; ++d) {
+                const std::uint32_t j = nb[d];
                 if (j == kNoPoint || (flag[j] & kMain)) continue;
-                if (sp->mag[j] > bg && sp->mag[j] >= tl) { bg = sp->mag[j]; best = j; }
+                if (sp->mag[j] > bg && sp->mag[j] >= tl) { bg = sp->mag[j]; best = d; }
             }
-            if (best == kNoPoint) break;
-            path.push_back(best);
-            cur = best;
+            if (best < 0) break;
+            cur = Step{off.step(cur.p, best), nb[best]};
+            path.push_back(cur);
         }
         if (!joined || path.empty()) continue;
-        for (const std::uint32_t i : path) {
-            flag[i] |= kMain;
-            became_main(i);
-            label[i] = own;
-            sp->mains.push_back(i);
+        for (const Step& st : path) {
+            flag[st.i] |= kMain;
+            became_main(st.p, st.i);
+            label[st.i] = own;
+            sp->mains.push_back(st.p);
             ++added;
         }
     }

@@ -11,22 +11,33 @@
 namespace erd {
 
 namespace edge_flags {
-// Point flags: kCandidate and kSecondary from step 3 (suppress), kMain from steps 4 and 5.
-enum : std::uint8_t { kNone = 0, kCandidate = 1, kMain = 2, kSecondary = 4 };
+// One byte per kept point holds all its flags:
+// - bits 0-2, one detection's: kCandidate and kSecondary (step 3's, for a point with g >= tau_low;
+//   none below it) and kMain (steps 4 and 5);
+// - bits 3-4, the pass's: step 3's kCandidate and kSecondary shifted by kPassShift, whatever the
+//   thresholds (the pass serves several detections);
+// - bits 5-7, the link field of step 5: at a point the search reached, the direction (point_rings.h
+//   order) back to the point it was reached from; at a main point, how many main neighbours it
+//   has, counted up to 2.
+enum : std::uint8_t { kNone = 0, kCandidate = 1, kSecondary = 2, kMain = 4 };
+constexpr int kPassShift = 3;
+constexpr std::uint8_t kPassFlags = std::uint8_t((kCandidate | kSecondary) << kPassShift);
+constexpr int kLinkShift = 5;
+constexpr std::uint8_t kLinkField = std::uint8_t(7u << kLinkShift);
 }  // namespace edge_flags
 
 // One detection's view of the pass's kept points (a superset of the points with g >= tau_low),
 // so steps 4 and 5 touch small arrays instead of grid planes; a kept point below tau_low has no
-// flags, which makes it absent for both steps.
+// detection flags, which makes it absent for both steps. Arrays are indexed by a point's list
+// position (PointBits::index); lists of points hold their plane cells.
 struct StrongPoints {
-    const SortedPoints* points = nullptr;  // plane indices and rings of the kept points
-    const float* mag = nullptr;            // their g
-    std::vector<std::uint8_t> flag;        // kCandidate, kSecondary, kMain; none below tau_low
-    std::vector<std::uint32_t> seeds;      // candidates with g >= tau_high, in row-major order
-    std::vector<std::uint32_t> mains;      // every point marked kMain, in the order marked
-    std::vector<std::uint32_t> label;      // main component (steps 4, 5), 0 = none
+    const PointBits* points = nullptr;  // the kept points' cells and rings
+    const float* mag = nullptr;         // their g
+    std::uint8_t* flag = nullptr;       // their flag bytes (edge_flags)
+    std::vector<std::uint32_t> seeds;   // cells of the candidates with g >= tau_high, row-major
+    std::vector<std::uint32_t> mains;   // cells of every point marked kMain, in the order marked
+    std::vector<std::uint32_t> label;   // main component (steps 4, 5), 0 = none
     std::size_t size() const { return points->size(); }
-    void ring(std::uint32_t i, std::uint32_t nb[8]) const { points->ring(i, nb); }
 };
 
 // Step 4: grows from the seeds through 8-connected candidates; returns the number of main points.

@@ -14,25 +14,28 @@ namespace erd {
 
 constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
 
-struct SortedPoints {
-    // Plane index of each point, strictly increasing; rows `stride` apart, with a frame of at
-    // least one empty column and one empty row, so that index +-1 never reaches a point of
-    // another row and index - stride - 1 is never negative. Grids here stay below 2^32 cells
-    // (kMaxImagePixels: a half-pixel plane has under 2^31).
-    std::vector<std::uint32_t> at;
-    std::ptrdiff_t stride = 0;
+// Directions of a ring, d = 0..7: E, SE, S, SW, W, NW, N, NE (x right, y down). The plane index
+// offset of direction d in a plane `stride` cells wide.
+inline std::ptrdiff_t ring_offset(int d, std::ptrdiff_t stride) {
+    const std::ptrdiff_t dy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+    const std::ptrdiff_t dx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+    return dy[d] * stride + dx[d];
+}
 
-    std::size_t size() const { return at.size(); }
-
-    // Call after the last point is added: one bit per plane cell up to the last point's row
-    // below, and the number of points before every 64 cells, so that a neighbour's list position
-    // is a count of bits (1/8 + 1/16 byte per cell, however many points there are).
-    void link_rows() {
-        const std::size_t n = at.size();
+// A set of plane cells as one bit per cell and the number of set cells before every 64: a point's
+// list position (its rank) is a count of bits, so arrays indexed by position need no list of
+// positions beside them. 1/8 + 1/16 byte per cell, however many points there are. Cells are plane
+// indices with a frame of at least one empty column and one empty row (SortedPoints).
+class PointBits {
+public:
+    // From the plane indices at[0..n), strictly increasing.
+    void build(const std::uint32_t* at, std::size_t n, std::ptrdiff_t stride) {
+        stride_ = stride;
+        size_ = n;
         const std::size_t cells = n ? std::size_t(at[n - 1]) + std::size_t(stride) + 2 : 0;
         const std::size_t words = cells / 64 + 2;  // one spare word: bits3 reads the next one
         bits_.assign(words, 0);
-        for (const std::uint32_t p : at) bits_[p >> 6] |= std::uint64_t(1) << (p & 63u);
+        for (std::size_t k = 0; k < n; ++k) bits_[at[k] >> 6] |= std::uint64_t(1) << (at[k] & 63u);
         rank_.resize(words);
         std::uint32_t before = 0;
         for (std::size_t w = 0; w < words; ++w) {
@@ -41,32 +44,46 @@ struct SortedPoints {
         }
     }
 
-    // The directions (bit d for direction d, order as for ring()) in which point i has a
-    // neighbour in the set.
-    unsigned mask(std::uint32_t i) const {
-        const std::size_t p = at[i], s = std::size_t(stride);
+    std::size_t size() const { return size_; }
+    std::ptrdiff_t stride() const { return stride_; }
+
+    // The list position of the point at cell p (p must be in the set).
+    std::uint32_t index(std::size_t p) const { return rank(p); }
+
+    // Calls fn(k, p) for every point, k = 0, 1, ... in increasing cell p.
+    template <class Fn>
+    void for_each(Fn fn) const {
+        std::uint32_t k = 0;
+        for (std::size_t w = 0; w < bits_.size(); ++w)
+            for (std::uint64_t b = bits_[w]; b; b &= b - 1) fn(k++, std::uint32_t(w * 64 + lowest_bit(b)));
+    }
+
+    // The directions (bit d for direction d, ring_offset order) in which the cell p has a point.
+    unsigned mask(std::size_t p) const {
+        const std::size_t s = std::size_t(stride_);
         const unsigned mid = bits3(p - 1), down = bits3(p + s - 1), up = bits3(p - s - 1);
         // down row: SW, S, SE are bits 0, 1, 2 of `down`; directions 3, 2, 1.
         return ((mid >> 2) & 1u) | (((down >> 2) & 1u) << 1) | (((down >> 1) & 1u) << 2) | ((down & 1u) << 3) |
                ((mid & 1u) << 4) | ((up & 7u) << 5);
     }
 
-    // The neighbours of point i that are in the set, in the order E, SE, S, SW, W, NW, N, NE
-    // (x right, y down); kNoPoint where there is none.
-    void ring(std::uint32_t i, std::uint32_t nb[8]) const {
-        const std::size_t p = at[i], s = std::size_t(stride);
+    // The list positions of the points around the point at cell p, which is point i, in ring
+    // order; kNoPoint where there is none.
+    void ring(std::size_t p, std::uint32_t i, std::uint32_t nb[8]) const {
+        const std::size_t s = std::size_t(stride_);
         const unsigned mid = bits3(p - 1);
         nb[0] = mid & 4u ? i + 1 : kNoPoint;
         nb[4] = mid & 1u ? i - 1 : kNoPoint;
         row(p + s - 1, &nb[3], &nb[2], &nb[1]);
         row(p - s - 1, &nb[5], &nb[6], &nb[7]);
     }
+    void ring(std::size_t p, std::uint32_t nb[8]) const { ring(p, rank(p), nb); }
 
-    // The neighbour of point i in direction d, which must be in the set (bit d of mask(i)).
-    std::uint32_t neighbour(std::uint32_t i, int d) const {
+    // The list position of the point in direction d of point i at cell p (bit d of mask(p)).
+    std::uint32_t neighbour(std::size_t p, std::uint32_t i, int d) const {
         if (d == 0) return i + 1;
         if (d == 4) return i - 1;
-        const std::size_t p = at[i], s = std::size_t(stride);
+        const std::size_t s = std::size_t(stride_);
         const std::size_t left = d < 4 ? p + s - 1 : p - s - 1;
         const unsigned b = bits3(left);
         // Down row (d = 3, 2, 1) and up row (d = 5, 6, 7): cell `left + c` with c = 0, 1, 2.
@@ -75,9 +92,9 @@ struct SortedPoints {
     }
 
     void clear() {
-        std::vector<std::uint32_t>().swap(at);
         std::vector<std::uint64_t>().swap(bits_);
         std::vector<std::uint32_t>().swap(rank_);
+        size_ = 0;
     }
 
 private:
@@ -87,6 +104,7 @@ private:
         v = (v + (v >> 4)) & 0x0F0F0F0F0F0F0F0Full;
         return unsigned((v * 0x0101010101010101ull) >> 56);
     }
+    static unsigned lowest_bit(std::uint64_t v) { return popcount64((v & (0 - v)) - 1); }
 
     // The bits of cells q, q + 1, q + 2 (bits 0, 1, 2).
     unsigned bits3(std::size_t q) const {
@@ -116,6 +134,41 @@ private:
 
     std::vector<std::uint64_t> bits_;  // bit q: a point at plane index q
     std::vector<std::uint32_t> rank_;  // points before cell 64 w
+    std::ptrdiff_t stride_ = 0;
+    std::size_t size_ = 0;
+};
+
+struct SortedPoints {
+    // Plane index of each point, strictly increasing; rows `stride` apart, with a frame of at
+    // least one empty column and one empty row, so that index +-1 never reaches a point of
+    // another row and index - stride - 1 is never negative. Grids here stay below 2^32 cells
+    // (kMaxImagePixels: a half-pixel plane has under 2^31).
+    std::vector<std::uint32_t> at;
+    std::ptrdiff_t stride = 0;
+
+    std::size_t size() const { return at.size(); }
+
+    // Call after the last point is added (PointBits).
+    void link_rows() { bits_.build(at.data(), at.size(), stride); }
+
+    // The directions (bit d for direction d, order as for ring()) in which point i has a
+    // neighbour in the set.
+    unsigned mask(std::uint32_t i) const { return bits_.mask(at[i]); }
+
+    // The neighbours of point i that are in the set, in the order E, SE, S, SW, W, NW, N, NE
+    // (x right, y down); kNoPoint where there is none.
+    void ring(std::uint32_t i, std::uint32_t nb[8]) const { bits_.ring(at[i], i, nb); }
+
+    // The neighbour of point i in direction d, which must be in the set (bit d of mask(i)).
+    std::uint32_t neighbour(std::uint32_t i, int d) const { return bits_.neighbour(at[i], i, d); }
+
+    void clear() {
+        std::vector<std::uint32_t>().swap(at);
+        bits_.clear();
+    }
+
+private:
+    PointBits bits_;
 };
 
 }  // namespace erd
