@@ -175,9 +175,10 @@ TEST_CASE("crack edges: the simplified curves keep every pixel next to a crack o
             cracks += (X + Y) % 2;
         }
     REQUIRE(cracks > 100);
-    const std::vector<Polyline> traced = trace_polylines(map);
+    const PolylineList traced = trace_polylines(map);
     std::size_t before = 0, after = 0;
-    for (const Polyline& line : traced) {
+    for (std::size_t k = 0; k < traced.size(); ++k) {
+        const Polyline line = traced[k];
         const Polyline s = simplify_cracks(line, 8.0);
         before += line.size();
         after += s.size();

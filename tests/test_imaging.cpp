@@ -435,14 +435,15 @@ TEST_CASE("tracing splits at junctions and keeps closed loops", "[imaging]") {
         "............",
         "..........#.",
     });
-    std::vector<Polyline> lines = trace_polylines(m);
+    const PolylineList lines = trace_polylines(m);
+    REQUIRE(lines.first.back() == lines.points.size());
     REQUIRE(lines.size() == 5);
     // Node order is row-major: (0,0) first, then the junction (2,0).
     CHECK(lines[0] == Polyline{{0, 0}, {1, 0}, {2, 0}});
     CHECK(lines[1] == Polyline{{2, 0}, {3, 0}, {4, 0}});
     CHECK(lines[2] == Polyline{{2, 0}, {2, 1}, {2, 2}, {2, 3}});
     CHECK(lines[3] == Polyline{{10, 5}});
-    const Polyline& ring = lines[4];
+    const Polyline ring = lines[4];
     CHECK(ring.size() == 9);  // 8 points, first repeated
     CHECK(ring.front() == ring.back());
     CHECK(ring.front() == LatticePoint{8, 1});
@@ -460,7 +461,9 @@ TEST_CASE("Douglas-Peucker keeps exactly the expected points", "[imaging]") {
     const Polyline loop{{0, 0}, {4, 0}, {8, 0}, {8, 4}, {8, 8}, {4, 8}, {0, 8}, {0, 4}, {0, 0}};
     CHECK(douglas_peucker(loop, 1.0) == Polyline{{0, 0}, {8, 0}, {8, 8}, {0, 8}, {0, 0}});
     // The length filter counts traced points by default, simplified points on request.
-    const std::vector<Polyline> lines{line, Polyline{{0, 0}, {2, 0}, {4, 0}, {6, 0}}};
+    PolylineList lines;
+    lines.add(line);
+    lines.add(Polyline{{0, 0}, {2, 0}, {4, 0}, {6, 0}});
     CHECK(simplify_polylines(lines, 2.0, 5).size() == 1);
     CHECK(simplify_polylines(lines, 2.0, 4).size() == 2);
     CHECK(simplify_polylines(lines, 2.0, 4, LengthRule::after_simplification).size() == 1);

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -156,14 +158,33 @@ inline std::size_t count_at_least(const float* v, std::size_t n, float low) {
     return c;
 }
 
-// Grows a to cap elements keeping the first n (one array at a time, so the peak of a growing
-// store is its size plus one array's new copy).
+// An array of trivially copyable T that resize() grows or shrinks keeping its first elements
+// (realloc): a shrink is made in place, so the pass's store becomes its kept arrays without a
+// second copy beside the first.
 template <class T>
-void regrow(std::unique_ptr<T[]>* a, std::size_t n, std::size_t cap) {
-    std::unique_ptr<T[]> b(new T[cap]);
-    std::copy(a->get(), a->get() + n, b.get());
-    *a = std::move(b);
-}
+class RawArray {
+public:
+    RawArray() = default;
+    ~RawArray() { std::free(p_); }
+    RawArray(const RawArray&) = delete;
+    RawArray& operator=(const RawArray&) = delete;
+    T* data() { return p_; }
+    const T* data() const { return p_; }
+    T& operator[](std::size_t k) { return p_[k]; }
+    void resize(std::size_t n) {
+        if (n == 0) { reset(); return; }
+        void* q = std::realloc(p_, n * sizeof(T));
+        if (!q) throw std::bad_alloc();
+        p_ = static_cast<T*>(q);
+    }
+    void reset() {
+        std::free(p_);
+        p_ = nullptr;
+    }
+
+private:
+    T* p_ = nullptr;
+};
 
 // The streaming pass's guess of its final bound (EdgeDetector::Pass::sampled_bound): runs of
 // kSampleRun rows of the half-pixel grid, one every kSampleStride rows, are sampled (runs
@@ -194,18 +215,17 @@ struct EdgeDetector::Pass {
     Plane pl;  // index space of the points (never allocated)
     int smoothing_order = 0;
     Border border = Border::replicate;
-    // While the pass runs: the kept points in row-major order (plane index, g, kCandidate |
-    // kSecondary) in raw arrays, because it makes room for a row before it appends to them.
-    std::unique_ptr<std::uint32_t[]> at;
-    std::unique_ptr<float[]> mag;
-    std::unique_ptr<std::uint8_t[]> flag;
+    // While the pass runs: the kept points as one bit per plane cell, and in row-major order
+    // their g and step 3's kCandidate | kSecondary, in raw arrays, because it makes room for a
+    // row before it appends to them.
+    std::vector<std::uint64_t> cells;
+    RawArray<float> mag;
+    RawArray<std::uint8_t> flag;
     std::size_t n_kept = 0, capacity = 0;
     // After it: the points at or above the final bound as a set of cells, linked once for every
-    // detection, their g and their flag bytes (edge_linking.h: the pass's flags in the pass bits,
-    // one detection's in the others).
+    // detection, and the same arrays cut to them: g and the flag bytes (edge_linking.h: the pass's
+    // flags in the pass bits, one detection's in the others).
     PointBits kept;
-    std::vector<float> kept_mag;
-    std::vector<std::uint8_t> kept_flag;
     std::vector<std::size_t> hist;          // exact for the bins >= floor_bin
     std::uint32_t floor_bin = 0;            // bin of the k-th largest (0 until k values)
     std::size_t at_or_above_floor = 0;      // values in the bins >= floor_bin
@@ -237,30 +257,35 @@ struct EdgeDetector::Pass {
         // is compacted and copied (growing it from empty was a real share of the pass).
         if (expected > 0) {
             capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
-            regrow(&at, 0, capacity);
-            regrow(&mag, 0, capacity);
-            regrow(&flag, 0, capacity);
+            mag.resize(capacity);
+            flag.resize(capacity);
         }
         if (!stream(width, sample, params, k_high, guess)) stream(width, sample, params, k_high, 0.0f);
         // Only the points at or above the final bound can be strong in a detection this pass
         // covers; with narrow bins they are hardly more than the first detection's strong points.
-        // Compacted in place, then moved out one array at a time, each freed as soon as it is
-        // copied: the peak is the stream's store plus one array of the kept points, not two stores.
-        // Their cells stay only as the bit plane.
-        std::size_t n = 0;
-        for_each_at_least(mag.get(), n_kept, low, [&](std::size_t k) {
-            at[n] = at[k];
-            mag[n] = mag[k];
-            flag[n] = std::uint8_t(flag[k] << kPassShift);
-            ++n;
-        });
-        kept.build(at.get(), n, pl.stride);
-        at.reset();
-        kept_mag.assign(mag.get(), mag.get() + n);
-        mag.reset();
-        kept_flag.assign(flag.get(), flag.get() + n);
-        flag.reset();
+        // Compacted in place and cut to size.
+        drop_below(low);
+        for (std::size_t k = 0; k < n_kept; ++k) flag[k] = std::uint8_t(flag[k] << kPassShift);
+        mag.resize(n_kept);
+        flag.resize(n_kept);
+        kept.adopt(std::move(cells), pl.stride, n_kept);
         n_kept = capacity = 0;
+    }
+
+    // Drops the stored points with g below `bound`, keeping the order of the others.
+    void drop_below(float bound) {
+        std::size_t n = 0, k = 0;
+        for (std::size_t w = 0; k < n_kept; ++w)
+            for (std::uint64_t b = cells[w]; b; b &= b - 1, ++k) {
+                if (mag[k] >= bound) {
+                    mag[n] = mag[k];
+                    flag[n] = flag[k];
+                    ++n;
+                } else {
+                    cells[w] &= ~(b & (0 - b));
+                }
+            }
+        n_kept = n;
     }
 
     // One streaming pass from the bound `guess` (0: none); false when the final bound is below
@@ -275,6 +300,7 @@ struct EdgeDetector::Pass {
         floor_bin = 0;
         at_or_above_floor = 0;
         n_kept = 0;
+        cells.assign(pl.cells() / 64 + 2, 0);  // one spare word (PointBits)
         low = guess;
         const float* prev_gx = nullptr;  // components of the row before the last one emitted
         const float* prev_gy = nullptr;
@@ -286,9 +312,9 @@ struct EdgeDetector::Pass {
             const float* mid = row(y);
             const float* down = row(y + 1 < H ? y + 1 : y);
             const std::uint32_t base = std::uint32_t(pl.at(0, y));
-            std::uint32_t* a = at.get();
-            float* g = mag.get();
-            std::uint8_t* f = flag.get();
+            std::uint64_t* c = cells.data();
+            float* g = mag.data();
+            std::uint8_t* f = flag.data();
             std::size_t n = n_kept, counted = 0;
             for_each_at_least(mid, std::size_t(W), low, [&](std::size_t X) {
                 const float v = mid[X];
@@ -298,7 +324,8 @@ struct EdgeDetector::Pass {
                     ++counted;
                 }
                 if (v <= 0.0f) return;
-                a[n] = base + std::uint32_t(X);
+                const std::uint32_t q = base + std::uint32_t(X);
+                c[q >> 6] |= std::uint64_t(1) << (q & 63u);
                 g[n] = v;
                 f[n] = suppress(up, mid, down, int(X), gx[X], gy[X]);
                 ++n;
@@ -361,20 +388,11 @@ struct EdgeDetector::Pass {
     // Room for `more` points: first drop the points the bound has risen past (they can never be
     // strong), then grow if still more than half full.
     void make_room(std::size_t more) {
-        std::size_t n = 0;
-        for (std::size_t k = 0; k < n_kept; ++k)
-            if (mag[k] >= low) {
-                at[n] = at[k];
-                mag[n] = mag[k];
-                flag[n] = flag[k];
-                ++n;
-            }
-        n_kept = n;
-        if (capacity < 2 * (n + more)) {
-            capacity = 4 * (n + more);
-            regrow(&at, n, capacity);
-            regrow(&mag, n, capacity);
-            regrow(&flag, n, capacity);
+        drop_below(low);
+        if (capacity < 2 * (n_kept + more)) {
+            capacity = 4 * (n_kept + more);
+            mag.resize(capacity);
+            flag.resize(capacity);
         }
     }
 
@@ -395,7 +413,7 @@ struct EdgeDetector::Pass {
         std::vector<float> in_bin;
         in_bin.reserve(hist[bin]);
         const std::size_t n = kept.size();
-        const float* g = kept_mag.data();
+        const float* g = mag.data();
         for_each_at_least(g, n, bin_floor(bin), [&](std::size_t k) {
             if (float_bin(g[k]) == bin) in_bin.push_back(g[k]);
         });
@@ -411,9 +429,9 @@ struct EdgeDetector::Pass {
         StrongPoints sp;
         sp.points = &kept;
         sp.mag = g;
-        sp.flag = kept_flag.data();
+        sp.flag = flag.data();
         const std::uint8_t used = params.modified ? std::uint8_t(kCandidate | kSecondary) : std::uint8_t(kCandidate);
-        std::uint8_t* f = kept_flag.data();
+        std::uint8_t* f = flag.data();
         std::size_t flagged = 0;
         kept.for_each([&](std::uint32_t k, std::uint32_t p) {
             std::uint8_t fk = std::uint8_t(f[k] & kPassFlags);
@@ -464,8 +482,8 @@ struct EdgeDetector::Pass {
 
     void clear() {
         kept.clear();
-        std::vector<float>().swap(kept_mag);
-        std::vector<std::uint8_t>().swap(kept_flag);
+        mag.reset();
+        flag.reset();
     }
 
     // k = round(beta * M), at least 1 (step 2).

@@ -1,5 +1,6 @@
 #include "algorithms/imaging/douglas_peucker.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -27,9 +28,11 @@ struct Scratch {
 };
 
 template <class Accept>
-void simplify_into(const Polyline& line, double epsilon, Accept accept, Scratch* sc, Polyline* out) {
-    const std::size_t n = line.size();
-    if (n <= 2) { *out = line; return; }
+void simplify_into(const LatticePoint* line, std::size_t n, double epsilon, Accept accept, Scratch* sc, Polyline* out) {
+    if (n <= 2) {
+        out->assign(line, line + n);
+        return;
+    }
     const double eps2 = epsilon > 0 ? epsilon * epsilon : 0.0;
     std::vector<char>& keep = sc->keep;
     keep.assign(n, 0);
@@ -63,26 +66,26 @@ void simplify_into(const Polyline& line, double epsilon, Accept accept, Scratch*
 Polyline douglas_peucker(const Polyline& line, double epsilon) {
     Scratch sc;
     Polyline out;
-    simplify_into(line, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &out);
+    simplify_into(line.data(), line.size(), epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &out);
     return out;
 }
 
 Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& accept) {
     Scratch sc;
     Polyline out;
-    simplify_into(line, epsilon, [&](std::size_t first, std::size_t last) { return !accept || accept(first, last); },
-                  &sc, &out);
+    simplify_into(line.data(), line.size(), epsilon,
+                  [&](std::size_t first, std::size_t last) { return !accept || accept(first, last); }, &sc, &out);
     return out;
 }
 
-std::vector<Polyline> simplify_polylines(const std::vector<Polyline>& lines, double epsilon, int min_points,
-                                         LengthRule rule) {
+std::vector<Polyline> simplify_polylines(const PolylineList& lines, double epsilon, int min_points, LengthRule rule) {
     std::vector<Polyline> out;
     Scratch sc;
     Polyline s;
-    for (const Polyline& line : lines) {
-        if (rule == LengthRule::before_simplification && int(line.size()) < min_points) continue;
-        simplify_into(line, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &s);
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const std::size_t n = lines.size(k);
+        if (rule == LengthRule::before_simplification && n < std::size_t(std::max(min_points, 0))) continue;
+        simplify_into(lines.line(k), n, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &s);
         if (rule == LengthRule::after_simplification && int(s.size()) < min_points) continue;
         out.push_back(std::move(s));
         s = Polyline();

@@ -23,9 +23,9 @@ Status EdgePolylines::prepare(const CannyParams& widest) {
 
 void EdgePolylines::set_aside() {
     if (!have_edges_) return;
-    aside_ = Detection{canny_, stats_, std::move(edges_), std::move(cracks_), std::move(traced_)};
+    aside_ = Detection{canny_, stats_, std::move(cracks_), std::move(traced_)};
     have_edges_ = have_kept_ = false;
-    edges_.clear();
+    traced_.clear();
     std::vector<Polyline>().swap(kept_);
 }
 
@@ -34,7 +34,6 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     if (aside_ && same_detection(canny, aside_->canny)) {
         canny_ = aside_->canny;
         stats_ = aside_->stats;
-        edges_ = std::move(aside_->edges);
         cracks_ = std::move(aside_->cracks);
         traced_ = std::move(aside_->traced);
         aside_.reset();
@@ -47,10 +46,9 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     canny_ = canny;
     have_edges_ = true;
     have_kept_ = false;
-    // The previous detection's points and polylines are dead now: free them before the detector
-    // allocates, so they do not add to the peak.
-    edges_.clear();
-    std::vector<Polyline>().swap(traced_);
+    // The previous detection's polylines are dead now: free them before the detector allocates,
+    // so they do not add to the peak.
+    traced_.clear();
     std::vector<Polyline>().swap(kept_);
     if (hard_) {
         if (!(canny.beta > 0 && canny.beta <= 1) || !(canny.r >= 0 && canny.r <= 1))
@@ -62,13 +60,15 @@ Status EdgePolylines::detect(const CannyParams& canny) {
         progress_(stage_, to_);
         return Status::success();
     }
-    // Points, not a map: only the chosen detection's map is ever made (edge_map()).
+    // Points, not a map: only the chosen detection's map is ever made (edge_map(), from the traced
+    // polylines, which hold every edge point).
     const auto at = [&](double f) { progress_(stage_, from_ + (to_ - from_) * f); };
-    Status st = detector_.detect(canny, &edges_, &stats_);  // reuses the gradient pass while it can
+    SortedPoints edges;
+    Status st = detector_.detect(canny, &edges, &stats_);  // reuses the gradient pass while it can
     at(0.6);
-    edges_.link_rows();
+    edges.link_rows();
     at(0.75);
-    traced_ = trace_polylines(edges_);
+    traced_ = trace_polylines(edges);
     at(1.0);
     return st;
 }
@@ -90,7 +90,12 @@ const std::vector<Polyline>& EdgePolylines::simplify(int min_length, double epsi
     return kept_;
 }
 
-Grid<std::uint8_t> EdgePolylines::edge_map() const { return hard_ ? cracks_ : erd::edge_map(edges_, map_w_, map_h_); }
+Grid<std::uint8_t> EdgePolylines::edge_map() const {
+    if (hard_) return cracks_;
+    Grid<std::uint8_t> map(map_w_, map_h_, 0);
+    for (const LatticePoint p : traced_.points) map(p.x, p.y) = 1;
+    return map;
+}
 
 Status edge_polylines(const Image& image, const EdgePolylineParams& params, EdgePolylineResult* out) {
     if (params.epsilon < 0 || params.epsilon != params.epsilon)

@@ -74,7 +74,7 @@ public:
                                           CrackRule crack = CrackRule::keep_sides);
 
     const CannyStats& stats() const { return stats_; }          // of the last detection
-    const std::vector<Polyline>& traced() const { return traced_; }
+    const PolylineList& traced() const { return traced_; }
     std::vector<Polyline>& kept() { return kept_; }             // of the last simplification
     Grid<std::uint8_t> edge_map() const;                        // (2W-1) x (2H-1), 1 = edge
     void release_detector() { detector_.release(); }
@@ -99,14 +99,13 @@ private:
     LengthRule rule_ = LengthRule::before_simplification;
     std::size_t generation_ = 0;
     CannyStats stats_;
-    SortedPoints edges_;  // of the last detection
-    std::vector<Polyline> traced_, kept_;
+    PolylineList traced_;
+    std::vector<Polyline> kept_;
     struct Detection {
         CannyParams canny;
         CannyStats stats;
-        SortedPoints edges;
         Grid<std::uint8_t> cracks;
-        std::vector<Polyline> traced;
+        PolylineList traced;
     };
     std::optional<Detection> aside_;
 };

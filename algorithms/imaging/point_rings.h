@@ -8,6 +8,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace erd {
@@ -36,12 +37,16 @@ public:
         const std::size_t words = cells / 64 + 2;  // one spare word: bits3 reads the next one
         bits_.assign(words, 0);
         for (std::size_t k = 0; k < n; ++k) bits_[at[k] >> 6] |= std::uint64_t(1) << (at[k] & 63u);
-        rank_.resize(words);
-        std::uint32_t before = 0;
-        for (std::size_t w = 0; w < words; ++w) {
-            rank_[w] = before;
-            before += std::uint32_t(popcount64(bits_[w]));
-        }
+        link();
+    }
+
+    // From a bit plane of the n points (bit q & 63 of word q >> 6 for cell q) covering the row
+    // below the last point's and one spare word.
+    void adopt(std::vector<std::uint64_t>&& bits, std::ptrdiff_t stride, std::size_t n) {
+        stride_ = stride;
+        size_ = n;
+        bits_ = std::move(bits);
+        link();
     }
 
     std::size_t size() const { return size_; }
@@ -98,6 +103,15 @@ public:
     }
 
 private:
+    void link() {
+        rank_.resize(bits_.size());
+        std::uint32_t before = 0;
+        for (std::size_t w = 0; w < bits_.size(); ++w) {
+            rank_[w] = before;
+            before += std::uint32_t(popcount64(bits_[w]));
+        }
+    }
+
     static unsigned popcount64(std::uint64_t v) {
         v = v - ((v >> 1) & 0x5555555555555555ull);
         v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);

@@ -27,6 +27,26 @@ inline std::size_t polyline_capacity(std::size_t n) {
     return c;
 }
 
+// Polylines in one array: noise traces millions of short lines, and a vector each would cost a
+// heap block and a header per line. Line k is points[first[k]] .. points[first[k + 1] - 1].
+struct PolylineList {
+    std::vector<LatticePoint> points;
+    std::vector<std::size_t> first{0};
+
+    std::size_t size() const { return first.size() - 1; }
+    std::size_t size(std::size_t k) const { return first[k + 1] - first[k]; }
+    const LatticePoint* line(std::size_t k) const { return points.data() + first[k]; }
+    Polyline operator[](std::size_t k) const { return Polyline(line(k), line(k) + size(k)); }
+    void add(const Polyline& l) {
+        points.insert(points.end(), l.begin(), l.end());
+        first.push_back(points.size());
+    }
+    void clear() {
+        std::vector<LatticePoint>().swap(points);
+        std::vector<std::size_t>(1, 0).swap(first);
+    }
+};
+
 // Traces the set points of a thinned edge map (nonzero = edge) into polylines. Links join
 // 8-neighbours, except a diagonal pair that also shares a set 4-neighbour (the corner of a
 // staircase or of a T), so one junction is one point, not a cluster of mutual junctions. Points
@@ -36,8 +56,8 @@ inline std::size_t polyline_capacity(std::size_t n) {
 // its first; so does a run that returns to its start node (a loop on a junction). Isolated points
 // give one-point polylines. Deterministic: nodes in row-major order, links in a fixed order
 // (E, SE, S, SW, W, NW, N, NE), loops after all node runs. Each link is used by one polyline.
-std::vector<Polyline> trace_polylines(const Grid<std::uint8_t>& edges);
+PolylineList trace_polylines(const Grid<std::uint8_t>& edges);
 // The same for edge points as EdgeDetector::detect gives them, after pts.link_rows().
-std::vector<Polyline> trace_polylines(const SortedPoints& pts);
+PolylineList trace_polylines(const SortedPoints& pts);
 
 }  // namespace erd

@@ -86,20 +86,26 @@ void thin_points(const SortedPoints& pts, std::vector<std::uint8_t>* alive_point
     // point's verdict changes only when its ring does, so each sub-iteration re-examines only the
     // points next to a deletion since its rule last ran (dirty bit 2 << step in alive): the same
     // deletions as sweeping every point, for a fraction of the work.
+    // At first every point is marked for both rules: each rule's first run sweeps them all in
+    // order (what a list of every point would give, without the list; nothing is marked again
+    // for a rule before its first run, as no point has lost that rule's mark yet).
     std::vector<std::uint32_t> dirty[2], doomed;
     for (std::uint32_t i = 0; i < n; ++i)
-        if (alive[i]) {
-            alive[i] = 1 | 2 | 4;
-            dirty[0].push_back(i);
-            dirty[1].push_back(i);
-        }
-    for (int step = 0; !dirty[0].empty() || !dirty[1].empty(); step ^= 1) {
+        if (alive[i]) alive[i] = 1 | 2 | 4;
+    bool swept[2] = {false, false};
+    for (int step = 0; !swept[0] || !swept[1] || !dirty[0].empty() || !dirty[1].empty(); step ^= 1) {
         const std::uint8_t bit = std::uint8_t(1u << step), mark = std::uint8_t(2u << step);
         doomed.clear();
-        for (const std::uint32_t i : dirty[step]) {
-            if (!alive[i]) continue;  // deleted since it was marked
+        auto examine = [&](std::uint32_t i) {
+            if (!alive[i]) return;  // deleted since it was marked
             alive[i] = std::uint8_t(alive[i] & ~mark);
             if (table[ring[i]] & bit) doomed.push_back(i);
+        };
+        if (!swept[step]) {
+            swept[step] = true;
+            for (std::uint32_t i = 0; i < n; ++i) examine(i);
+        } else {
+            for (const std::uint32_t i : dirty[step]) examine(i);
         }
         dirty[step].clear();
         for (const std::uint32_t i : doomed) remove(i);
