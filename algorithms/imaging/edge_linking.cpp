@@ -126,10 +126,10 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
                     flag[j] = with_link(fj, unsigned((d + 4) & 7));
                     queue.push_back(off.step(p, d));
                 }
-            } else {
+            } else if (lj != li) {
                 // A labelled point is a source (distance 0, main) or was reached (dist set).
                 const unsigned dj = (fj & kMain) ? 0u : dist[j];
-                if (lj != li && unsigned(di) + dj <= limit) {
+                if (unsigned(di) + dj <= limit) {
                     if (li < lj) meetings.push_back({p, off.step(p, d)});
                     else meetings.push_back({off.step(p, d), p});
                 }
