@@ -451,13 +451,14 @@ struct EdgeDetector::Pass {
         const std::size_t added = join ? join_components(&sp, params.max_link, tl) : 0;
 
         // 6. The main points, in row-major order, thinned as a sparse set.
+        const std::size_t main_count = sp.mains.size();
+        sp = StrongPoints();  // the labels and the search's queue go before the list is made
         SortedPoints mains;
         mains.stride = pl.stride;
-        mains.at.reserve(sp.mains.size());
+        mains.at.reserve(main_count);
         kept.for_each([&](std::uint32_t k, std::uint32_t p) {
             if (f[k] & kMain) mains.at.push_back(p);
         });
-        sp = StrongPoints();
         if (release) clear();
         std::vector<std::uint8_t> alive(mains.size(), 1);
         if (params.thin) {

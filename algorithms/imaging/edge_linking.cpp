@@ -68,17 +68,14 @@ std::size_t hysteresis(StrongPoints* sp, bool labels) {
 // number of points added. The search starts from hysteresis's mains in their order (component by
 // component, each in the order grown), which is the order a labelling pass over them would find.
 std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
-    const std::size_t n = sp->size();
     const PointBits& pts = *sp->points;
     const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
     std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
-    // dist is read only at labelled points: set for the sources below, and for a reached point
-    // when it is reached, so it is not initialised. The way back from a reached point is the link
-    // field of its flags (edge_flags): a direction instead of an index.
-    std::unique_ptr<std::uint8_t[]> dist(new std::uint8_t[n]);
-    // The queue is the mains themselves, followed by the secondary points as they are reached
-    // (cut off again after the search).
+    // The way back from a reached point is the link field of its flags (edge_flags): a direction
+    // instead of an index. The queue is the mains themselves, followed by the secondary points as
+    // they are reached (cut off again after the search), so its points come by distance: the
+    // distance of the point taken is the level of the queue it is in, and no point keeps its own.
     std::vector<std::uint32_t>& queue = sp->mains;
     const std::size_t sources = queue.size();
     // p has the smaller label; the pair's key is the two labels (read back when sorting).
@@ -91,6 +88,16 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
     // distances to sum to at most limit): it would find no meeting and reach nothing further,
     // and is not labelled at all. This outermost shell is the largest.
     const std::uint8_t reach = limit >= 2 ? std::uint8_t(limit - 1) : limit;
+    // Whether reached point k at cell q is at most `most` steps from its source: its way back
+    // followed (the search makes no point main, so every way back ends at a source).
+    const auto within = [&](std::uint32_t q, std::uint32_t k, unsigned most) {
+        for (unsigned steps = 0; !(flag[k] & kMain); ++steps) {
+            if (steps == most) return false;
+            q = off.step(q, int(link_of(flag[k])));
+            k = pts.index(q);
+        }
+        return true;
+    };
     // The number of main neighbours of each main point (up to 2: the climbs below ask for 1),
     // for the climbs: counted here from the rings the search reads anyway, and kept up to date as
     // points become main (one ring per added point instead of one per main point). Kept in the
@@ -105,11 +112,16 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
                 flag[j] = with_link(flag[j], c < 2 ? c + 1 : 2);
             }
     };
+    std::size_t level_end = sources;
+    unsigned di = 0;  // the distance of the points taken
     for (std::size_t head = 0; head < queue.size(); ++head) {
+        if (head == level_end) {
+            ++di;
+            level_end = queue.size();
+        }
         const std::uint32_t p = queue[head];
         const std::uint32_t i = pts.index(p);
         const std::uint32_t li = label[i];
-        const std::uint8_t di = head < sources ? 0 : dist[i];
         std::uint32_t nb[8];
         pts.ring(p, i, nb);
         unsigned mains_around = 0;  // kept for sources only (the link field below)
@@ -125,14 +137,13 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
             if (lj == 0) {
                 if (di < reach && (fj & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
-                    dist[j] = std::uint8_t(di + 1);
                     flag[j] = with_link(fj, unsigned((d + 4) & 7));
                     queue.push_back(off.step(p, d));
                 }
             } else if (lj != li) {
-                // A labelled point is a source (distance 0, main) or was reached (dist set).
-                const unsigned dj = (fj & kMain) ? 0u : dist[j];
-                if (unsigned(di) + dj <= limit) {
+                // A labelled point is a source (distance 0, main) or was reached (at most `reach`
+                // away): the distances reach `limit` together only from di >= 2.
+                if ((fj & kMain) || di + reach <= limit || within(off.step(p, d), j, limit - di)) {
                     if (li < lj) meetings.push_back({p, off.step(p, d)});
                     else meetings.push_back({off.step(p, d), p});
                 }
