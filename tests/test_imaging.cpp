@@ -436,7 +436,7 @@ TEST_CASE("tracing splits at junctions and keeps closed loops", "[imaging]") {
         "..........#.",
     });
     const PolylineList lines = trace_polylines(m);
-    REQUIRE(lines.first.back() == lines.points.size());
+    REQUIRE(lines.points() == 3 + 3 + 4 + 1 + 9);
     REQUIRE(lines.size() == 5);
     // Node order is row-major: (0,0) first, then the junction (2,0).
     CHECK(lines[0] == Polyline{{0, 0}, {1, 0}, {2, 0}});
@@ -461,7 +461,7 @@ TEST_CASE("Douglas-Peucker keeps exactly the expected points", "[imaging]") {
     const Polyline loop{{0, 0}, {4, 0}, {8, 0}, {8, 4}, {8, 8}, {4, 8}, {0, 8}, {0, 4}, {0, 0}};
     CHECK(douglas_peucker(loop, 1.0) == Polyline{{0, 0}, {8, 0}, {8, 8}, {0, 8}, {0, 0}});
     // The length filter counts traced points by default, simplified points on request.
-    PolylineList lines;
+    PolylineList lines(64);
     lines.add(line);
     lines.add(Polyline{{0, 0}, {2, 0}, {4, 0}, {6, 0}});
     CHECK(simplify_polylines(lines, 2.0, 5).size() == 1);

@@ -447,7 +447,7 @@ struct EdgeDetector::Pass {
         // hardly fewer on noise (room for them up front: no copy while it grows).
         const bool join = params.modified && params.max_link > 0;
         if (join) sp.mains.reserve(flagged);
-        const std::size_t main_points = hysteresis(&sp, join);
+        const std::size_t main_points = hysteresis(&sp);
         const std::size_t added = join ? join_components(&sp, params.max_link, tl) : 0;
 
         // 6. The main points, in row-major order, thinned as a sparse set.

@@ -79,13 +79,20 @@ Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& 
 }
 
 std::vector<Polyline> simplify_polylines(const PolylineList& lines, double epsilon, int min_points, LengthRule rule) {
+    const std::size_t least = rule == LengthRule::before_simplification ? std::size_t(std::max(min_points, 0)) : 0;
+    // Room for every line the length rule can keep, so the list is not copied as it grows (noise
+    // keeps a million lines at 2048^2).
+    std::size_t room = 0;
+    for (std::size_t k = 0; k < lines.size(); ++k) room += lines.size(k) >= least;
     std::vector<Polyline> out;
+    out.reserve(room);
     Scratch sc;
-    Polyline s;
+    Polyline s, line;
     for (std::size_t k = 0; k < lines.size(); ++k) {
         const std::size_t n = lines.size(k);
-        if (rule == LengthRule::before_simplification && n < std::size_t(std::max(min_points, 0))) continue;
-        simplify_into(lines.line(k), n, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &s);
+        if (n < least) continue;
+        lines.line(k, &line);
+        simplify_into(line.data(), n, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &s);
         if (rule == LengthRule::after_simplification && int(s.size()) < min_points) continue;
         out.push_back(std::move(s));
         s = Polyline();

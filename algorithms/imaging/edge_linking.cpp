@@ -28,25 +28,22 @@ inline std::uint8_t with_link(std::uint8_t f, unsigned v) {
 
 }  // namespace
 
-std::size_t hysteresis(StrongPoints* sp, bool labels) {
-    if (labels) sp->label.assign(sp->size(), 0);
+std::size_t hysteresis(StrongPoints* sp) {
     const PointBits& pts = *sp->points;
     const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
     std::vector<std::uint32_t> stack;  // cells
-    std::uint32_t component = 0;
     for (const std::uint32_t s : sp->seeds) {
         const std::uint32_t si = pts.index(s);
         if (flag[si] & kMain) continue;
         flag[si] |= kMain;
         stack.push_back(s);
-        ++component;
+        sp->grown.push_back(std::uint32_t(sp->mains.size()));
         while (!stack.empty()) {
             const std::uint32_t p = stack.back();
             stack.pop_back();
             const std::uint32_t i = pts.index(p);
             sp->mains.push_back(p);
-            if (labels) sp->label[i] = component;
             std::uint32_t nb[8];
             pts.ring(p, i, nb);
             for (int d = 0; d < 8; ++d) {
@@ -67,11 +64,18 @@ std::size_t hysteresis(StrongPoints* sp, bool labels) {
 // back to their sources are the shortest secondary link between those components. Returns the
 // number of points added. The search starts from hysteresis's mains in their order (component by
 // component, each in the order grown), which is the order a labelling pass over them would find.
-std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
+// Label: an unsigned type that holds the number of components.
+template <class Label>
+std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     const PointBits& pts = *sp->points;
     const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
-    std::vector<std::uint32_t>& label = sp->label;  // main component, 0 = unreached
+    // The main component of each point, 1, 2, ... in the order grown; 0 = unreached.
+    std::vector<Label> label(sp->size(), 0);
+    for (std::size_t c = 0; c < sp->grown.size(); ++c) {
+        const std::size_t end = c + 1 < sp->grown.size() ? sp->grown[c + 1] : sp->mains.size();
+        for (std::size_t k = sp->grown[c]; k < end; ++k) label[pts.index(sp->mains[k])] = Label(c + 1);
+    }
     // The way back from a reached point is the link field of its flags (edge_flags): a direction
     // instead of an index. The queue is the mains themselves, followed by the secondary points as
     // they are reached (cut off again after the search), so its points come by distance: the
@@ -121,7 +125,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         }
         const std::uint32_t p = queue[head];
         const std::uint32_t i = pts.index(p);
-        const std::uint32_t li = label[i];
+        const Label li = label[i];
         std::uint32_t nb[8];
         pts.ring(p, i, nb);
         unsigned mains_around = 0;  // kept for sources only (the link field below)
@@ -133,7 +137,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
             // Only main points and the secondary points the search reaches are labelled: the
             // others need no look at their label (a third of the rings on noise).
             if (!(fj & (kMain | kSecondary))) continue;
-            const std::uint32_t lj = label[j];
+            const Label lj = label[j];
             if (lj == 0) {
                 if (di < reach && (fj & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
@@ -188,7 +192,7 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         const std::uint32_t ei = pts.index(end);
         if (link_of(flag[ei]) != 1) continue;
         std::uint32_t nb[8];
-        const std::uint32_t own = label[ei];
+        const Label own = label[ei];
         path.clear();
         Step cur{end, ei};
         bool joined = false;
@@ -218,6 +222,13 @@ std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
         }
     }
     return added;
+}
+
+// Labels take 2 bytes a point where the components allow it (thousands on noise up to 2048^2),
+// 4 beyond: the same search either way.
+std::size_t join_components(StrongPoints* sp, int max_link, float tl) {
+    return sp->grown.size() < 65536 ? join_with<std::uint16_t>(sp, max_link, tl)
+                                    : join_with<std::uint32_t>(sp, max_link, tl);
 }
 
 }  // namespace erd

@@ -36,19 +36,19 @@ struct StrongPoints {
     std::uint8_t* flag = nullptr;       // their flag bytes (edge_flags)
     std::vector<std::uint32_t> seeds;   // cells of the candidates with g >= tau_high, row-major
     std::vector<std::uint32_t> mains;   // cells of every point marked kMain, in the order marked
-    std::vector<std::uint32_t> label;   // main component (steps 4, 5), 0 = none
+    std::vector<std::uint32_t> grown;   // where each component of step 4 starts in `mains`
     std::size_t size() const { return points->size(); }
 };
 
 // Step 4: grows from the seeds through 8-connected candidates; returns the number of main points.
 // Each growth is one 8-connected component of the main points (a candidate next to it would have
-// joined it); with `labels`, sp->label receives its number, 1, 2, ... in the order grown.
-std::size_t hysteresis(StrongPoints* sp, bool labels);
+// joined it), its points one run of sp->mains.
+std::size_t hysteresis(StrongPoints* sp);
 
 // Step 5, Ding-Goshtasby: joins different main components through short secondary paths (at most
 // max_link points), and lets each end of a main curve climb the magnitude (strictly increasing,
 // >= tl) to a different component (canny.h, step 5). Returns the number of points added. Needs
-// hysteresis(sp, true): its labels, and its mains, whose order starts the search.
+// hysteresis(sp): its components, and its mains, whose order starts the search.
 std::size_t join_components(StrongPoints* sp, int max_link, float tl);
 
 }  // namespace erd

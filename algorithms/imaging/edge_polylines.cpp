@@ -93,7 +93,7 @@ const std::vector<Polyline>& EdgePolylines::simplify(int min_length, double epsi
 Grid<std::uint8_t> EdgePolylines::edge_map() const {
     if (hard_) return cracks_;
     Grid<std::uint8_t> map(map_w_, map_h_, 0);
-    for (const LatticePoint p : traced_.points) map(p.x, p.y) = 1;
+    traced_.for_each_point([&](LatticePoint p) { map(p.x, p.y) = 1; });
     return map;
 }
 

@@ -56,12 +56,8 @@ PolylineList trace_polylines(const Grid<std::uint8_t>& edges) {
 }
 
 PolylineList trace_polylines(const SortedPoints& pts) {
-    PolylineList out;
+    PolylineList out(pts.stride);
     const std::size_t n = pts.size();
-    auto point = [&](std::uint32_t i) {
-        const std::uint32_t s = std::uint32_t(pts.stride);
-        return LatticePoint{std::int32_t(pts.at[i] % s) - 1, std::int32_t(pts.at[i] / s) - 1};
-    };
     // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
     // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
     // cluster of mutual "junctions" out of one junction. Directions E, SE, S, SW, W, NW, N, NE.
@@ -80,31 +76,30 @@ PolylineList trace_polylines(const SortedPoints& pts) {
     // a node to a node: room for all of those lines up front, and for a closed curve per 32 points
     // (noise: 14 in 92K lines), so the store is not copied as it grows.
     const std::size_t lines = node_ends / 2 + isolated + n / 32 + 1;
-    out.points.reserve(link_ends / 2 + lines);
-    out.first.reserve(lines + 1);
+    out.reserve(link_ends / 2 + lines, lines);
     auto free_link = [&](std::uint32_t i) { return int(kRingTables.lowest[links[i] & ~used[i] & 0xFFu]); };
     // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
     // no free link left, or the start again.
     auto run = [&](std::uint32_t start, int d) {
-        out.points.push_back(point(start));
+        out.push(pts.at[start]);
         std::uint32_t cur = start;
         for (;;) {
             used[cur] |= std::uint8_t(1u << d);
             cur = pts.neighbour(cur, d);
             used[cur] |= std::uint8_t(1u << ((d + 4) & 7));
-            out.points.push_back(point(cur));
+            out.push(pts.at[cur]);
             if (cur == start || degree[cur] != 2) break;
             d = free_link(cur);
             if (d < 0) break;
         }
-        out.first.push_back(out.points.size());
+        out.end_line();
     };
 
     for (std::uint32_t i = 0; i < n; ++i) {
         if (degree[i] == 2) continue;
         if (degree[i] == 0) {
-            out.points.push_back(point(i));
-            out.first.push_back(out.points.size());
+            out.push(pts.at[i]);
+            out.end_line();
             continue;
         }
         for (int d; (d = free_link(i)) >= 0;) run(i, d);

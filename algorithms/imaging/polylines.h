@@ -27,24 +27,58 @@ inline std::size_t polyline_capacity(std::size_t n) {
     return c;
 }
 
-// Polylines in one array: noise traces millions of short lines, and a vector each would cost a
-// heap block and a header per line. Line k is points[first[k]] .. points[first[k + 1] - 1].
-struct PolylineList {
-    std::vector<LatticePoint> points;
-    std::vector<std::size_t> first{0};
+// Polylines in one array of plane cells (cell (Y + 1) * stride + X + 1 for point (X, Y), as in
+// SortedPoints): noise traces millions of short lines, and a vector of LatticePoints each would
+// cost a heap block and a header a line and 8 bytes a point. Line k is cells k_0 .. k_1 - 1 with
+// k_0 = first[k], k_1 = first[k + 1].
+class PolylineList {
+public:
+    PolylineList() = default;
+    explicit PolylineList(std::ptrdiff_t stride) : stride_(stride) {}
 
-    std::size_t size() const { return first.size() - 1; }
-    std::size_t size(std::size_t k) const { return first[k + 1] - first[k]; }
-    const LatticePoint* line(std::size_t k) const { return points.data() + first[k]; }
-    Polyline operator[](std::size_t k) const { return Polyline(line(k), line(k) + size(k)); }
+    std::size_t size() const { return first_.size() - 1; }              // lines
+    std::size_t size(std::size_t k) const { return first_[k + 1] - first_[k]; }
+    std::size_t points() const { return cells_.size(); }                // in all lines
+    // Line k into *out (its points in order).
+    void line(std::size_t k, Polyline* out) const {
+        out->clear();
+        for (std::size_t i = first_[k]; i < first_[k + 1]; ++i) out->push_back(point_at(cells_[i]));
+    }
+    Polyline operator[](std::size_t k) const {
+        Polyline l;
+        line(k, &l);
+        return l;
+    }
+    template <class Fn>
+    void for_each_point(Fn fn) const {
+        for (const std::uint32_t c : cells_) fn(point_at(c));
+    }
+
+    void reserve(std::size_t points, std::size_t lines) {
+        cells_.reserve(points);
+        first_.reserve(lines + 1);
+    }
+    void push(std::uint32_t cell) { cells_.push_back(cell); }  // to the line being made
+    void end_line() { first_.push_back(cells_.size()); }
+    // A whole line of points with X, Y >= -1 and X + 1 < stride.
     void add(const Polyline& l) {
-        points.insert(points.end(), l.begin(), l.end());
-        first.push_back(points.size());
+        for (const LatticePoint p : l)
+            push(std::uint32_t((std::ptrdiff_t(p.y) + 1) * stride_ + p.x + 1));
+        end_line();
     }
     void clear() {
-        std::vector<LatticePoint>().swap(points);
-        std::vector<std::size_t>(1, 0).swap(first);
+        std::vector<std::uint32_t>().swap(cells_);
+        std::vector<std::size_t>(1, 0).swap(first_);
     }
+
+private:
+    LatticePoint point_at(std::uint32_t c) const {
+        const std::uint32_t s = std::uint32_t(stride_);
+        return LatticePoint{std::int32_t(c % s) - 1, std::int32_t(c / s) - 1};
+    }
+    std::vector<std::uint32_t> cells_;
+    std::vector<std::size_t> first_{0};
+    std::ptrdiff_t stride_ = 0;
 };
 
 // Traces the set points of a thinned edge map (nonzero = edge) into polylines. Links join
