@@ -443,8 +443,8 @@ struct EdgeDetector::Pass {
             f[k] = fk;
         });
 
-        // 4, 5. The search's queue holds every point it labels: the flagged points at most, and
-        // hardly fewer on noise (room for them up front: no copy while it grows).
+        // 4, 5. The search's queue holds every point it labels: the flagged points at most (room
+        // for them up front: no copy while it grows; pages it never fills cost nothing).
         const bool join = params.modified && params.max_link > 0;
         if (join) sp.mains.reserve(flagged);
         const std::size_t main_points = hysteresis(&sp);

@@ -70,6 +70,8 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     const PointBits& pts = *sp->points;
     const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
+    std::vector<std::uint32_t>& queue = sp->mains;
+    const std::size_t sources = queue.size();
     // The main component of each point, 1, 2, ... in the order grown; 0 = unreached.
     std::vector<Label> label(sp->size(), 0);
     for (std::size_t c = 0; c < sp->grown.size(); ++c) {
@@ -80,11 +82,10 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     // instead of an index. The queue is the mains themselves, followed by the secondary points as
     // they are reached (cut off again after the search), so its points come by distance: the
     // distance of the point taken is the level of the queue it is in, and no point keeps its own.
-    std::vector<std::uint32_t>& queue = sp->mains;
-    const std::size_t sources = queue.size();
     // p has the smaller label; the pair's key is the two labels (read back when sorting).
     struct Meeting { std::uint32_t p, q; };  // cells
     std::vector<Meeting> meetings;
+    std::uint64_t last_pair = 0;  // no pair has label 0
     const std::uint8_t limit = std::uint8_t(max_link);
     // Every main point is taken from the queue before any reached point, and claims each free
     // secondary neighbour; so with limit >= 2 a point reached at distance `limit` is next to no
@@ -148,6 +149,11 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 // A labelled point is a source (distance 0, main) or was reached (at most `reach`
                 // away): the distances reach `limit` together only from di >= 2.
                 if ((fj & kMain) || di + reach <= limit || within(off.step(p, d), j, limit - di)) {
+                    // The same pair as the last meeting: a later one of its key, which the
+                    // first found outranks (most meetings repeat the last along a boundary).
+                    const std::uint64_t pair = li < lj ? (std::uint64_t(li) << 32) | lj : (std::uint64_t(lj) << 32) | li;
+                    if (pair == last_pair) continue;
+                    last_pair = pair;
                     if (li < lj) meetings.push_back({p, off.step(p, d)});
                     else meetings.push_back({off.step(p, d), p});
                 }
