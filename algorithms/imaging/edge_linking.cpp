@@ -55,6 +55,7 @@ std::size_t hysteresis(StrongPoints* sp) {
             }
         }
     }
+    std::vector<std::uint32_t>().swap(sp->seeds);  // used up: freed before the search's peak
     return sp->mains.size();
 }
 

@@ -42,7 +42,7 @@ struct StrongPoints {
 
 // Step 4: grows from the seeds through 8-connected candidates; returns the number of main points.
 // Each growth is one 8-connected component of the main points (a candidate next to it would have
-// joined it), its points one run of sp->mains.
+// joined it), its points one run of sp->mains. Frees the seeds.
 std::size_t hysteresis(StrongPoints* sp);
 
 // Step 5, Ding-Goshtasby: joins different main components through short secondary paths (at most
