@@ -78,14 +78,19 @@ Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& 
     return out;
 }
 
-std::vector<Polyline> simplify_polylines(const PolylineList& lines, double epsilon, int min_points, LengthRule rule) {
+PolylineList simplify_polylines(const PolylineList& lines, double epsilon, int min_points, LengthRule rule) {
     const std::size_t least = rule == LengthRule::before_simplification ? std::size_t(std::max(min_points, 0)) : 0;
-    // Room for every line the length rule can keep, so the list is not copied as it grows (noise
-    // keeps a million lines at 2048^2).
-    std::size_t room = 0;
-    for (std::size_t k = 0; k < lines.size(); ++k) room += lines.size(k) >= least;
-    std::vector<Polyline> out;
-    out.reserve(room);
+    // Room for every line the length rule can keep and for all their points (a bound), so the list
+    // is not copied as it grows (noise keeps a million lines at 2048^2); pages it never fills cost
+    // nothing.
+    std::size_t room = 0, points = 0;
+    for (std::size_t k = 0; k < lines.size(); ++k)
+        if (lines.size(k) >= least) {
+            ++room;
+            points += lines.size(k);
+        }
+    PolylineList out(lines.stride());
+    out.reserve(points, room);
     Scratch sc;
     Polyline s, line;
     for (std::size_t k = 0; k < lines.size(); ++k) {
@@ -94,8 +99,7 @@ std::vector<Polyline> simplify_polylines(const PolylineList& lines, double epsil
         lines.line(k, &line);
         simplify_into(line.data(), n, epsilon, [](std::size_t, std::size_t) { return true; }, &sc, &s);
         if (rule == LengthRule::after_simplification && int(s.size()) < min_points) continue;
-        out.push_back(std::move(s));
-        s = Polyline();
+        out.add(s);
     }
     return out;
 }

@@ -29,7 +29,7 @@ Polyline douglas_peucker(const Polyline& line, double epsilon, const PieceTest& 
 enum class LengthRule { before_simplification, after_simplification };
 
 // Simplifies each line and drops those with fewer than min_points points (counted per rule).
-std::vector<Polyline> simplify_polylines(const PolylineList& lines, double epsilon, int min_points,
-                                         LengthRule rule = LengthRule::before_simplification);
+PolylineList simplify_polylines(const PolylineList& lines, double epsilon, int min_points,
+                                LengthRule rule = LengthRule::before_simplification);
 
 }  // namespace erd

@@ -132,10 +132,10 @@ Polyline simplify_cracks(const Polyline& line, double epsilon) {
     });
 }
 
-std::vector<Polyline> simplify_crack_polylines(const PolylineList& lines, double epsilon, int min_points) {
-    std::vector<Polyline> out;
+PolylineList simplify_crack_polylines(const PolylineList& lines, double epsilon, int min_points) {
+    PolylineList out(lines.stride());
     for (std::size_t k = 0; k < lines.size(); ++k)
-        if (lines.size(k) >= std::size_t(std::max(min_points, 0))) out.push_back(simplify_cracks(lines[k], epsilon));
+        if (lines.size(k) >= std::size_t(std::max(min_points, 0))) out.add(simplify_cracks(lines[k], epsilon));
     return out;
 }
 

@@ -66,6 +66,6 @@ private:
 // same way round as along the crack. Otherwise it is split at its farthest point.
 Polyline simplify_cracks(const Polyline& line, double epsilon);
 // simplify_cracks over lines, dropping those with fewer than min_points points before.
-std::vector<Polyline> simplify_crack_polylines(const PolylineList& lines, double epsilon, int min_points);
+PolylineList simplify_crack_polylines(const PolylineList& lines, double epsilon, int min_points);
 
 }  // namespace erd

@@ -26,7 +26,7 @@ void EdgePolylines::set_aside() {
     aside_ = Detection{canny_, stats_, std::move(cracks_), std::move(traced_)};
     have_edges_ = have_kept_ = false;
     traced_.clear();
-    std::vector<Polyline>().swap(kept_);
+    kept_.clear();
 }
 
 Status EdgePolylines::detect(const CannyParams& canny) {
@@ -39,7 +39,7 @@ Status EdgePolylines::detect(const CannyParams& canny) {
         aside_.reset();
         have_edges_ = true;
         have_kept_ = false;
-        std::vector<Polyline>().swap(kept_);
+        kept_.clear();
         return Status::success();
     }
     if (have_edges_) aside_.reset();  // a third detection: what was set aside is not wanted back
@@ -49,7 +49,7 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     // The previous detection's polylines are dead now: free them before the detector allocates,
     // so they do not add to the peak.
     traced_.clear();
-    std::vector<Polyline>().swap(kept_);
+    kept_.clear();
     if (hard_) {
         if (!(canny.beta > 0 && canny.beta <= 1) || !(canny.r >= 0 && canny.r <= 1))
             return Status::bad_input("crack edges: beta must be in (0, 1] and r in [0, 1]");
@@ -73,7 +73,7 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     return st;
 }
 
-const std::vector<Polyline>& EdgePolylines::simplify(int min_length, double epsilon_units, LengthRule rule, CrackRule crack) {
+const PolylineList& EdgePolylines::simplify(int min_length, double epsilon_units, LengthRule rule, CrackRule crack) {
     if (have_kept_ && min_length == l_ && epsilon_units == eps_ && rule == rule_ && (!hard_ || crack == crack_)) return kept_;
     l_ = min_length;
     eps_ = epsilon_units;
@@ -111,7 +111,7 @@ Status edge_polylines(const Image& image, const EdgePolylineParams& params, Edge
     params.progress("edges", 1.0);
     out->edges = chain.edge_map();
     out->traced = chain.traced().size();
-    out->polylines = std::move(chain.kept());
+    out->polylines = chain.kept().to_vector();
     out->stats = chain.stats();
     return Status::success();
 }

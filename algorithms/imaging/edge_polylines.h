@@ -70,12 +70,12 @@ public:
     void set_aside();
     // Step 1.3 on the last detection: epsilon in doubled-coordinate units (pixels times
     // kEpsilonUnitsPerPixel; hard: times kHardEpsilonScale too). Returns the kept polylines.
-    const std::vector<Polyline>& simplify(int min_length, double epsilon_units, LengthRule rule,
+    const PolylineList& simplify(int min_length, double epsilon_units, LengthRule rule,
                                           CrackRule crack = CrackRule::keep_sides);
 
     const CannyStats& stats() const { return stats_; }          // of the last detection
     const PolylineList& traced() const { return traced_; }
-    std::vector<Polyline>& kept() { return kept_; }             // of the last simplification
+    const PolylineList& kept() const { return kept_; }          // of the last simplification
     Grid<std::uint8_t> edge_map() const;                        // (2W-1) x (2H-1), 1 = edge
     void release_detector() { detector_.release(); }
     // Incremented by every simplification actually run, so callers can cache what they derive.
@@ -100,7 +100,7 @@ private:
     std::size_t generation_ = 0;
     CannyStats stats_;
     PolylineList traced_;
-    std::vector<Polyline> kept_;
+    PolylineList kept_;
     struct Detection {
         CannyParams canny;
         CannyStats stats;

@@ -53,6 +53,12 @@ public:
     void for_each_point(Fn fn) const {
         for (const std::uint32_t c : cells_) fn(point_at(c));
     }
+    std::vector<Polyline> to_vector() const {
+        std::vector<Polyline> out(size());
+        for (std::size_t k = 0; k < size(); ++k) line(k, &out[k]);
+        return out;
+    }
+    std::ptrdiff_t stride() const { return stride_; }
 
     void reserve(std::size_t points, std::size_t lines) {
         cells_.reserve(points);
@@ -61,11 +67,11 @@ public:
     void push(std::uint32_t cell) { cells_.push_back(cell); }  // to the line being made
     void end_line() { first_.push_back(cells_.size()); }
     // A whole line of points with X, Y >= -1 and X + 1 < stride.
-    void add(const Polyline& l) {
-        for (const LatticePoint p : l)
-            push(std::uint32_t((std::ptrdiff_t(p.y) + 1) * stride_ + p.x + 1));
+    void add(const LatticePoint* p, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) push(std::uint32_t((std::ptrdiff_t(p[i].y) + 1) * stride_ + p[i].x + 1));
         end_line();
     }
+    void add(const Polyline& l) { add(l.data(), l.size()); }
     void clear() {
         std::vector<std::uint32_t>().swap(cells_);
         std::vector<std::size_t>(1, 0).swap(first_);

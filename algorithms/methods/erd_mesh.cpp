@@ -72,7 +72,7 @@ public:
 
     std::size_t count(int l, double eps) override {
         if (progress_->cancelled()) return 0;
-        const std::vector<Polyline>* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
+        const PolylineList* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
         // Hard edges: the side-keeping curves when they fit the budget, else plain Douglas-Peucker
         // on the same cracks (docs/DECISIONS.md "Hard edges").
         if (hard_ && fallback_ && double(distinct_points(*kept)) > budget_) {
@@ -91,7 +91,7 @@ public:
     bool fell_back() const { return fell_back_; }  // some count took the plain curves
     void release_detector() { chain_.release_detector(); }
     Grid<std::uint8_t> edges() const { return chain_.edge_map(); }
-    std::vector<Polyline>& kept() { return chain_.kept(); }
+    const PolylineList& kept() const { return chain_.kept(); }
 
 private:
     // On the image, not a double copy of it: the ERD methods make their double phi only after
@@ -111,18 +111,15 @@ std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y))
 
 }  // namespace
 
-std::size_t distinct_points(const std::vector<Polyline>& polylines) {
-    std::size_t total = 0;
+std::size_t distinct_points(const PolylineList& polylines) {
+    const std::size_t total = polylines.points();
     std::int64_t max_x = -1, max_y = -1;
     bool in_grid = true;  // all coordinates >= 0: a bit plane can count them
-    for (const Polyline& pl : polylines) {
-        total += pl.size();
-        for (LatticePoint p : pl) {
-            in_grid = in_grid && p.x >= 0 && p.y >= 0;
-            max_x = std::max<std::int64_t>(max_x, p.x);
-            max_y = std::max<std::int64_t>(max_y, p.y);
-        }
-    }
+    polylines.for_each_point([&](LatticePoint p) {
+        in_grid = in_grid && p.x >= 0 && p.y >= 0;
+        max_x = std::max<std::int64_t>(max_x, p.x);
+        max_y = std::max<std::int64_t>(max_y, p.y);
+    });
     if (total == 0) return 0;
     // Linear: one bit per grid point when that plane is no larger than the sorted keys would be
     // (the parameter loop counts after every detection; sorting was a tenth of step 1 on noise).
@@ -130,19 +127,17 @@ std::size_t distinct_points(const std::vector<Polyline>& polylines) {
     if (in_grid && cells / 64 <= total) {
         std::vector<std::uint64_t> bits(std::size_t(cells / 64 + 1), 0);
         std::size_t n = 0;
-        for (const Polyline& pl : polylines)
-            for (LatticePoint p : pl) {
-                const std::uint64_t q = std::uint64_t(p.y) * cols + std::uint64_t(p.x);
-                const std::uint64_t bit = std::uint64_t(1) << (q & 63u);
-                n += (bits[q >> 6] & bit) == 0;
-                bits[q >> 6] |= bit;
-            }
+        polylines.for_each_point([&](LatticePoint p) {
+            const std::uint64_t q = std::uint64_t(p.y) * cols + std::uint64_t(p.x);
+            const std::uint64_t bit = std::uint64_t(1) << (q & 63u);
+            n += (bits[q >> 6] & bit) == 0;
+            bits[q >> 6] |= bit;
+        });
         return n;
     }
     std::vector<std::uint64_t> keys;
     keys.reserve(total);
-    for (const Polyline& pl : polylines)
-        for (LatticePoint p : pl) keys.push_back(key_of(p));
+    polylines.for_each_point([&](LatticePoint p) { keys.push_back(key_of(p)); });
     std::sort(keys.begin(), keys.end());
     return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
@@ -248,7 +243,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
         if (!counter.status().ok()) return counter.status();
         if (progress.cancelled()) return Status::failure(kCancelled);
         out->edges = counter.edges();
-        out->polylines = std::move(counter.kept());
+        out->polylines = counter.kept().to_vector();
         out->plain_fallback = counter.fell_back();
         out->constraint_points = out->params.constrained_points;
     } else {

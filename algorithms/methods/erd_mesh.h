@@ -78,6 +78,6 @@ Status insert_polylines(const std::vector<Polyline>& polylines, Cdt* cdt, std::s
                         bool refuse_crossing = false);
 
 // Distinct points of a set of polylines (they share end points at junctions).
-std::size_t distinct_points(const std::vector<Polyline>& polylines);
+std::size_t distinct_points(const PolylineList& polylines);
 
 }  // namespace erd
