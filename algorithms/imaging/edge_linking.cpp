@@ -71,18 +71,18 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     const PointBits& pts = *sp->points;
     const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
+    // The queue is the mains themselves, followed by the secondary points as they are reached
+    // (cut off again after the search), so its points come by distance: the distance of the point
+    // taken is the level of the queue it is in, and no point keeps its own. The way back from a
+    // reached point is the link field of its flags (edge_flags): a direction instead of an index.
     std::vector<std::uint32_t>& queue = sp->mains;
     const std::size_t sources = queue.size();
     // The main component of each point, 1, 2, ... in the order grown; 0 = unreached.
     std::vector<Label> label(sp->size(), 0);
     for (std::size_t c = 0; c < sp->grown.size(); ++c) {
-        const std::size_t end = c + 1 < sp->grown.size() ? sp->grown[c + 1] : sp->mains.size();
-        for (std::size_t k = sp->grown[c]; k < end; ++k) label[pts.index(sp->mains[k])] = Label(c + 1);
+        const std::size_t end = c + 1 < sp->grown.size() ? sp->grown[c + 1] : sources;
+        for (std::size_t k = sp->grown[c]; k < end; ++k) label[pts.index(queue[k])] = Label(c + 1);
     }
-    // The way back from a reached point is the link field of its flags (edge_flags): a direction
-    // instead of an index. The queue is the mains themselves, followed by the secondary points as
-    // they are reached (cut off again after the search), so its points come by distance: the
-    // distance of the point taken is the level of the queue it is in, and no point keeps its own.
     // p has the smaller label; the pair's key is the two labels (read back when sorting).
     struct Meeting { std::uint32_t p, q; };  // cells
     std::vector<Meeting> meetings;
