@@ -158,6 +158,16 @@ inline std::size_t count_at_least(const float* v, std::size_t n, float low) {
     return c;
 }
 
+// What a failed allocation does, as `new` does in this build: throw std::bad_alloc, or abort where
+// exceptions are off (the embedded build).
+[[noreturn]] inline void out_of_memory() {
+#if defined(__cpp_exceptions)
+    throw std::bad_alloc();
+#else
+    std::abort();
+#endif
+}
+
 // An array of trivially copyable T that resize() grows or shrinks keeping its first elements
 // (realloc): a shrink is made in place, so the pass's store becomes its kept arrays without a
 // second copy beside the first.
@@ -174,7 +184,7 @@ public:
     void resize(std::size_t n) {
         if (n == 0) { reset(); return; }
         void* q = std::realloc(p_, n * sizeof(T));
-        if (!q) throw std::bad_alloc();
+        if (!q) out_of_memory();
         p_ = static_cast<T*>(q);
     }
     void reset() {
