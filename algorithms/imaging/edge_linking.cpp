@@ -118,6 +118,9 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 flag[j] = with_link(flag[j], c < 2 ? c + 1 : 2);
             }
     };
+    // The labels and flags around the point kAhead places ahead in the queue are fetched while this
+    // one is taken: on noise they are read all over the arrays (docs/DECISIONS.md "Memory").
+    constexpr std::size_t kAhead = 8;
     std::size_t level_end = sources;
     unsigned di = 0;  // the distance of the points taken
     for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -127,6 +130,14 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
         }
         const std::uint32_t p = queue[head];
         const std::uint32_t i = pts.index(p);
+        if (head + kAhead < queue.size()) {
+            const std::size_t q = queue[head + kAhead], s = std::size_t(pts.stride());
+            for (const std::size_t c : {q - s, q, q + s}) {
+                const std::uint32_t k = pts.index(c);  // at most the point count
+                __builtin_prefetch(label.data() + k);
+                __builtin_prefetch(flag + k);
+            }
+        }
         const Label li = label[i];
         std::uint32_t nb[8];
         pts.ring(p, i, nb);
