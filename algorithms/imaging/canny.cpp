@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdlib>
 #include <cstring>
-#include <new>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -14,6 +12,7 @@
 #include "algorithms/imaging/edge_linking.h"
 #include "algorithms/imaging/gradient_rows.h"
 #include "algorithms/imaging/point_rings.h"
+#include "algorithms/imaging/raw_array.h"
 #include "algorithms/imaging/thinning.h"
 
 namespace erd {
@@ -157,44 +156,6 @@ inline std::size_t count_at_least(const float* v, std::size_t n, float low) {
     for (; k < n; ++k) c += v[k] >= low;
     return c;
 }
-
-// What a failed allocation does, as `new` does in this build: throw std::bad_alloc, or abort where
-// exceptions are off (the embedded build).
-[[noreturn]] inline void out_of_memory() {
-#if defined(__cpp_exceptions)
-    throw std::bad_alloc();
-#else
-    std::abort();
-#endif
-}
-
-// An array of trivially copyable T that resize() grows or shrinks keeping its first elements
-// (realloc): a shrink is made in place, so the pass's store becomes its kept arrays without a
-// second copy beside the first.
-template <class T>
-class RawArray {
-public:
-    RawArray() = default;
-    ~RawArray() { std::free(p_); }
-    RawArray(const RawArray&) = delete;
-    RawArray& operator=(const RawArray&) = delete;
-    T* data() { return p_; }
-    const T* data() const { return p_; }
-    T& operator[](std::size_t k) { return p_[k]; }
-    void resize(std::size_t n) {
-        if (n == 0) { reset(); return; }
-        void* q = std::realloc(p_, n * sizeof(T));
-        if (!q) out_of_memory();
-        p_ = static_cast<T*>(q);
-    }
-    void reset() {
-        std::free(p_);
-        p_ = nullptr;
-    }
-
-private:
-    T* p_ = nullptr;
-};
 
 // The streaming pass's guess of its final bound (EdgeDetector::Pass::sampled_bound): runs of
 // kSampleRun rows of the half-pixel grid, one every kSampleStride rows, are sampled (runs
@@ -462,7 +423,7 @@ struct EdgeDetector::Pass {
 
         // 6. The main points, in row-major order, thinned as a sparse set.
         const std::size_t main_count = sp.mains.size();
-        sp = StrongPoints();  // the labels and the search's queue go before the list is made
+        sp = StrongPoints();  // the search's queue goes before the list is made
         SortedPoints mains;
         mains.stride = pl.stride;
         mains.at.reserve(main_count);

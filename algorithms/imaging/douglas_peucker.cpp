@@ -56,7 +56,7 @@ void simplify_into(const LatticePoint* line, std::size_t n, double epsilon, Acce
         stack.push_back({first, at});
     }
     out->clear();
-    out->reserve(polyline_capacity(kept));
+    out->reserve(kept);
     for (std::size_t i = 0; i < n; ++i)
         if (keep[i]) out->push_back(line[i]);
 }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace erd {
@@ -11,15 +10,6 @@ namespace erd {
 using namespace edge_flags;
 
 namespace {
-
-// The plane offsets of the eight ring directions.
-struct Offsets {
-    std::ptrdiff_t d[8];
-    explicit Offsets(std::ptrdiff_t stride) {
-        for (int k = 0; k < 8; ++k) d[k] = ring_offset(k, stride);
-    }
-    std::uint32_t step(std::uint32_t p, int k) const { return std::uint32_t(std::ptrdiff_t(p) + d[k]); }
-};
 
 inline unsigned link_of(std::uint8_t f) { return unsigned(f) >> kLinkShift; }
 inline std::uint8_t with_link(std::uint8_t f, unsigned v) {
@@ -30,7 +20,6 @@ inline std::uint8_t with_link(std::uint8_t f, unsigned v) {
 
 std::size_t hysteresis(StrongPoints* sp) {
     const PointBits& pts = *sp->points;
-    const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
     std::vector<std::uint32_t> stack;  // cells
     for (const std::uint32_t s : sp->seeds) {
@@ -50,7 +39,7 @@ std::size_t hysteresis(StrongPoints* sp) {
                 const std::uint32_t j = nb[d];
                 if (j != kNoPoint && (flag[j] & (kCandidate | kMain)) == kCandidate) {
                     flag[j] |= kMain;
-                    stack.push_back(off.step(p, d));
+                    stack.push_back(pts.step(p, d));
                 }
             }
         }
@@ -69,7 +58,6 @@ std::size_t hysteresis(StrongPoints* sp) {
 template <class Label>
 std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     const PointBits& pts = *sp->points;
-    const Offsets off(pts.stride());
     std::uint8_t* flag = sp->flag;
     // The queue is the mains themselves, followed by the secondary points as they are reached
     // (cut off again after the search), so its points come by distance: the distance of the point
@@ -99,7 +87,7 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     const auto within = [&](std::uint32_t q, std::uint32_t k, unsigned most) {
         for (unsigned steps = 0; !(flag[k] & kMain); ++steps) {
             if (steps == most) return false;
-            q = off.step(q, int(link_of(flag[k])));
+            q = pts.step(q, int(link_of(flag[k])));
             k = pts.index(q);
         }
         return true;
@@ -155,19 +143,19 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 if (di < reach && (fj & (kSecondary | kMain)) == kSecondary) {
                     label[j] = li;
                     flag[j] = with_link(fj, unsigned((d + 4) & 7));
-                    queue.push_back(off.step(p, d));
+                    queue.push_back(pts.step(p, d));
                 }
             } else if (lj != li) {
                 // A labelled point is a source (distance 0, main) or was reached (at most `reach`
                 // away): the distances reach `limit` together only from di >= 2.
-                if ((fj & kMain) || di + reach <= limit || within(off.step(p, d), j, limit - di)) {
+                if ((fj & kMain) || di + reach <= limit || within(pts.step(p, d), j, limit - di)) {
                     // The same pair as the last meeting: a later one of its key, which the
                     // first found outranks (most meetings repeat the last along a boundary).
                     const std::uint64_t pair = li < lj ? (std::uint64_t(li) << 32) | lj : (std::uint64_t(lj) << 32) | li;
                     if (pair == last_pair) continue;
                     last_pair = pair;
-                    if (li < lj) meetings.push_back({p, off.step(p, d)});
-                    else meetings.push_back({off.step(p, d), p});
+                    if (li < lj) meetings.push_back({p, pts.step(p, d)});
+                    else meetings.push_back({pts.step(p, d), p});
                 }
             }
         }
@@ -191,7 +179,7 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 became_main(p, i);
                 sp->mains.push_back(p);
                 ++added;
-                p = off.step(p, back);
+                p = pts.step(p, back);
                 i = pts.index(p);
             }
         }
@@ -227,7 +215,7 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 if (sp->mag[j] > bg && sp->mag[j] >= tl) { bg = sp->mag[j]; best = d; }
             }
             if (best < 0) break;
-            cur = Step{off.step(cur.p, best), nb[best]};
+            cur = Step{pts.step(cur.p, best), nb[best]};
             path.push_back(cur);
         }
         if (!joined || path.empty()) continue;

@@ -15,14 +15,6 @@ namespace erd {
 
 constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
 
-// Directions of a ring, d = 0..7: E, SE, S, SW, W, NW, N, NE (x right, y down). The plane index
-// offset of direction d in a plane `stride` cells wide.
-inline std::ptrdiff_t ring_offset(int d, std::ptrdiff_t stride) {
-    const std::ptrdiff_t dy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-    const std::ptrdiff_t dx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-    return dy[d] * stride + dx[d];
-}
-
 // A set of plane cells as one bit per cell and the number of set cells before every 64: a point's
 // list position (its rank) is a count of bits, so arrays indexed by position need no list of
 // positions beside them. 1/8 + 1/16 byte per cell, however many points there are. Cells are plane
@@ -31,7 +23,7 @@ class PointBits {
 public:
     // From the plane indices at[0..n), strictly increasing.
     void build(const std::uint32_t* at, std::size_t n, std::ptrdiff_t stride) {
-        stride_ = stride;
+        set_stride(stride);
         size_ = n;
         const std::size_t cells = n ? std::size_t(at[n - 1]) + std::size_t(stride) + 2 : 0;
         const std::size_t words = cells / 64 + 2;  // one spare word: bits3 reads the next one
@@ -43,7 +35,7 @@ public:
     // From a bit plane of the n points (bit q & 63 of word q >> 6 for cell q) covering the row
     // below the last point's and one spare word.
     void adopt(std::vector<std::uint64_t>&& bits, std::ptrdiff_t stride, std::size_t n) {
-        stride_ = stride;
+        set_stride(stride);
         size_ = n;
         bits_ = std::move(bits);
         link();
@@ -55,6 +47,9 @@ public:
     // The list position of the point at cell p (p must be in the set).
     std::uint32_t index(std::size_t p) const { return rank(p); }
 
+    // The cell next to cell p in ring direction d (E, SE, S, SW, W, NW, N, NE: x right, y down).
+    std::uint32_t step(std::uint32_t p, int d) const { return std::uint32_t(std::ptrdiff_t(p) + offset_[d]); }
+
     // Calls fn(k, p) for every point, k = 0, 1, ... in increasing cell p.
     template <class Fn>
     void for_each(Fn fn) const {
@@ -63,7 +58,7 @@ public:
             for (std::uint64_t b = bits_[w]; b; b &= b - 1) fn(k++, std::uint32_t(w * 64 + lowest_bit(b)));
     }
 
-    // The directions (bit d for direction d, ring_offset order) in which the cell p has a point.
+    // The directions (bit d for direction d, step() order) in which the cell p has a point.
     unsigned mask(std::size_t p) const {
         const std::size_t s = std::size_t(stride_);
         const unsigned mid = bits3(p - 1), down = bits3(p + s - 1), up = bits3(p - s - 1);
@@ -82,7 +77,6 @@ public:
         row(p + s - 1, &nb[3], &nb[2], &nb[1]);
         row(p - s - 1, &nb[5], &nb[6], &nb[7]);
     }
-    void ring(std::size_t p, std::uint32_t nb[8]) const { ring(p, rank(p), nb); }
 
     // The list position of the point in direction d of point i at cell p (bit d of mask(p)).
     std::uint32_t neighbour(std::size_t p, std::uint32_t i, int d) const {
@@ -103,6 +97,12 @@ public:
     }
 
 private:
+    void set_stride(std::ptrdiff_t stride) {
+        stride_ = stride;
+        const std::ptrdiff_t dy[8] = {0, 1, 1, 1, 0, -1, -1, -1}, dx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+        for (int d = 0; d < 8; ++d) offset_[d] = dy[d] * stride + dx[d];
+    }
+
     void link() {
         rank_.resize(bits_.size());
         std::uint32_t before = 0;
@@ -149,6 +149,7 @@ private:
     std::vector<std::uint64_t> bits_;  // bit q: a point at plane index q
     std::vector<std::uint32_t> rank_;  // points before cell 64 w
     std::ptrdiff_t stride_ = 0;
+    std::ptrdiff_t offset_[8] = {};  // of step()
     std::size_t size_ = 0;
 };
 

@@ -17,16 +17,6 @@ namespace erd {
 
 using Polyline = std::vector<LatticePoint>;
 
-// The capacity a Polyline of n points gets (the power of two at or above n, as push_back from empty
-// gives): step 1 makes and frees hundreds of thousands of short polylines per detection, and
-// blocks of a few sizes are reused across the parameter loop's detections (exact sizes raised
-// peak RSS by 8 MB on a noisy 1024^2 image).
-inline std::size_t polyline_capacity(std::size_t n) {
-    std::size_t c = 1;
-    while (c < n) c *= 2;
-    return c;
-}
-
 // Polylines in one array of plane cells (cell (Y + 1) * stride + X + 1 for point (X, Y), as in
 // SortedPoints): noise traces millions of short lines, and a vector of LatticePoints each would
 // cost a heap block and a header a line and 8 bytes a point. Line k is cells k_0 .. k_1 - 1 with
@@ -52,6 +42,11 @@ public:
     template <class Fn>
     void for_each_point(Fn fn) const {
         for (const std::uint32_t c : cells_) fn(point_at(c));
+    }
+    // The same points as their cells (one cell per point: distinct cells are distinct points).
+    template <class Fn>
+    void for_each_cell(Fn fn) const {
+        for (const std::uint32_t c : cells_) fn(c);
     }
     std::vector<Polyline> to_vector() const {
         std::vector<Polyline> out(size());

@@ -113,33 +113,26 @@ std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y))
 
 std::size_t distinct_points(const PolylineList& polylines) {
     const std::size_t total = polylines.points();
-    std::int64_t max_x = -1, max_y = -1;
-    bool in_grid = true;  // all coordinates >= 0: a bit plane can count them
-    polylines.for_each_point([&](LatticePoint p) {
-        in_grid = in_grid && p.x >= 0 && p.y >= 0;
-        max_x = std::max<std::int64_t>(max_x, p.x);
-        max_y = std::max<std::int64_t>(max_y, p.y);
-    });
     if (total == 0) return 0;
-    // Linear: one bit per grid point when that plane is no larger than the sorted keys would be
-    // (the parameter loop counts after every detection; sorting was a tenth of step 1 on noise).
-    const std::uint64_t cols = std::uint64_t(max_x) + 1, cells = cols * (std::uint64_t(max_y) + 1);
-    if (in_grid && cells / 64 <= total) {
-        std::vector<std::uint64_t> bits(std::size_t(cells / 64 + 1), 0);
+    std::uint32_t last = 0;  // the largest cell
+    polylines.for_each_cell([&](std::uint32_t c) { last = std::max(last, c); });
+    // Linear: one bit per cell when that plane is no larger than the sorted cells would be (the
+    // parameter loop counts after every detection; sorting was a tenth of step 1 on noise).
+    if (std::size_t(last) / 64 <= total) {
+        std::vector<std::uint64_t> bits(std::size_t(last) / 64 + 1, 0);
         std::size_t n = 0;
-        polylines.for_each_point([&](LatticePoint p) {
-            const std::uint64_t q = std::uint64_t(p.y) * cols + std::uint64_t(p.x);
-            const std::uint64_t bit = std::uint64_t(1) << (q & 63u);
-            n += (bits[q >> 6] & bit) == 0;
-            bits[q >> 6] |= bit;
+        polylines.for_each_cell([&](std::uint32_t c) {
+            const std::uint64_t bit = std::uint64_t(1) << (c & 63u);
+            n += (bits[c >> 6] & bit) == 0;
+            bits[c >> 6] |= bit;
         });
         return n;
     }
-    std::vector<std::uint64_t> keys;
-    keys.reserve(total);
-    polylines.for_each_point([&](LatticePoint p) { keys.push_back(key_of(p)); });
-    std::sort(keys.begin(), keys.end());
-    return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+    std::vector<std::uint32_t> cells;
+    cells.reserve(total);
+    polylines.for_each_cell([&](std::uint32_t c) { cells.push_back(c); });
+    std::sort(cells.begin(), cells.end());
+    return std::size_t(std::unique(cells.begin(), cells.end()) - cells.begin());
 }
 
 namespace {
