@@ -28,8 +28,14 @@ struct FakeCounter : ConstraintPointCounter {
         return std::size_t(std::lround(fn(beta, l, eps)));
     }
     std::vector<double> prepared;
+    std::vector<double> narrowed;  // and how many detections had run then
+    std::vector<std::size_t> narrowed_after;
     int asides = 0;
     void prepare(double b, double) override { prepared.push_back(b); }
+    void narrow(double b, double) override {
+        narrowed.push_back(b);
+        narrowed_after.push_back(betas.size());
+    }
     void set_aside() override { ++asides; }
 };
 
@@ -91,6 +97,9 @@ TEST_CASE("too many constrained points: beta shrinks by 0.75 and l doubles", "[e
     // 20000 -> 7500 -> 2812.5 (< 3500 but eps already... eps is 2 -> set 1, recount same) -> stop
     REQUIRE(p.loop_iterations == 3);
     CHECK(p.beta == Approx(0.028 * 0.75 * 0.75));
+    // The loop is announced once, at its first (widest) beta, before its first detection.
+    CHECK(c.narrowed == std::vector<double>{0.028});
+    CHECK(c.narrowed_after == std::vector<std::size_t>{1});  // after the simple test's detection
     CHECK(p.l == 20);
     CHECK(p.eps == 1.0);  // the last count fell below 0.35N, so eps was reset to 1
 }
@@ -168,11 +177,14 @@ TEST_CASE("the simple test's shortcut: below the threshold the test runs, the fi
     CHECK(p.simple_test_points == 5000);
     CHECK(c.betas == std::vector<double>{0.028, 0.055, 0.028});
     CHECK(c.asides == 1);
+    CHECK(c.narrowed == std::vector<double>{0.028});  // the test's wider pass is cut after it
+    CHECK(c.narrowed_after == std::vector<std::size_t>{2});
     // A simple image: the loop then starts at 0.03.
     FakeCounter s([](double, int, double) { return 3000.0; });
     ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, s);
     CHECK(q.simple);
     CHECK(s.betas == std::vector<double>{0.028, 0.055, 0.03});
+    CHECK(s.narrowed == std::vector<double>{0.03});
 }
 
 TEST_CASE("the simple test's shortcut: at 2.5% and above the loop starts at or above 0.055, no shortcut", "[erd]") {

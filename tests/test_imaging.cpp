@@ -11,8 +11,10 @@
 
 #include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/canny.h"
+#include "algorithms/imaging/cell_list.h"
 #include "algorithms/imaging/douglas_peucker.h"
 #include "algorithms/imaging/filters.h"
+#include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/polylines.h"
 #include "algorithms/imaging/thinning.h"
 #include "tests/test_grid_util.h"
@@ -311,6 +313,121 @@ TEST_CASE("EdgeDetector reuses its gradient pass and gives what detect_edges giv
     bad.beta = 0;
     Grid<std::uint8_t> e;
     CHECK(detector.detect(bad, &e).code == Code::input);
+}
+
+TEST_CASE("a narrowed pass keeps what the detections it covers need", "[imaging]") {
+    Image im(64, 52, 255);
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            double v = 60 + 1.2 * y + (std::hypot(x - 30.5, y - 24.2) < 15 ? 70 : 0);
+            v += double((std::uint32_t(x) * 2654435761u ^ std::uint32_t(y) * 40503u) % 29u);
+            im.at(x, y) = std::uint16_t(std::min(255.0, v));
+        }
+    EdgeDetector detector(im);
+    CannyParams widest;
+    widest.beta = 0.055;
+    widest.r = 0.4;
+    REQUIRE(detector.prepare(widest).ok());
+    const std::size_t wide = detector.pass_points();
+    CannyParams cut = widest;
+    cut.beta = 0.028;
+    detector.narrow(cut);
+    const std::size_t narrow = detector.pass_points();
+    CHECK(narrow > 0);
+    CHECK(narrow < wide * 3 / 4);
+    // Covered detections (beta at most 0.028, r 0.4) match fresh ones without a new pass; the
+    // others (a larger beta, a lower r) make one, and match too.
+    const double runs[][2] = {{0.028, 0.4}, {0.02, 0.4}, {0.011, 0.4}, {0.055, 0.4}, {0.028, 0.2}};
+    for (const auto& run : runs) {
+        CannyParams p;
+        p.beta = run[0];
+        p.r = run[1];
+        Grid<std::uint8_t> a, b;
+        CannyStats sa, sb;
+        REQUIRE(detector.detect(p, &a, &sa).ok());
+        REQUIRE(detect_edges(im, p, &b, &sb).ok());
+        CHECK(a.data == b.data);
+        CHECK(sa.tau_high == sb.tau_high);
+        CHECK(sa.added_points == sb.added_points);
+        CHECK(sa.edge_points == sb.edge_points);
+        CHECK(sa.edge_points > 0);
+        if (run[0] <= 0.028 && run[1] == 0.4) CHECK(detector.pass_points() == narrow);  // served by it
+        else CHECK(detector.pass_points() > narrow);  // a new, wider pass
+    }
+    // Narrowing to a beta the pass does not cover changes nothing.
+    CannyParams wider = widest;
+    wider.beta = 0.5;
+    const std::size_t before = detector.pass_points();
+    detector.narrow(wider);
+    CHECK(detector.pass_points() == before);
+}
+
+TEST_CASE("PointBits::remove_unless keeps the other points and their ranks", "[imaging]") {
+    std::vector<std::uint32_t> at;
+    for (std::uint32_t c = 11; c < 4000; c += 1 + (c * 7u) % 5u) at.push_back(c);
+    PointBits bits;
+    bits.build(at.data(), at.size(), 100);
+    std::vector<std::uint32_t> left;
+    bits.remove_unless([&](std::uint32_t k, std::uint32_t p) {
+        CHECK(p == at[k]);
+        if (k % 3 == 1) return false;
+        left.push_back(p);
+        return true;
+    });
+    REQUIRE(bits.size() == left.size());
+    for (std::uint32_t k = 0; k < left.size(); ++k) CHECK(bits.index(left[k]) == k);
+    std::vector<std::uint32_t> seen;
+    bits.for_each([&](std::uint32_t k, std::uint32_t p) {
+        CHECK(k == seen.size());
+        seen.push_back(p);
+    });
+    CHECK(seen == left);
+}
+
+TEST_CASE("CellList gives back the cells pushed, near or far, and truncates", "[imaging]") {
+    for (const std::ptrdiff_t stride : {std::ptrdiff_t(3), std::ptrdiff_t(24), std::ptrdiff_t(2051), std::ptrdiff_t(65538)}) {
+        CellList list(stride);
+        std::vector<std::uint32_t> cells;
+        std::uint32_t c = 5, state = 12345;
+        for (int k = 0; k < 5000; ++k) {
+            state = state * 1103515245u + 12345u;
+            const int kind = int(state >> 28) % 4;
+            const int dx = int((state >> 8) % 31u) - 15, dy = int((state >> 16) % 13u) - 6;
+            if (kind == 0) c = state;  // anywhere, the largest cells too
+            else c = std::uint32_t(std::int64_t(c) + std::int64_t(dy) * stride + dx);
+            cells.push_back(c);
+            list.push_back(c);
+        }
+        cells.push_back(0xFFFFFFFFu);
+        list.push_back(0xFFFFFFFFu);
+        cells.push_back(0);
+        list.push_back(0);
+        REQUIRE(list.size() == cells.size());
+        CellList::Cursor cur, half;
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+            if (k == cells.size() / 2) half = cur;
+            REQUIRE(list.next(&cur) == cells[k]);
+        }
+        CHECK(cur.index == list.end().index);
+        CHECK(cur.byte == list.end().byte);
+        // Steps within 5 rows and 11 columns take one byte each (rows wider than the window).
+        if (stride >= 24) {
+            CellList near(stride);
+            std::uint32_t q = 1u << 31;
+            near.push_back(q);  // from 0: far
+            for (int dy = -5; dy <= 5; ++dy)
+                for (int dx = -11; dx <= 11; ++dx) near.push_back(q = std::uint32_t(std::int64_t(q) + dy * stride + dx));
+            CHECK(near.end().byte == 5 + 11 * 23);
+        }
+        list.truncate(half);
+        REQUIRE(list.size() == cells.size() / 2);
+        list.push_back(7);
+        list.push_back(7 + std::uint32_t(stride) + 1);
+        CellList::Cursor again;
+        for (std::size_t k = 0; k < cells.size() / 2; ++k) REQUIRE(list.next(&again) == cells[k]);
+        CHECK(list.next(&again) == 7);
+        CHECK(list.next(&again) == 7 + std::uint32_t(stride) + 1);
+    }
 }
 
 namespace {

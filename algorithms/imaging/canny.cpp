@@ -259,6 +259,29 @@ struct EdgeDetector::Pass {
         n_kept = n;
     }
 
+    // Keeps only what detections with k_high at most k and ratio r can use, as if the pass had
+    // been made for the largest of them: the bins below its k-th largest's go from the counts,
+    // the points below r times that bin's floor from the store.
+    void narrow(std::size_t k, double r) {
+        if (at_or_above_floor < k) return;  // no such detection is covered
+        while (at_or_above_floor - hist[floor_bin] >= k) at_or_above_floor -= hist[floor_bin++];
+        const float bound = float(r * double(bin_floor(floor_bin)));
+        if (!(bound > low)) return;
+        low = bound;
+        std::size_t n = 0;
+        float* g = mag.data();
+        std::uint8_t* f = flag.data();
+        kept.remove_unless([&](std::uint32_t i, std::uint32_t) {
+            if (!(g[i] >= bound)) return false;
+            g[n] = g[i];
+            f[n] = f[i];
+            ++n;
+            return true;
+        });
+        mag.resize(n);
+        flag.resize(n);
+    }
+
     // One streaming pass from the bound `guess` (0: none); false when the final bound is below
     // the guess (the result is then incomplete). On success `low` is the final bound.
     template <class Sample>
@@ -397,8 +420,7 @@ struct EdgeDetector::Pass {
 
         // The kept points with g >= tau_low are the strong points, with the pass's flags this
         // detection uses; the others have none. Every point loses the last detection's flags.
-        StrongPoints sp;
-        sp.points = &kept;
+        StrongPoints sp(kept);
         sp.mag = g;
         sp.flag = flag.data();
         const std::uint8_t used = params.modified ? std::uint8_t(kCandidate | kSecondary) : std::uint8_t(kCandidate);
@@ -422,8 +444,8 @@ struct EdgeDetector::Pass {
         const std::size_t added = join ? join_components(&sp, params.max_link, tl) : 0;
 
         // 6. The main points, in row-major order, thinned as a sparse set.
-        const std::size_t main_count = sp.mains.size();
-        sp = StrongPoints();  // the search's queue goes before the list is made
+        const std::size_t main_count = main_points + added;
+        sp = StrongPoints(kept);  // the search's queue goes before the list is made
         SortedPoints mains;
         mains.stride = pl.stride;
         mains.at.reserve(main_count);
@@ -431,15 +453,18 @@ struct EdgeDetector::Pass {
             if (f[k] & kMain) mains.at.push_back(p);
         });
         if (release) clear();
-        std::vector<std::uint8_t> alive(mains.size(), 1);
         if (params.thin) {
+            std::vector<std::uint8_t> alive(mains.size(), 1);
             mains.link_rows();
             thin_points(mains, &alive);
+            std::size_t kept_n = 0;  // the survivors, in place: not a second list beside the first
+            for (std::size_t k = 0; k < mains.size(); ++k)
+                if (alive[k]) mains.at[kept_n++] = mains.at[k];
+            mains.at.resize(kept_n);
         }
         *edges = SortedPoints();
         edges->stride = pl.stride;
-        for (std::size_t k = 0; k < mains.size(); ++k)
-            if (alive[k]) edges->at.push_back(mains.at[k]);
+        edges->at = std::move(mains.at);
         const std::size_t edge_points = edges->size();
         if (stats) {
             stats->tau_high = tau_high;
@@ -513,6 +538,13 @@ Status EdgeDetector::prepare(const CannyParams& widest) {
     if (st && !pass_) make_pass(widest);
     return st;
 }
+
+void EdgeDetector::narrow(const CannyParams& widest) {
+    if (pass_ && widest.smoothing_order == pass_->smoothing_order && widest.border == pass_->border)
+        pass_->narrow(Pass::k_of(widest.beta, std::size_t(pass_->pl.w) * std::size_t(pass_->pl.h)), widest.r);
+}
+
+std::size_t EdgeDetector::pass_points() const { return pass_ ? pass_->kept.size() : 0; }
 
 void EdgeDetector::make_pass(const CannyParams& params) {
     pass_.reset();  // the old pass goes before the new one is made

@@ -95,6 +95,10 @@ public:
     // detections it covers (e.g. a smaller beta with the same r) then reuse it, whichever of them
     // comes first.
     Status prepare(const CannyParams& widest);
+    // The detections to come are covered by `widest` (a beta at most its, the same r and filter):
+    // the kept pass drops what they cannot use (the same results, in less memory).
+    void narrow(const CannyParams& widest);
+    std::size_t pass_points() const;  // the points the kept pass holds (0: none kept)
     void release();  // frees the kept pass
 
     struct Pass;  // defined in canny.cpp

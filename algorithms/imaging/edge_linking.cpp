@@ -63,13 +63,14 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     // (cut off again after the search), so its points come by distance: the distance of the point
     // taken is the level of the queue it is in, and no point keeps its own. The way back from a
     // reached point is the link field of its flags (edge_flags): a direction instead of an index.
-    std::vector<std::uint32_t>& queue = sp->mains;
+    CellList& queue = sp->mains;
     const std::size_t sources = queue.size();
     // The main component of each point, 1, 2, ... in the order grown; 0 = unreached.
     std::vector<Label> label(sp->size(), 0);
+    CellList::Cursor at;
     for (std::size_t c = 0; c < sp->grown.size(); ++c) {
         const std::size_t end = c + 1 < sp->grown.size() ? sp->grown[c + 1] : sources;
-        for (std::size_t k = sp->grown[c]; k < end; ++k) label[pts.index(queue[k])] = Label(c + 1);
+        while (at.index < end) label[pts.index(queue.next(&at))] = Label(c + 1);
     }
     // p has the smaller label; the pair's key is the two labels (read back when sorting).
     struct Meeting { std::uint32_t p, q; };  // cells
@@ -106,9 +107,13 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 flag[j] = with_link(flag[j], c < 2 ? c + 1 : 2);
             }
     };
-    // The labels and flags around the point kAhead places ahead in the queue are fetched while this
-    // one is taken: on noise they are read all over the arrays (docs/DECISIONS.md "Memory").
-    constexpr std::size_t kAhead = 8;
+    // The queue is decoded once, kAhead places ahead of the point taken, into a window of the
+    // cells decoded last; the labels and flags around each are fetched as it is decoded: on noise
+    // they are read all over the arrays (docs/DECISIONS.md "Memory").
+    constexpr std::size_t kAhead = 8, kWindow = 16;
+    std::uint32_t window[kWindow];
+    const CellList::Cursor end_of_sources = queue.end();
+    CellList::Cursor read;
     std::size_t level_end = sources;
     unsigned di = 0;  // the distance of the points taken
     for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -116,16 +121,18 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
             ++di;
             level_end = queue.size();
         }
-        const std::uint32_t p = queue[head];
-        const std::uint32_t i = pts.index(p);
-        if (head + kAhead < queue.size()) {
-            const std::size_t q = queue[head + kAhead], s = std::size_t(pts.stride());
+        for (; read.index <= head + kAhead && read.index < queue.size();) {
+            const std::size_t q = queue.next(&read), s = std::size_t(pts.stride());
+            window[(read.index - 1) % kWindow] = std::uint32_t(q);
             for (const std::size_t c : {q - s, q, q + s}) {
                 const std::uint32_t k = pts.index(c);  // at most the point count
                 __builtin_prefetch(label.data() + k);
                 __builtin_prefetch(flag + k);
             }
         }
+        const bool source = head < sources;
+        const std::uint32_t p = window[head % kWindow];
+        const std::uint32_t i = pts.index(p);
         const Label li = label[i];
         std::uint32_t nb[8];
         pts.ring(p, i, nb);
@@ -160,9 +167,9 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
             }
         }
         // After the ring: the link field was set above only at secondary points, never at a source.
-        if (head < sources) flag[i] = with_link(flag[i], std::min(mains_around, 2u));
+        if (source) flag[i] = with_link(flag[i], std::min(mains_around, 2u));
     }
-    queue.resize(sources);
+    queue.truncate(end_of_sources);
     // One link per pair of components: the first found, i.e. (nearly) the shortest.
     std::size_t added = 0;
     auto key = [&](const Meeting& m) {
@@ -177,7 +184,6 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
                 const int back = int(link_of(flag[i]));
                 flag[i] |= kMain;
                 became_main(p, i);
-                sp->mains.push_back(p);
                 ++added;
                 p = pts.step(p, back);
                 i = pts.index(p);
@@ -193,8 +199,8 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
     // g >= tau_low and only rises.
     struct Step { std::uint32_t p, i; };
     std::vector<Step> path;
-    for (std::size_t s = 0; s < sources; ++s) {
-        const std::uint32_t end = sp->mains[s];  // the climbs below append to mains
+    for (CellList::Cursor s; s.index < sources;) {
+        const std::uint32_t end = queue.next(&s);
         const std::uint32_t ei = pts.index(end);
         if (link_of(flag[ei]) != 1) continue;
         std::uint32_t nb[8];
@@ -223,7 +229,6 @@ std::size_t join_with(StrongPoints* sp, int max_link, float tl) {
             flag[st.i] |= kMain;
             became_main(st.p, st.i);
             label[st.i] = own;
-            sp->mains.push_back(st.p);
             ++added;
         }
     }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithms/imaging/cell_list.h"
 #include "algorithms/imaging/point_rings.h"
 
 namespace erd {
@@ -31,11 +32,12 @@ constexpr std::uint8_t kLinkField = std::uint8_t(7u << kLinkShift);
 // detection flags, which makes it absent for both steps. Arrays are indexed by a point's list
 // position (PointBits::index); lists of points hold their plane cells.
 struct StrongPoints {
-    const PointBits* points = nullptr;  // the kept points' cells and rings
+    explicit StrongPoints(const PointBits& kept) : points(&kept), mains(kept.stride()) {}
+    const PointBits* points;            // the kept points' cells and rings
     const float* mag = nullptr;         // their g
     std::uint8_t* flag = nullptr;       // their flag bytes (edge_flags)
     std::vector<std::uint32_t> seeds;   // cells of the candidates with g >= tau_high, row-major
-    std::vector<std::uint32_t> mains;   // cells of every point marked kMain, in the order marked
+    CellList mains;                     // cells of the points step 4 marks kMain, in the order marked
     std::vector<std::uint32_t> grown;   // where each component of step 4 starts in `mains`
     std::size_t size() const { return points->size(); }
 };

@@ -66,9 +66,11 @@ Status EdgePolylines::detect(const CannyParams& canny) {
     SortedPoints edges;
     Status st = detector_.detect(canny, &edges, &stats_);  // reuses the gradient pass while it can
     at(0.6);
-    edges.link_rows();
+    PointBits bits;  // tracing needs the plane alone: the list goes before the lines are made
+    bits.build(edges.at.data(), edges.size(), edges.stride);
+    edges.clear();
     at(0.75);
-    traced_ = trace_polylines(edges);
+    traced_ = trace_polylines(bits);
     at(1.0);
     return st;
 }

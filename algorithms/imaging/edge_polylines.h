@@ -77,6 +77,10 @@ public:
     const PolylineList& traced() const { return traced_; }
     const PolylineList& kept() const { return kept_; }          // of the last simplification
     Grid<std::uint8_t> edge_map() const;                        // (2W-1) x (2H-1), 1 = edge
+    // The detections to come are covered by `widest` (EdgeDetector::narrow; nothing for hard edges).
+    void narrow(const CannyParams& widest) {
+        if (!hard_) detector_.narrow(widest);
+    }
     void release_detector() { detector_.release(); }
     // Incremented by every simplification actually run, so callers can cache what they derive.
     std::size_t generation() const { return generation_; }

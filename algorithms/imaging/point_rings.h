@@ -58,6 +58,20 @@ public:
             for (std::uint64_t b = bits_[w]; b; b &= b - 1) fn(k++, std::uint32_t(w * 64 + lowest_bit(b)));
     }
 
+    // Removes the points for which keep(k, p) is false, called as for_each calls fn.
+    template <class Keep>
+    void remove_unless(Keep keep) {
+        std::uint32_t k = 0;
+        std::size_t n = 0;
+        for (std::size_t w = 0; w < bits_.size(); ++w)
+            for (std::uint64_t b = bits_[w]; b; b &= b - 1) {
+                if (keep(k++, std::uint32_t(w * 64 + lowest_bit(b)))) ++n;
+                else bits_[w] &= ~(b & (0 - b));
+            }
+        size_ = n;
+        link();
+    }
+
     // The directions (bit d for direction d, step() order) in which the cell p has a point.
     unsigned mask(std::size_t p) const {
         const std::size_t s = std::size_t(stride_);

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/set_points.h"
@@ -46,67 +47,71 @@ PolylineList trace_polylines(const Grid<std::uint8_t>& edges) {
     if (w <= 0 || h <= 0) return {};
     // The set points in row-major order (found by skipping zero bytes eight at a time) as
     // indices of a plane with a one-point frame that is never allocated: per-point arrays only.
-    SortedPoints pts;
-    pts.stride = w + 2;
+    const std::size_t stride = std::size_t(w) + 2;
+    std::vector<std::uint32_t> at;
     for_each_set(edges.data.data(), edges.data.size(), [&](std::size_t k) {
-        pts.at.push_back(std::uint32_t((k / std::size_t(w) + 1) * std::size_t(pts.stride) + k % std::size_t(w) + 1));
+        at.push_back(std::uint32_t((k / std::size_t(w) + 1) * stride + k % std::size_t(w) + 1));
     });
-    pts.link_rows();
+    PointBits pts;
+    pts.build(at.data(), at.size(), std::ptrdiff_t(stride));
     return trace_polylines(pts);
 }
 
-PolylineList trace_polylines(const SortedPoints& pts) {
-    PolylineList out(pts.stride);
+PolylineList trace_polylines(const PointBits& pts) {
+    PolylineList out(pts.stride());
     const std::size_t n = pts.size();
     // Links: 8-neighbour pairs, except a diagonal pair that is also joined through a common
     // 4-neighbour (the corner of a staircase or of a T): that link would make a triangle, and a
     // cluster of mutual "junctions" out of one junction. Directions E, SE, S, SW, W, NW, N, NE.
-    // A point's links and degree depend on its ring alone (one table lookup per point).
-    std::vector<std::uint8_t> links(n, 0), degree(n, 0), used(n, 0);  // used: one bit per direction
+    // A point's links depend on its ring alone (one table lookup per point), and its degree on
+    // its links (a link mask is its own ring's links).
+    std::vector<std::uint8_t> links(n), used(n, 0);  // used: one bit per direction
     std::size_t link_ends = 0, node_ends = 0, isolated = 0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const unsigned ring = pts.mask(i);
-        links[i] = kRingTables.links[ring];
-        degree[i] = kRingTables.degree[ring];
-        link_ends += degree[i];
-        if (degree[i] != 2) node_ends += degree[i];
-        isolated += degree[i] == 0;
-    }
+    pts.for_each([&](std::uint32_t i, std::uint32_t p) {
+        links[i] = kRingTables.links[pts.mask(p)];
+        const std::size_t degree = kRingTables.degree[links[i]];
+        link_ends += degree;
+        if (degree != 2) node_ends += degree;
+        isolated += degree == 0;
+    });
+    const auto degree = [&](std::uint32_t i) { return kRingTables.degree[links[i]]; };
     // Every link is used once and every line but the closed curves of degree-2 points runs from
     // a node to a node: room for all of those lines up front, and for a closed curve per 32 points
     // (noise: 14 in 92K lines), so the store is not copied as it grows.
     const std::size_t lines = node_ends / 2 + isolated + n / 32 + 1;
     out.reserve(link_ends / 2 + lines, lines);
     auto free_link = [&](std::uint32_t i) { return int(kRingTables.lowest[links[i] & ~used[i] & 0xFFu]); };
-    // Follows links from `start` through points of degree 2 until a node (degree != 2), a point with
-    // no free link left, or the start again.
-    auto run = [&](std::uint32_t start, int d) {
-        out.push(pts.at[start]);
+    // Follows links from point `start` at cell p through points of degree 2 until a node
+    // (degree != 2), a point with no free link left, or the start again.
+    auto run = [&](std::uint32_t start, std::uint32_t p, int d) {
+        out.push(p);
         std::uint32_t cur = start;
         for (;;) {
             used[cur] |= std::uint8_t(1u << d);
-            cur = pts.neighbour(cur, d);
+            cur = pts.neighbour(p, cur, d);
+            p = pts.step(p, d);
             used[cur] |= std::uint8_t(1u << ((d + 4) & 7));
-            out.push(pts.at[cur]);
-            if (cur == start || degree[cur] != 2) break;
+            out.push(p);
+            if (cur == start || degree(cur) != 2) break;
             d = free_link(cur);
             if (d < 0) break;
         }
         out.end_line();
     };
 
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (degree[i] == 2) continue;
-        if (degree[i] == 0) {
-            out.push(pts.at[i]);
+    pts.for_each([&](std::uint32_t i, std::uint32_t p) {
+        if (degree(i) == 2) return;
+        if (degree(i) == 0) {
+            out.push(p);
             out.end_line();
-            continue;
+            return;
         }
-        for (int d; (d = free_link(i)) >= 0;) run(i, d);
-    }
+        for (int d; (d = free_link(i)) >= 0;) run(i, p, d);
+    });
     // What is left are closed curves made of degree-2 points only.
-    for (std::uint32_t i = 0; i < n; ++i)
-        for (int d; (d = free_link(i)) >= 0;) run(i, d);
+    pts.for_each([&](std::uint32_t i, std::uint32_t p) {
+        for (int d; (d = free_link(i)) >= 0;) run(i, p, d);
+    });
     return out;
 }
 

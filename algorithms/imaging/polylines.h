@@ -92,7 +92,7 @@ private:
 // give one-point polylines. Deterministic: nodes in row-major order, links in a fixed order
 // (E, SE, S, SW, W, NW, N, NE), loops after all node runs. Each link is used by one polyline.
 PolylineList trace_polylines(const Grid<std::uint8_t>& edges);
-// The same for edge points as EdgeDetector::detect gives them, after pts.link_rows().
-PolylineList trace_polylines(const SortedPoints& pts);
+// The same for a set of points as a bit plane (EdgeDetector::detect's points: PointBits::build).
+PolylineList trace_polylines(const PointBits& pts);
 
 }  // namespace erd

@@ -68,6 +68,12 @@ public:
         Status st = chain_.prepare(cp);
         if (!st.ok() && status_.ok()) status_ = st;
     }
+    void narrow(double beta, double r) override {
+        CannyParams cp;
+        cp.beta = beta;
+        cp.r = r;
+        chain_.narrow(cp);
+    }
     void set_aside() override { chain_.set_aside(); }
 
     std::size_t count(int l, double eps) override {

@@ -76,6 +76,7 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
 
     const double low = 0.35 * double(n);
     const double high = 0.7 * double(n);
+    counter.narrow(p.beta, p.r);  // the loop only lowers beta: the simple test's wider pass is cut
     for (;;) {
         counter.detect(p.beta, p.r);
         ++p.loop_iterations;

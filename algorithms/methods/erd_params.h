@@ -26,8 +26,10 @@ public:
     // Steps 1.2-1.3 on the last detection: polylines, Douglas-Peucker with eps, drop short ones.
     virtual std::size_t count(int l, double eps) = 0;
     // Hints a counter may use: the widest detection still to come (make its shared work for
-    // that one first), and that the last detection will be wanted again after the next one.
+    // that one first, or cut what it holds to it), and that the last detection will be wanted
+    // again after the next one.
     virtual void prepare(double /*beta*/, double /*r*/) {}
+    virtual void narrow(double /*beta*/, double /*r*/) {}
     virtual void set_aside() {}
 };
 
