@@ -526,6 +526,8 @@ Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, Cann
     if (im_.width <= 0 || im_.height <= 0) return Status::bad_input("edge detection: empty image");
     Status st = check_params(params);
     if (!st) return st;
+    if (pass_ && narrowing_) pass_->narrow(Pass::k_of(narrow_.beta, std::size_t(pass_->pl.w) * std::size_t(pass_->pl.h)), narrow_.r);
+    narrowing_ = false;
     if (pass_ && pass_->track(params, false, edges, stats)) return Status::success();
     make_pass(params);
     pass_->track(params, false, edges, stats);
@@ -540,8 +542,8 @@ Status EdgeDetector::prepare(const CannyParams& widest) {
 }
 
 void EdgeDetector::narrow(const CannyParams& widest) {
-    if (pass_ && widest.smoothing_order == pass_->smoothing_order && widest.border == pass_->border)
-        pass_->narrow(Pass::k_of(widest.beta, std::size_t(pass_->pl.w) * std::size_t(pass_->pl.h)), widest.r);
+    narrowing_ = pass_ && widest.smoothing_order == pass_->smoothing_order && widest.border == pass_->border;
+    narrow_ = widest;
 }
 
 std::size_t EdgeDetector::pass_points() const { return pass_ ? pass_->kept.size() : 0; }
@@ -570,7 +572,10 @@ Grid<std::uint8_t> edge_map(const SortedPoints& points, int width, int height) {
     return map;
 }
 
-void EdgeDetector::release() { pass_.reset(); }
+void EdgeDetector::release() {
+    pass_.reset();
+    narrowing_ = false;
+}
 
 void canny_gradient(const Grid<double>& f, int smoothing_order, Border border, Grid<float>* gx, Grid<float>* gy) {
     std::vector<double> b = binomial_taps(smoothing_order);

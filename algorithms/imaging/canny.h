@@ -96,7 +96,8 @@ public:
     // comes first.
     Status prepare(const CannyParams& widest);
     // The detections to come are covered by `widest` (a beta at most its, the same r and filter):
-    // the kept pass drops what they cannot use (the same results, in less memory).
+    // the kept pass drops what they cannot use (the same results, in less memory), when the next
+    // detection runs (none may: the cut is not made for nothing).
     void narrow(const CannyParams& widest);
     std::size_t pass_points() const;  // the points the kept pass holds (0: none kept)
     void release();  // frees the kept pass
@@ -108,6 +109,8 @@ private:
     const Image& im_;
     ColourGradient colour_;
     std::unique_ptr<Pass> pass_;
+    bool narrowing_ = false;  // narrow() was called since the last detection
+    CannyParams narrow_;
 };
 
 // How many points the streaming pass of a detection with these parameters keeps (its strong
