@@ -71,14 +71,23 @@ def test_memory_stays_flat_over_1000_small_calls(lena, tmp_path):
     assert grown < 1 << 20, "RSS grew by %d bytes over 1000 calls" % grown
 
 
-def test_ctrl_c_interrupts_a_long_generate(images):
+@pytest.fixture
+def ctrl_c_raises():
+    # Python makes SIGINT raise KeyboardInterrupt only when it starts with SIGINT at its default;
+    # a run started with SIGINT ignored (`nohup cmd &` from a script: the shell ignores it for
+    # background jobs, and the ignore survives exec) keeps it ignored, and the signal below would
+    # just vanish. The test asks for Python's usual handler, and gives back what it found.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
+
+
+def test_ctrl_c_interrupts_a_long_generate(images, ctrl_c_raises):
     # Times are CPU seconds of the calling thread (the call runs on it), not the wall clock: on a
     # loaded machine the wall time of a call swings by more than the margin checked here. What is
     # checked is the delay from the signal to the raise; an attempt in which the watcher thread was
     # not scheduled before the call ended proves nothing and is run again. The lock keeps a signal
-    # from landing after the attempt is over. A signal sent and never raised was seen twice in CI
-    # runs under full load (never reproduced: docs/DECISIONS.md "Python"); one such attempt in the
-    # twenty is tolerated and run again, a second fails.
+    # from landing after the attempt is over.
     bull, _ = read_pgm(os.path.join(images, "bull.pgm"))
     clock = time.pthread_getcpuclockid(threading.get_ident())
     start = time.clock_gettime(clock)
@@ -86,7 +95,6 @@ def test_ctrl_c_interrupts_a_long_generate(images):
     full = time.clock_gettime(clock) - start
     before = rss_bytes()
     interrupted = 0
-    lost = []
     for _ in range(20):
         done = threading.Event()
         lock = threading.Lock()
@@ -120,9 +128,7 @@ def test_ctrl_c_interrupts_a_long_generate(images):
                 "raised %.3f CPU s after the signal, in a %.3f CPU s call" % (took - fired_at[0], full)
             interrupted += 1
         watcher.join()
-        if fired_at and not raised:
-            lost.append(fired_at[0])
-            assert len(lost) < 2, "signals came at %s CPU s and were not raised" % lost
+        assert raised or not fired_at, "the signal came at %.3f CPU s and was not raised" % fired_at[0]
         if interrupted == 3:
             break
     assert interrupted == 3, "only %d of 20 attempts were interrupted" % interrupted
