@@ -278,6 +278,29 @@ TEST_CASE("a T-junction keeps its junction with the modified Canny and loses it 
     CHECK(sp.added_points == 0);
 }
 
+namespace {
+
+// A detection by `detector` (reusing its pass when it can) against a fresh detect_edges: the same
+// map and statistics, and some edge points.
+void check_as_fresh(EdgeDetector* detector, const Image& im, double beta, double r) {
+    CannyParams p;
+    p.beta = beta;
+    p.r = r;
+    Grid<std::uint8_t> a, b;
+    CannyStats sa, sb;
+    REQUIRE(detector->detect(p, &a, &sa).ok());
+    REQUIRE(detect_edges(im, p, &b, &sb).ok());
+    CHECK(a.data == b.data);
+    CHECK(sa.tau_high == sb.tau_high);
+    CHECK(sa.above_high == sb.above_high);
+    CHECK(sa.main_points == sb.main_points);
+    CHECK(sa.added_points == sb.added_points);
+    CHECK(sa.edge_points == sb.edge_points);
+    CHECK(sa.edge_points > 0);
+}
+
+}  // namespace
+
 TEST_CASE("EdgeDetector reuses its gradient pass and gives what detect_edges gives", "[imaging]") {
     // Disks, a ramp and hashed noise, so that many points sit near every threshold.
     Image im(61, 47, 255);
@@ -292,22 +315,7 @@ TEST_CASE("EdgeDetector reuses its gradient pass and gives what detect_edges giv
     // Falling beta with r fixed (ERD's loop) reuses the pass; a lower r or a larger beta needs
     // thresholds below what the pass kept and makes a new one; both must match a fresh detection.
     const double runs[][2] = {{0.055, 0.4}, {0.028, 0.4}, {0.021, 0.4}, {0.028, 0.1}, {0.2, 0.4}, {0.02, 0.9}};
-    for (const auto& run : runs) {
-        CannyParams p;
-        p.beta = run[0];
-        p.r = run[1];
-        Grid<std::uint8_t> a, b;
-        CannyStats sa, sb;
-        REQUIRE(detector.detect(p, &a, &sa).ok());
-        REQUIRE(detect_edges(im, p, &b, &sb).ok());
-        CHECK(a.data == b.data);
-        CHECK(sa.tau_high == sb.tau_high);
-        CHECK(sa.above_high == sb.above_high);
-        CHECK(sa.main_points == sb.main_points);
-        CHECK(sa.added_points == sb.added_points);
-        CHECK(sa.edge_points == sb.edge_points);
-        CHECK(sa.edge_points > 0);
-    }
+    for (const auto& run : runs) check_as_fresh(&detector, im, run[0], run[1]);
     detector.release();
     CannyParams bad;
     bad.beta = 0;
@@ -338,18 +346,7 @@ TEST_CASE("a narrowed pass keeps what the detections it covers need", "[imaging]
     // others (a larger beta, a lower r) make one, and match too.
     const double runs[][2] = {{0.028, 0.4}, {0.02, 0.4}, {0.011, 0.4}, {0.055, 0.4}, {0.028, 0.2}};
     for (const auto& run : runs) {
-        CannyParams p;
-        p.beta = run[0];
-        p.r = run[1];
-        Grid<std::uint8_t> a, b;
-        CannyStats sa, sb;
-        REQUIRE(detector.detect(p, &a, &sa).ok());
-        REQUIRE(detect_edges(im, p, &b, &sb).ok());
-        CHECK(a.data == b.data);
-        CHECK(sa.tau_high == sb.tau_high);
-        CHECK(sa.added_points == sb.added_points);
-        CHECK(sa.edge_points == sb.edge_points);
-        CHECK(sa.edge_points > 0);
+        check_as_fresh(&detector, im, run[0], run[1]);
         if (narrow == 0) {
             narrow = detector.pass_points();
             CHECK(narrow > 0);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algorithms/imaging/edge_linking.h"
+#include "algorithms/imaging/float_bins.h"
 #include "algorithms/imaging/gradient_rows.h"
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/raw_array.h"
@@ -46,52 +47,6 @@ void step1_rows(int width, int W, int H, int y_begin, int y_end, const std::vect
         [&](int c, int Y, float* r) { half_pixel_row(width, Y, [&](int x, int y) { return im.at(x, y, c); }, r); },
         mag_row, emit);
 }
-
-// Monotone bins from the bit pattern of a non-negative float (sign, exponent and 6 mantissa bits:
-// 32768 bins, each 1/64 of an octave wide), so a histogram needs no prior pass for the maximum.
-// Narrow bins make the streaming pass's bound on tau_low tight (within 1.1%): on bull at beta
-// 0.055 it ends with 0.53M points kept for 0.52M strong ones.
-constexpr int kBinShift = 17;
-inline std::uint32_t float_bin(float v) {
-    std::uint32_t u;
-    std::memcpy(&u, &v, sizeof u);
-    return u >> kBinShift;
-}
-constexpr std::uint32_t kFloatBins = 1u << (32 - kBinShift);
-
-// The smallest float in bin b.
-inline float bin_floor(std::uint32_t b) {
-    const std::uint32_t u = b << kBinShift;
-    float v;
-    std::memcpy(&v, &u, sizeof v);
-    return v;
-}
-
-// The bin holding the k-th largest of the values counted in hist; *above receives the number of
-// values in higher bins.
-std::uint32_t kth_bin(const std::vector<std::size_t>& hist, std::size_t k, std::size_t* above) {
-    *above = 0;
-    std::uint32_t bin = kFloatBins - 1;
-    for (; bin > 0; --bin) {
-        if (*above + hist[bin] >= k) break;
-        *above += hist[bin];
-    }
-    return bin;
-}
-
-// The rank (k - above)-th largest of in_bin (the values of the bin kth_bin chose); *at_or_above
-// receives the number of values >= the result.
-float select_in_bin(std::vector<float>* in_bin, std::size_t k, std::size_t above, std::size_t* at_or_above) {
-    if (in_bin->empty()) { *at_or_above = above; return 0.0f; }
-    const std::size_t r = std::min(k - above, in_bin->size()) - 1;  // rank from the top inside the bin
-    std::nth_element(in_bin->begin(), in_bin->begin() + std::ptrdiff_t(r), in_bin->end(), std::greater<float>());
-    const float q = (*in_bin)[r];
-    std::size_t n = above;
-    for (float v : *in_bin) n += v >= q;
-    *at_or_above = n;
-    return q;
-}
-
 
 // Points of the half-pixel grid in a plane with a one-point frame: index (Y + 1) * stride + X + 1.
 struct Plane {
@@ -243,41 +198,37 @@ struct EdgeDetector::Pass {
         n_kept = capacity = 0;
     }
 
+    // The test that keeps stored point k when its g is at least `bound` (remove_bits_unless),
+    // moving the g and flags of the points kept down to *n, n + 1, ... in order.
+    auto at_least(float bound, std::size_t* n) {
+        return [g = mag.data(), f = flag.data(), bound, n](std::uint32_t k, std::uint32_t) {
+            if (!(g[k] >= bound)) return false;
+            g[*n] = g[k];
+            f[*n] = f[k];
+            ++*n;
+            return true;
+        };
+    }
+
     // Drops the stored points with g below `bound`, keeping the order of the others.
     void drop_below(float bound) {
-        std::size_t n = 0, k = 0;
-        for (std::size_t w = 0; k < n_kept; ++w)
-            for (std::uint64_t b = cells[w]; b; b &= b - 1, ++k) {
-                if (mag[k] >= bound) {
-                    mag[n] = mag[k];
-                    flag[n] = flag[k];
-                    ++n;
-                } else {
-                    cells[w] &= ~(b & (0 - b));
-                }
-            }
+        std::size_t n = 0;
+        remove_bits_unless(cells.data(), n_kept, at_least(bound, &n));
         n_kept = n;
     }
 
-    // Keeps only what detections with k_high at most k and ratio r can use, as if the pass had
-    // been made for the largest of them: the bins below its k-th largest's go from the counts,
-    // the points below r times that bin's floor from the store.
-    void narrow(std::size_t k, double r) {
+    // Keeps only what the detections `widest` covers can use (a beta at most its, its r), as if
+    // the pass had been made for it: the bins below its k-th largest's go from the counts, the
+    // points below r times that bin's floor from the store.
+    void narrow(const CannyParams& widest) {
+        const std::size_t k = k_of(widest.beta, std::size_t(pl.w) * std::size_t(pl.h));
         if (at_or_above_floor < k) return;  // no such detection is covered
         while (at_or_above_floor - hist[floor_bin] >= k) at_or_above_floor -= hist[floor_bin++];
-        const float bound = float(r * double(bin_floor(floor_bin)));
+        const float bound = float(widest.r * double(bin_floor(floor_bin)));
         if (!(bound > low)) return;
         low = bound;
         std::size_t n = 0;
-        float* g = mag.data();
-        std::uint8_t* f = flag.data();
-        kept.remove_unless([&](std::uint32_t i, std::uint32_t) {
-            if (!(g[i] >= bound)) return false;
-            g[n] = g[i];
-            f[n] = f[i];
-            ++n;
-            return true;
-        });
+        kept.remove_unless(at_least(bound, &n));
         mag.resize(n);
         flag.resize(n);
     }
@@ -526,7 +477,7 @@ Status EdgeDetector::detect(const CannyParams& params, SortedPoints* edges, Cann
     if (im_.width <= 0 || im_.height <= 0) return Status::bad_input("edge detection: empty image");
     Status st = check_params(params);
     if (!st) return st;
-    if (pass_ && narrowing_) pass_->narrow(Pass::k_of(narrow_.beta, std::size_t(pass_->pl.w) * std::size_t(pass_->pl.h)), narrow_.r);
+    if (pass_ && narrowing_) pass_->narrow(narrow_);
     narrowing_ = false;
     if (pass_ && pass_->track(params, false, edges, stats)) return Status::success();
     make_pass(params);

@@ -15,6 +15,19 @@ namespace erd {
 
 constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
 
+// Clears the bits of the n set cells of a bit plane for which keep(k, p) is false (k: 0, 1, ...
+// in increasing cell p), in one pass; returns how many stay.
+template <class Keep>
+std::size_t remove_bits_unless(std::uint64_t* words, std::size_t n, Keep keep) {
+    std::size_t k = 0, kept = 0;
+    for (std::size_t w = 0; k < n; ++w)
+        for (std::uint64_t b = words[w]; b; b &= b - 1) {
+            if (keep(std::uint32_t(k++), std::uint32_t(w * 64 + unsigned(__builtin_ctzll(b))))) ++kept;
+            else words[w] &= ~(b & (0 - b));
+        }
+    return kept;
+}
+
 // A set of plane cells as one bit per cell and the number of set cells before every 64: a point's
 // list position (its rank) is a count of bits, so arrays indexed by position need no list of
 // positions beside them. 1/8 + 1/16 byte per cell, however many points there are. Cells are plane
@@ -61,14 +74,7 @@ public:
     // Removes the points for which keep(k, p) is false, called as for_each calls fn.
     template <class Keep>
     void remove_unless(Keep keep) {
-        std::uint32_t k = 0;
-        std::size_t n = 0;
-        for (std::size_t w = 0; w < bits_.size(); ++w)
-            for (std::uint64_t b = bits_[w]; b; b &= b - 1) {
-                if (keep(k++, std::uint32_t(w * 64 + lowest_bit(b)))) ++n;
-                else bits_[w] &= ~(b & (0 - b));
-            }
-        size_ = n;
+        size_ = remove_bits_unless(bits_.data(), size_, keep);
         link();
     }
 

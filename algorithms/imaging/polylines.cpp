@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "algorithms/imaging/point_rings.h"
@@ -45,15 +46,18 @@ constexpr RingTables kRingTables;
 PolylineList trace_polylines(const Grid<std::uint8_t>& edges) {
     const int w = edges.width, h = edges.height;
     if (w <= 0 || h <= 0) return {};
-    // The set points in row-major order (found by skipping zero bytes eight at a time) as
-    // indices of a plane with a one-point frame that is never allocated: per-point arrays only.
+    // The set points (found by skipping zero bytes eight at a time) as a bit plane with a one-point
+    // frame, the row below the last and a spare word (PointBits::adopt).
     const std::size_t stride = std::size_t(w) + 2;
-    std::vector<std::uint32_t> at;
+    std::vector<std::uint64_t> bits((std::size_t(h) + 2) * stride / 64 + 2, 0);
+    std::size_t n = 0;
     for_each_set(edges.data.data(), edges.data.size(), [&](std::size_t k) {
-        at.push_back(std::uint32_t((k / std::size_t(w) + 1) * stride + k % std::size_t(w) + 1));
+        const std::size_t q = (k / std::size_t(w) + 1) * stride + k % std::size_t(w) + 1;
+        bits[q >> 6] |= std::uint64_t(1) << (q & 63u);
+        ++n;
     });
     PointBits pts;
-    pts.build(at.data(), at.size(), std::ptrdiff_t(stride));
+    pts.adopt(std::move(bits), std::ptrdiff_t(stride), n);
     return trace_polylines(pts);
 }
 

@@ -53,27 +53,16 @@ public:
     void detect(double beta, double r) override {
         progress_->selection(0.0);
         if (progress_->cancelled()) return;  // the selection then ends at once (count 0)
-        CannyParams cp;
-        cp.beta = beta;
-        cp.r = r;
-        Status st = chain_.detect(cp);
+        Status st = chain_.detect(params(beta, r));
         if (!st.ok() && status_.ok()) status_ = st;
         progress_->selection(3.0);
     }
 
     void prepare(double beta, double r) override {
-        CannyParams cp;
-        cp.beta = beta;
-        cp.r = r;
-        Status st = chain_.prepare(cp);
+        Status st = chain_.prepare(params(beta, r));
         if (!st.ok() && status_.ok()) status_ = st;
     }
-    void narrow(double beta, double r) override {
-        CannyParams cp;
-        cp.beta = beta;
-        cp.r = r;
-        chain_.narrow(cp);
-    }
+    void narrow(double beta, double r) override { chain_.narrow(params(beta, r)); }
     void set_aside() override { chain_.set_aside(); }
 
     std::size_t count(int l, double eps) override {
@@ -100,6 +89,12 @@ public:
     const PolylineList& kept() const { return chain_.kept(); }
 
 private:
+    static CannyParams params(double beta, double r) {
+        CannyParams cp;
+        cp.beta = beta;
+        cp.r = r;
+        return cp;
+    }
     // On the image, not a double copy of it: the ERD methods make their double phi only after
     // step 1, so it is not alive beside the detector's planes (the peak of the whole run).
     EdgePolylines chain_;
