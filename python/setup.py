@@ -3,6 +3,7 @@ for `python3 -m erd`, main left out) and the binding (python/src/) in one extens
 
 The flags are the Makefile's where they change code generation (-O2, -fno-math-errno,
 -fno-trapping-math; Python's own -fwrapv is undone) so the extension computes what build/erd does.
+-g0 drops Python's default -g: a third less compile time in make test, the same code.
 """
 import glob
 import os
@@ -61,7 +62,7 @@ ext = Pybind11Extension(
     depends=headers,
     define_macros=[("ERD_CLI_NO_MAIN", "1")],
     libraries=["z"],
-    extra_compile_args=["-O2", "-fno-math-errno", "-fno-trapping-math", "-fno-wrapv", "-MMD"],
+    extra_compile_args=["-O2", "-g0", "-fno-math-errno", "-fno-trapping-math", "-fno-wrapv", "-MMD"],
     cxx_std=17,
 )
 

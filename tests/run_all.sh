@@ -37,7 +37,7 @@ if bash tools/check_layers.sh; then passed=$((passed + 1)); else failed=$((faile
 
 stage
 echo "== build"
-if ! make -s -j2 build/erd build/erd_tests; then
+if ! make -s -j2 build/erd_tests build/erd; then
     echo "build failed"; echo "$passed passed, $((failed + 1)) failed"; exit 1
 fi
 
@@ -45,7 +45,7 @@ fi
 # output with build/erd byte for byte (determinism across optimisation levels).
 stage
 echo "== -O0 build (determinism check)"
-if ! make -s -j2 BUILD=build-o0 OPT=-O0 build-o0/erd >"$log/o0-build" 2>&1; then
+if ! make -s -j2 BUILD=build-o0 OPT=-O0 DEBUG=-g0 build-o0/erd >"$log/o0-build" 2>&1; then
     tail -20 "$log/o0-build"; echo "-O0 build failed"; failed=$((failed + 1))
 fi
 
