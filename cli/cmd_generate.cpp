@@ -286,8 +286,10 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     // only for --stats (it costs an ERD method a sample of step 1's gradient: 3-5% of a photo's run).
     std::size_t need = 0;
     {
-        // The library's figures plus the process itself (binary, stdio, buffers): 2 MiB.
-        const std::size_t process = std::size_t(2) << 20;
+        // The library's figures plus the process itself (binary, stdio, buffers): 1.4 MiB, what a
+        // run on an 8 x 8 image has above the library's fixed bytes (2 MiB while the program
+        // linked iostreams: docs/DECISIONS.md "Memory").
+        const std::size_t process = std::size_t(14) * (std::size_t(1) << 20) / 10;
         const std::size_t cap = have_cap ? max_memory : available_memory();
         const std::size_t bound = memory_bound(*method, image.width, image.height, image.channels, sized) + process;
         if ((cap != 0 && bound > cap) || !stats_out.empty()) need = memory_estimate(*method, image, sized) + process;

@@ -1,10 +1,9 @@
 #include "cli/memory_cap.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "cli/report.h"
 
@@ -12,12 +11,20 @@ namespace erd::cli {
 
 namespace {
 
-// The first number in a small text file, or -1.
+// The number a small text file starts with (after blanks), or -1: no file, no number ("max"),
+// or one out of range. C stdio, not iostreams: with no stream in the program, libstdc++'s locale
+// machinery is not linked in (docs/DECISIONS.md "Memory", the process's own memory).
 long long number_in(const char* path) {
-    std::ifstream f(path);
-    long long v = -1;
-    if (f) f >> v;
-    return f ? v : -1;
+    std::FILE* f = std::fopen(path, "r");
+    if (!f) return -1;
+    char buf[64];
+    const std::size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+    std::fclose(f);
+    buf[n] = '\0';
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(buf, &end, 10);
+    return end == buf || errno != 0 ? -1 : v;
 }
 
 std::string mib(std::size_t bytes) {
@@ -30,15 +37,15 @@ std::string mib(std::size_t bytes) {
 
 std::size_t available_memory() {
     std::size_t avail = 0;
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    long long kb = 0;
-    std::string unit;
-    while (meminfo >> key >> kb >> unit) {
-        if (key == "MemAvailable:") {
-            avail = std::size_t(kb) * 1024;
-            break;
-        }
+    if (std::FILE* meminfo = std::fopen("/proc/meminfo", "r")) {
+        char line[256];
+        long long kb = 0;
+        while (std::fgets(line, sizeof line, meminfo))
+            if (std::sscanf(line, "MemAvailable: %lld kB", &kb) == 1) {
+                if (kb > 0) avail = std::size_t(kb) * 1024;
+                break;
+            }
+        std::fclose(meminfo);
     }
     // cgroup v2: "max" reads as no number (-1); a limit below what the machine has wins.
     const long long limit = number_in("/sys/fs/cgroup/memory.max");

@@ -33,7 +33,7 @@ struct GenerateStats {
     std::vector<StageTime> stages;   // the method's stages, then the CLI's (read, write, psnr)
     double total_seconds = 0;        // wall time of the whole command
     long long peak_memory_bytes = 0; // getrusage ru_maxrss
-    long long memory_estimate_bytes = 0;  // what the memory cap compared (the estimate + the process's 2 MiB)
+    long long memory_estimate_bytes = 0;  // what the memory cap compared (the estimate + the process's 1.4 MiB)
     bool has_psnr = false;
     double psnr = 0;
 };

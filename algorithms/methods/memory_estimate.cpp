@@ -16,7 +16,7 @@ namespace {
 // The fit of docs/DECISIONS.md "Memory": the peak resident memory of `erd generate` (getrusage)
 // on photos, synth (hard, and soft with --edges soft), cartoon, blurred scene and 16-bit heightmaps
 // of 512^2 to 2048^2 at -d 0.1 to 5 and two colour photos at 1 and 3%, least squares in the
-// relative error: fixed bytes (less the process's own 2 MiB, which the CLI adds), per pixel, per
+// relative error: fixed bytes (less the process's own 2 MiB then; the CLI adds its own), per pixel, per
 // vertex of the target and, for soft ERD edges, per point the widest detection keeps; a colour
 // image adds per pixel and per vertex for each channel beyond the first. GPI's per-vertex 146
 // of the fit is raised to 196: the re-measure through --stats found it 18-23% low at 5%. The hard
@@ -38,7 +38,7 @@ constexpr Fit kErdedSoft{2994331, 10.55, 244.0, 5.58, 0.00, 392.6};
 constexpr Fit kErdgpiSoft{2817079, 5.40, 247.4, 7.69, 0.00, 537.8};
 constexpr Fit kErdedHard{3130602, 13.59, 488.4, 0.00, 0.00, 0.0};
 constexpr Fit kErdgpiHard{3690434, 10.07, 518.1, 0.00, 0.00, 0.0};
-constexpr double kProcess = 2.0 * 1048576.0;  // the CLI adds it (cmd_generate.cpp)
+constexpr double kProcess = 2.0 * 1048576.0;  // the process's own bytes in the fits' runs (cmd_generate.cpp adds today's)
 
 std::size_t target_of(const GenerateOptions& o, int width, int height) {
     const std::int64_t n = target_points(o, width, height);
