@@ -152,7 +152,8 @@ struct EdgeDetector::Pass {
     // detection, and the same arrays cut to them: g and the flag bytes (edge_linking.h: the pass's
     // flags in the pass bits, one detection's in the others).
     PointBits kept;
-    std::vector<std::size_t> hist;          // exact for the bins >= floor_bin
+    std::vector<std::size_t> hist;          // bins hist_base.. (exact for the bins >= floor_bin)
+    std::uint32_t hist_base = 0;            // 0 while the pass runs, floor_bin after (trim_hist)
     std::uint32_t floor_bin = 0;            // bin of the k-th largest (0 until k values)
     std::size_t at_or_above_floor = 0;      // values in the bins >= floor_bin
     float low = 0.0f;                       // the last (largest) bound points were kept above
@@ -196,7 +197,19 @@ struct EdgeDetector::Pass {
         flag.resize(n_kept);
         kept.adopt(std::move(cells), pl.stride, n_kept);
         n_kept = capacity = 0;
+        trim_hist();
     }
+
+    // After the pass only the bins from floor_bin up are read (kth_bin stops at the k-th
+    // largest's, which is at or above it; narrow() only raises it), and none above the largest
+    // value: the counts keep those (256 KB -> a few hundred bins on a photo).
+    void trim_hist() {
+        std::size_t top = hist.size();
+        while (top > floor_bin && hist[top - 1] == 0) --top;
+        std::vector<std::size_t>(hist.begin() + std::ptrdiff_t(floor_bin), hist.begin() + std::ptrdiff_t(top)).swap(hist);
+        hist_base = floor_bin;
+    }
+    std::size_t count(std::uint32_t bin) const { return hist[bin - hist_base]; }
 
     // The test that keeps stored point k when its g is at least `bound` (remove_bits_unless),
     // moving the g and flags of the points kept down to *n, n + 1, ... in order.
@@ -223,7 +236,7 @@ struct EdgeDetector::Pass {
     void narrow(const CannyParams& widest) {
         const std::size_t k = k_of(widest.beta, std::size_t(pl.w) * std::size_t(pl.h));
         if (at_or_above_floor < k) return;  // no such detection is covered
-        while (at_or_above_floor - hist[floor_bin] >= k) at_or_above_floor -= hist[floor_bin++];
+        while (at_or_above_floor - count(floor_bin) >= k) at_or_above_floor -= count(floor_bin++);
         const float bound = float(widest.r * double(bin_floor(floor_bin)));
         if (!(bound > low)) return;
         low = bound;
@@ -242,6 +255,7 @@ struct EdgeDetector::Pass {
         std::vector<float> rows(3 * rs);
         auto row = [&](int Y) { return rows.data() + std::size_t(Y % 3) * rs + 1; };
         hist.assign(kFloatBins, 0);
+        hist_base = 0;
         floor_bin = 0;
         at_or_above_floor = 0;
         n_kept = 0;
@@ -354,15 +368,15 @@ struct EdgeDetector::Pass {
         // bin was at or above the bound of its time, so the kept points hold them all; bin 0 aside,
         // where only g = 0 is missing (never kept) and hist counts all of the bin.
         std::size_t above = 0, above_high = 0;
-        const std::uint32_t bin = kth_bin(hist, k_high, &above);
+        const std::uint32_t bin = kth_bin(hist.data(), hist.size(), k_high, &above, hist_base);
         std::vector<float> in_bin;
-        in_bin.reserve(hist[bin]);
+        in_bin.reserve(count(bin));
         const std::size_t n = kept.size();
         const float* g = mag.data();
         for_each_at_least(g, n, bin_floor(bin), [&](std::size_t k) {
             if (float_bin(g[k]) == bin) in_bin.push_back(g[k]);
         });
-        if (bin == 0) in_bin.resize(hist[0], 0.0f);
+        if (bin == 0) in_bin.resize(count(0), 0.0f);
         const double tau_high = select_in_bin(&in_bin, k_high, above, &above_high);
         const double tau_low = params.r * tau_high;
         std::vector<float>().swap(in_bin);
@@ -554,7 +568,7 @@ double beta_quantile(const float* values, std::size_t n, double beta) {
     std::vector<std::size_t> hist(kFloatBins, 0);
     for (std::size_t i = 0; i < n; ++i) ++hist[float_bin(values[i])];
     std::size_t above = 0, count = 0;
-    const std::uint32_t bin = kth_bin(hist, k, &above);
+    const std::uint32_t bin = kth_bin(hist.data(), hist.size(), k, &above);
     std::vector<float> in_bin;
     for (std::size_t i = 0; i < n; ++i)
         if (float_bin(values[i]) == bin) in_bin.push_back(values[i]);

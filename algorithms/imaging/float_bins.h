@@ -30,16 +30,18 @@ inline float bin_floor(std::uint32_t b) {
     return v;
 }
 
-// The bin holding the k-th largest of the values counted in hist; *above receives the number of
-// values in higher bins.
-inline std::uint32_t kth_bin(const std::vector<std::size_t>& hist, std::size_t k, std::size_t* above) {
+// The bin holding the k-th largest of the values counted in hist[0, n), whose entry i counts bin
+// base + i (bins past its end count nothing); base when no bin above it holds k values. *above
+// receives the number of values in higher bins.
+inline std::uint32_t kth_bin(const std::size_t* hist, std::size_t n, std::size_t k, std::size_t* above, std::uint32_t base = 0) {
     *above = 0;
-    std::uint32_t bin = kFloatBins - 1;
-    for (; bin > 0; --bin) {
-        if (*above + hist[bin] >= k) break;
-        *above += hist[bin];
+    std::size_t i = n;
+    while (i > 1) {
+        --i;
+        if (*above + hist[i] >= k) return base + std::uint32_t(i);
+        *above += hist[i];
     }
-    return bin;
+    return base;
 }
 
 // The rank (k - above)-th largest of in_bin (the values of the bin kth_bin chose); *at_or_above
