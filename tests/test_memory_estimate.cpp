@@ -6,12 +6,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "algorithms/imaging/synth.h"
 #include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
+#include "cli/memory_cap.h"
 #include "tests/output_util.h"
 
 using namespace erd;
@@ -84,4 +86,21 @@ TEST_CASE("memory estimate: never above the size bound, grows with the edges", "
     CHECK(fb.beta == 0.055);  // the simple test's detection is the widest at 1%
     CHECK(bb.kept > 10 * fb.kept);
     CHECK(memory_estimate(*erdgpi, busy, o) > memory_estimate(*erdgpi, flat, o));
+}
+
+// The default cap is what the machine has available: a MemAvailable that did not parse would be 0,
+// which means no cap at all, so the reader is checked against the file's own MemTotal.
+TEST_CASE("memory cap: the available memory is read from /proc/meminfo", "[memory]") {
+    std::FILE* f = std::fopen("/proc/meminfo", "r");
+    REQUIRE(f != nullptr);
+    char line[256];
+    long long total_kb = 0;
+    while (std::fgets(line, sizeof line, f))
+        if (std::sscanf(line, "MemTotal: %lld kB", &total_kb) == 1) break;
+    std::fclose(f);
+    REQUIRE(total_kb > 0);
+    const std::size_t avail = cli::available_memory();
+    INFO("available " << avail << " bytes, MemTotal " << total_kb << " kB");
+    CHECK(avail > 0);
+    CHECK(avail <= std::size_t(total_kb) * 1024);
 }
