@@ -15,7 +15,11 @@
 # so nothing in kernel/, algorithms/ or api/ includes imageio/, cli/, third_party/ or tests/, and
 # their <...> includes are C++ standard headers only (a name without '.' or '/': no <stb/...>,
 # <unistd.h>, <malloc.h>); imageio/ (the optional image-I/O library) adds stb through its glue and
-# zlib, nothing else. Prints one line per broken include and exits 1 when there is one.
+# zlib, nothing else. No source of the program (those folders and cli/) includes an iostream
+# header (<iostream>, <fstream>, <sstream>, <istream>, <ostream>, <iomanip>, <locale>): they link
+# libstdc++'s locale machinery into the static binary, 0.8 MB of code and 0.64 MB more memory in
+# every run (docs/DECISIONS.md "Memory"). Prints one line per broken include and exits 1 when
+# there is one.
 # Usage: tools/check_layers.sh [ROOT]   (default: the repository holding this script)
 set -u
 root=${1:-$(dirname "$0")/..}
@@ -71,6 +75,11 @@ while IFS= read -r f; do
         fi
     done < <(grep -n '^[[:space:]]*#[[:space:]]*include' "$f")
 done < <(find kernel algorithms api imageio -name '*.h' -o -name '*.cpp' | sort)
+
+while IFS= read -r hit; do
+    report "${hit%%:*}:$(cut -d: -f2 <<<"$hit"): includes an iostream header: C stdio (<cstdio>) instead"
+done < <(find kernel algorithms api imageio cli -name '*.h' -o -name '*.cpp' | sort |
+         xargs grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*<(iostream|fstream|sstream|istream|ostream|iomanip|locale)>' /dev/null)
 
 if [[ $files -eq 0 ]]; then echo "check_layers: no sources under $PWD"; exit 2; fi
 if [[ $bad -gt 0 ]]; then echo "check_layers: $bad includes break the layer rule ($files files)"; exit 1; fi
