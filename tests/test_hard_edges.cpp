@@ -11,6 +11,7 @@
 
 #include "algorithms/imaging/drawings.h"
 #include "algorithms/imaging/edge_kind.h"
+#include "algorithms/imaging/edge_polylines.h"
 #include "algorithms/methods/erd_mesh.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/model_io.h"
@@ -153,14 +154,52 @@ TEST_CASE("crack edges: one detector, many (beta, r), each the definition's map"
                 for (int x = 0; x < im.width; ++x)
                     im.at(x, y) = std::uint16_t((((x / 6 + y / 5) % 3) * (maxval / 3) + next() % (maxval / 16 + 1)) % (maxval + 1));
             const CrackDetector detector(im);
+            Grid<std::uint8_t> reused(3, 2, 1);  // the wrong size first, then the last map's memory
             for (const double beta : {0.01, 0.05, 0.3, 1.0})
                 for (const double r : {0.0, 0.4, 1.0}) {
                     INFO(wh[0] << " x " << wh[1] << " maxval " << maxval << " beta " << beta << " r " << r);
                     const Grid<std::uint8_t> want = crack_definition(im, beta, r);
                     CHECK(detector.detect(beta, r).data == want.data);
                     CHECK(crack_edges(im, beta, r).data == want.data);
+                    detector.detect(beta, r, &reused);
+                    CHECK(reused.width == 2 * wh[0] - 1);
+                    CHECK(reused.data == want.data);
                 }
         }
+}
+
+TEST_CASE("crack edges: the chain's edge map is its chosen detection's crack map (set aside, taken back)", "[hardedges]") {
+    // The chain keeps one crack map, the last detection's: edge_map() is made from the traced
+    // polylines, which may be another detection's.
+    const Image im = picture("scene", 1);  // blurred: steps of many sizes, so beta matters
+    const auto params = [](double beta) {
+        CannyParams p;
+        p.beta = beta;
+        p.r = 0.4;
+        return p;
+    };
+    const std::vector<std::uint8_t> wide = crack_edges(im, 0.3, 0.4).data, narrow = crack_edges(im, 0.05, 0.4).data;
+    REQUIRE(wide != narrow);
+    {
+        EdgePolylines chain(im, true);
+        REQUIRE(chain.detect(params(0.3)).ok());
+        CHECK(chain.edge_map().data == wide);
+    }
+    {
+        EdgePolylines chain(im, true);
+        REQUIRE(chain.detect(params(0.3)).ok());
+        chain.set_aside();
+        REQUIRE(chain.detect(params(0.05)).ok());  // into the first map's memory
+        REQUIRE(chain.detect(params(0.3)).ok());   // taken back: the memory holds 0.05's map
+        CHECK(chain.edge_map().data == wide);
+    }
+    {
+        EdgePolylines chain(im, true);
+        REQUIRE(chain.detect(params(0.3)).ok());
+        REQUIRE(chain.detect(params(0.05)).ok());
+        chain.release_detector();
+        CHECK(chain.edge_map().data == narrow);
+    }
 }
 
 TEST_CASE("crack edges: the simplified curves keep every pixel next to a crack on its side", "[hardedges]") {

@@ -53,9 +53,20 @@ CrackDetector::CrackDetector(const Image& im) : im_(im), hist_(std::size_t(im.ma
 }
 
 Grid<std::uint8_t> CrackDetector::detect(double beta, double r) const {
+    Grid<std::uint8_t> map;
+    detect(beta, r, &map);
+    return map;
+}
+
+void CrackDetector::detect(double beta, double r, Grid<std::uint8_t>* out) const {
     const int W = im_.width, H = im_.height, GW = 2 * W - 1, GH = 2 * H - 1;
-    Grid<std::uint8_t> map(GW, GH, 0);
-    if (cracks_ == 0) return map;
+    Grid<std::uint8_t>& map = *out;
+    if (map.width == GW && map.height == GH) {
+        std::fill(map.data.begin(), map.data.end(), std::uint8_t(0));
+    } else {
+        map = Grid<std::uint8_t>(GW, GH, 0);
+    }
+    if (cracks_ == 0) return;
     const std::size_t k = std::min(cracks_, std::max<std::size_t>(1, std::size_t(beta * double(cracks_) + 0.5)));
     std::size_t above = 0;
     int q = int(hist_.size()) - 1;  // no step is above maxval
@@ -108,7 +119,6 @@ Grid<std::uint8_t> CrackDetector::detect(double beta, double r) const {
         for (int X = 1; X < GW; X += 2)
             if (up[X] + down[X] + row[X - 1] + row[X + 1] >= 2) row[X] = 1;
     }
-    return map;
 }
 
 Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r) { return CrackDetector(im).detect(beta, r); }

@@ -53,6 +53,9 @@ class CrackDetector {
 public:
     explicit CrackDetector(const Image& im);
     Grid<std::uint8_t> detect(double beta, double r) const;
+    // The same into *map, whose memory is reused when it has the size already (the parameter
+    // selection's detections: no fresh pages for each).
+    void detect(double beta, double r, Grid<std::uint8_t>* map) const;
 
 private:
     const Image& im_;

@@ -93,7 +93,7 @@ private:
     bool hard_;
     CrackRule crack_ = CrackRule::keep_sides;
     std::optional<CrackDetector> cracker_;  // hard: made by the first detection
-    Grid<std::uint8_t> cracks_;  // hard: the last detection's crack map
+    Grid<std::uint8_t> cracks_;  // hard: the last detection's crack map, reused by the next
     EdgeDetector detector_;
     int map_w_, map_h_;  // the half-pixel grid
     bool have_edges_ = false, have_kept_ = false;
@@ -108,7 +108,6 @@ private:
     struct Detection {
         CannyParams canny;
         CannyStats stats;
-        Grid<std::uint8_t> cracks;
         PolylineList traced;
     };
     std::optional<Detection> aside_;
