@@ -169,10 +169,10 @@ namespace {
 // Keeps the better of `before` and *after by the PSNR of their point-evaluated reconstructions
 // (*after on a tie or any error), and returns the kept one's PSNR (0 after an error).
 double keep_better(const Image& image, Model* before, Model* after, int threads) {
-    Image ra, rb;
+    Image rec;  // one image for both: the second reconstruction reuses the first's memory
     double pa = 0, pb = 0;
-    if (!reconstruct(*before, false, &ra, {}, threads) || !psnr(image, ra, &pa, threads) ||
-        !reconstruct(*after, false, &rb, {}, threads) || !psnr(image, rb, &pb, threads))
+    if (!reconstruct(*before, false, &rec, {}, threads) || !psnr(image, rec, &pa, threads) ||
+        !reconstruct(*after, false, &rec, {}, threads) || !psnr(image, rec, &pb, threads))
         return 0.0;
     if (pa > pb) *after = std::move(*before);
     return pa > pb ? pa : pb;

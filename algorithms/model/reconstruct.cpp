@@ -551,7 +551,16 @@ Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersa
                         int threads) {
     Prepared p;
     if (Status s = prepare(m, false, given, &p); !s) return s;
-    Image im(m.width, m.height, m.maxval, m.channels);
+    // In *out's memory when it has the size already (a caller measuring models one after the
+    // other): a fresh page costs more than zeroing it (DECISIONS "Memory").
+    Image im;
+    if (out->width == m.width && out->height == m.height && out->channels == m.channels) {
+        im = std::move(*out);
+        std::fill(im.samples.begin(), im.samples.end(), std::uint16_t(0));
+        im.maxval = m.maxval;
+    } else {
+        im = Image(m.width, m.height, m.maxval, m.channels);
+    }
     if (supersample) supersampling(m, p, &im, progress, threads);
     else point_evaluation(m, p, &im, progress, threads);
     progress("reconstruct", 1.0);
