@@ -277,6 +277,32 @@ TEST_CASE("reconstruct: wide images are supersampled in several bands of rows", 
     compare(m, vmean, true);
 }
 
+TEST_CASE("reconstruct: an output image that holds samples already gives the same image", "[raster]") {
+    // reconstruct() fills *out in its own memory when it has the model's size: none of the old
+    // samples and not its maxval may survive; another size is made anew.
+    std::mt19937 rng(21);
+    const int W = 19, H = 13;
+    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 20, false);
+    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    m.maxval = 1000;
+    for (std::size_t v = 0; v < m.vertices.size(); ++v) m.values.push_back(double((v * 37) % 1001));
+    for (bool ss : {false, true}) {
+        INFO("supersampled " << ss);
+        Image fresh;
+        REQUIRE(erd::reconstruct(m, ss, &fresh).ok());
+        Image used(W, H, 65535);
+        std::fill(used.samples.begin(), used.samples.end(), std::uint16_t(54321));
+        REQUIRE(erd::reconstruct(m, ss, &used).ok());
+        CHECK(used.maxval == 1000);
+        CHECK(used.samples == fresh.samples);
+        Image other(W + 1, H, 255, 3);  // another size: made anew
+        REQUIRE(erd::reconstruct(m, ss, &other).ok());
+        CHECK(other.width == W);
+        CHECK(other.channels == 1);
+        CHECK(other.samples == fresh.samples);
+    }
+}
+
 TEST_CASE("reconstruct: a given adjacency gives the same image; one that does not fit is rebuilt", "[raster]") {
     std::mt19937 rng(8);
     const int W = 23, H = 14;
