@@ -171,7 +171,7 @@ chain_pid=$!
 
 echo "== fuzz smoke runs"
 if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
-    FUZZ_SHORT_SECONDS=${FUZZ_SHORT_SECONDS:-3} bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-15}" >"$log/fuzz" 2>&1
+    FUZZ_SHORT_SECONDS=${FUZZ_SHORT_SECONDS:-3} bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-10}" >"$log/fuzz" 2>&1
     cat "$log/fuzz" | grep -E "^(fuzz|PASS|FAIL)|ERROR|SUMMARY|Test unit written" || true
     p=$(grep -c '^PASS' "$log/fuzz"); f=$(grep -c '^FAIL' "$log/fuzz")
     passed=$((passed + p)); failed=$((failed + f))
