@@ -296,7 +296,7 @@ python-venv-check: python
 # erd in a web page (web/): erd compiled to WebAssembly with Debian's emscripten (installed with
 # apt when missing), served on 127.0.0.1 by `make serve`.
 WEB_PORT ?= 8000
-WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_mesh_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels
+WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_mesh_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels,_erd_edge_kinds
 .PHONY: web serve
 web: web/build/erd.js
 /usr/bin/em++:

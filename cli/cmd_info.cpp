@@ -69,6 +69,7 @@ static int erdz_info(const std::string& path, const Args& args, const Reporter& 
         j.integer("width", m.width).integer("height", m.height).integer("maxval", m.maxval).integer("channels", m.channels);
         j.num("step", info.step).integer("vertices", std::int64_t(m.vertices.size())).integer("faces", std::int64_t(m.faces.size()));
         j.integer("constraints", std::int64_t(m.constraints.size()));
+        j.integer("other_kind_edges", std::int64_t(m.kind_exceptions.size())).integer("kind_bits", std::int64_t(info.kind_bits));
         j.integer("header_bits", std::int64_t(info.header_bits)).integer("position_bits", std::int64_t(info.position_bits));
         j.integer("edge_bits", std::int64_t(info.edge_bits)).integer("flip_bits", std::int64_t(info.flip_bits));
         j.integer("value_bits", std::int64_t(info.value_bits)).integer("flips", std::int64_t(info.flips));
@@ -88,6 +89,9 @@ static int erdz_info(const std::string& path, const Args& args, const Reporter& 
                 info.chain_steps);
     std::printf("flips:     %9zu bits  %.5f bpp  (%zu edges flipped)\n", info.flip_bits, bpp(info.flip_bits), info.flips);
     std::printf("values:    %9zu bits  %.5f bpp  (%zu values)\n", info.value_bits, bpp(info.value_bits), info.coded_values);
+    if (info.version >= 4)
+        std::printf("kinds:     %9zu bits  %.5f bpp  (%zu %s edges)\n", info.kind_bits, bpp(info.kind_bits), info.other_kind_edges,
+                    m.edges == EdgeKind::hard ? "soft" : "hard");
     std::printf("total:     %9zu bits  %.5f bpp  (%zu bytes)\n", info.total_bits, bpp(info.total_bits), info.total_bits / 8);
     return 0;
 }

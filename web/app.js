@@ -119,7 +119,7 @@ worker.onmessage = (e) => {
     method = r.method;
     progress('writing the files', 1);
     put($('recon'), r.recon, r.width, r.height, r.channels);
-    $('status').innerHTML = `${r.method}, ${r.channels === 3 ? 'colour' : 'gray'}: <span id="vertices">${r.vertices}</span> vertices, ${r.channels === 3 ? 'RGB ' : ''}PSNR <span id="psnr">${r.psnr.toFixed(4)}</span> dB, ${(r.ms / 1000).toFixed(2)} s`;
+    $('status').innerHTML = `${r.method}, ${r.channels === 3 ? 'colour' : 'gray'}: <span id="vertices">${r.vertices}</span> vertices, ${r.channels === 3 ? 'RGB ' : ''}PSNR <span id="psnr">${r.psnr.toFixed(4)}</span> dB, ${r.edges ? `edges <span id="edge-kinds">${r.edges}</span>, ` : ''}${(r.ms / 1000).toFixed(2)} s`;
     $('timings').innerHTML = '';
     timings(r.timings.concat([['mesh in the worker', r.ms]]));
 };

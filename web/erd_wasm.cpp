@@ -26,7 +26,7 @@ namespace {
 
 struct Job {
     erd::Model model;
-    std::string error, model_text, vector_svg, mesh_svg, timings;
+    std::string error, model_text, vector_svg, mesh_svg, timings, edge_kinds;
     std::vector<std::uint8_t> recon;
     double psnr = 0;
     std::size_t vertices = 0;
@@ -108,10 +108,21 @@ int erd_mesh(const std::uint8_t* rgb, int w, int h, const char* method, double d
     }
     job.vertices = model.vertices.size();
     job.channels = model.channels;
+    // The kinds of its edges (algorithms/model/edge_kinds.h): "hard", "soft", "hard, 75 soft", ...
+    if (model.kind == erd::ModelKind::erd) {
+        const bool hard = model.edges == erd::EdgeKind::hard;
+        job.edge_kinds = hard ? "hard" : "soft";
+        if (!model.kind_exceptions.empty())
+            job.edge_kinds += ", " + std::to_string(model.kind_exceptions.size()) + (hard ? " soft" : " hard");
+    }
     job.recon.resize(approx.samples.size());
     for (std::size_t i = 0; i < approx.samples.size(); ++i) job.recon[i] = std::uint8_t(approx.samples[i]);
     return 0;
 }
+
+// The kinds of the last erd_mesh's model's edges ("" for a basic model): its kind, and how many
+// edges are of the other one (issue 44), e.g. "hard, 75 soft".
+const char* erd_edge_kinds() { return job.edge_kinds.c_str(); }
 
 // The files the page offers for the last erd_mesh's model: its .erd/.model text, the vector SVG
 // (`erd render --vector`) and the mesh drawing (`erd render -s 1`). Apart from erd_mesh, so the

@@ -1,8 +1,8 @@
 // Runs erd (erd.js + erd.wasm, built by `make web`) off the page's thread. Message in:
 // {pixels: Uint8Array (RGB, interleaved), width, height, method, density, flags: {edges, thesis,
 // wedgeRule, wedgeFit, psnr, maxError, gray}}. Out: {progress: stage, fraction} while it runs
-// (posted by the module itself); then {ok: true, ms, timings, psnr, vertices, channels, recon (the
-// reconstruction, `channels` samples a pixel), ...} as soon as the mesh and its reconstruction are
+// (posted by the module itself); then {ok: true, ms, timings, psnr, vertices, channels, edges (an
+// ERD model's edge kinds, "" otherwise), recon (the reconstruction, `channels` samples a pixel), ...} as soon as the mesh and its reconstruction are
 // there; then {files: {model, vector, mesh}, ms, timings} once the downloads are written. A failure:
 // {ok: false, error}.
 importScripts('build/erd.js');
@@ -31,7 +31,7 @@ onmessage = async (e) => {
     const channels = erd._erd_channels();
     const recon = erd.HEAPU8.slice(erd._erd_reconstruction(), erd._erd_reconstruction() + width * height * channels);
     postMessage({ok: true, ms, timings: timings(erd), width, height, method, channels, psnr: erd._erd_psnr(),
-                 vertices: erd._erd_vertices(), recon}, [recon.buffer]);
+                 vertices: erd._erd_vertices(), edges: erd.UTF8ToString(erd._erd_edge_kinds()), recon}, [recon.buffer]);
     const t1 = performance.now();
     if (erd._erd_files() !== 0) { postMessage({ok: false, error: erd.UTF8ToString(erd._erd_error())}); return; }
     postMessage({
