@@ -121,7 +121,7 @@ $(BUILD)/%.o: %.cpp
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
 # `make test` = tests/run_all.sh: unit tests, ASan+UBSan unit tests, fuzz smoke; one summary line.
-test: deps
+test: deps graphics-deps
 	@bash tests/run_all.sh
 
 # ERD_BIN and ERD_IMAGES given in the environment win (`ERD_BIN=/nonexistent make unit` fails:

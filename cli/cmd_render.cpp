@@ -167,8 +167,8 @@ static int run_render(const Args& args, const Reporter& rep) {
         st = read_image(path, &im, &warning);
         if (!st) return rep.fail(st);
         // --over draws a colour image in colour; --error compares it with the reconstruction's
-        // values, which error_map does in one channel.
-        if (args.has("error")) to_gray(path, &im, false, &warning);
+        // values, channel by channel for a colour model (error_map shows the worst), else in gray.
+        if (args.has("error") && m.channels == 1) to_gray(path, &im, false, &warning);
         rep.warn(warning);
         if (im.width != m.width || im.height != m.height)
             return rep.fail(Status::bad_input(path + ": image is " + std::to_string(im.width) + "x" + std::to_string(im.height) +

@@ -178,9 +178,11 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
         for (int c = 0; c < 3; ++c) t += ramp_template(kTemplate[c + 1], c, o.ramp);
     }
 
-    // Faces along a hard jump (edge_kinds.h: an edge of kind hard) are drawn crisp only, so the
-    // pixels at that jump are painted whole by one side, as erd reconstruct evaluates them; the
-    // rest are layered as o.seams says. Models without hard jumps are written as before.
+    // Faces along a hard jump (edge_kinds.h: an edge of kind hard) are left out of the
+    // anti-aliased layer, so the pixels at that jump are painted whole by one side (the crisp
+    // layer), as erd reconstruct evaluates them. The anti-aliased <use> is hidden and every other
+    // face says visibility="visible" (which beats the inherited hidden); those faces inherit it.
+    // Models without hard jumps are written as before.
     std::vector<std::uint8_t> crisp_face(m.faces.size(), 0);
     bool any_crisp = false;
     if (m.kind == ModelKind::erd && o.seams == SeamFix::layered && (m.edges == EdgeKind::hard || !m.kind_exceptions.empty())) {
@@ -204,9 +206,8 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
         const std::string group = C == 1 ? "_m" : "_m" + std::to_string(c);
         if (c > 0) t += "<g style=\"mix-blend-mode:screen\">\n";
         // Layered: the faces once in a group that is drawn twice, without and then with anti-aliasing
-        // (faces along hard jumps in a group of their own, drawn once, crisp).
+        // (the faces along hard jumps only in the first).
         if (o.seams == SeamFix::layered) t += "<defs><g id=\"" + group + "\">\n";
-        std::string crisp_paths;
         for (std::size_t f = 0; f < m.faces.size(); ++f) {
             const auto& fc = m.faces[f];
             Pt p[3], q[3];
@@ -221,15 +222,15 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
             if (hi <= vx0 || lo >= vx1 || bottom <= vy0 || top >= vy1) continue;
 
             const std::string paint = plane_paint(p, z, channel, &gradients, &t);
-            std::string& to = crisp_face[f] ? crisp_paths : t;
-            to += "<path fill=\"" + paint + "\"";
-            to += " d=\"M";
-            for (int k = 0; k < 3; ++k) to += (k ? " " : "") + short_num(q[k].u, 1) + " " + short_num(q[k].v, 1);
-            to += "z\"/>\n";
+            t += "<path fill=\"" + paint + "\"";
+            if (any_crisp && !crisp_face[f]) t += " visibility=\"visible\"";
+            t += " d=\"M";
+            for (int k = 0; k < 3; ++k) t += (k ? " " : "") + short_num(q[k].u, 1) + " " + short_num(q[k].v, 1);
+            t += "z\"/>\n";
         }
         if (o.seams == SeamFix::layered && any_crisp)
-            t += "</g><g id=\"" + group + "h\">\n" + crisp_paths + "</g></defs>\n<use xlink:href=\"#" + group + "h\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group +
-                 "\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group + "\"/>\n";
+            t += "</g></defs>\n<use xlink:href=\"#" + group + "\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group +
+                 "\" visibility=\"hidden\"/>\n";
         else if (o.seams == SeamFix::layered)
             t += "</g></defs>\n<use xlink:href=\"#" + group + "\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group +
                  "\"/>\n";
