@@ -303,8 +303,8 @@ Status hard_second_run(const Image& image, const GenerateOptions& options, ErdRu
 // An image measured stepped or hard (edge_kind.h) after its first run in *result (soft or hard
 // edges as measured): the three treatments of its edges, soft detection, hard edges and no
 // detected edges, each model with its edges' kinds chosen by fit (edge_kinds.h); the one whose
-// own reconstruction has the highest PSNR is kept (the first tried on a tie), with the first
-// run's measurement.
+// own reconstruction has the highest PSNR is kept (the first tried on a tie; an exact one ends the
+// search), with the first run's measurement.
 Status try_edge_treatments(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
     const ErdStepStats measured = result->stats.erd;
     const int first = measured.hard_edges ? 1 : 0;
@@ -313,7 +313,7 @@ Status try_edge_treatments(const Image& image, const GenerateOptions& options, E
     best = tried[first];
     int choice = first;
     for (int k = 0; k < 3; ++k) {
-        if (k == first) continue;
+        if (k == first || std::isinf(best)) continue;  // nothing beats an exact model
         GenerateOptions o = options;
         o.edges = k == 0 ? EdgeChoice::soft : EdgeChoice::hard;
         o.detect = k < 2 && options.detect;
