@@ -17,10 +17,12 @@
 // its larger same-sign flank: a coverage ramp one pixel wide, as anti-aliasing draws an edge), and
 // the differences just outside it are at most kFlatRatio of the transition. Rendered graphics
 // (flat colours, anti-aliased edges) have many; photos few, their ground is never that flat. An
-// image that is not hard is stepped when clean / steps >= kSteppedFraction, steps counting every
-// strong step that is the largest along its line (hard, soft or neither); the ERD methods then
-// also try hard edges and no edges, and decide each edge's kind by fit
-// (algorithms/methods/scaffold.h run_erd_method).
+// image is stepped when clean / steps >= kSteppedFraction, steps counting every strong step that
+// is the largest along its line (hard, soft or neither), unless nearly all its strong steps are
+// hard (hard_fraction >= kPixelArtFraction: aliased drawings, pixel art, whose crack edges need
+// nothing else); the ERD methods then try soft detection, hard edges and no edges, and decide each
+// edge's kind by fit (algorithms/methods/scaffold.h run_erd_method). A stepped image may be hard
+// as well (a rendering whose straight edges fall on pixel boundaries: the flag of thirteen stripes).
 //
 // Cracks. A hard edge is traced on the half-pixel grid (doubled coordinates): the midpoint
 // (2x+1, 2y) between pixels (x, y) and (x+1, y) and (2x, 2y+1) between (x, y) and (x, y+1) are
@@ -42,6 +44,7 @@ constexpr double kFlankRatio = 0.2;
 constexpr double kHardFraction = 0.6;
 constexpr double kFlatRatio = 0.05;
 constexpr double kSteppedFraction = 0.09;
+constexpr double kPixelArtFraction = 0.9;
 
 struct EdgeKindStats {
     std::size_t hard = 0;  // strong steps completed between two pixels
@@ -52,7 +55,7 @@ struct EdgeKindStats {
     double clean_fraction() const { return steps ? double(clean) / double(steps) : 0.0; }
     // No strong step at all (a smooth image) counts as soft: nothing to gain from hard edges.
     bool is_hard() const { return hard + soft > 0 && hard_fraction() >= kHardFraction; }
-    bool is_stepped() const { return !is_hard() && clean_fraction() >= kSteppedFraction; }
+    bool is_stepped() const { return hard_fraction() < kPixelArtFraction && clean_fraction() >= kSteppedFraction; }
 };
 
 EdgeKindStats measure_edge_kind(const Image& im);

@@ -300,8 +300,8 @@ Status hard_second_run(const Image& image, const GenerateOptions& options, ErdRu
     return Status::success();
 }
 
-// An image measured stepped or hard (edge_kind.h) after its first run in *result (soft or hard
-// edges as measured): the three treatments of its edges, soft detection, hard edges and no
+// An image measured stepped (edge_kind.h) after its first run in *result (soft or hard edges as
+// measured): the three treatments of its edges, soft detection, hard edges and no
 // detected edges, each model with its edges' kinds chosen by fit (edge_kinds.h); the one whose
 // own reconstruction has the highest PSNR is kept (the first tried on a tie; an exact one ends the
 // search), with the first run's measurement.
@@ -348,7 +348,7 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
     Status st = run(image, options, true, result);
     if (st && result->model.edges == EdgeKind::hard) st = hard_second_run(image, options, run, result);
     const ErdStepStats& s = result->stats.erd;
-    if (st && s.edges_measured && (s.stepped || s.hard_edges)) st = try_edge_treatments(image, options, run, result);
+    if (st && s.edges_measured && s.stepped) st = try_edge_treatments(image, options, run, result);
     return st;
 }
 
