@@ -59,33 +59,38 @@ Status choose_edge_kinds(const Image& image, Model* m, double* psnr, int threads
     if (Status s = reconstruct(*m, true, &super, {}, threads); !s) return s;
     if (point.samples.size() != image.samples.size()) return Status::failure("edge kinds: the model and the image differ in size");
     const std::size_t n = image.pixels(), W = std::size_t(image.width), C = std::size_t(image.channels);
-    // Per pixel: the squared errors as point evaluation and as supersampling (summed over channels).
-    std::vector<double> ep(n, 0.0), es(n, 0.0);
-    double sp = 0.0, ss = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
+    // A pixel's squared error (over its channels) in one of the reconstructions: computed where
+    // needed, so the choice holds no per-pixel array beyond the two images and the final mask.
+    const auto sq = [&](const Image& rec, std::size_t i) {
+        std::int64_t e = 0;
         for (std::size_t c = 0; c < C; ++c) {
-            const double s = image.samples[i * C + c], a = s - point.samples[i * C + c], b = s - super.samples[i * C + c];
-            ep[i] += a * a;
-            es[i] += b * b;
+            const std::int64_t d = std::int64_t(image.samples[i * C + c]) - std::int64_t(rec.samples[i * C + c]);
+            e += d * d;
         }
-        sp += ep[i];
-        ss += es[i];
+        return e;
+    };
+    std::int64_t sp = 0, ss = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        sp += sq(point, i);
+        ss += sq(super, i);
     }
     m->edges = sp < ss ? EdgeKind::hard : ss < sp ? EdgeKind::soft : m->edges;
-    const std::vector<double>& own = m->edges == EdgeKind::hard ? ep : es;
-    const std::vector<double>& other = m->edges == EdgeKind::hard ? es : ep;
+    const Image& own = m->edges == EdgeKind::hard ? point : super;
+    const Image& other = m->edges == EdgeKind::hard ? super : point;
     ModelTopology topo;
     if (Status s = build_topology(*m, &topo); !s) return s;
     for (const auto& e : discontinuities(*m, topo)) {
-        double g = 0.0;
-        for_each_governed_pixel(m->vertices[e[0]], m->vertices[e[1]], m->width, m->height,
-                                [&](int x, int y) { g += own[std::size_t(y) * W + std::size_t(x)] - other[std::size_t(y) * W + std::size_t(x)]; });
-        if (g > 0.0) m->kind_exceptions.push_back(e);
+        std::int64_t g = 0;
+        for_each_governed_pixel(m->vertices[e[0]], m->vertices[e[1]], m->width, m->height, [&](int x, int y) {
+            const std::size_t i = std::size_t(y) * W + std::size_t(x);
+            g += sq(own, i) - sq(other, i);
+        });
+        if (g > 0) m->kind_exceptions.push_back(e);
     }
     const std::vector<std::uint8_t> governed = exception_pixels(*m);
-    double sse = 0.0;
-    for (std::size_t i = 0; i < n; ++i) sse += governed[i] ? other[i] : own[i];
-    *psnr = psnr_of_mse(sse / double(n * C), image.maxval);
+    std::int64_t sse = 0;
+    for (std::size_t i = 0; i < n; ++i) sse += sq(governed[i] ? other : own, i);
+    *psnr = psnr_of_mse(double(sse) / double(n * C), image.maxval);
     return Status::success();
 }
 
