@@ -261,8 +261,8 @@ function link(a, name, blob) {
 }
 
 function fromWorker(r) {
-    if (r.builtin) {
-        setPicture({name: OPENING.name, rgb: r.builtin, width: OPENING.width, height: OPENING.height, note: '', builtin: true});
+    if (r.builtin) {  // unless the user was quicker with a picture of their own
+        if (!picture) setPicture({name: OPENING.name, rgb: r.builtin, width: OPENING.width, height: OPENING.height, note: '', builtin: true});
         return;
     }
     if (r.progress !== undefined) { progress(r.progress, r.fraction); return; }

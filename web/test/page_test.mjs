@@ -2,8 +2,8 @@
 // on a free port (started here). One visit as a user would make it, step by step:
 //   opening  the page meshes its built-in picture with no action (erdgpi 0.5%); the picture, the
 //            model, the vector SVG and the reconstruction PNG it offers are saved;
-//   screens  screenshots at 1280 and 390 px wide (each a fresh page, after its opening mesh); at
-//            390 px nothing is wider than the screen; every control has a label;
+//   screens  screenshots at 1280 and 390 px wide (the window narrowed); at 390 px nothing is
+//            wider than the screen; every control has a label;
 //   keys     the picture zooms with + and fits with 0 (focus on the picture);
 //   slider   one step of the density slider with the keyboard (0.5% -> 0.6%) meshes again: a
 //            new vertex count;
@@ -13,7 +13,7 @@
 //   drop     a PNG dropped on the picture (a drop event with a DataTransfer holding the file),
 //            meshed at 1% with edges hard and wedge fit 3 set in "More options";
 //   bad      a file that is not an image, dropped: the error line names it, the picture stays;
-//   file     a PNG through the file chooser (a fresh page: the form's defaults), 1%;
+//   file     a PNG through the file chooser, 1%, the two flags set back to their defaults;
 //   paste    the opening picture pasted (a paste event holding the file), 0.5%.
 // For each meshing step it prints "STEP page: vertices N psnr P model-bytes B model-sha256 H ms T
 // progress-max Q channels C files-ms F" and saves OUT/STEP.page.erd, .svg and .png for
@@ -102,33 +102,29 @@ let code = 1;
 const browser = await chromium.launch({executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox']});
 try {
     const errors = [];
-    const open = async (width, height) => {
-        const page = await browser.newPage({viewport: {width, height}, acceptDownloads: true});
-        page.on('pageerror', (e) => errors.push(e.message));
-        await page.goto(url);
-        return page;
-    };
+    const page = await browser.newPage({viewport: {width: 1280, height: 800}, acceptDownloads: true});
+    page.on('pageerror', (e) => errors.push(e.message));
 
     // opening: no action but waiting.
     const t0 = Date.now();
-    const page = await open(1280, 800);
+    await page.goto(url);
     await settled(page, 0);
     console.log(`opening: meshed ${Date.now() - t0} ms after the page was asked for, with no user action`);
     const opening = await report(page, 'opening');
     const [pic] = await Promise.all([page.waitForEvent('download'), page.click('#dl-original')]);
     await pic.saveAs(`${out}/opening.png`);
 
-    // screens (and a fresh page at 390 px).
+    // screens: the same page at 1280 and at 390 px wide.
     await page.screenshot({path: `${shots}/web-1280.png`});
-    const phone = await open(390, 844);
-    await settled(phone, 0);
-    await phone.screenshot({path: `${shots}/web-390.png`, fullPage: true});
-    const wide = await phone.evaluate(() => document.documentElement.scrollWidth);
+    await page.setViewportSize({width: 390, height: 844});
+    await page.waitForTimeout(200);  // the picture refits and its mesh is drawn again on the next frame
+    await page.screenshot({path: `${shots}/web-390.png`, fullPage: true});
+    const wide = await page.evaluate(() => document.documentElement.scrollWidth);
     if (wide > 390) fail(`at 390 px the page is ${wide} px wide`);
-    const unlabelled = await phone.evaluate(() => [...document.querySelectorAll('input, select, button')].filter((e) =>
+    const unlabelled = await page.evaluate(() => [...document.querySelectorAll('input, select, button')].filter((e) =>
         !(e.labels?.length || e.getAttribute('aria-label') || (e.tagName === 'BUTTON' && e.textContent.trim()))).map((e) => e.id));
     if (unlabelled.length) fail(`controls without a label: ${unlabelled.join(' ')}`);
-    await phone.close();
+    await page.setViewportSize({width: 1280, height: 800});
     console.log(`screens: ${shots}/web-1280.png, ${shots}/web-390.png; at 390 px the page is ${wide} px wide; every control has a label`);
 
     // keys: zoom on the focused picture.
@@ -185,23 +181,21 @@ try {
     if (!error.startsWith('notes.png: not an image')) fail(`the error line says "${error}"`);
     if (await meshes(page) !== n || await page.evaluate(() => document.getElementById('vertices').dataset.value) !== before) fail('a bad file changed the picture');
     console.log(`bad: the error line says "${error}"; the picture and its mesh stay`);
-    await page.close();
 
-    // file: a fresh page (the form's defaults), the file chooser, 1%.
-    const page2 = await open(1280, 800);
-    await page2.click('#more summary');
-    await page2.fill('#density', '1');
-    await page2.dispatchEvent('#density', 'change');
-    await page2.setInputFiles('#file', filePng);
-    await meshedAs(page2, path.basename(filePng));
-    await report(page2, 'file');
+    // file: the file chooser, 1%, the flags back at their defaults.
+    await page.selectOption('#edges', '0');
+    await page.fill('#wedge-fit', '6');
+    await page.dispatchEvent('#wedge-fit', 'change');
+    await page.setInputFiles('#file', filePng);
+    await meshedAs(page, path.basename(filePng));
+    await report(page, 'file');
 
     // paste: the opening picture, 0.5%.
-    await page2.fill('#density', '0.5');
-    await page2.dispatchEvent('#density', 'change');
-    await hand(page2, 'paste', readFileSync(`${out}/opening.png`), 'opening.png', 'image/png');
-    await meshedAs(page2, 'opening.png');
-    await report(page2, 'paste');
+    await page.fill('#density', '0.5');
+    await page.dispatchEvent('#density', 'change');
+    await hand(page, 'paste', readFileSync(`${out}/opening.png`), 'opening.png', 'image/png');
+    await meshedAs(page, 'opening.png');
+    await report(page, 'paste');
     if (errors.length) fail(`errors on the page: ${errors.join('; ')}`);
     code = 0;
 } catch (e) {
