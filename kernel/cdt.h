@@ -236,7 +236,7 @@ private:
     void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
     template <bool Branchless>
-    Location walk_as(LatticePoint p, FaceInd start) const;  // walk's two step styles (cdt.cpp)
+    Location walk_as(LatticePoint p, FaceInd start) const;  // walk's two step styles (cdt_locate.cpp)
     Location locate_brute(LatticePoint p) const;
     VertInd add_vertex(LatticePoint p);
     Status insert_one(LatticePoint p, VertInd* v, FaceInd hint);
