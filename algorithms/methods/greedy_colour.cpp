@@ -79,38 +79,33 @@ bool GreedyRefiner::fixed_scan(const SpanPlane* planes, LatticePoint p0, Lattice
     steps.set(dV);
     std::uint64_t isum = 0;
     std::int32_t ibest = -1, cx = 0, cy = 0;
-    OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
-    for (RowRun part; rows.next(&part);) {
-        for (RowRun run = part; run.j <= run.j_end; run.step()) {
-            std::int64_t lo, hi;
-            run.columns(&lo, &hi);
-            if (lo > hi) continue;
-            const std::int64_t j = run.j, n = hi - lo;
-            std::int32_t V0[3];
-            bool clamp = false;
-            for (int c = 0; c < 3; ++c) {
-                const std::int64_t a = (Z[c] + (lo - i0) * GX[c] + (j - j0) * GY[c]) >> 16, e = a + n * dV[c];
-                if (std::min(a, e) < 0 || std::max(a, e) >= top) {
-                    // Cannot happen on a basic model's faces (their planes stay within the
-                    // corner values); kept so that the lanes hold every value exactly.
-                    if (a < -lim || a > lim || e < -lim || e > lim) return false;
-                    clamp = true;
-                }
-                V0[c] = std::int32_t(a);
+    const auto scan_row = [&](std::int32_t row, std::int32_t x0, std::int32_t x1) {
+        const std::int64_t j = row, lo = x0, n = x1 - lo;
+        std::int32_t V0[3];
+        bool clamp = false;
+        for (int c = 0; c < 3; ++c) {
+            const std::int64_t a = (Z[c] + (lo - i0) * GX[c] + (j - j0) * GY[c]) >> 16, e = a + n * dV[c];
+            if (std::min(a, e) < 0 || std::max(a, e) >= top) {
+                // Cannot happen on a basic model's faces (their planes stay within the
+                // corner values); kept so that the lanes hold every value exactly.
+                if (a < -lim || a > lim || e < -lim || e > lim) return false;
+                clamp = true;
             }
-            const std::size_t at = std::size_t(j) * width;
-            const std::uint16_t* s = samples + 3 * (at + std::size_t(lo));
-            if (run.j < run.j_end) {  // the next row's samples (the interleaved image is 6 bytes a pixel)
-                __builtin_prefetch(s + 3 * width);
-                __builtin_prefetch(s + 3 * width + 3 * (hi - lo));
-            }
-            const std::int32_t x0 = std::int32_t(lo), x1 = std::int32_t(hi);
-            const bool moved =
-                clamp ? colour_scan::scan_span<true>(s, end, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx)
-                      : colour_scan::scan_span<false>(s, end, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx);
-            if (moved) cy = std::int32_t(j);
+            V0[c] = std::int32_t(a);
         }
-    }
+        const std::size_t at = std::size_t(j) * width;
+        const std::uint16_t* s = samples + 3 * (at + std::size_t(lo));
+        if (row + 1 < image_.height) {  // the next row's samples (the interleaved image is 6 bytes a pixel)
+            __builtin_prefetch(s + 3 * width);
+            __builtin_prefetch(s + 3 * width + 3 * n);
+        }
+        const bool moved =
+            clamp ? colour_scan::scan_span<true>(s, end, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx)
+                  : colour_scan::scan_span<false>(s, end, banned_.data() + at, x0, x1, V0, steps, maxval, &isum, &ibest, &cx);
+        if (moved) cy = row;
+        return true;
+    };
+    if (!for_each_owned_row(Lattice::pixels(), domain_, p0, p1, p2, scan_row)) return false;
     *sum = double(isum);
     *best = double(ibest);
     *bx = cx;

@@ -39,20 +39,13 @@ void GreedyRefiner::rescan(FaceInd f) {
     const std::uint8_t* const banned = banned_.data();
     const std::size_t width = std::size_t(image_.width);
     auto walk = [&](auto with_value, auto&& scan_row) {
-        OwnedRows rows(Lattice::pixels(), domain_, p[0], p[1], p[2]);
-        for (RowRun part; rows.next(&part);) {
-            for (RowRun run = part; run.j <= run.j_end; run.step()) {
-                std::int64_t lo64, hi64;
-                run.columns(&lo64, &hi64);
-                if (lo64 > hi64) continue;
-                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
-                const std::size_t row = std::size_t(j) * width;
-                if constexpr (decltype(with_value)::value)
-                    scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
-                else
-                    scan_row(samples + row, banned + row, j, lo, hi);
-            }
-        }
+        for_each_owned_row(Lattice::pixels(), domain_, p[0], p[1], p[2], [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            const std::size_t row = std::size_t(j) * width;
+            if constexpr (decltype(with_value)::value)
+                scan_row(samples + row, banned + row, j, lo, hi, plane.at(double(2 * lo), double(2 * j)));
+            else
+                scan_row(samples + row, banned + row, j, lo, hi);
+        });
     };
     double sum = 0.0, best = -1.0;
     std::int32_t bx = 0, by = 0;

@@ -129,7 +129,6 @@ void add_pixel_row(const FinePlane& fp, const Span* spans, int n, double* acc, s
 // face's spans and adding them span by span, in the same order (pixel rows are disjoint sums).
 void add_face(const FinePlane* fp, std::size_t C, LatticePoint a, LatticePoint b, LatticePoint c, RasterDomain dom,
               std::int32_t j_begin, std::int32_t j_end, double* acc, std::size_t plane, std::size_t W, std::size_t row0) {
-    OwnedRows rows(Lattice::supersample(), dom, a, b, c, j_begin, j_end);
     Span g[4];
     int n = 0;
     const auto flush = [&] {
@@ -138,16 +137,13 @@ void add_face(const FinePlane* fp, std::size_t C, LatticePoint a, LatticePoint b
             for (std::size_t k = 0; k < C; ++k) add_pixel_row(fp[k], g, n, acc + k * plane, W, row0);
         n = 0;
     };
-    for (RowRun part; rows.next(&part);) {
-        for (RowRun run = part; run.j <= run.j_end; run.step()) {
-            std::int64_t lo, hi;
-            run.columns(&lo, &hi);
-            if (lo > hi) continue;
-            const std::int32_t j = std::int32_t(run.j);
+    for_each_owned_row(
+        Lattice::supersample(), dom, a, b, c,
+        [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
             if (n > 0 && (j >> 2) != (g[0].y >> 2)) flush();
-            g[n++] = Span{j, std::int32_t(lo), std::int32_t(hi)};
-        }
-    }
+            g[n++] = Span{j, lo, hi};
+        },
+        j_begin, j_end);
     if (n > 0) flush();
 }
 
