@@ -198,6 +198,18 @@ Status count(Tokens& tk, const What& what, std::uint64_t lo, std::uint64_t min_b
     return Status::success();
 }
 
+// The first line of a file of ours other than a model: its magic word and format version 1.
+// `what` names the kind for a text that starts otherwise ("an erd polylines file").
+inline Status expect_magic(Tokens& tk, const char* magic, const char* what) {
+    if (tk.at_end()) return Status::bad_input("empty file");
+    std::string_view t;
+    tk.next(&t);
+    if (t != magic)
+        return Status::bad_input(tk.where() + "not " + what + " (expected '" + magic + " 1', found '" + show(t) + "')");
+    std::uint64_t version = 0;
+    return tk.uint("format version", 1, 1, &version);
+}
+
 // Nothing may follow the last record: "unexpected 'X' after the last WHAT (check the counts)".
 inline Status expect_end(Tokens& tk, const char* what) {
     if (tk.at_end()) return Status::success();
