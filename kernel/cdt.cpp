@@ -257,31 +257,11 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         fdb = flags_[edb];
     }
     const FaceInd n1 = new_faces(t != noEdge ? 2 : 1);
-    set_face(f, c, a, p);
-    set_face(n1, c, p, b);
-    link(3 * f + 0, tca);
-    flags_[3 * f + 0] = fca;
-    link(3 * n1 + 2, tbc);
-    flags_[3 * n1 + 2] = fbc;
-    link(3 * f + 2, 3 * n1 + 0);
-    flags_[3 * f + 2] = 0;
-    flags_[3 * n1 + 0] = 0;
-    flags_[3 * f + 1] = fe;
-    flags_[3 * n1 + 1] = fe;
+    split_side(f, n1, c, a, b, p, tca, fca, tbc, fbc, fe);
     EdgeInd seeds[4] = {3 * f + 0, 3 * n1 + 2, noEdge, noEdge};
     if (t != noEdge) {
         const FaceInd n2 = n1 + 1;
-        set_face(g, d, b, p);
-        set_face(n2, d, p, a);
-        link(3 * g + 0, tdb);
-        flags_[3 * g + 0] = fdb;
-        link(3 * n2 + 2, tad);
-        flags_[3 * n2 + 2] = fad;
-        link(3 * g + 2, 3 * n2 + 0);
-        flags_[3 * g + 2] = 0;
-        flags_[3 * n2 + 0] = 0;
-        flags_[3 * g + 1] = fe;
-        flags_[3 * n2 + 1] = fe;
+        split_side(g, n2, d, b, a, p, tdb, fdb, tad, fad, fe);
         link(3 * f + 1, 3 * n2 + 1);
         link(3 * n1 + 1, 3 * g + 1);
         seeds[2] = 3 * g + 0;
@@ -291,6 +271,24 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         twin_[3 * n1 + 1] = noEdge;
     }
     legalize_around(p, seeds, t != noEdge ? 4 : 2);
+}
+
+// One side of split_edge: face f = (x, u, w), whose edge u->w gets p, becomes f = (x, u, p) and
+// n = (x, p, w). txu, fxu: the twin and flag of the old edge x->u; twx, fwx: of w->x; fe: the
+// split edge's flag, which both halves u->p, p->w inherit (their twins are the other side's).
+void Cdt::split_side(FaceInd f, FaceInd n, VertInd x, VertInd u, VertInd w, VertInd p, EdgeInd txu, std::uint8_t fxu,
+                     EdgeInd twx, std::uint8_t fwx, std::uint8_t fe) {
+    set_face(f, x, u, p);
+    set_face(n, x, p, w);
+    link(3 * f + 0, txu);
+    flags_[3 * f + 0] = fxu;
+    link(3 * n + 2, twx);
+    flags_[3 * n + 2] = fwx;
+    link(3 * f + 2, 3 * n + 0);
+    flags_[3 * f + 2] = 0;
+    flags_[3 * n + 0] = 0;
+    flags_[3 * f + 1] = fe;
+    flags_[3 * n + 1] = fe;
 }
 
 Status Cdt::insert_point(LatticePoint p, VertInd* v, FaceInd hint) {

@@ -243,6 +243,8 @@ private:
     VertInd insert_at(LatticePoint p, const Location& loc);
     void split_face(FaceInd f, VertInd p);
     void split_edge(EdgeInd e, VertInd p);
+    void split_side(FaceInd f, FaceInd n, VertInd x, VertInd u, VertInd w, VertInd p, EdgeInd txu, std::uint8_t fxu,
+                    EdgeInd twx, std::uint8_t fwx, std::uint8_t fe);
     EdgeInd flip(EdgeInd e);  // returns the new diagonal d->c (in f1)
     void legalize_around(VertInd p, const EdgeInd* seeds, unsigned count);
     void legalize_pairs();
