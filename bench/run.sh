@@ -30,8 +30,13 @@ results_section() {
         echo "## $2"
         echo
         echo "Written by \`make bench\` on $(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo '?');"
-        echo "$(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg) at the end of the block (a load above the core count"
-        echo "means other jobs shared the machine: compare ratios measured in one run, not times across runs)."
+        echo "$(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg) at the end of the block."
+        if awk -v l="$(cut -d' ' -f1 /proc/loadavg)" -v n="$(nproc)" 'BEGIN { exit !(l > n) }'; then
+            echo "**A busy machine**: the load was above the core count, so other jobs shared it; times are slower"
+            echo "and noisier than on a quiet machine. Compare the ratios measured side by side in this run."
+        else
+            echo "A quiet machine (load below the core count)."
+        fi
         echo
         cat
         echo "<!-- /$1 -->"
