@@ -168,14 +168,14 @@ fi
 SCALE_SIZES=${SCALE_SIZES:-512 1024 2048}
 SCALE_RUNS=${SCALE_RUNS:-3}
 [[ -z ${HMM_SRC+set} && -f ../hmm/Makefile ]] && HMM_SRC=$(cd ../hmm && pwd)
-HMM="" hmm_note="hmm: not available (HMM_SRC names no checkout of fogleman/hmm, and there is none at ../hmm); the ratios are to erd gpi."
+HMM="" hmm_note="hmm: not available (HMM_SRC names no checkout of fogleman/hmm, and there is none at ../hmm)."
 if [[ -n ${HMM_SRC:-} ]]; then
     if [[ -f $HMM_SRC/Makefile ]] && cp -r "$HMM_SRC" "$OUT/hmm-src" && make -s -C "$OUT/hmm-src" >/dev/null 2>&1 &&
        [[ -x $OUT/hmm-src/bin/release/hmm ]]; then
         HMM=$OUT/hmm-src/bin/release/hmm
         hmm_note="hmm: built by its own Makefile from the checkout in $HMM_SRC."
     else
-        hmm_note="hmm: did not build from $HMM_SRC (it needs libglm-dev); the ratios are to erd gpi."
+        hmm_note="hmm: did not build from $HMM_SRC (it needs libglm-dev)."
         echo "scale: hmm did not build from $HMM_SRC (needs libglm-dev); comparing against gpi only"
     fi
 fi
@@ -235,8 +235,9 @@ if [[ -s $speed_rows ]]; then
         echo "medians of $SCALE_RUNS runs after a warm-up, each program on the same image one after the other in one"
         echo "run. synth = \`erd synth\` (8-bit, noise; its edges measure hard), \"soft\" = the same with"
         echo "\`--edges soft\` for the ERD methods (Canny on noise: the heaviest step 1 there is), height16 = a"
-        echo "16-bit heightmap without noise (PNG). hmm meshes to the same vertex count (\`hmm -z 1 -e 0 -p N\`,"
-        echo "STL out). In brackets: the ratio to $([[ -n $HMM ]] && echo "hmm's" || echo "erd gpi's") CPU time."
+        echo "16-bit heightmap without noise (PNG)."
+        if [[ -n $HMM ]]; then echo "hmm meshes to the same vertex count (\`hmm -z 1 -e 0 -p N\`, STL out). In brackets: the ratio to hmm's CPU time."
+        else echo "In brackets: the ratio to erd gpi's CPU time."; fi
         echo "$hmm_note"
         echo
         if [[ -n $HMM ]]; then echo "| image | size | hmm | gpi | ed | erdgpi | erded |"; echo "|---|---|---:|---:|---:|---:|---:|"
