@@ -2,10 +2,12 @@
 // and the bytes of a model for the name it is written to.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model.h"
 #include "algorithms/model/model_topology.h"
+#include "cli/report.h"
 #include "kernel/status.h"
 
 namespace erd::cli {
@@ -21,6 +23,12 @@ namespace erd::cli {
 // name; *info (may be null) then receives its section sizes (zeros for a text model).
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr,
                        ErdzInfo* info = nullptr);
+
+// The model a subcommand draws, exports or reconstructs into `out`: refuses an `out` that is one
+// of `inputs` (refuse_overwrite, cli/fileio.h; the model's path first), reads inputs[0] with
+// load_model_file and prints its warning through rep.
+Status load_input_model(const std::string& out, const std::vector<std::string>& inputs, const Reporter& rep, Model* m,
+                        ModelTopology* topo = nullptr);
 
 // True when the name ends with ".erdz".
 bool erdz_name(const std::string& path);
