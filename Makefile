@@ -53,7 +53,7 @@ help:
 	@echo "make unit       the unit tests only (ERD_BIN, ERD_IMAGES from the environment override)"
 	@echo "make asan       the ASan+UBSan build in build-asan/ (clang++)"
 	@echo "make embedded   the library at -Os -fno-exceptions -fno-rtti and docs/examples/embedded.cpp"
-	@echo "make bench      speed and memory benchmarks (medians)"
+	@echo "make bench      speed and memory beside hmm (medians) -> docs/RESULTS.md"
 	@echo "make codec-bench  .erdz bpp at equal PSNR against JPEG, JPEG 2000, WebP (installs them) -> out/codec/"
 	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"

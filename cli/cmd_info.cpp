@@ -181,11 +181,9 @@ static int run_info(const Args& args, const Reporter& rep) {
     if (model_file(path)) return model_info(path, args, rep);
 
     Image im;
-    std::string warning;
     ImageFormat fmt = ImageFormat::unknown;
-    Status st = read_image(path, &im, &warning, &fmt);
+    Status st = read_input_image(path, ColourInput::keep, rep, &im, &fmt);
     if (!st) return rep.fail(st);
-    rep.warn(warning);
 
     unsigned lo = 65535, hi = 0;
     double sum = 0;

@@ -69,6 +69,15 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
     return st;
 }
 
+Status load_input_model(const std::string& out, const std::vector<std::string>& inputs, const Reporter& rep, Model* m,
+                        ModelTopology* topo) {
+    if (Status st = refuse_overwrite(out, inputs); !st) return st;
+    std::string warning;
+    if (Status st = load_model_file(inputs[0], m, &warning, topo); !st) return st;
+    rep.warn(warning);
+    return Status::success();
+}
+
 bool erdz_name(const std::string& path) { return path.size() > 5 && path.compare(path.size() - 5, 5, ".erdz") == 0; }
 
 Status encode_model_file(const std::string& path, const Model& m, const ErdzOptions& options, std::string* bytes,

@@ -3,11 +3,13 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
+#include "cli/report.h"
 #include "kernel/status.h"
 
 namespace erd::cli {
@@ -29,6 +31,12 @@ struct ModelFileFacts {
 };
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr,
                        ErdzInfo* info = nullptr, ModelFileFacts* file = nullptr);
+
+// The model a subcommand draws, exports or reconstructs into `out`: refuses an `out` that is one
+// of `inputs` (refuse_overwrite, cli/fileio.h; the model's path first), reads inputs[0] with
+// load_model_file and prints its warning through rep.
+Status load_input_model(const std::string& out, const std::vector<std::string>& inputs, const Reporter& rep, Model* m,
+                        ModelTopology* topo = nullptr);
 
 // True when the name ends with ".erdz".
 bool erdz_name(const std::string& path);
