@@ -36,13 +36,6 @@ const fail = (message) => { throw new Error(message); };
 
 // python3's server on port 0 (the system picks a free one) prints the one it got.
 const server = spawn('python3', ['-u', '-m', 'http.server', '0', '--bind', '127.0.0.1', '--directory', web], {stdio: ['ignore', 'pipe', 'ignore']});
-const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => { text += d; const m = text.match(/port (\d+)/); if (m) resolve(m[1]); });
-    server.on('exit', () => reject(new Error('the HTTP server did not start')));
-    setTimeout(() => reject(new Error('the HTTP server did not answer in 10 s')), 10000);
-});
-const url = `http://127.0.0.1:${port}/index.html`;
 
 const state = (page) => page.evaluate(() => ({...document.body.dataset}));
 const idle = (page) => page.waitForFunction(() => ['idle', 'error'].includes(document.body.dataset.state), null, WAIT);
@@ -98,9 +91,16 @@ async function hand(page, type, bytes, name, mime) {
     }, {type, b64: bytes.toString('base64'), name, mime});
 }
 
-let code = 1;
-const browser = await chromium.launch({executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox']});
+let code = 1, browser = null;
 try {
+    const port = await new Promise((resolve, reject) => {
+        let text = '';
+        server.stdout.on('data', (d) => { text += d; const m = text.match(/port (\d+)/); if (m) resolve(m[1]); });
+        server.on('exit', () => reject(new Error('the HTTP server did not start')));
+        setTimeout(() => reject(new Error('the HTTP server did not answer in 10 s')), 10000);
+    });
+    const url = `http://127.0.0.1:${port}/index.html`;
+    browser = await chromium.launch({executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox']});
     const errors = [];
     const page = await browser.newPage({viewport: {width: 1280, height: 800}, acceptDownloads: true});
     page.on('pageerror', (e) => errors.push(e.message));
@@ -200,11 +200,11 @@ try {
     code = 0;
 } catch (e) {
     console.log('FAIL:', e.message);
-    for (const p of browser.contexts().flatMap((c) => c.pages()))  // where each page stood
+    for (const p of browser ? browser.contexts().flatMap((c) => c.pages()) : [])  // where each page stood
         console.log('  page state:', JSON.stringify(await p.evaluate(() => ({...document.body.dataset, what: document.getElementById('what').textContent,
                                                                                error: document.getElementById('error').textContent}))));
 } finally {
-    await browser.close();
+    await browser?.close();
     server.kill();
 }
 process.exit(code);
