@@ -5,6 +5,11 @@
 # are not).
 #
 # Each helper adds its own clearly separated block below, calling bench_case.
+#
+# The tables users read are rewritten in place in docs/RESULTS.md, each in its own marked section
+# (tools/results_section.sh; the rest of the file is left alone): "speed" (the scale block, beside
+# hmm), "memory", "colour-cost", and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
+# not run leaves its section as it was. RESULTS=FILE writes them elsewhere, RESULTS=none nowhere.
 set -u
 ERD=${1:-build/erd}
 IMAGES=${2:-../shared/images}
@@ -12,7 +17,33 @@ RUNS=${RUNS:-7}
 CALLGRIND=${CALLGRIND:-0}
 [[ $ERD == */* && $ERD != /* ]] && ERD=$PWD/$ERD
 [[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
+[[ -n ${RESULTS:-} && $RESULTS != none && $RESULTS != /* ]] && RESULTS=$PWD/$RESULTS
 cd "$(dirname "$0")/.."
+RESULTS=${RESULTS:-docs/RESULTS.md}
+. tools/results_section.sh
+# results_section MARK TITLE: reads the section's body on stdin and puts it, under its heading and
+# the line saying when and where it was measured, in $RESULTS.
+results_section() {
+    [[ $RESULTS == none ]] && { cat >/dev/null; return; }
+    {
+        echo "<!-- $1: written by make bench (bench/run.sh); do not edit by hand -->"
+        echo "## $2"
+        echo
+        echo "Written by \`make bench\` on $(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo '?');"
+        echo "$(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg) at the end of the block."
+        if awk -v l="$(cut -d' ' -f1 /proc/loadavg)" -v n="$(nproc)" 'BEGIN { exit !(l > n) }'; then
+            echo "**A busy machine**: the load was above the core count, so other jobs shared it; times are slower"
+            echo "and noisier than on a quiet machine. Compare the ratios measured side by side in this run."
+        else
+            echo "A quiet machine (load below the core count)."
+        fi
+        echo
+        cat
+        echo "<!-- /$1 -->"
+    } >"$OUT/$1.section"
+    put_section "$1" "$OUT/$1.section" "$RESULTS"
+    echo "bench: wrote the $1 section of $RESULTS"
+}
 # Outputs go to tmpfs when there is one (BENCH_OUT overrides): the atomic writer fsyncs, and on
 # a disk an fsync can cost more than the work being measured.
 if [[ -n ${BENCH_OUT:-} ]]; then OUT=$BENCH_OUT
@@ -125,21 +156,32 @@ fi
 # ---------------------------------------------------------------------------------------------
 # scale (issue 18): whole process at -d 1 on `erd synth` images (8-bit with noise; a 16-bit
 # heightmap without noise), and on the photos, side by side with fogleman/hmm when HMM_SRC names
-# a local checkout of it (built here, outside the repository, into $OUT), else against our GPI.
+# a local checkout of it (default: ../hmm beside the repository, when it holds hmm's Makefile;
+# built here, outside the repository, into $OUT; nothing is downloaded), else against our GPI.
 # hmm meshes to the same vertex count (-p N -e 0) and writes STL; the 16-bit heightmap is a PNG,
 # which both read (hmm's reader takes 16 bits from PNG only). Targets: erdgpi and erded
 # <= 1.0x hmm's CPU time, within 2x GPI; peak RSS <= 32 bytes per pixel for every method.
 # SCALE_SIZES (default "512 1024 2048") adds 4096 8192; SCALE_RUNS (default 3) runs per case.
 # Each line has the CPU time per pixel, so the sizes make the growth table (docs/DECISIONS.md
-# "Scale"), and with CALLGRIND=1 the instructions per pixel up to SCALE_CALLGRIND_MAX.
+# "Speed and growth"), and with CALLGRIND=1 the instructions per pixel up to SCALE_CALLGRIND_MAX.
+# Writes the "speed" section of docs/RESULTS.md.
 SCALE_SIZES=${SCALE_SIZES:-512 1024 2048}
 SCALE_RUNS=${SCALE_RUNS:-3}
-HMM=""
+[[ -z ${HMM_SRC+set} && -f ../hmm/Makefile ]] && HMM_SRC=$(cd ../hmm && pwd)
+HMM="" hmm_note="hmm: not available (HMM_SRC names no checkout of fogleman/hmm, and there is none at ../hmm)."
 if [[ -n ${HMM_SRC:-} ]]; then
     if [[ -f $HMM_SRC/Makefile ]] && cp -r "$HMM_SRC" "$OUT/hmm-src" && make -s -C "$OUT/hmm-src" >/dev/null 2>&1 &&
-       [[ -x $OUT/hmm-src/bin/release/hmm ]]; then HMM=$OUT/hmm-src/bin/release/hmm
-    else echo "scale: hmm did not build from $HMM_SRC (needs libglm-dev); comparing against gpi only"; fi
+       [[ -x $OUT/hmm-src/bin/release/hmm ]]; then
+        HMM=$OUT/hmm-src/bin/release/hmm
+        hmm_note="hmm: built by its own Makefile from the checkout in $HMM_SRC."
+    else
+        hmm_note="hmm: did not build from $HMM_SRC (it needs libglm-dev)."
+        echo "scale: hmm did not build from $HMM_SRC (needs libglm-dev); comparing against gpi only"
+    fi
 fi
+echo "scale: $hmm_note"
+speed_rows=$OUT/speed.rows
+: >"$speed_rows"
 # scale_case LABEL IMAGE: one line per method: CPU ms, peak RSS in bytes per pixel, the ratio to
 # hmm (or to GPI), and the B/px verdict.
 # Extra generate flags after IMAGE (the ERD methods take them; e.g. --edges soft: synth is measured
@@ -152,13 +194,17 @@ scale_case() {
     if [[ -n $HMM ]]; then
         read -r wall hcpu rss < <("$TIMEIT" "$SCALE_RUNS" "$HMM" -z 1 -e 0 -p "$n" -q "$img" "$OUT/scale.stl" || echo "- - -")
         if [[ $hcpu == - ]]; then hcpu=""; echo "scale $label: hmm could not mesh it"
-        else printf 'scale %-16s %-7s cpu %8s ms  %6s B/px\n' "$label" hmm "$hcpu" "$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')"; fi
+        else
+            printf 'scale %-16s %-7s cpu %8s ms  %6s B/px\n' "$label" hmm "$hcpu" "$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')"
+            echo "$label|$w x $h|hmm|$hcpu|" >>"$speed_rows"
+        fi
     fi
     for m in gpi ed erded erdgpi; do
         extra=(); [[ $m == erd* ]] && extra=("$@")
         read -r wall cpu rss < <("$TIMEIT" "$SCALE_RUNS" "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -n "$n" -i "$img" -o "$OUT/scale.$m" || echo "- - -")
         [[ $m == gpi ]] && gcpu=$cpu
         ref=${hcpu:-$gcpu}
+        echo "$label|$w x $h|$m|$cpu|$(awk -v c="$cpu" -v r="$ref" 'BEGIN { if (c != "-" && r > 0) printf "%.2fx", c / r }')" >>"$speed_rows"
         bpx=$(awk -v r="$rss" -v p="$px" 'BEGIN { printf "%.1f", r * 1024 / p }')
         verdict=$(awk -v b="$bpx" 'BEGIN { print (b <= 32) ? "ok" : "over" }')
         # The growth columns: CPU ns per pixel, and with CALLGRIND=1 instructions per pixel (sizes
@@ -182,6 +228,36 @@ for s in $SCALE_SIZES; do
 done
 for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pgm"; done
 rm -f "$OUT"/synth*.pgm "$OUT"/height*.png "$OUT"/scale.*
+# The table: one row per image, CPU ms of each program with its ratio to hmm (or to gpi) beside it.
+if [[ -s $speed_rows ]]; then
+    {
+        echo "Whole \`erd generate\` process (read, mesh, write) at 1% of the pixels as vertices, CPU milliseconds,"
+        echo "medians of $SCALE_RUNS runs after a warm-up, each program on the same image one after the other in one"
+        echo "run. synth = \`erd synth\` (8-bit, noise; its edges measure hard), \"soft\" = the same with"
+        echo "\`--edges soft\` for the ERD methods (Canny on noise: the heaviest step 1 there is), height16 = a"
+        echo "16-bit heightmap without noise (PNG)."
+        if [[ -n $HMM ]]; then echo "hmm meshes to the same vertex count (\`hmm -z 1 -e 0 -p N\`, STL out). In brackets: the ratio to hmm's CPU time."
+        else echo "In brackets: the ratio to erd gpi's CPU time."; fi
+        echo "$hmm_note"
+        echo
+        if [[ -n $HMM ]]; then echo "| image | size | hmm | gpi | ed | erdgpi | erded |"; echo "|---|---|---:|---:|---:|---:|---:|"
+        else echo "| image | size | gpi | ed | erdgpi | erded |"; echo "|---|---|---:|---:|---:|---:|"; fi
+        awk -F'|' -v hmm="$HMM" '
+            !($1 in seen) { seen[$1] = 1; order[++n] = $1; size[$1] = $2 }
+            { cell[$1, $3] = ($5 != "" ? $4 " (" $5 ")" : $4) }
+            END {
+                split(hmm != "" ? "hmm gpi ed erdgpi erded" : "gpi ed erdgpi erded", ms, " ")
+                for (i = 1; i <= n; ++i) {
+                    row = "| " order[i] " | " size[order[i]]
+                    for (j = 1; j in ms; ++j) row = row " | " ((order[i], ms[j]) in cell ? cell[order[i], ms[j]] : "-")
+                    print row " |"
+                }
+            }' "$speed_rows"
+        echo
+        echo "Targets (issue 18): erdgpi and erded at or below 1.0x hmm, within 2x gpi; peak memory in the"
+        echo "memory section."
+    } | results_section speed "Speed beside hmm (make bench, scale block)"
+fi
 # ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
 # memory (issues 18, 19): the peak memory of every method at -d 1 and 0.1, one run per case,
@@ -189,10 +265,13 @@ rm -f "$OUT"/synth*.pgm "$OUT"/height*.png "$OUT"/scale.*
 # with --edges soft: its noise under Canny is the edge-richest step 1 there is), 16-bit
 # heightmaps and the photos. Targets: peak <= 32 bytes per pixel; the estimate the memory cap
 # compares (memory_estimate_bytes) within 25% of the peak. MEM_SIZES (default "512 1024 2048";
-# "4096 8192" for the issue's whole range), MEM_DENSITIES (default "1 0.1").
+# "4096 8192" for the issue's whole range), MEM_DENSITIES (default "1 0.1"). Writes the "memory"
+# section of docs/RESULTS.md.
 MEM_SIZES=${MEM_SIZES:-512 1024 2048}
 MEM_DENSITIES=${MEM_DENSITIES:-1 0.1}
 mem_over=0 mem_off=0 mem_cases=0
+mem_rows=$OUT/memory.rows
+: >"$mem_rows"
 # mem_case LABEL IMAGE [ERD FLAGS...]: one line per method and density.
 mem_case() {
     local label=$1 img=$2 w h px d m peak est extra bpx err
@@ -214,6 +293,7 @@ mem_case() {
             awk -v b="$bpx" 'BEGIN { exit !(b > 32) }' && mem_over=$((mem_over + 1))
             awk -v e="$err" 'BEGIN { exit !(e > 25 || e < -25) }' && mem_off=$((mem_off + 1))
             mem_cases=$((mem_cases + 1))
+            echo "$label|$d|$m|$(awk -v r="$peak" 'BEGIN { printf "%.1f", r / 1048576 }'), $bpx, $err%" >>"$mem_rows"
             printf 'memory %-16s -d %-4s %-7s peak %8.1f MB %6s B/px %-4s  estimate %8.1f MB %5s%% %s\n' "$label" "$d" "$m" \
                 "$(awk -v r="$peak" 'BEGIN { printf "%.1f", r / 1048576 }')" "$bpx" \
                 "$(awk -v b="$bpx" 'BEGIN { print (b <= 32) ? "ok" : "over" }')" \
@@ -233,6 +313,87 @@ done
 for f in lena peppers bull; do [[ -f $IMAGES/$f.pgm ]] && mem_case "$f" "$IMAGES/$f.pgm"; done
 rm -f "$OUT"/mem.*
 echo "memory: $mem_cases cases: $mem_over above 32 B/px, $mem_off with the estimate more than 25% off the peak"
+if [[ -s $mem_rows ]]; then
+    {
+        echo "Peak resident memory of the whole \`erd generate\` process (getrusage, from \`--stats\`), one run a"
+        echo "case: MB, bytes per pixel, and the error of the estimate the memory cap compares"
+        echo "(\`memory_estimate_bytes\`, from the image read) against that peak. Images as in the speed section"
+        echo "(the heightmaps as 16-bit PGM) and peppers; \"soft\" rows run the ERD methods with \`--edges soft\` only."
+        echo
+        echo "| image | -d | gpi | ed | erded | erdgpi |"
+        echo "|---|---:|---:|---:|---:|---:|"
+        awk -F'|' '
+            !(($1, $2) in seen) { seen[$1, $2] = 1; order[++n] = $1 SUBSEP $2 }
+            { cell[$1, $2, $3] = $4 }
+            END {
+                split("gpi ed erded erdgpi", ms, " ")
+                for (i = 1; i <= n; ++i) {
+                    split(order[i], k, SUBSEP); row = "| " k[1] " | " k[2]
+                    for (j = 1; j <= 4; ++j) row = row " | " ((k[1], k[2], ms[j]) in cell ? cell[k[1], k[2], ms[j]] : "-")
+                    print row " |"
+                }
+            }' "$mem_rows"
+        echo
+        echo "$mem_cases cases: $mem_over above 32 B/px, $mem_off with the estimate more than 25% off the peak"
+        echo "(targets, issues 18 and 19: none of either)."
+    } | results_section memory "Peak memory and its estimate (make bench, memory block)"
+fi
+# ---------------------------------------------------------------------------------------------
+# heightmaps (issue 18; only with HEIGHTMAP_SIZES, e.g. "4096 9490": hmm's headline case is
+# 9490 x 9490, and hmm takes minutes there): a 16-bit `erd synth --no-noise` heightmap meshed to
+# hmm's default error, 0.001 of the range (hmm -z 1 -e 0.001; erd --max-error 65.535 with -d 5 as
+# the upper bound), and to 1% of the pixels as vertices. One run each (no warm-up): triangles,
+# CPU time, peak RSS. Writes the "heightmaps" section of docs/RESULTS.md.
+if [[ -n ${HEIGHTMAP_SIZES:-} ]]; then
+    hm_rows=$OUT/heightmaps.rows
+    : >"$hm_rows"
+    # hm_run LABEL PROGRAM COMMAND...: one row "label|program|triangles|CPU s|peak MB".
+    hm_run() {
+        local label=$1 prog=$2 wall cpu rss tri=-
+        shift 2
+        rm -f "$OUT/hm.json" "$OUT/hm.stl"
+        read -r wall cpu rss < <(TIMEIT_WARMUP=0 "$TIMEIT" 1 "$@" || echo "- - -")
+        if [[ $prog == hmm && -f $OUT/hm.stl ]]; then tri=$(od -An -tu4 -j80 -N4 "$OUT/hm.stl" | tr -d ' ')
+        elif [[ -f $OUT/hm.json ]]; then tri=$(sed -n 's/.*"faces":\([0-9]*\).*/\1/p' "$OUT/hm.json"); fi
+        echo "$label|$prog|$tri|$(awk -v c="$cpu" 'BEGIN { if (c != "-") printf "%.1f", c / 1000; else print "-" }')|$(awk -v r="$rss" 'BEGIN { if (r != "-") printf "%.0f", r / 1024; else print "-" }')" | tee -a "$hm_rows"
+    }
+    for s in $HEIGHTMAP_SIZES; do
+        "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/hm$s.png" || continue
+        n=$(( (s * s + 50) / 100 ))
+        [[ -n $HMM ]] && hm_run "$s error" hmm "$HMM" -z 1 -e 0.001 -q "$OUT/hm$s.png" "$OUT/hm.stl"
+        for m in gpi erdgpi; do
+            hm_run "$s error" "$m" "$ERD" generate -q -m "$m" -d 5 --max-error 65.535 -x 2 -i "$OUT/hm$s.png" -o "$OUT/hm.$m" --stats "$OUT/hm.json"
+        done
+        [[ -n $HMM ]] && hm_run "$s 1%" hmm "$HMM" -z 1 -e 0 -p "$n" -q "$OUT/hm$s.png" "$OUT/hm.stl"
+        for m in gpi erdgpi erded; do
+            hm_run "$s 1%" "$m" "$ERD" generate -q -m "$m" -x 2 -n "$n" -i "$OUT/hm$s.png" -o "$OUT/hm.$m" --stats "$OUT/hm.json"
+        done
+        rm -f "$OUT/hm$s.png" "$OUT"/hm.*
+    done
+    {
+        echo "A 16-bit heightmap made by \`erd synth -W S -H S --bits 16 --no-noise\` (sharp steps and discs on"
+        echo "smooth slopes), as PNG, meshed (a) to a maximum error of 0.001 of the 65535 range, hmm's default"
+        echo "(\`hmm -z 1 -e 0.001\`; \`erd generate -d 5 --max-error 65.535 -x 2\`), and (b) to 1% of the pixels as"
+        echo "vertices (\`hmm -z 1 -e 0 -p N\`; \`erd generate -n N\`). One run each: triangles, CPU seconds, peak MB."
+        echo "$hmm_note"
+        echo
+        echo "| size, target | hmm | erd gpi | erd erdgpi | erd erded |"
+        echo "|---|---:|---:|---:|---:|"
+        awk -F'|' '
+            !($1 in seen) { seen[$1] = 1; order[++n] = $1 }
+            { cell[$1, $2] = $3 " tri, " $4 " s, " $5 " MB" }
+            END {
+                split("hmm gpi erdgpi erded", ms, " ")
+                for (i = 1; i <= n; ++i) {
+                    split(order[i], k, " "); row = "| " k[1] " x " k[1] ", " (k[2] == "error" ? "max error 0.001" : "1% vertices")
+                    for (j = 1; j <= 4; ++j) row = row " | " ((order[i], ms[j]) in cell ? cell[order[i], ms[j]] : "-")
+                    print row " |"
+                }
+            }' "$hm_rows"
+    } | results_section heightmaps "Heightmaps at hmm's sizes (make bench with HEIGHTMAP_SIZES)"
+else
+    echo "heightmaps: HEIGHTMAP_SIZES not given (e.g. \"4096 9490\"); skipped"
+fi
 # ---------------------------------------------------------------------------------------------
 # colour (issue 17): each method on the seven colour images (Kodak kodim01-06, house) at 0.5, 1
 # and 2%, `erd generate` on the PPM beside `erd generate` on a PGM of its luma (BT.601, written by
@@ -289,27 +450,20 @@ if [[ -d $COLOUR_DIR && -f $(dirname "$ERD")/liberd.a ]] &&
                 printf "colour %-6s %d cases: cpu median %.2fx worst %.2fx (target 1.6x)  rss median %.2fx worst %.2fx (target 1.5x)\n",
                     ms[i], n[ms[i]], median(T, ms[i], n[ms[i]]), worst(T, ms[i], n[ms[i]]), median(R, ms[i], n[ms[i]]), worst(R, ms[i], n[ms[i]])
         }' "$colour_rows" | tee "$OUT/colour.out"
-    # COLOUR_RESULTS=docs/RESULTS.md also writes the medians there (section colour-cost).
-    if [[ -n ${COLOUR_RESULTS:-} ]]; then
-        . tools/results_section.sh
+    # The medians go to the "colour-cost" section of docs/RESULTS.md.
+    if grep -q ' cases: ' "$OUT/colour.out"; then
         {
-            echo "<!-- colour-cost: written by make bench (bench/run.sh) with COLOUR_RESULTS -->"
-            echo "## Colour cost (issue 17): colour over gray on the luma"
-            echo
             echo "\`erd generate\` on each colour PPM beside the same method on a PGM of its luma, whole process,"
-            echo "default threads (the CPU time counts them all), the 7 colour images at 0.5, 1 and 2% (21 cases a"
-            echo "method), CPU medians of ${COLOUR_RUNS:-3} runs and peak RSS per case; the table gives the median and the"
-            echo "worst of the 21 ratios. Written"
-            echo "on $(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo '?'); load $(cut -d' ' -f1-3 /proc/loadavg)."
+            echo "default threads (the CPU time counts them all), the colour images (Kodak kodim01-06, house) at 0.5,"
+            echo "1 and 2% ($(awk '/ cases: / { print $3; exit }' "$OUT/colour.out") cases a method), CPU medians of ${COLOUR_RUNS:-3} runs and peak RSS per case; the"
+            echo "table gives the median and the worst of the ratios."
             echo
             echo "| method | CPU time median | worst | peak RSS median | worst |"
             echo "|---|---:|---:|---:|---:|"
             awk '/ cases: / { printf "| %s | %s | %s | %s | %s |\n", $2, $7, $9, $14, $16 }' "$OUT/colour.out"
             echo
             echo "Targets: CPU time <= 1.6x and peak memory <= 1.5x (medians)."
-            echo "<!-- /colour-cost -->"
-        } >"$OUT/colour.section"
-        put_section colour-cost "$OUT/colour.section" "$COLOUR_RESULTS"
+        } | results_section colour-cost "Colour cost (issue 17): colour over gray on the luma"
     fi
 else
     echo "colour: $COLOUR_DIR or tools/eval_colour.cpp (against $(dirname "$ERD")/liberd.a) missing; skipped"

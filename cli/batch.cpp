@@ -15,20 +15,11 @@
 #include "cli/json.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
+#include "kernel/file_name.h"
 
 namespace erd::cli {
 
 namespace {
-
-bool ends_with_ci(const std::string& s, const std::string& tail) {
-    if (s.size() < tail.size()) return false;
-    for (std::size_t i = 0; i < tail.size(); ++i) {
-        char a = s[s.size() - tail.size() + i], b = tail[i];
-        if (a >= 'A' && a <= 'Z') a = char(a - 'A' + 'a');
-        if (a != b) return false;
-    }
-    return true;
-}
 
 std::string stem(const std::string& path) {
     const std::string::size_type slash = path.rfind('/');
@@ -138,13 +129,13 @@ Status expand_inputs(const std::vector<std::string>& given, const std::vector<st
             continue;
         }
         DIR* d = ::opendir(path.c_str());
-        if (!d) return Status::failure(escape_name(path) + ": " + std::strerror(errno));
+        if (!d) return Status::failure(os_error(path, errno));
         std::vector<std::string> names;
         while (const dirent* e = ::readdir(d)) {
             const std::string n = e->d_name;
             if (n.empty() || n[0] == '.') continue;
             for (const std::string& ext : extensions)
-                if (ends_with_ci(n, ext)) { names.push_back(n); break; }
+                if (has_extension(n, ext.c_str())) { names.push_back(n); break; }
         }
         ::closedir(d);
         if (names.empty()) return Status::bad_input(escape_name(path) + ": a folder without input files");
@@ -308,7 +299,7 @@ int run_batch(const std::vector<BatchItem>& items, int jobs, const BatchJob& job
     }
     bar.finish();
     if (!summary.empty()) {
-        Status st = outputs.stage(summary, summary_text(items, recs, ends_with_ci(summary, ".json")));
+        Status st = outputs.stage(summary, summary_text(items, recs, has_extension(summary, ".json")));
         if (st) st = outputs.commit();
         if (!st) return rep.fail(st);
     }

@@ -56,8 +56,7 @@ static int run_convert(const Args& args, const Reporter& rep) {
                                                                     : "a basic model: name the output .model or .erdz")));
     Image image;
     if (args.has("image")) {
-        if (!(st = read_image(args.str("image"), &image, &warning))) return rep.fail(st);
-        rep.warn(warning);
+        if (!(st = read_input_image(args.str("image"), ColourInput::keep, rep, &image))) return rep.fail(st);
     }
     std::string bytes, note;
     if (!(st = model_bytes_for(out, m, args.has("image") ? &image : nullptr, codec, &bytes, &note))) return rep.fail(st);

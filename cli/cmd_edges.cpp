@@ -109,10 +109,8 @@ static int run_edges(const Args& args, const Reporter& rep) {
     if (!(st = outputs.check(outs, {in}))) return rep.fail(st);
 
     Image im;
-    std::string warning;
-    if (!(st = read_image(in, &im, &warning))) return rep.fail(st);
-    to_gray(in, &im, args.has("gray"), &warning);
-    rep.warn(warning);
+    if (!(st = read_input_image(in, args.has("gray") ? ColourInput::luma_asked : ColourInput::luma_warn, rep, &im)))
+        return rep.fail(st);
 
     EdgePolylineResult chain;
     {

@@ -48,13 +48,8 @@ static int run_export(const Args& args, const Reporter& rep) {
     if (args.has("base") && !(opt.base > 0)) return rep.usage("--base must be greater than 0");
     if (args.has("base") && !stl) return rep.usage("--base applies to STL output");
 
-    st = refuse_overwrite(out, {in});
-    if (!st) return rep.fail(st);
     Model m;
-    std::string warning;
-    st = load_model_file(in, &m, &warning);
-    if (!st) return rep.fail(st);
-    rep.warn(warning);
+    if (!(st = load_input_model(out, {in}, rep, &m))) return rep.fail(st);
     std::string text;
     Progress progress = progress_for("export", args, rep);
     opt.progress = progress.hook();

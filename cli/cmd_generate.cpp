@@ -256,13 +256,10 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
 
     auto t0 = std::chrono::steady_clock::now();
     Image image;
-    std::string warning;
-    st = read_image(in, &image, &warning);
-    if (!st) return rep.fail(st);
     // The one place where generate decides what a colour image becomes: the methods take colour
     // (issue 17), so it passes through; --gray meshes its luma instead.
-    if (a.has("gray")) to_gray(in, &image, true, &warning);
-    rep.warn(warning);
+    st = read_input_image(in, a.has("gray") ? ColourInput::luma_asked : ColourInput::keep, rep, &image);
+    if (!st) return rep.fail(st);
     if (!constraints_in.empty()) {
         std::string text;
         // A stream stops at its first definite error: /dev/zero, `yes |` read 4 KiB, not 1 GiB.

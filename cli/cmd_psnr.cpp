@@ -39,15 +39,10 @@ static int psnr_one(const Args& args, const Reporter& rep, const std::string& a,
     if (a == "-" && b == "-") return rep.usage("only one of the images can be stdin");
 
     Image orig, approx;
-    std::string warning;
     Status st;
-    const bool gray = args.has("gray");
-    if (!(st = read_image(a, &orig, &warning))) return rep.fail(st);
-    if (gray) to_gray(a, &orig, true, &warning);
-    rep.warn(warning);
-    if (!(st = read_image(b, &approx, &warning))) return rep.fail(st);
-    if (gray) to_gray(b, &approx, true, &warning);
-    rep.warn(warning);
+    const ColourInput colour = args.has("gray") ? ColourInput::luma_asked : ColourInput::keep;
+    if (!(st = read_input_image(a, colour, rep, &orig))) return rep.fail(st);
+    if (!(st = read_input_image(b, colour, rep, &approx))) return rep.fail(st);
 
     double e = 0, p = 0, per[3] = {0, 0, 0};
     const bool channels = args.has("channels") && orig.channels == 3;

@@ -39,14 +39,10 @@ const CommandLine kReconstruct = {
 
 static int reconstruct_one(const Args& args, const Reporter& rep, const std::string& in, const std::string& out,
                            int threads, BatchRecord* record) {
-    Status st = refuse_overwrite(out, {in});
-    if (!st) return rep.fail(st);
-
     Model model;
     ModelTopology topo;
-    std::string warning;
-    if (!(st = load_model_file(in, &model, &warning, &topo))) return rep.fail(st);
-    rep.warn(warning);
+    Status st = load_input_model(out, {in}, rep, &model, &topo);
+    if (!st) return rep.fail(st);
     const bool supersample = supersampled(model) && !args.has("no-aa");
     if (args.has("no-aa")) model.kind_exceptions.clear();  // no edge of any kind supersampled
     Image im;

@@ -137,14 +137,8 @@ static int run_render(const Args& args, const Reporter& rep) {
     std::vector<std::string> inputs = {in};
     if (args.has("over")) inputs.push_back(args.str("over"));
     if (args.has("error")) inputs.push_back(args.str("error"));
-    st = refuse_overwrite(out, inputs);
-    if (!st) return rep.fail(st);
-
     Model m;
-    std::string warning;
-    st = load_model_file(in, &m, &warning);
-    if (!st) return rep.fail(st);
-    rep.warn(warning);
+    if (!(st = load_input_model(out, inputs, rep, &m))) return rep.fail(st);
     if (vector) {
         std::string svg;
         st = render_vector_svg(m, vopt, &svg);
@@ -164,12 +158,10 @@ static int run_render(const Args& args, const Reporter& rep) {
     if (args.has("over") || args.has("error")) {
         const std::string path = args.has("over") ? args.str("over") : args.str("error");
         Image im;
-        st = read_image(path, &im, &warning);
-        if (!st) return rep.fail(st);
         // --over draws a colour image in colour; --error compares it with the reconstruction's
         // values, channel by channel for a colour model (error_map shows the worst), else in gray.
-        if (args.has("error") && m.channels == 1) to_gray(path, &im, false, &warning);
-        rep.warn(warning);
+        st = read_input_image(path, args.has("error") && m.channels == 1 ? ColourInput::luma_warn : ColourInput::keep, rep, &im);
+        if (!st) return rep.fail(st);
         if (im.width != m.width || im.height != m.height)
             return rep.fail(Status::bad_input(path + ": image is " + std::to_string(im.width) + "x" + std::to_string(im.height) +
                                               " but the model is " + std::to_string(m.width) + "x" + std::to_string(m.height)));

@@ -31,7 +31,7 @@ static Status read_fd(int fd, bool regular, const std::string& name, std::string
         ssize_t n = ::read(fd, buf, want);
         if (n < 0) {
             if (errno == EINTR) continue;
-            return Status::bad_input(escape_name(name) + ": " + std::strerror(errno));
+            return Status::bad_input(os_error(name, errno));
         }
         if (n == 0) return Status::success();
         if (std::size_t(n) > max_bytes - bytes->size())
@@ -67,11 +67,11 @@ Status read_file(const std::string& path, std::string* bytes, std::size_t max_by
     if (path.empty()) return Status::bad_input("empty file name");
     const std::string name = path == "-" ? "stdin" : path;
     int fd = path == "-" ? 0 : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return Status::bad_input(escape_name(path) + ": " + std::strerror(errno));
+    if (fd < 0) return Status::bad_input(os_error(path, errno));
     struct stat st;
     Status s = Status::success();
     if (::fstat(fd, &st) != 0) {
-        s = Status::bad_input(escape_name(name) + ": " + std::strerror(errno));
+        s = Status::bad_input(os_error(name, errno));
     } else if (S_ISDIR(st.st_mode)) {
         s = Status::bad_input(escape_name(name) + ": is a directory");
     } else if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > max_bytes) {

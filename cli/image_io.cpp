@@ -41,6 +41,14 @@ void to_gray(const std::string& path, Image* im, bool asked, std::string* warnin
                 ": colour image converted to gray with BT.601 luma (0.299 R + 0.587 G + 0.114 B); --gray does this silently";
 }
 
+Status read_input_image(const std::string& path, ColourInput colour, const Reporter& rep, Image* out, ImageFormat* format) {
+    std::string warning;
+    if (Status st = read_image(path, out, &warning, format); !st) return st;
+    if (colour != ColourInput::keep) to_gray(path, out, colour == ColourInput::luma_asked, &warning);
+    rep.warn(warning);
+    return Status::success();
+}
+
 Status encode_image(const std::string& path, const Image& im, const WriteOptions& options, std::string* bytes) {
     Status s = imageio::encode_image(im, imageio::format_for_name(path, options.plain), bytes);
     if (!s) return Status::error(s.code, escape_name(path) + ": " + s.message);

@@ -11,6 +11,7 @@
 #include "imageio/pam.h"
 #include "imageio/png.h"
 #include "imageio/pnm.h"
+#include "cli/report.h"
 #include "kernel/status.h"
 
 namespace erd::cli {
@@ -41,6 +42,15 @@ Status read_image(const std::string& path, Image* out, std::string* warning, Ima
 // luma.h, the conversion of every erd before colour). Unless the user asked for it (--gray), one
 // warning line saying so is appended to *warning.
 void to_gray(const std::string& path, Image* im, bool asked, std::string* warning);
+
+// What a subcommand makes of a colour input image: keeps it, or its luma (to_gray) because the
+// user asked (--gray: no warning) or because the command works on gray (a warning).
+enum class ColourInput { keep, luma_asked, luma_warn };
+
+// A subcommand's input image: read_image, then to_gray as `colour` says; the warnings of both
+// printed through rep.
+Status read_input_image(const std::string& path, ColourInput colour, const Reporter& rep, Image* out,
+                        ImageFormat* format = nullptr);
 
 struct WriteOptions {
     bool plain = false;  // PGM/PPM: write P2/P3 (the thesis's programs write plain PNM) instead of P5/P6

@@ -29,14 +29,18 @@ bool is_triangulation(const std::string& text) {
 
 }  // namespace
 
-Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo, ErdzInfo* info) {
+Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo, ErdzInfo* info,
+                       ModelFileFacts* file) {
     if (warning) warning->clear();
     std::string text;
     const ModelFileKind kind = model_kind_from_name(path);
     Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
     if (!st) return st;
+    if (file) *file = ModelFileFacts{ModelFileKind::unknown, false, text.size()};
     if (is_erdz(text)) {
         if (!(st = decode_erdz_topology(text, out, topo, info))) return Status::error(st.code, escape_name(path) + ": " + st.message);
+        if (file) file->kind = out->kind == ModelKind::erd ? ModelFileKind::erd : ModelFileKind::basic;
+        if (file) file->erdz = true;
         return st;
     }
     if (info) *info = ErdzInfo();
@@ -58,10 +62,20 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
         st = named == ModelFileKind::triangulation ? read_triangulation(text, &again) : read_model(text, named, &again);
     }
     if (!st) return Status::error(st.code, escape_name(path) + ": " + st.message);
+    if (file) file->kind = found;
     if (warning && named != ModelFileKind::unknown && named != found)
         *warning = escape_name(path) + ": the content is a " + extension_of(found) + " file, not a " + extension_of(named) +
                    " as the name says; read as " + extension_of(found);
     return st;
+}
+
+Status load_input_model(const std::string& out, const std::vector<std::string>& inputs, const Reporter& rep, Model* m,
+                        ModelTopology* topo) {
+    if (Status st = refuse_overwrite(out, inputs); !st) return st;
+    std::string warning;
+    if (Status st = load_model_file(inputs[0], m, &warning, topo); !st) return st;
+    rep.warn(warning);
+    return Status::success();
 }
 
 bool erdz_name(const std::string& path) { return path.size() > 5 && path.compare(path.size() - 5, 5, ".erdz") == 0; }

@@ -2,17 +2,6 @@
 
 namespace erd::cli {
 
-bool has_extension(const std::string& path, const char* ext) {
-    const std::string e(ext);
-    if (path.size() < e.size()) return false;
-    for (std::size_t i = 0; i < e.size(); ++i) {
-        char c = path[path.size() - e.size() + i];
-        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
-        if (c != e[i]) return false;
-    }
-    return true;
-}
-
 Status output_format(const std::string& given, const std::string& out, const char* a, const char* b, std::string* format) {
     *format = given;
     const std::string sa(a), sb(b);

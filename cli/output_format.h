@@ -2,12 +2,10 @@
 #pragma once
 #include <string>
 
+#include "kernel/file_name.h"
 #include "kernel/status.h"
 
 namespace erd::cli {
-
-// True when `path` ends with `ext` (".svg"), letters compared without case.
-bool has_extension(const std::string& path, const char* ext);
 
 // *format = `given` (the --format value) when not empty, else `a` or `b` as the extension of `out`
 // says (".a", ".b"). Fails (Code::input, a message for the usage line) when neither tells, or

@@ -1,6 +1,7 @@
 #include "cli/report.h"
 
 #include <cstdio>
+#include <cstring>
 
 namespace erd::cli {
 
@@ -74,6 +75,7 @@ std::string one_line(const std::string& s) {
 
 std::string escape_name(const std::string& name) { return escaped(name, true); }
 std::string escape_message(const std::string& message) { return escaped(message, false); }
+std::string os_error(const std::string& name, int err) { return escape_name(name) + ": " + std::strerror(err); }
 
 int Reporter::fail(const Status& st) const {
     if (st.ok()) return 0;

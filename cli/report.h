@@ -50,5 +50,8 @@ private:
 std::string escape_name(const std::string& name);
 // The same for a whole message (backslashes kept as they are): one printable line.
 std::string escape_message(const std::string& message);
+// How a failed system call on a file reads: "NAME: the system's message for errno err", the
+// name escaped.
+std::string os_error(const std::string& name, int err);
 
 }  // namespace erd::cli

@@ -14,44 +14,22 @@
 
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
-#include "kernel/predicates.h"
+#include "fuzz/fuzz_checks.h"
 
 namespace {
 
-void check_refusal(const erd::Status& s) {
-    if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
-}
-
-void check_model(const erd::Model& m) {
-    if (m.channels != 1 && m.channels != 3) std::abort();
-    const std::size_t C = std::size_t(m.channels);
-    if (m.width < 1 || m.height < 1 || m.values.size() != m.vertices.size() * C) std::abort();
-    if (m.kind == erd::ModelKind::erd && m.corner_values.size() != m.faces.size() * C) std::abort();
-    for (const auto& f : m.faces) {
-        for (std::uint32_t v : f)
-            if (v >= m.vertices.size()) std::abort();
-        if (erd::orient2d(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) <= 0) std::abort();
-    }
-    for (const auto& p : m.vertices)
-        if (p.x < 0 || p.y < 0 || p.x > 2 * m.width - 2 || p.y > 2 * m.height - 2) std::abort();
-}
+using fuzz_checks::check_model;
 
 void run(const std::string& text, erd::ModelFileKind kind) {
     erd::Model m;
     erd::Status s = erd::read_model(text, kind, &m);
-    if (!s.ok()) {
-        check_refusal(s);
-        return;
-    }
+    if (!fuzz_checks::accepted(s)) return;
     check_model(m);
     if (std::int64_t(m.width) * m.height > (std::int64_t(1) << 16)) return;  // keep runs fast
     erd::Image a[2];
     for (int ss = 0; ss < 2; ++ss) {
         s = erd::reconstruct(m, ss == 1, &a[ss]);
-        if (!s.ok()) {
-            check_refusal(s);
-            return;
-        }
+        if (!fuzz_checks::accepted(s)) return;
         if (a[ss].width != m.width || a[ss].height != m.height || a[ss].channels != m.channels ||
             a[ss].samples.size() != std::size_t(m.width) * std::size_t(m.height) * std::size_t(m.channels))
             std::abort();

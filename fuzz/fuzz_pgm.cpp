@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/image_io.h"
+#include "fuzz/fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     erd::cli::ImageLimits limits;
@@ -20,17 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool pam = size >= 2 && data[0] == 'P' && data[1] == '7';
     erd::Status s = pam ? erd::cli::decode_pam(data, size, &im, &warning, limits)
                         : erd::cli::decode_pnm(data, size, &im, &warning, limits);
-    if (!s.ok()) {
-        if (s.code != erd::Code::input || s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
-        return 0;
-    }
-    if (im.width < 1 || im.height < 1 || im.width > limits.max_side || im.height > limits.max_side) std::abort();
-    if (std::int64_t(im.width) * im.height > limits.max_pixels) std::abort();
-    if (im.channels != 1 && im.channels != 3) std::abort();
-    if (im.samples.size() != im.pixels() * std::size_t(im.channels)) std::abort();
-    if (im.maxval < 1 || im.maxval > 65535) std::abort();
-    for (std::uint16_t v : im.samples)
-        if (v > im.maxval) std::abort();
+    if (!fuzz_checks::accepted(s)) return 0;
+    fuzz_checks::check_image(im, limits);
     for (bool plain : {false, true}) {
         std::string bytes = erd::cli::encode_pnm(im, plain);
         erd::Image back;

@@ -6,6 +6,7 @@
 #include "imageio/pam.h"
 #include "imageio/png.h"
 #include "imageio/pnm.h"
+#include "kernel/file_name.h"
 
 namespace erd::imageio {
 
@@ -52,11 +53,7 @@ Status decode_image(const unsigned char* data, std::size_t size, Image* out, std
 }
 
 ImageFormat format_for_name(const std::string& name, bool plain) {
-    if (name.size() >= 4) {
-        std::string ext = name.substr(name.size() - 4);
-        for (auto& ch : ext) ch = char(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
-        if (ext == ".png") return ImageFormat::png;
-    }
+    if (has_extension(name, ".png")) return ImageFormat::png;
     return plain ? ImageFormat::pgm_plain : ImageFormat::pgm_raw;
 }
 

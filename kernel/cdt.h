@@ -236,13 +236,15 @@ private:
     void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
     template <bool Branchless>
-    Location walk_as(LatticePoint p, FaceInd start) const;  // walk's two step styles (cdt.cpp)
+    Location walk_as(LatticePoint p, FaceInd start) const;  // walk's two step styles (cdt_locate.cpp)
     Location locate_brute(LatticePoint p) const;
     VertInd add_vertex(LatticePoint p);
     Status insert_one(LatticePoint p, VertInd* v, FaceInd hint);
     VertInd insert_at(LatticePoint p, const Location& loc);
     void split_face(FaceInd f, VertInd p);
     void split_edge(EdgeInd e, VertInd p);
+    void split_side(FaceInd f, FaceInd n, VertInd x, VertInd u, VertInd w, VertInd p, EdgeInd txu, std::uint8_t fxu,
+                    EdgeInd twx, std::uint8_t fwx, std::uint8_t fe);
     EdgeInd flip(EdgeInd e);  // returns the new diagonal d->c (in f1)
     void legalize_around(VertInd p, const EdgeInd* seeds, unsigned count);
     void legalize_pairs();

@@ -15,6 +15,7 @@
 #include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "kernel/predicates.h"
@@ -268,5 +269,31 @@ private:
     std::array<int, 2> upper_{}, lower_{};  // (left, right) edges of the rows above and below M
     int part_ = 3;                       // the next part: 0 above M, 1 M's row, 2 below M, 3 done
 };
+
+// The walk above with the caller's work per row: row(j, lo, hi) for each lattice row j in
+// [j_begin, j_end] where the triangle owns points, columns lo..hi (never empty), top to bottom.
+// A row function returning bool stops the walk by returning false, and for_each_owned_row then
+// returns false (true when every row was visited). Always inlined, so the row's work sits in
+// the walk's loop as if written there.
+template <class Row>
+[[gnu::always_inline]] inline bool for_each_owned_row(const Lattice& l, RasterDomain d, LatticePoint a, LatticePoint b,
+                                                      LatticePoint c, Row&& row, std::int32_t j_begin = INT32_MIN,
+                                                      std::int32_t j_end = INT32_MAX) {
+    OwnedRows rows(l, d, a, b, c, j_begin, j_end);
+    for (RowRun part; rows.next(&part);) {
+        for (RowRun run = part; run.j <= run.j_end; run.step()) {
+            std::int64_t lo, hi;
+            run.columns(&lo, &hi);
+            if (lo > hi) continue;
+            const std::int32_t j = std::int32_t(run.j);
+            if constexpr (std::is_same_v<decltype(row(j, j, j)), bool>) {
+                if (!row(j, std::int32_t(lo), std::int32_t(hi))) return false;
+            } else {
+                row(j, std::int32_t(lo), std::int32_t(hi));
+            }
+        }
+    }
+    return true;
+}
 
 }  // namespace erd

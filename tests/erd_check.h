@@ -1,6 +1,7 @@
 // check_model: an ERD model is what the kernel makes of its points and constraints (verify()
 // passes, the same faces, or a triangulation of them that flips made: check_flipped_model) and
-// every face corner carries the value of the wedge it lies in.
+// every face corner carries the value of the wedge it lies in. check_same_step1: two ways to the
+// framework's step 1 agree.
 #pragma once
 #include <catch2/catch.hpp>
 
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/methods/erd_mesh.h"
 #include "algorithms/model/model.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/cdt.h"
@@ -144,5 +146,17 @@ inline void check_model(const Model& m) {
     }
 }
 
+
+// Two ways to step 1 (algorithms/methods/erd_mesh.h) that must give the same initial mesh: the
+// same parameters chosen and the same simplified polylines.
+inline void check_same_step1(const InitialMesh& a, const InitialMesh& b) {
+    CHECK(a.params.simple == b.params.simple);
+    CHECK(a.params.beta == b.params.beta);
+    CHECK(a.params.r == b.params.r);
+    CHECK(a.params.l == b.params.l);
+    CHECK(a.params.eps == b.params.eps);
+    CHECK(a.params.constrained_points == b.params.constrained_points);
+    CHECK(a.polylines == b.polylines);
+}
 
 }  // namespace erd::test

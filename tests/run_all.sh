@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# `make test`: the layer check, the unit tests, the same tests under ASan+UBSan, and a short run
-# of every fuzz target. Counts test cases (a fuzz target and the layer check count as one each)
+# `make test`: the layer and map checks, the unit tests, the same tests under ASan+UBSan, and a
+# short run of every fuzz target. Counts test cases (a fuzz target and each check count as one)
 # and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
 # (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
@@ -34,6 +34,8 @@ stage_start=$SECONDS
 stage() { echo "   ($(( SECONDS - stage_start )) s)"; stage_start=$SECONDS; }
 echo "== layer check (tools/check_layers.sh, counts as one test)"
 if bash tools/check_layers.sh; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+echo "== map check: every source file in docs/architecture.md's room table (tools/check_map.sh, counts as one test)"
+if bash tools/check_map.sh; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
 
 stage
 echo "== build"
@@ -184,7 +186,7 @@ show_job asan "unit tests under ASan+UBSan: result"
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
 show_job python "python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
-show_job web "web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
+show_job web "web page (web/, WebAssembly) in chromium via playwright-core: opens meshed, slider, cancel, drop, file, paste, bad file; each mesh the native erd's"
 
 stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"

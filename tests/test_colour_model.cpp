@@ -19,6 +19,7 @@
 #include "api/erd.h"
 #include "tests/erd_check.h"
 #include "tests/erd_run.h"
+#include "tests/synth_util.h"
 
 using namespace erd;
 using erd::test::check_model;
@@ -61,11 +62,7 @@ Model channel_model(const Model& m, int c) {
 
 // Gray models of a small synthetic scene: basic (GPI) and ERD (ERDGPI).
 Model gray_model(const char* method, int points) {
-    SynthParams sp;
-    sp.width = 48;
-    sp.height = 40;
-    Image im;
-    REQUIRE(synth(sp, &im).ok());
+    const Image im = erd_test::synth_image(48, 40);
     GenerateOptions o;
     o.points = points;
     o.density_given = false;

@@ -13,19 +13,13 @@
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/model_io.h"
 #include "tests/erd_run.h"
+#include "tests/synth_util.h"
 
 using namespace erd;
 
 namespace {
 
-Image small_synth() {
-    SynthParams sp;
-    sp.width = 48;
-    sp.height = 40;
-    Image im;
-    REQUIRE(synth(sp, &im).ok());
-    return im;
-}
+Image small_synth() { return erd_test::synth_image(48, 40); }
 
 using Lines = std::vector<std::vector<LatticePoint>>;
 

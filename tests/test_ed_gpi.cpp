@@ -24,6 +24,7 @@
 #include "cli/image_io.h"
 #include "kernel/cdt.h"
 #include "tests/thesis_cases.h"
+#include "tests/test_greedy_util.h"
 #include "tests/test_rounding_util.h"
 
 using namespace erd;
@@ -149,12 +150,7 @@ TEST_CASE("GPI: more points never raise the final error", "[basic]") {
     for (std::int64_t n : {10, 40, 160, 640}) {
         BasicGreedyModel model(im);
         Cdt cdt;
-        REQUIRE(cdt.reset(64, 64).ok());
-        GreedyOptions go;
-        go.target_vertices = std::size_t(n);
-        go.round_values = true;
-        GreedyStats gs;
-        REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+        const GreedyStats gs = erd_test::refine_to(im, model, std::size_t(n), &cdt);
         CHECK(gs.stop == GreedyStop::target);
         CHECK(gs.total_squared_error < prev);
         prev = gs.total_squared_error;
@@ -179,14 +175,16 @@ TEST_CASE("GPI: a planar image stops early with zero error", "[basic]") {
 TEST_CASE("GPI: --psnr and --max-error stop rules", "[basic]") {
     Image im = synthetic(40, 40, 11);
     BasicGreedyModel model(im);
+    // Refinement towards 1600 points (rounded values), which the rule set by `rule` stops first.
+    const auto stopped = [&](auto rule, Cdt* cdt) {
+        GreedyOptions go;
+        go.target_vertices = 1600;
+        go.round_values = true;
+        rule(go);
+        return erd_test::refine_from_corners(im, model, go, cdt);
+    };
     Cdt cdt;
-    REQUIRE(cdt.reset(78, 78).ok());
-    GreedyOptions go;
-    go.target_vertices = 1600;
-    go.psnr = 30.0;
-    go.round_values = true;
-    GreedyStats gs;
-    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    const GreedyStats gs = stopped([](GreedyOptions& go) { go.psnr = 30.0; }, &cdt);
     CHECK(gs.stop == GreedyStop::psnr);
     CHECK(gs.psnr >= 30.0);
     {
@@ -198,37 +196,20 @@ TEST_CASE("GPI: --psnr and --max-error stop rules", "[basic]") {
     }
     CHECK(cdt.vertex_count() < 1600);
     // The incremental total equals a fresh scan: refine again to the same count without the rule.
-    GreedyOptions go2;
-    go2.target_vertices = cdt.vertex_count();
-    go2.round_values = true;
     Cdt cdt2;
-    REQUIRE(cdt2.reset(78, 78).ok());
-    GreedyStats gs2;
-    REQUIRE(greedy_refine(cdt2, im, model, go2, &gs2).ok());
+    const GreedyStats gs2 = erd_test::refine_to(im, model, cdt.vertex_count(), &cdt2);
     CHECK(gs2.total_squared_error == gs.total_squared_error);
     CHECK(canonical_faces(cdt2) == canonical_faces(cdt));
 
     Cdt cdt3;
-    REQUIRE(cdt3.reset(78, 78).ok());
-    GreedyOptions go3;
-    go3.target_vertices = 1600;
-    go3.max_error = 6.0;
-    go3.round_values = true;
-    GreedyStats gs3;
-    REQUIRE(greedy_refine(cdt3, im, model, go3, &gs3).ok());
+    const GreedyStats gs3 = stopped([](GreedyOptions& go) { go.max_error = 6.0; }, &cdt3);
     CHECK(gs3.stop == GreedyStop::max_error);
     CHECK(gs3.max_error <= 6.0);
 
     // --triangles: stops at T or T + 1 triangles (an insertion adds two), before the target.
     for (std::size_t t : {std::size_t(7), std::size_t(100), std::size_t(501)}) {
         Cdt cdt4;
-        REQUIRE(cdt4.reset(78, 78).ok());
-        GreedyOptions go4;
-        go4.target_vertices = 1600;
-        go4.max_triangles = t;
-        go4.round_values = true;
-        GreedyStats gs4;
-        REQUIRE(greedy_refine(cdt4, im, model, go4, &gs4).ok());
+        const GreedyStats gs4 = stopped([t](GreedyOptions& go) { go.max_triangles = t; }, &cdt4);
         CHECK(gs4.stop == GreedyStop::triangles);
         CHECK(cdt4.face_count() >= t);
         CHECK(cdt4.face_count() <= t + 1);
@@ -351,12 +332,7 @@ TEST_CASE("greedy loop: refused candidates are banned, dirty faces are re-scanne
     Image im = synthetic(30, 24, 21);
     ContractModel model(im, 30);  // doubled x >= 30: pixel columns 15..29 only
     Cdt cdt;
-    REQUIRE(cdt.reset(58, 46).ok());
-    GreedyOptions go;
-    go.target_vertices = 80;
-    go.round_values = true;
-    GreedyStats gs;
-    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    const GreedyStats gs = erd_test::refine_to(im, model, 80, &cdt);
     CHECK(gs.stop == GreedyStop::target);
     CHECK(cdt.vertex_count() == 80);
     CHECK(model.inserted == 76);
@@ -375,12 +351,7 @@ TEST_CASE("greedy loop: the total squared error of GPI equals a fresh scan", "[b
     Image im = synthetic(45, 31, 2);
     BasicGreedyModel model(im);
     Cdt cdt;
-    REQUIRE(cdt.reset(88, 60).ok());
-    GreedyOptions go;
-    go.target_vertices = 150;
-    go.round_values = true;
-    GreedyStats gs;
-    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    const GreedyStats gs = erd_test::refine_to(im, model, 150, &cdt);
     CHECK(gs.total_squared_error == fresh_total(cdt, im, model));
     double mse_v = gs.total_squared_error / double(im.pixels());
     CHECK(gs.psnr == Approx(10.0 * std::log10(255.0 * 255.0 / mse_v)));
@@ -416,12 +387,7 @@ TEST_CASE("greedy loop: exact totals on a 16-bit image with values at binade edg
         }
     BasicGreedyModel model(im);
     Cdt cdt;
-    REQUIRE(cdt.reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
-    GreedyOptions go;
-    go.target_vertices = 200;
-    go.round_values = true;
-    GreedyStats gs;
-    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    const GreedyStats gs = erd_test::refine_to(im, model, 200, &cdt);
     CHECK(cdt.vertex_count() == 200);
     CHECK(gs.total_squared_error > 0.0);
     CHECK(gs.total_squared_error == fresh_total(cdt, im, model));

@@ -21,6 +21,7 @@
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/reconstruct.h"
+#include "tests/synth_util.h"
 
 namespace {
 
@@ -28,11 +29,7 @@ using erd::LatticePoint;
 using erd::Model;
 
 Model make_model(const char* method, int w, int h, double density) {
-    erd::Image im;
-    erd::SynthParams sp;
-    sp.width = w;
-    sp.height = h;
-    REQUIRE(erd::synth(sp, &im).ok());
+    const erd::Image im = erd_test::synth_image(w, h);
     erd::GenerateOptions o;
     o.density = density;
     o.density_given = true;
@@ -145,6 +142,35 @@ void check_round_trip(const Model& m, double step) {
     INFO(rs.message);
     CHECK(rs.ok());
     CHECK(rec.channels == d.channels);
+}
+
+// A committed seed written by an older encoder (its version byte `version`), decoded: the model in
+// *d, the section sizes returned.
+erd::ErdzInfo decode_old_seed(const char* path, int version, Model* d) {
+    const std::string bytes = read_bytes(path);
+    REQUIRE(bytes.size() > 5);
+    REQUIRE(bytes[4] == version);
+    erd::ErdzInfo info;
+    const erd::Status st = erd::decode_erdz(bytes, d, &info);
+    INFO(st.message);
+    REQUIRE(st.ok());
+    CHECK(info.version == version);
+    return info;
+}
+
+// Written again at the same step, an old file's model d is a version-3 file of the same model.
+void check_written_again(const Model& d, double step) {
+    std::string again;
+    erd::ErdzOptions o;
+    o.step = step;
+    erd::ErdzInfo info3;
+    REQUIRE(erd::encode_erdz(d, o, &again, &info3).ok());
+    CHECK(info3.version == 3);
+    Model d3;
+    REQUIRE(erd::decode_erdz(again, &d3).ok());
+    CHECK(d3.vertices == d.vertices);
+    CHECK(d3.values == d.values);
+    CHECK(faces_of(d3, 0) == faces_of(d, 0));
 }
 
 }  // namespace
@@ -277,11 +303,7 @@ TEST_CASE("erdz: flipped edges cost bits, not constraints", "[erdz]") {
     // A model without flips spends nothing on them.
     erd::GenerateOptions o;
     o.flips = 0;
-    erd::Image im;
-    erd::SynthParams sp;
-    sp.width = 160;
-    sp.height = 120;
-    REQUIRE(erd::synth(sp, &im).ok());
+    const erd::Image im = erd_test::synth_image(160, 120);
     o.density = 3;
     o.density_given = true;
     erd::GenerateResult res;
@@ -326,29 +348,13 @@ TEST_CASE("erdz: any triangulation of the points rebuilds by flips, however it w
 
 TEST_CASE("erdz: version 1 files (no flips section) are still read", "[erdz]") {
     // A committed seed written by the version-1 encoder: a GPI model of 48 x 32.
-    const std::string bytes = read_bytes("fuzz/corpus/fuzz_erdz/gpi.erdz");
-    REQUIRE(bytes.size() > 5);
-    REQUIRE(bytes[4] == 1);
     Model d;
-    erd::ErdzInfo info;
-    const erd::Status st = erd::decode_erdz(bytes, &d, &info);
-    INFO(st.message);
-    REQUIRE(st.ok());
-    CHECK(info.version == 1);
+    const erd::ErdzInfo info = decode_old_seed("fuzz/corpus/fuzz_erdz/gpi.erdz", 1, &d);
     CHECK(info.flips == 0);
     CHECK(d.vertices.size() == 77);
     CHECK(d.faces.size() == 145);
     CHECK(info.header_bits + info.position_bits + info.edge_bits + info.value_bits == info.total_bits);
-    // Written again, it is a version-3 file of the same model.
-    std::string again;
-    erd::ErdzOptions o;
-    o.step = info.step;
-    REQUIRE(erd::encode_erdz(d, o, &again).ok());
-    Model d2;
-    REQUIRE(erd::decode_erdz(again, &d2).ok());
-    CHECK(d2.vertices == d.vertices);
-    CHECK(d2.values == d.values);
-    CHECK(faces_of(d2, 0) == faces_of(d, 0));
+    check_written_again(d, info.step);
 }
 
 TEST_CASE("erdz: version 2 files (fixed-step bit models, plainer contexts) are still read", "[erdz]") {
@@ -366,15 +372,8 @@ TEST_CASE("erdz: version 2 files (fixed-step bit models, plainer contexts) are s
                           {"fuzz/corpus/fuzz_erdz/v2_hard.erdz", 236, 18520.5, 106598.0}};
     for (const Seed& seed : seeds) {
         INFO(seed.path);
-        const std::string bytes = read_bytes(seed.path);
-        REQUIRE(bytes.size() > 5);
-        REQUIRE(bytes[4] == 2);
         Model d;
-        erd::ErdzInfo info;
-        const erd::Status st = erd::decode_erdz(bytes, &d, &info);
-        INFO(st.message);
-        REQUIRE(st.ok());
-        CHECK(info.version == 2);
+        const erd::ErdzInfo info = decode_old_seed(seed.path, 2, &d);
         CHECK(d.vertices.size() == 123);
         CHECK(d.faces.size() == seed.faces);
         double values = 0, corners = 0;
@@ -382,18 +381,7 @@ TEST_CASE("erdz: version 2 files (fixed-step bit models, plainer contexts) are s
         for (const auto& c : d.corner_values) corners += c[0] + c[1] + c[2];
         CHECK(values == seed.values);
         CHECK(corners == seed.corners);
-        // Written again, it is a version-3 file of the same model.
-        std::string again;
-        erd::ErdzOptions o;
-        o.step = info.step;
-        erd::ErdzInfo info3;
-        REQUIRE(erd::encode_erdz(d, o, &again, &info3).ok());
-        CHECK(info3.version == 3);
-        Model d3;
-        REQUIRE(erd::decode_erdz(again, &d3).ok());
-        CHECK(d3.vertices == d.vertices);
-        CHECK(d3.values == d.values);
-        CHECK(faces_of(d3, 0) == faces_of(d, 0));
+        check_written_again(d, info.step);
     }
 }
 
@@ -425,11 +413,7 @@ TEST_CASE("erdz: every truncation and many damaged bytes are refused with one li
 }
 
 TEST_CASE("erdz: a PSNR target picks the coarsest step that meets it", "[erdz]") {
-    erd::Image im;
-    erd::SynthParams sp;
-    sp.width = 96;
-    sp.height = 64;
-    REQUIRE(erd::synth(sp, &im).ok());
+    const erd::Image im = erd_test::synth_image(96, 64);
     const Model m = make_model("erdgpi", 96, 64, 3);
     erd::Image rec;
     double full = 0.0;

@@ -41,19 +41,38 @@ void random_points(Cdt* cdt, int count, std::uint32_t seed) {
     }
 }
 
-// A ridge image's initial ERD mesh with `extra` random points (seeded) and its wedge values: the
-// mesh the flip and move tests change; *constraints gets its constrained edges before.
-ErdModel ridge_mesh(const Image& im, std::uint32_t seed, Cdt* cdt, std::vector<std::array<VertInd, 2>>* constraints) {
-    InitialMeshOptions mo;
-    mo.target = 150;
-    InitialMesh mesh;
-    REQUIRE(build_initial_mesh(im, mo, cdt, &mesh).ok());
-    random_points(cdt, 60, seed);
-    cdt->export_constraints(constraints);
-    ErdModel model(im, WedgeValueOptions{});
-    model.assign_all(*cdt);
-    return model;
-}
+// The mesh the flip and move tests change: a 48 x 40 ridge image's initial ERD mesh with 60 random
+// points (seeded) and its wedge values, and the constrained edges it has before.
+struct RidgeMesh {
+    const Image im = ridge(48, 40);
+    Cdt cdt;
+    std::vector<std::array<VertInd, 2>> constraints;
+    ErdModel model{im, WedgeValueOptions{}};
+
+    explicit RidgeMesh(std::uint32_t seed) {
+        InitialMeshOptions mo;
+        mo.target = 150;
+        InitialMesh mesh;
+        REQUIRE(build_initial_mesh(im, mo, &cdt, &mesh).ok());
+        random_points(&cdt, 60, seed);
+        cdt.export_constraints(&constraints);
+        model.assign_all(cdt);
+    }
+
+    // What flips and moves keep: a valid topology, the constrained edges, an ERD model of the
+    // wedge values.
+    void check_kept() const {
+        std::string why;
+        INFO(why);
+        CHECK(cdt.verify_topology(&why));
+        std::vector<std::array<VertInd, 2>> after;
+        cdt.export_constraints(&after);
+        CHECK(after == constraints);
+        Model m;
+        model.to_model(cdt, im.width, im.height, im.maxval, &m);
+        test::check_model(m);  // the flipped-faces path of check_model
+    }
+};
 
 }  // namespace
 
@@ -90,22 +109,12 @@ TEST_CASE("kernel flip_edge: unconstrained convex edges only; a flip twice is th
 }
 
 TEST_CASE("data-dependent flips lower the squared error and keep constraints and wedges", "[flips]") {
-    const Image im = ridge(48, 40);
-    Cdt cdt;
-    std::vector<std::array<VertInd, 2>> cons_before, cons_after;
-    ErdModel model = ridge_mesh(im, 3, &cdt, &cons_before);
+    RidgeMesh r(3);
     FlipStats fs;
-    improve_by_flips(&cdt, im, model, 100000, &fs);
+    improve_by_flips(&r.cdt, r.im, r.model, 100000, &fs);
     CHECK(fs.flips > 0);
     CHECK(fs.sse_after < fs.sse_before);
-    std::string why;
-    INFO(why);
-    CHECK(cdt.verify_topology(&why));
-    cdt.export_constraints(&cons_after);
-    CHECK(cons_after == cons_before);
-    Model m;
-    model.to_model(cdt, im.width, im.height, im.maxval, &m);
-    test::check_model(m);  // the flipped-faces path of check_model
+    r.check_kept();
 }
 
 TEST_CASE("kernel move_vertex: free interior vertices only, inside their star", "[flips][kernel]") {
@@ -134,10 +143,10 @@ TEST_CASE("kernel move_vertex: free interior vertices only, inside their star", 
 }
 
 TEST_CASE("vertex moves lower the squared error and keep the count, constraints and topology", "[flips]") {
-    const Image im = ridge(48, 40);
-    Cdt cdt;
-    std::vector<std::array<VertInd, 2>> cons_before, cons_after;
-    ErdModel model = ridge_mesh(im, 5, &cdt, &cons_before);
+    RidgeMesh r(5);
+    Cdt& cdt = r.cdt;
+    const Image& im = r.im;
+    ErdModel& model = r.model;
     const std::size_t n = cdt.vertex_count();
     MeshSystems systems;
     WedgeFitOptions o;
@@ -149,11 +158,6 @@ TEST_CASE("vertex moves lower the squared error and keep the count, constraints 
     CHECK(ms.moves > 0);
     CHECK(ms.tested >= ms.moves);
     CHECK(cdt.vertex_count() == n);
-    std::string why;
-    INFO(why);
-    CHECK(cdt.verify_topology(&why));
-    cdt.export_constraints(&cons_after);
-    CHECK(cons_after == cons_before);
     // The kept systems are those of the moved mesh: a refit from them equals a fresh one.
     ErdModel fresh = model;
     WedgeFitStats kept_stats, fresh_stats;
@@ -162,19 +166,17 @@ TEST_CASE("vertex moves lower the squared error and keep the count, constraints 
     CHECK(kept_stats.sse_after == fresh_stats.sse_after);
     CHECK(kept_stats.sse_after < before.sse_after);
     for (std::size_t i = 0; i < model.entry_count(); ++i) CHECK(model.entry_value(i) == fresh.entry_value(i));
-    Model m;
-    model.to_model(cdt, im.width, im.height, im.maxval, &m);
-    test::check_model(m);
+    r.check_kept();
 }
 
 TEST_CASE("rounds of moves go coarse to fine: one pixel, then half a pixel", "[flips]") {
-    const Image im = ridge(48, 40);
     // Displacements of the vertices after `moves` rounds (doubled units): round 1 steps 2, round 2
     // steps 1, so an odd component shows a second-round move and moves 1 leaves every one even.
     auto displacements = [&](int moves) {
-        Cdt cdt;
-        std::vector<std::array<VertInd, 2>> cons;
-        ErdModel model = ridge_mesh(im, 5, &cdt, &cons);
+        RidgeMesh r(5);
+        Cdt& cdt = r.cdt;
+        const Image& im = r.im;
+        ErdModel& model = r.model;
         std::vector<LatticePoint> before;
         for (VertInd v = 0; v < cdt.vertex_count(); ++v) before.push_back(cdt.point(v));
         GenerateOptions o;

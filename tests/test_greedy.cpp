@@ -17,6 +17,7 @@
 #include "algorithms/methods/greedy.h"
 #include "kernel/cdt.h"
 #include "kernel/raster.h"
+#include "tests/test_greedy_util.h"
 #include "tests/test_rounding_util.h"
 
 using namespace erd;
@@ -138,12 +139,7 @@ std::vector<LatticePoint> reference_greedy(const Image& im, const GreedyModel& m
 // The points greedy_refine inserts, in order (the four corners first).
 std::vector<LatticePoint> fast_greedy(const Image& im, GreedyModel& model, bool rounded, std::size_t target) {
     Cdt cdt;
-    REQUIRE(cdt.reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
-    GreedyOptions go;
-    go.target_vertices = target;
-    go.round_values = rounded;
-    GreedyStats gs;
-    REQUIRE(greedy_refine(cdt, im, model, go, &gs).ok());
+    erd_test::refine_to(im, model, target, &cdt, rounded);
     return cdt.points();
 }
 

@@ -337,12 +337,7 @@ TEST_CASE("hard edges: the run without the fallback is skipped only where it wou
                 continue;
             }
             ++quiet;
-            CHECK(with.params.beta == without.params.beta);
-            CHECK(with.params.l == without.params.l);
-            CHECK(with.params.eps == without.params.eps);
-            CHECK(with.params.r == without.params.r);
-            CHECK(with.params.constrained_points == without.params.constrained_points);
-            CHECK(with.polylines == without.polylines);
+            erd::test::check_same_step1(with, without);
             CHECK(with.n0 == without.n0);
             CHECK(a.vertex_count() == b.vertex_count());
         }

@@ -15,6 +15,7 @@
 #include "algorithms/methods/methods.h"
 #include "cli/memory_cap.h"
 #include "tests/output_util.h"
+#include "tests/synth_util.h"
 
 using namespace erd;
 using namespace output_test;
@@ -60,11 +61,7 @@ TEST_CASE("memory estimate: within 25% of the measured peak of erd generate", "[
 TEST_CASE("memory estimate: never above the size bound, grows with the edges", "[memory]") {
     Image flat(300, 200, 255);
     for (auto& s : flat.samples) s = 90;
-    Image busy;
-    SynthParams sp;
-    sp.width = 300;
-    sp.height = 200;
-    REQUIRE(synth(sp, &busy));
+    Image busy = erd_test::synth_image(300, 200);
     GenerateOptions o;
     o.density = 1;
     o.density_given = true;

@@ -16,6 +16,7 @@
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
 #include "algorithms/model/reconstruct.h"
+#include "tests/synth_util.h"
 #include "tests/test_raster_util.h"
 
 using erd::Model;
@@ -125,7 +126,7 @@ TEST_CASE("model_io: .model round trip on random triangulations", "[model_io]") 
     std::mt19937 rng(8);
     for (int trial = 0; trial < 10; ++trial) {
         const int W = 2 + int(rng() % 30), H = 2 + int(rng() % 30);
-        Model m = erd_test::to_model(erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 40, true), 2 * W - 2, 2 * H - 2);
+        Model m = erd_test::random_model(rng, W, H, 40, true);
         m.maxval = 1000;
         for (std::size_t v = 0; v < m.vertices.size(); ++v) m.values.push_back(v % 3 == 0 ? double(rng() % 1000) : double(rng() % 100000) / 97.0);
         std::string text, again;
@@ -148,7 +149,7 @@ TEST_CASE("model_io: .erd round trip keeps every corner value", "[model_io]") {
     std::mt19937 rng(9);
     for (int trial = 0; trial < 10; ++trial) {
         const int W = 2 + int(rng() % 12), H = 2 + int(rng() % 12);
-        Model m = erd_test::to_model(erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 30, false), 2 * W - 2, 2 * H - 2);
+        Model m = erd_test::random_model(rng, W, H, 30, false);
         m.kind = ModelKind::erd;
         // Vertex values; some vertices get a different value in a random subset of faces.
         for (std::size_t v = 0; v < m.vertices.size(); ++v) m.values.push_back(double(rng() % 256));
@@ -317,11 +318,7 @@ TEST_CASE("model_io: triangulation files (-t)", "[model_io]") {
 
 TEST_CASE("model_io: polylines files (-p) round-trip", "[model_io]") {
     // The polylines of step 1 on the synthetic test image: many, of every length.
-    erd::SynthParams sp;
-    sp.width = 160;
-    sp.height = 120;
-    erd::Image im;
-    REQUIRE(erd::synth(sp, &im).ok());
+    const erd::Image im = erd_test::synth_image(160, 120);
     erd::EdgePolylineParams params;
     params.canny.beta = 0.2;
     params.min_length = 2;

@@ -23,6 +23,7 @@
 #include "algorithms/imaging/synth.h"
 #include "cli/image_io.h"
 #include "tests/erd_run.h"
+#include "tests/synth_util.h"
 
 using namespace erd_test;
 
@@ -39,27 +40,13 @@ struct AliasDir {
         ::mkdir(bin.c_str(), 0755);
         for (const char* a : kAliases) REQUIRE(::symlink(erd.c_str(), (bin + "/" + a).c_str()) == 0);
         REQUIRE(::symlink(erd.c_str(), (bin + "/erd").c_str()) == 0);
-        erd::SynthParams sp;
-        sp.width = w;
-        sp.height = h;
-        erd::Image im;
-        REQUIRE(erd::synth(sp, &im));
+        const erd::Image im = synth_image(w, h);
         spit(dir.file("img.pnm"), erd::cli::encode_pnm(im, true));
         spit(dir.file("img.pgm"), erd::cli::encode_pnm(im, false));
     }
     RunResult run(const std::string& cmd) const { return run_in(dir.path, "PATH=" + sh_quote(dir.file("bin")) + ":\"$PATH\" " + cmd); }
     std::string read(const std::string& name) const { return slurp(dir.file(name)); }
 };
-
-erd::Image synth_image(int w, int h, std::uint64_t seed) {
-    erd::SynthParams sp;
-    sp.width = w;
-    sp.height = h;
-    sp.seed = seed;
-    erd::Image im;
-    REQUIRE(erd::synth(sp, &im));
-    return im;
-}
 
 bool same_model(const erd::Model& a, const erd::Model& b) {
     return a.kind == b.kind && a.width == b.width && a.height == b.height && a.vertices == b.vertices &&
@@ -225,7 +212,7 @@ TEST_CASE("thesis programs take exactly the thesis's flags", "[packaging]") {
 }
 
 TEST_CASE("public API: generate, reconstruct, psnr agree with the CLI's library calls", "[packaging]") {
-    erd::Image im = synth_image(64, 48, 3);
+    erd::Image im = synth_image(64, 48, 8, 3);
     erd::api::Options opt;
     opt.generate.density = 2.0;
     opt.generate.density_given = true;
@@ -266,7 +253,7 @@ TEST_CASE("public API: generate, reconstruct, psnr agree with the CLI's library 
 }
 
 TEST_CASE("public API: bad views, names, memory cap and exact modes give status values", "[packaging]") {
-    erd::Image im = synth_image(32, 24, 1);
+    erd::Image im = synth_image(32, 24, 8, 1);
     erd::api::Options opt;
     erd::Model model;
     erd::api::ImageView v = erd::api::view_of(im);
@@ -329,7 +316,7 @@ TEST_CASE("public API: bad views, names, memory cap and exact modes give status 
 }
 
 TEST_CASE("public API: triangulate() rebuilds the model's triangulation in the kernel", "[packaging]") {
-    erd::Image im = synth_image(40, 32, 5);
+    erd::Image im = synth_image(40, 32, 8, 5);
     for (auto method : {erd::api::Method::gpi, erd::api::Method::erdgpi}) {
         INFO(erd::api::method_name(method));
         erd::api::Options opt;
@@ -351,8 +338,8 @@ TEST_CASE("public API: triangulate() rebuilds the model's triangulation in the k
 }
 
 TEST_CASE("public API: two meshes on two threads equal the same meshes made one after the other", "[packaging]") {
-    const erd::Image a = synth_image(96, 64, 11);
-    const erd::Image b = synth_image(80, 72, 12);
+    const erd::Image a = synth_image(96, 64, 8, 11);
+    const erd::Image b = synth_image(80, 72, 8, 12);
     erd::api::Options opt;
     opt.generate.density = 2.0;
     opt.generate.density_given = true;

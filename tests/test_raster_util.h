@@ -96,4 +96,10 @@ inline erd::Model to_model(const std::vector<Tri>& t, std::int32_t mx, std::int3
     return m;
 }
 
+// A random triangulation of a W x H image (random_triangulation with `points` points) as a Model
+// without values.
+inline erd::Model random_model(std::mt19937& rng, int W, int H, int points, bool even) {
+    return to_model(random_triangulation(rng, 2 * W - 2, 2 * H - 2, points, even), 2 * W - 2, 2 * H - 2);
+}
+
 }  // namespace erd_test

@@ -119,8 +119,7 @@ TEST_CASE("reconstruct: basic model reproduces vertex values and planes", "[rast
     std::mt19937 rng(2024);
     for (int trial = 0; trial < 12; ++trial) {
         const int W = 3 + int(rng() % 20), H = 3 + int(rng() % 20);
-        const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 5 + int(rng() % 40), true);
-        Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+        Model m = erd_test::random_model(rng, W, H, 5 + int(rng() % 40), true);
         m.kind = ModelKind::basic;
         std::vector<long double> vmean;
         for (std::size_t v = 0; v < m.vertices.size(); ++v) {
@@ -139,8 +138,7 @@ TEST_CASE("reconstruct: basic model reproduces vertex values and planes", "[rast
 TEST_CASE("reconstruct: a linear function is reproduced exactly", "[raster]") {
     std::mt19937 rng(5);
     const int W = 17, H = 11;
-    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 30, true);
-    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    Model m = erd_test::random_model(rng, W, H, 30, true);
     for (const LatticePoint& p : m.vertices) m.values.push_back(3.0 * (p.x / 2) + 5.0 * (p.y / 2) + 7.0);
     Image im;
     REQUIRE(erd::reconstruct(m, false, &im).ok());
@@ -183,8 +181,7 @@ TEST_CASE("reconstruct: random ERD models (every edge a discontinuity)", "[raste
     std::uniform_real_distribution<double> val(-20.0, 275.0);
     for (int trial = 0; trial < 10; ++trial) {
         const int W = 3 + int(rng() % 10), H = 3 + int(rng() % 10);
-        const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 5 + int(rng() % 25), false);
-        Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+        Model m = erd_test::random_model(rng, W, H, 5 + int(rng() % 25), false);
         m.kind = ModelKind::erd;
         m.values.assign(m.vertices.size(), 0.0);
         std::vector<long double> vmean(m.vertices.size(), 0.0L);
@@ -259,8 +256,7 @@ TEST_CASE("reconstruct: wide images are supersampled in several bands of rows", 
     std::mt19937 rng(77);
     std::uniform_real_distribution<double> val(0.0, 255.0);
     const int W = 6000, H = 37;
-    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 12, false);
-    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    Model m = erd_test::random_model(rng, W, H, 12, false);
     m.kind = ModelKind::erd;
     std::vector<long double> vmean(m.vertices.size(), 0.0L);
     std::vector<int> deg(m.vertices.size(), 0);
@@ -282,8 +278,7 @@ TEST_CASE("reconstruct: an output image that holds samples already gives the sam
     // samples and not its maxval may survive; another size is made anew.
     std::mt19937 rng(21);
     const int W = 19, H = 13;
-    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 20, false);
-    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    Model m = erd_test::random_model(rng, W, H, 20, false);
     m.maxval = 1000;
     for (std::size_t v = 0; v < m.vertices.size(); ++v) m.values.push_back(double((v * 37) % 1001));
     for (bool ss : {false, true}) {
@@ -306,8 +301,7 @@ TEST_CASE("reconstruct: an output image that holds samples already gives the sam
 TEST_CASE("reconstruct: a given adjacency gives the same image; one that does not fit is rebuilt", "[raster]") {
     std::mt19937 rng(8);
     const int W = 23, H = 14;
-    const auto t = erd_test::random_triangulation(rng, 2 * W - 2, 2 * H - 2, 25, false);
-    Model m = erd_test::to_model(t, 2 * W - 2, 2 * H - 2);
+    Model m = erd_test::random_model(rng, W, H, 25, false);
     m.kind = ModelKind::erd;
     for (std::size_t f = 0; f < m.faces.size(); ++f) m.corner_values.push_back({double(f % 7) * 30, 100.0, 200.0 - double(f)});
     m.values.assign(m.vertices.size(), 0.0);

@@ -22,8 +22,10 @@
 #include "algorithms/model/reconstruct.h"
 #include "kernel/row_parallel.h"
 #include "tests/erd_run.h"
+#include "tests/synth_util.h"
 
 using namespace erd;
+using erd_test::synth_image;
 
 namespace {
 
@@ -39,17 +41,6 @@ std::vector<int> with_one_thread() {
     std::vector<int> t = other_threads();
     t.insert(t.begin(), 1);
     return t;
-}
-
-Image synth_image(int w, int h, int bits = 8, std::uint64_t seed = 1) {
-    SynthParams p;
-    p.width = w;
-    p.height = h;
-    p.bits = bits;
-    p.seed = seed;
-    Image im;
-    REQUIRE(synth(p, &im).ok());
-    return im;
 }
 
 // A colour image from three synth images of different seeds (different noise in each channel).

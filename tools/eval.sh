@@ -111,16 +111,16 @@ echo "eval: ${#cases[@]} cases (${variants[*]}), $JOBS at a time; outputs under 
 printf '%s\n' "${cases[@]}" | xargs -P "$JOBS" -L 1 bash -c 'run_case "$@"' _ >"$OUT/raw.txt"
 
 # ---- docs/RESULTS.md ----
-# The sections `make codec-bench` (codec) and `make bench` (colour-cost) write are kept: saved
-# here, put back after the rewrite (colour-cost after the colour table it follows).
-keep_section() {
-    : >"$OUT/$1_section.md"
-    [[ -f $RESULTS ]] && awk -v m="$1" 'index($0, "<!-- " m) == 1 { on = 1 } on { print } $0 == "<!-- /" m " -->" { on = 0 }' \
-        "$RESULTS" >"$OUT/$1_section.md"
-}
-keep_section codec
-keep_section colour-cost
-codec_keep=$OUT/codec_section.md
+# eval writes the thesis tables at the top; every marked section below them ("<!-- NAME: ..." to
+# "<!-- /NAME -->": make codec-bench's, make bench's, the eval_* scripts', the measured-by-hand
+# ones) is kept in its place: saved here, put back after the rewrite, then the eval_* scripts
+# replace their own.
+kept=$OUT/kept_sections.md
+: >"$kept"
+[[ -f $RESULTS ]] && awk '
+    !on && match($0, /^<!-- [A-Za-z0-9_-]+:/) { on = 1; m = substr($0, 6, RLENGTH - 6); if (n++) print "" }
+    on { print }
+    on && $0 == "<!-- /" m " -->" { on = 0 }' "$RESULTS" >"$kept"
 {
     echo "# Results"
     echo
@@ -131,6 +131,8 @@ codec_keep=$OUT/codec_section.md
     echo "(tol: ED 1.5, GPI 0.5, ERDED 0.5, ERDGPI 0.3 dB, the targets of issues 5 and 6). time = wall"
     echo "seconds of \`erd generate\` (load, mesh, write), $JOBS cases at once on a shared machine."
     echo "Misses of the targets and their likely causes: docs/DECISIONS.md \"ED and GPI\", \"ERD model and methods\"."
+    echo "The sections after the thesis tables are written by the command each one names (make codec-bench,"
+    echo "make bench, tools/eval_*.sh) and kept when another command rewrites the file."
     echo "ERDED and ERDGPI appear twice: \"thesis method\" is \`erd generate --thesis\` (the thesis's wedge"
     echo "values, line search alpha in [1, 1.5] px, ERDED density zeroed on edge pixels only, ERDGPI refined"
     echo "against the supersampled approximation; this is what the reproduction targets are judged on),"
@@ -203,8 +205,8 @@ codec_keep=$OUT/codec_section.md
             END { if (NR) printf "\nMedian gain of %s over %s: %+.2f dB over %d cases.\n\n", A, B, (NR % 2) ? g[(NR + 1) / 2] : (g[NR / 2] + g[NR / 2 + 1]) / 2, NR }'
     done
 } >"$RESULTS"
+[[ -s $kept ]] && cat "$kept" >>"$RESULTS"
 echo "eval: wrote $RESULTS"
-if [[ -s $codec_keep ]]; then source tools/results_section.sh; put_section codec "$codec_keep" "$RESULTS"; fi
 # Table 3.4 (ERDED start-up modes): its own marked section, so it must run after the file is written.
 [[ -x tools/eval_startup.sh || -f tools/eval_startup.sh ]] && bash tools/eval_startup.sh "$ERD" "$IMAGES"
 # The hard-edged table (issue 15): its own marked section too.
@@ -213,5 +215,4 @@ bash tools/eval_hard.sh "$ERD" "$IMAGES"
 bash tools/eval_colour.sh "$(dirname "$ERD")" "$IMAGES"
 # The anti-aliased graphics table (issue 44): its own marked section too.
 bash tools/eval_graphics.sh "$ERD" "$IMAGES"
-if [[ -s $OUT/colour-cost_section.md ]]; then source tools/results_section.sh; put_section colour-cost "$OUT/colour-cost_section.md" "$RESULTS"; fi
 grep -E "^(## |Met|Median)" "$RESULTS"

@@ -102,7 +102,7 @@ public:
     std::size_t pass_points() const;  // the points the kept pass holds (0: none kept)
     void release();  // frees the kept pass
 
-    struct Pass;  // defined in canny.cpp
+    struct Pass;  // defined in canny_pass.h
 
 private:
     void make_pass(const CannyParams& params);

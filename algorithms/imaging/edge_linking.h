@@ -1,6 +1,6 @@
 // Steps 4 and 5 of edge detection (algorithms/imaging/canny.h) on one detection's strong points:
 // hysteresis from the strong maxima, and the junction repair of Ding and Goshtasby (2001).
-// Internal to canny.cpp; the points come from its streaming pass.
+// Internal to canny_track.cpp; the points come from the streaming pass (canny_pass.h).
 #pragma once
 #include <cstddef>
 #include <cstdint>

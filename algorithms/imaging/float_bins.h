@@ -1,5 +1,6 @@
-// Quantiles of non-negative floats by histogram (the edge detector's thresholds, canny.cpp): the
-// bin of the k-th largest from the counts, then selection among that bin's values alone.
+// Quantiles of non-negative floats by histogram (the edge detector's thresholds: counted in
+// canny_pass.cpp, selected in canny_track.cpp): the bin of the k-th largest from the counts, then
+// selection among that bin's values alone.
 #pragma once
 #include <algorithm>
 #include <cstddef>

@@ -1,6 +1,6 @@
 // The gradient of edge detection's step 1 (canny.h), streamed row by row, and the
-// rows of phi_bar it is computed from. Internal to canny.cpp (its streaming pass, its sampled
-// bound, canny_gradient); kept apart so that canny.cpp holds the detection itself.
+// rows of phi_bar it is computed from. Internal to the detector: the streaming pass and its
+// sampled bound (canny_pass.cpp) and canny_gradient (canny.cpp).
 #pragma once
 #include <cmath>
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Arrays in malloc'd memory for the edge detector's streaming store (canny.cpp).
+// Arrays in malloc'd memory for the edge detector's streaming store (canny_pass.h).
 #pragma once
 #include <cstddef>
 #include <cstdlib>

@@ -1,6 +1,7 @@
-// The colour greedy scan of one span of 8-bit RGB pixels (greedy.cpp, Refiner::rescan_colour),
-// four pixels at a time: the rounded value of each channel's plane, the squared channel errors,
-// their sum over the span and the candidate by the largest channel error.
+// The colour greedy scan of one span of 8-bit RGB pixels (greedy_colour.cpp,
+// GreedyRefiner::rescan_colour), four pixels at a time: the rounded value of each channel's plane,
+// the squared channel errors, their sum over the span and the candidate by the largest channel
+// error.
 //
 // Why its own code: the three-channel scan in doubles cost ~50 instructions a pixel, against ~12 for
 // the gray exact scan, and made colour GPI 3.3x gray GPI (docs/DECISIONS.md "Colour methods"). Here

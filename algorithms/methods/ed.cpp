@@ -4,7 +4,6 @@
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/methods/exact_count.h"
-#include "algorithms/methods/optimize.h"
 #include "algorithms/methods/scaffold.h"
 #include "kernel/cdt.h"
 
@@ -56,12 +55,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     st = cdt.insert_points(chosen.points, &ids);
     if (!st) return st;
     timer.lap("triangulate");
-    finish_basic_method(cdt, image, &timer, result);
-    if (options.optimize) {
-        optimize_basic_model(&cdt, image, options, &result->model, &result->stats.wedge_fit);
-        result->stats.has_wedge_fit = true;
-        timer.lap("optimize");
-    }
+    finish_basic_method(cdt, image, options, &timer, result);
     return Status::success();
 }
 

@@ -52,25 +52,18 @@ private:
             for (std::size_t c = 1; c < C; ++c) t += sse[c];
             return t;
         };
-        OwnedRows rows(Lattice::pixels(), domain_, p0, p1, p2);
-        for (RowRun part; rows.next(&part);) {
-            for (RowRun run = part; run.j <= run.j_end; run.step()) {
-                std::int64_t lo64, hi64;
-                run.columns(&lo64, &hi64);
-                if (lo64 > hi64) continue;
-                const std::int32_t j = std::int32_t(run.j), lo = std::int32_t(lo64), hi = std::int32_t(hi64);
-                for (std::size_t c = 0; c < C; ++c) {
-                    const std::uint16_t* px = planes_[c]->samples.data() + std::size_t(j) * width;
-                    double v = plane[c].at(double(2 * lo), double(2 * j)), e = sse[c];
-                    for (std::int32_t i = lo; i <= hi; ++i, v += dv[c]) {
-                        const double d = v - double(px[i]);
-                        e += d * d;
-                    }
-                    sse[c] = e;
+        for_each_owned_row(Lattice::pixels(), domain_, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            for (std::size_t c = 0; c < C; ++c) {
+                const std::uint16_t* px = planes_[c]->samples.data() + std::size_t(j) * width;
+                double v = plane[c].at(double(2 * lo), double(2 * j)), e = sse[c];
+                for (std::int32_t i = lo; i <= hi; ++i, v += dv[c]) {
+                    const double d = v - double(px[i]);
+                    e += d * d;
                 }
-                if (base + total() >= stop) return total();
+                sse[c] = e;
             }
-        }
+            return base + total() < stop;
+        });
         return total();
     }
 

@@ -1,6 +1,5 @@
 #include "algorithms/methods/gpi.h"
 
-#include "algorithms/methods/optimize.h"
 #include "algorithms/methods/scaffold.h"
 
 namespace erd {
@@ -59,12 +58,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     if (!st) return st;
     timer.lap("greedy insertion");
 
-    finish_basic_method(cdt, image, &timer, result);
-    if (options.optimize) {
-        optimize_basic_model(&cdt, image, options, &result->model, &result->stats.wedge_fit);
-        result->stats.has_wedge_fit = true;
-        timer.lap("optimize");
-    }
+    finish_basic_method(cdt, image, options, &timer, result);
     return Status::success();
 }
 

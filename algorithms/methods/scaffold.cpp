@@ -91,10 +91,16 @@ Model basic_model(const Cdt& cdt, const Image& image) {
     return m;
 }
 
-void finish_basic_method(const Cdt& cdt, const Image& image, StageTimer* timer, GenerateResult* result) {
+void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
+                         GenerateResult* result) {
     result->model = basic_model(cdt, image);
     result->achieved = result->model.size();
     timer->lap("model");
+    if (options.optimize) {
+        optimize_basic_model(&cdt, image, options, &result->model, &result->stats.wedge_fit);
+        result->stats.has_wedge_fit = true;
+        timer->lap("optimize");
+    }
 }
 
 GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {

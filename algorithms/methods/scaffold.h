@@ -43,8 +43,10 @@ Status begin_method(const Image& image, const GenerateOptions& options, Generate
 // The basic model of a triangulation whose vertices are pixels: vertex values are the samples.
 Model basic_model(const Cdt& cdt, const Image& image);
 
-// The end of ED and GPI: the basic model of cdt into result (model, achieved), timed as "model".
-void finish_basic_method(const Cdt& cdt, const Image& image, StageTimer* timer, GenerateResult* result);
+// The end of ED and GPI: the basic model of cdt into result (model, achieved), timed as "model";
+// with options.optimize, then the least-squares values and flips (optimize.h), timed as "optimize".
+void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
+                         GenerateResult* result);
 
 // The greedy loop's options for GPI and ERDGPI: stop at n vertices or by --max-error / --psnr,
 // errors rounded as options.round_values says, the progress hook.

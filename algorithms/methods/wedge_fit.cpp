@@ -32,20 +32,14 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
     std::uint16_t lo[N], hi[N];
     for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0;
     bool owns = false;
-    OwnedRows rows(Lattice::pixels(), domain, p0, p1, p2);
-    for (RowRun part; rows.next(&part);) {
-      for (RowRun run = part; run.j <= run.j_end; run.step()) {
-        std::int64_t lo64, hi64;
-        run.columns(&lo64, &hi64);
-        if (lo64 > hi64) continue;
+    for_each_owned_row(Lattice::pixels(), domain, p0, p1, p2, [&](std::int32_t j, std::int32_t first, std::int32_t last) {
         owns = true;
-        const Span sp{std::int32_t(run.j), std::int32_t(lo64), std::int32_t(hi64)};
-        const double Y = double(2 * sp.y);
+        const double Y = double(2 * j);
         const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
         const std::uint16_t* px[N];
-        for (int k = 0; k < N; ++k) px[k] = &images[k]->samples[std::size_t(sp.y) * std::size_t(images[k]->width)];
-        double a = double(2 * sp.x_begin) - l0.x0;
-        for (std::int32_t i = sp.x_begin; i <= sp.x_end; ++i, a += 2.0) {
+        for (int k = 0; k < N; ++k) px[k] = &images[k]->samples[std::size_t(j) * std::size_t(images[k]->width)];
+        double a = double(2 * first) - l0.x0;
+        for (std::int32_t i = first; i <= last; ++i, a += 2.0) {
             const double w0 = (1.0 + gx0 * a) + t0, w1 = gx1 * a + t1;
             const double w2 = 1.0 - w0 - w1;
             g00 += w0 * w0;
@@ -65,8 +59,7 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
                 hi[k] = v > hi[k] ? v : hi[k];
             }
         }
-      }
-    }
+    });
     if (!owns) return;
     for (int k = 0; k < N; ++k) {
         FaceSystem& fs = out[k];

@@ -12,6 +12,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model_tokens.h"
 #include "algorithms/model/model_topology.h"
+#include "kernel/file_name.h"
 #include "kernel/predicates.h"
 
 namespace erd {
@@ -330,19 +331,9 @@ Status require_gray(const Model& m, const std::string& what) {
 }
 
 ModelFileKind model_kind_from_name(const std::string& name) {
-    const auto ends = [&](const char* ext) {
-        const std::string e(ext);
-        if (name.size() < e.size()) return false;
-        for (std::size_t i = 0; i < e.size(); ++i) {
-            char c = name[name.size() - e.size() + i];
-            if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
-            if (c != e[i]) return false;
-        }
-        return true;
-    };
-    if (ends(".model")) return ModelFileKind::basic;
-    if (ends(".erd")) return ModelFileKind::erd;
-    if (ends(".tri")) return ModelFileKind::triangulation;
+    if (has_extension(name, ".model")) return ModelFileKind::basic;
+    if (has_extension(name, ".erd")) return ModelFileKind::erd;
+    if (has_extension(name, ".tri")) return ModelFileKind::triangulation;
     return ModelFileKind::unknown;
 }
 
@@ -424,13 +415,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
 
 Status read_triangulation(const std::string& text, Model* out) {
     Tokens tk(text);
-    if (tk.at_end()) return Status::bad_input("empty file");
-    std::string_view t;
-    tk.next(&t);
-    if (t != "erd-triangulation")
-        return Status::bad_input(tk.where() + "not an erd triangulation file (expected 'erd-triangulation 1', found '" + show(t) + "')");
-    std::uint64_t version = 0, w = 0, h = 0, nv = 0, nc = 0;
-    if (Status s = tk.uint("format version", 1, 1, &version); !s) return s;
+    if (Status s = expect_magic(tk, "erd-triangulation", "an erd triangulation file"); !s) return s;
+    std::uint64_t w = 0, h = 0, nv = 0, nc = 0;
     if (Status s = tk.uint("width", 2, kMaxImageSide, &w); !s) return s;
     if (Status s = tk.uint("height", 2, kMaxImageSide, &h); !s) return s;
     if (std::int64_t(w * h) > kMaxImagePixels)
@@ -490,13 +476,8 @@ Status read_triangulation(const std::string& text, Model* out) {
 
 Status read_polylines(const std::string& text, std::vector<std::vector<LatticePoint>>* out) {
     Tokens tk(text);
-    if (tk.at_end()) return Status::bad_input("empty file");
-    std::string_view t;
-    tk.next(&t);
-    if (t != "erd-polylines")
-        return Status::bad_input(tk.where() + "not an erd polylines file (expected 'erd-polylines 1', found '" + show(t) + "')");
-    std::uint64_t version = 0, np = 0;
-    if (Status s = tk.uint("format version", 1, 1, &version); !s) return s;
+    if (Status s = expect_magic(tk, "erd-polylines", "an erd polylines file"); !s) return s;
+    std::uint64_t np = 0;
     if (Status s = count(tk, "polyline count", 0, 2, &np); !s) return s;
     std::vector<std::vector<LatticePoint>> lines(np);
     for (std::uint64_t i = 0; i < np; ++i) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/float_chars.h"
@@ -98,46 +99,13 @@ public:
     // Unsigned integer in [lo, hi].
     template <class What>
     Status uint(const What& what, std::uint64_t lo, std::uint64_t hi, std::uint64_t* v) {
-        std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
-        std::uint64_t x = 0;
-        if (digits(t, 18, &x) && x >= lo && x <= hi) {
-            *v = x;
-            return Status::success();
-        }
-        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
-        if (t.empty() || t[0] == '+' || t[0] == '-' || r.ptr != t.data() + t.size())
-            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
-        if (r.ec == std::errc::result_out_of_range)
-            return Status::bad_input(where() + str(what) + " " + show(t) + " is too large (at most " + std::to_string(hi) + ")");
-        if (x < lo || x > hi)
-            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " out of range (" + std::to_string(lo) +
-                                     ".." + std::to_string(hi) + ")");
-        *v = x;
-        return Status::success();
+        return integer(what, lo, hi, v);
     }
 
     // Signed integer (coordinates: a '-' gets "outside the image" rather than "junk").
     template <class What>
     Status sint(const What& what, std::int64_t lo, std::int64_t hi, std::int64_t* v) {
-        std::string_view t;
-        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
-        std::uint64_t u = 0;
-        if (digits(t, 18, &u) && std::int64_t(u) >= lo && std::int64_t(u) <= hi) {
-            *v = std::int64_t(u);
-            return Status::success();
-        }
-        std::int64_t x = 0;
-        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
-        if (t.empty() || t[0] == '+' || r.ptr != t.data() + t.size())
-            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
-        if (r.ec == std::errc::result_out_of_range)
-            return Status::bad_input(where() + str(what) + " " + show(t) + " outside the image (0.." + std::to_string(hi) + ")");
-        if (x < lo || x > hi)
-            return Status::bad_input(where() + str(what) + " " + std::to_string(x) + " outside the image (" + std::to_string(lo) +
-                                     ".." + std::to_string(hi) + ")");
-        *v = x;
-        return Status::success();
+        return integer(what, lo, hi, v);
     }
 
     // A finite real of moderate size.
@@ -165,6 +133,33 @@ public:
     }
 
 private:
+    // uint and sint: plain digits in range take the fast path; anything else is read by
+    // from_chars for the message. T signed means a coordinate (the range named "the image").
+    template <class T, class What>
+    Status integer(const What& what, T lo, T hi, T* v) {
+        constexpr bool coordinate = std::is_signed_v<T>;
+        std::string_view t;
+        if (!next(&t)) return Status::bad_input("file ends early: expected " + str(what));
+        std::uint64_t u = 0;
+        if (digits(t, 18, &u) && T(u) >= lo && T(u) <= hi) {
+            *v = T(u);
+            return Status::success();
+        }
+        T x = 0;
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (t.empty() || t[0] == '+' || (!coordinate && t[0] == '-') || r.ptr != t.data() + t.size())
+            return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
+        if (r.ec == std::errc::result_out_of_range)
+            return Status::bad_input(where() + str(what) + " " + show(t) +
+                                     (coordinate ? " outside the image (0.." : " is too large (at most ") + std::to_string(hi) + ")");
+        if (x < lo || x > hi)
+            return Status::bad_input(where() + str(what) + " " + std::to_string(x) +
+                                     (coordinate ? " outside the image (" : " out of range (") + std::to_string(lo) + ".." +
+                                     std::to_string(hi) + ")");
+        *v = x;
+        return Status::success();
+    }
+
     static bool space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
     void skip() {
         while (pos_ < s_.size()) {
@@ -196,6 +191,18 @@ Status count(Tokens& tk, const What& what, std::uint64_t lo, std::uint64_t min_b
         return Status::bad_input(tk.where() + str(what) + " " + std::to_string(*n) +
                                  " is more than the rest of the file holds (the file ends early or the count is wrong)");
     return Status::success();
+}
+
+// The first line of a file of ours other than a model: its magic word and format version 1.
+// `what` names the kind for a text that starts otherwise ("an erd polylines file").
+inline Status expect_magic(Tokens& tk, const char* magic, const char* what) {
+    if (tk.at_end()) return Status::bad_input("empty file");
+    std::string_view t;
+    tk.next(&t);
+    if (t != magic)
+        return Status::bad_input(tk.where() + "not " + what + " (expected '" + magic + " 1', found '" + show(t) + "')");
+    std::uint64_t version = 0;
+    return tk.uint("format version", 1, 1, &version);
 }
 
 // Nothing may follow the last record: "unexpected 'X' after the last WHAT (check the counts)".

@@ -147,7 +147,7 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
                 std::uint32_t w = cw.label[3 * f + std::size_t(i)];
                 face_idx[f][std::size_t(i)] = copy_of_wedge[w];
                 if (placed[w]) continue;
-                double z[3];
+                double z[3] = {0, 0, 0};  // a gray model fills z[0] alone
                 for (std::size_t c = 0; c < C; ++c) z[c] = m.corner_values[f * C + c][std::size_t(i)];
                 pos[copy_of_wedge[w]][2] = value(z) * zs;
                 if (C > 1) rgb[copy_of_wedge[w]] = {z[0], z[1], z[2]};
@@ -179,50 +179,38 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     const auto tick = [&](std::size_t i) {
         if (options.progress && i % every == 0) options.progress("export", double(i) / double(lines));
     };
+    // The vertex and face lines of OBJ and PLY: each vertex's position (and, in colour, its RGB
+    // values as `scale` writes them), then each face from index `base`, corners 0, 2, 1.
+    const auto text_lines = [&](const char* position, const char* colour_format, auto scale, const char* face,
+                                std::uint32_t base) {
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+            tick(i);
+            append(out, position, pos[i][0], pos[i][1], pos[i][2]);
+            if (C > 1) append(out, colour_format, scale(rgb[i][0]), scale(rgb[i][1]), scale(rgb[i][2]));
+            out->push_back('\n');
+        }
+        for (std::size_t i = 0; i < face_idx.size(); ++i) {
+            tick(pos.size() + i);
+            append_face(out, face, face_idx[i][0] + base, face_idx[i][2] + base, face_idx[i][1] + base);
+        }
+    };
     if (options.format == MeshFormat::stl) {
         for (auto& t : face_idx) std::swap(t[1], t[2]);
         write_stl(pos, face_idx, options.base, out, &facets);
     } else if (options.format == MeshFormat::obj) {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
-        if (C == 1)
-            for (std::size_t i = 0; i < pos.size(); ++i) {
-                tick(i);
-                append(out, "v %.9g %.9g %.9g\n", pos[i][0], pos[i][1], pos[i][2]);
-            }
-        else
-            for (std::size_t i = 0; i < pos.size(); ++i) {
-                tick(i);
-                append(out, "v %.9g %.9g %.9g", pos[i][0], pos[i][1], pos[i][2]);
-                const auto unit = [&](double v) { return std::min(1.0, std::max(0.0, v / double(m.maxval))); };
-                append(out, " %.6g %.6g %.6g\n", unit(rgb[i][0]), unit(rgb[i][1]), unit(rgb[i][2]));
-            }
-        for (std::size_t i = 0; i < face_idx.size(); ++i) {
-            tick(pos.size() + i);
-            append_face(out, "f %u %u %u\n", face_idx[i][0] + 1, face_idx[i][2] + 1, face_idx[i][1] + 1);
-        }
+        // Colours as reals in [0, 1] after the position (an extension most OBJ readers take).
+        const auto unit = [&](double v) { return std::min(1.0, std::max(0.0, v / double(m.maxval))); };
+        text_lines("v %.9g %.9g %.9g", " %.6g %.6g %.6g", unit, "f %u %u %u\n", 1);
     } else {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
         out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
         out->append("element vertex " + std::to_string(pos.size()) + "\nproperty double x\nproperty double y\nproperty double z\n");
         if (C > 1) out->append("property uchar red\nproperty uchar green\nproperty uchar blue\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
-        if (C == 1)
-            for (std::size_t i = 0; i < pos.size(); ++i) {
-                tick(i);
-                append(out, "%.9g %.9g %.9g\n", pos[i][0], pos[i][1], pos[i][2]);
-            }
-        else
-            for (std::size_t i = 0; i < pos.size(); ++i) {
-                tick(i);
-                append(out, "%.9g %.9g %.9g", pos[i][0], pos[i][1], pos[i][2]);
-                const auto byte = [&](double v) { return std::min(255.0, std::max(0.0, std::floor(v * 255.0 / double(m.maxval) + 0.5))); };
-                append(out, " %.0f %.0f %.0f\n", byte(rgb[i][0]), byte(rgb[i][1]), byte(rgb[i][2]));
-            }
-        for (std::size_t i = 0; i < face_idx.size(); ++i) {
-            tick(pos.size() + i);
-            append_face(out, "3 %u %u %u\n", face_idx[i][0], face_idx[i][2], face_idx[i][1]);
-        }
+        const auto byte = [&](double v) { return std::min(255.0, std::max(0.0, std::floor(v * 255.0 / double(m.maxval) + 0.5))); };
+        text_lines("%.9g %.9g %.9g", " %.0f %.0f %.0f", byte, "3 %u %u %u\n", 0);
     }
     if (counts) {
         counts->vertices = pos.size();
