@@ -24,6 +24,7 @@
 #include "kernel/predicates.h"
 #include "tests/erd_check.h"
 #include "tests/erd_run.h"
+#include "tests/method_run_util.h"
 #include "tests/thesis_cases.h"
 
 using namespace erd;
@@ -92,24 +93,15 @@ Image blurred(const Image& im, int passes) {
     return out;
 }
 
-GenerateResult run(const char* method, const Image& im, double density, EdgeChoice edges = EdgeChoice::automatic) {
-    GenerateOptions o;
-    o.density = density;
-    o.density_given = true;
-    o.edges = edges;
-    GenerateResult r;
-    const MethodInfo* m = find_method(method);
-    REQUIRE(m != nullptr);
-    REQUIRE(m->run(im, o, &r).ok());
-    return r;
-}
 
-double psnr_of(const Image& im, const Model& m) {
-    Image rec;
-    REQUIRE(reconstruct(m, supersampled(m), &rec).ok());
+
+// ERDGPI's soft model of im at 2% with each edge's kind chosen by fit: edges of both kinds.
+Model two_kind_model(const Image& im) {
+    Model m = run_method("erdgpi", im, 2.0, EdgeChoice::soft).model;
     double db = 0;
-    REQUIRE(psnr(im, rec, &db).ok());
-    return db;
+    REQUIRE(choose_edge_kinds(im, &m, &db).ok());
+    REQUIRE(!m.kind_exceptions.empty());
+    return m;
 }
 
 std::vector<std::array<std::uint32_t, 2>> discontinuities(const Model& m) {
@@ -191,7 +183,7 @@ TEST_CASE("edge kinds: an edge governs exactly the pixels whose sub-sample squar
 
 TEST_CASE("edge kinds: the pixels along an edge of the other kind are evaluated as that kind says", "[edgekinds]") {
     const Image im = drawing(96, 72, 16);
-    Model m = run("erdgpi", im, 3.0, EdgeChoice::soft).model;
+    Model m = run_method("erdgpi", im, 3.0, EdgeChoice::soft).model;
     REQUIRE(m.edges == EdgeKind::soft);
     const auto disc = discontinuities(m);
     REQUIRE(disc.size() > 10);
@@ -235,7 +227,7 @@ TEST_CASE("edge kinds: the pixels along an edge of the other kind are evaluated 
 
 TEST_CASE("edge kinds: chosen by fit, each edge the kind that fits the pixels along it", "[edgekinds]") {
     const Image im = drawing(96, 72, 16);
-    Model m = run("erdgpi", im, 2.0, EdgeChoice::soft).model;
+    Model m = run_method("erdgpi", im, 2.0, EdgeChoice::soft).model;
     Image point, super;
     REQUIRE(reconstruct(m, false, &point).ok());
     REQUIRE(reconstruct(m, true, &super).ok());
@@ -247,16 +239,13 @@ TEST_CASE("edge kinds: chosen by fit, each edge the kind that fits the pixels al
     ModelTopology topo;
     REQUIRE(build_topology(m, &topo).ok());
     CHECK(check_kind_exceptions(m, topo).ok());
-    CHECK(chosen == psnr_of(im, m));  // what it reports is the model's own reconstruction
+    CHECK(chosen == own_psnr(im, m));  // what it reports is the model's own reconstruction
     CHECK(chosen > std::max(p, s));   // measured: both kinds somewhere
 }
 
 TEST_CASE("edge kinds: .erd round trip and the header keys hard-edges / soft-edges", "[edgekinds][model_io]") {
     const Image im = drawing(96, 72, 16);
-    Model m = run("erdgpi", im, 2.0, EdgeChoice::soft).model;
-    double db = 0;
-    REQUIRE(choose_edge_kinds(im, &m, &db).ok());
-    REQUIRE(!m.kind_exceptions.empty());
+    const Model m = two_kind_model(im);
     for (EdgeKind base : {m.edges, m.edges == EdgeKind::hard ? EdgeKind::soft : EdgeKind::hard}) {
         Model k = m;
         k.edges = base;
@@ -324,10 +313,7 @@ TEST_CASE("edge kinds: .erd round trip and the header keys hard-edges / soft-edg
 
 TEST_CASE("edge kinds: .erdz keeps them (version 4), models of one kind stay version 3", "[edgekinds][erdz]") {
     const Image im = drawing(96, 72, 16);
-    Model m = run("erdgpi", im, 2.0, EdgeChoice::soft).model;
-    double db = 0;
-    REQUIRE(choose_edge_kinds(im, &m, &db).ok());
-    REQUIRE(!m.kind_exceptions.empty());
+    const Model m = two_kind_model(im);
     const auto coordinates = [](const Model& x) {
         std::set<std::pair<std::uint64_t, std::uint64_t>> s;
         for (const auto& e : x.kind_exceptions) s.insert(std::minmax(test::key(x.vertices[e[0]]), test::key(x.vertices[e[1]])));
@@ -371,11 +357,11 @@ TEST_CASE("edge kinds: more points never cost quality on an anti-aliased drawing
     double last[2] = {0, 0};
     for (double d : densities) {
         INFO("density " << d);
-        const double gpi = psnr_of(im, run("gpi", im, d).model), ed = psnr_of(im, run("ed", im, d).model);
-        const GenerateResult g = run("erdgpi", im, d), e = run("erded", im, d);
+        const double gpi = own_psnr(im, run_method("gpi", im, d).model), ed = own_psnr(im, run_method("ed", im, d).model);
+        const GenerateResult g = run_method("erdgpi", im, d), e = run_method("erded", im, d);
         CHECK(g.stats.erd.stepped);
         test::check_model(g.model);
-        const double erdgpi = psnr_of(im, g.model), erded = psnr_of(im, e.model);
+        const double erdgpi = own_psnr(im, g.model), erded = own_psnr(im, e.model);
         CHECK(erdgpi >= gpi - 0.2);
         CHECK(erded >= ed);
         CHECK(erdgpi >= last[0] - 0.05);
@@ -401,13 +387,13 @@ TEST_CASE("edge kinds: a picture half photo, half drawing gets the better of bot
     CHECK(measure_edge_kind(mixed).is_stepped());
     for (double d : {1.0, 2.0}) {
         INFO("density " << d);
-        const GenerateResult r = run("erdgpi", mixed, d);
+        const GenerateResult r = run_method("erdgpi", mixed, d);
         REQUIRE(r.stats.erd.tried);
-        const double best = psnr_of(mixed, r.model);
+        const double best = own_psnr(mixed, r.model);
         CHECK(best == r.stats.erd.tried_psnr[r.stats.erd.tried_choice]);
-        CHECK(best >= psnr_of(mixed, run("erdgpi", mixed, d, EdgeChoice::soft).model));
-        CHECK(best >= psnr_of(mixed, run("erdgpi", mixed, d, EdgeChoice::hard).model));
-        CHECK(best >= psnr_of(mixed, run("gpi", mixed, d).model) + 3);
+        CHECK(best >= own_psnr(mixed, run_method("erdgpi", mixed, d, EdgeChoice::soft).model));
+        CHECK(best >= own_psnr(mixed, run_method("erdgpi", mixed, d, EdgeChoice::hard).model));
+        CHECK(best >= own_psnr(mixed, run_method("gpi", mixed, d).model) + 3);
     }
 }
 

@@ -9,16 +9,8 @@
 # Usage: tools/eval_graphics.sh ERD_BINARY [IMAGES_DIR]
 # NAMES (space separated) restricts the pictures; RAW=FILE keeps the raw lines there as well.
 set -u
-ERD=${1:-build/erd}
-IMAGES=${2:-../shared/images}
-[[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
-JOBS=${JOBS:-2}
-[[ $ERD == */* && $ERD != /* ]] && ERD=$PWD/$ERD
-cd "$(dirname "$0")/.."
-OUT=out/eval/graphics
-RESULTS=docs/RESULTS.md
-mkdir -p "$OUT" docs
-if [[ ! -x $ERD ]]; then echo "eval_graphics: $ERD is not built (try: make)"; exit 1; fi
+source "$(dirname "$0")/results_section.sh"
+eval_setup eval_graphics graphics "${1:-build/erd}" "${2:-../shared/images}" || exit 1
 command -v rsvg-convert >/dev/null || { echo "eval_graphics: rsvg-convert missing (make graphics-deps)"; exit 1; }
 python3 tools/graphics_svg.py "$OUT/svg" "$IMAGES" >"$OUT/names.txt" || exit 1
 names=${NAMES:-$(tr '\n' ' ' <"$OUT/names.txt")}
