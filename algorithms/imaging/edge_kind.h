@@ -9,7 +9,7 @@
 //   soft  when a flanking difference of the same sign exceeds kFlankRatio * d: the step is
 //         spread over more pixels (blurred by a lens, a filter or anti-aliasing);
 //   neither (a ridge: a flank of the opposite sign, a line one pixel wide) otherwise.
-// The image is hard when hard / (hard + soft) >= kHardFraction (docs/DECISIONS.md "Hard edges"
+// The image is hard when hard / (hard + soft) >= kHardFraction (docs/DECISIONS.md "Edge kinds"
 // gives the measured fractions).
 //
 // Clean steps (issue 44: anti-aliased graphics). A strong step is also clean when the ground is

@@ -72,7 +72,7 @@ using ErdRun = Status (*)(const Image& image, const GenerateOptions& options, bo
 
 // ERDED or ERDGPI: run(hard_fallback = true); when the model's edges are hard, also run(false),
 // since each treatment of crack curves too long for the budget wins on some images
-// (docs/DECISIONS.md "Hard edges"), and keep the model whose point reconstruction has the higher
+// (docs/DECISIONS.md "Edge kinds"), and keep the model whose point reconstruction has the higher
 // PSNR (the first on a tie); both PSNRs go to result->stats.erd. run(false) is skipped when no
 // count of run(true) took the plain curves (stats.erd.plain_fallback false): it would repeat
 // run(true) exactly, so both PSNRs are run(true)'s.
