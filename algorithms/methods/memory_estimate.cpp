@@ -108,7 +108,7 @@ std::size_t memory_estimate(const MethodInfo& method, const Image& image, const 
             // (about 100 bytes a vertex and channel) and the two reconstructions and the mask of
             // choose_edge_kinds (4 bytes a pixel and channel, and one). Within -11..+22% of the
             // peaks of the 16 graphics of make eval x ERDGPI, ERDED x 0.5, 1, 2% (93 runs that reach
-            // N; docs/DECISIONS.md "Edge kinds per edge").
+            // N; docs/DECISIONS.md "Edge kinds").
             const Fit& soft = erded ? kErdedSoft : kErdgpiSoft;
             const Fit& hard = erded ? kErdedHard : kErdgpiHard;
             const auto run_bytes = [&](const Fit& g, double kept_points) {
