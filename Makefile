@@ -42,7 +42,7 @@ STB_HDR   := /usr/include/stb/stb_image.h
 ZLIB_HDR  := /usr/include/zlib.h
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
-.PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate codec-bench
+.PHONY: all deps test unit run bench eval fuzz fuzz-campaign asan clean help docs-images regenerate codec-bench
 all: $(BUILD)/erd
 
 help:
@@ -59,6 +59,8 @@ help:
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make regenerate rewrite the docs the tests generate (docs/HOSTILE.md, docs/hostile_images.md)"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
+	@echo "make fuzz-campaign  every fuzz target for FUZZ_SECONDS (default 3600) on a kept corpus, FUZZ_JOBS (default 2)"
+	@echo "                at a time; executions, corpus, findings, new seeds into fuzz/corpus (fuzz/campaign.sh)"
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
 	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev when their headers are missing"
@@ -163,6 +165,13 @@ docs-images: $(BUILD)/erd
 
 fuzz: deps
 	@bash fuzz/run.sh $(FUZZ_SECONDS)
+
+# The campaign (fuzz/campaign.sh): an hour a target unless FUZZ_SECONDS is given; the kept corpus
+# lives outside the checkout (FUZZ_CORPUS, default ~/.cache/erd-fuzz).
+FUZZ_JOBS ?= 2
+CAMPAIGN_SECONDS := $(if $(filter command line environment,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),3600)
+fuzz-campaign: deps
+	@bash fuzz/campaign.sh -j $(FUZZ_JOBS) $(CAMPAIGN_SECONDS) $(FUZZ_TARGETS)
 
 clean:
 	rm -rf build build-asan build-fuzz out python/build python/erd.egg-info python/erd/_erd*.so
