@@ -52,6 +52,12 @@ Status Outputs::clashes(const std::vector<std::string>& outputs, const std::vect
     return check_output_names(outputs, inputs, false);
 }
 
+Status Outputs::folders(const std::vector<std::string>& outputs) {
+    for (const std::string& out : outputs)
+        if (Status s = check_output_folder(out); !s) return s;
+    return Status::success();
+}
+
 Status Outputs::stage(const std::string& path, const std::string& bytes) {
     if (path.empty()) return Status::bad_input("empty output file name");
     Staged s;
