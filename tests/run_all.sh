@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# `make test`: the layer and map checks, the unit tests, the same tests under ASan+UBSan, and a
-# short run of every fuzz target. Counts test cases (a fuzz target and each check count as one)
-# and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
+# `make test`: the layer and map checks, the unit tests, the same tests under ASan+UBSan, the
+# thread tests under ThreadSanitizer, and a short run of every fuzz target. Counts test cases (a
+# fuzz target and each check count as one) and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
 # (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
 unset ERD_ALLOW_SKIP ERD_REGENERATE
@@ -75,6 +75,23 @@ stage_asan() {
     local rc=$?
     tail -3 "$log/asan"
     count_catch "$log/asan" "$rc"
+}
+
+# The thread-equality tests under ThreadSanitizer (make tsan: build-tsan/erd_tsan_tests, the ASan
+# build's Catch2 main reused): the library's stages at 1 and 3 threads (ERD_SANITIZED) and two API
+# calls on two threads; a race report fails it (exit 66). The [cli] case runs the erd binary,
+# which this build has not.
+stage_tsan() {
+    local t0=$SECONDS
+    if ! make -s -j2 tsan >"$log/tsan-build" 2>&1; then
+        tail -20 "$log/tsan-build"; echo "ThreadSanitizer build failed"; failed=$((failed + 1)); return
+    fi
+    echo "built in $(( SECONDS - t0 )) s"
+    ERD_SANITIZED=1 build-tsan/erd_tsan_tests "~[cli]" >"$log/tsan" 2>&1
+    local rc=$?
+    grep -E '^(WARNING: ThreadSanitizer|SUMMARY: ThreadSanitizer)' "$log/tsan" | head -10
+    tail -3 "$log/tsan"
+    count_catch "$log/tsan" "$rc"
 }
 
 stage_embedded() {
@@ -165,10 +182,10 @@ make -s python-deps /usr/bin/em++ >"$log/stage-deps" 2>&1 || true
 # package, in the background; the fuzz smoke runs (one core: a target at a time for a fixed time,
 # linked against the sanitizer build's objects), the web page and the vector SVG renderers in the
 # foreground. Each chain is about 4-5 minutes on a quiet machine.
-echo "== unit tests under ASan+UBSan, embedded build, python (in the background, beside the fuzz smoke runs, the web page and the vector SVG renderers; printed below)"
+echo "== unit tests under ASan+UBSan and ThreadSanitizer, embedded build, python (in the background, beside the fuzz smoke runs, the web page and the vector SVG renderers; printed below)"
 [[ -n $asan_build_pid ]] && wait "$asan_build_pid"
 stage
-( run_job asan stage_asan; run_job embedded stage_embedded; run_job python stage_python ) &
+( run_job asan stage_asan; run_job tsan stage_tsan; run_job embedded stage_embedded; run_job python stage_python ) &
 chain_pid=$!
 
 echo "== fuzz smoke runs"
@@ -183,6 +200,7 @@ run_job web stage_web
 run_job vector stage_vector
 wait "$chain_pid"
 show_job asan "unit tests under ASan+UBSan: result"
+show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: every -j stage, two API calls on two threads)"
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
 show_job python "python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
