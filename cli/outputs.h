@@ -24,6 +24,14 @@
 // target (linkat cannot replace), with the signals above held. The only names ever created are
 // the short ones above, so they fit NAME_MAX whatever the output name. ERD_NO_TMPFILE=1 in the
 // environment takes the named path everywhere (for the tests of it).
+//
+// Killed (SIGKILL, which no handler sees) at any moment: before commit() nothing is changed and
+// no name is left (the unnamed temporaries vanish with the process); from commit() on, the moves
+// run in a child out of erd's process group (output_moves.h), which finishes them: every regular
+// output is its old file or every one its complete new file. Only a kill of that child too (of
+// every process) between two of its renames leaves some new and some old, each file whole, and
+// the old files' second names. ERD_TEST_COMMIT_PAUSE_MS=N (tests only, 1..10000) pauses N ms
+// before each move so that a test's kill can land inside the commit (tests/test_kill.cpp).
 #pragma once
 #include <string>
 #include <vector>
