@@ -195,7 +195,6 @@ Status check_output_names(const std::vector<std::string>& outputs, const std::ve
             if (whole && id.exists && ::stat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
                 return Status::failure(escape_name(out) + ": is a directory");
             if (whole && !(s = refuse_read_only(out, target))) return s;
-            if (whole && !(s = check_output_folder(out))) return s;
         }
         const std::string shown = out == "-" ? "stdout" : escape_name(out);
         if (const long k = ins.find(id); k >= 0)
@@ -206,6 +205,9 @@ Status check_output_names(const std::vector<std::string>& outputs, const std::ve
             return Status::bad_input(shown + ": the same file as the output " +
                                      (outputs[std::size_t(k)] == "-" ? std::string("stdout") : escape_name(outputs[std::size_t(k)])) +
                                      "; give each output its own file");
+        // Last: a clash (x/../in.pgm, x missing) is the better message than the missing folder.
+        if (whole && out != "-")
+            if (Status s = check_output_folder(out); !s) return s;
         outs.add(id, i);
     }
     return Status::success();
