@@ -65,6 +65,7 @@ help:
 	@echo "                at a time; executions, corpus, findings, new seeds into fuzz/corpus (fuzz/campaign.sh)"
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
+	@echo "make web-shots  the browser test (tests/web_test.sh), keeping its screenshots -> docs/img/web-1280.png, web-390.png"
 	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev when their headers are missing"
 	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
@@ -309,8 +310,8 @@ python-venv-check: python
 # erd in a web page (web/): erd compiled to WebAssembly with Debian's emscripten (installed with
 # apt when missing), served on 127.0.0.1 by `make serve`.
 WEB_PORT ?= 8000
-WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_mesh_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels
-.PHONY: web serve
+WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels,_erd_builtin,_erd_mesh_vertices,_erd_mesh_faces,_erd_faces,_erd_mesh_constraints,_erd_constraints
+.PHONY: web serve web-shots
 web: web/build/erd.js
 /usr/bin/em++:
 	@echo "installing Debian package emscripten" >&2
@@ -329,6 +330,8 @@ web/build/erd.js: /usr/bin/em++ $(WEB_OBJ)
 	NODE_PATH=/usr/share/nodejs em++ -O2 $(WEB_OBJ) -o $@ \
 	  -sMODULARIZE=1 -sEXPORT_NAME=createErd -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=worker \
 	  -sEXPORTED_FUNCTIONS=$(WEB_EXPORTS) -sEXPORTED_RUNTIME_METHODS=ccall,UTF8ToString
+web-shots: $(BUILD)/erd
+	@bash tests/web_test.sh $(IMAGES) docs/img
 serve: web
 	@echo "erd in the browser: http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
 	python3 -m http.server $(WEB_PORT) --bind 127.0.0.1 --directory web

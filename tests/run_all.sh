@@ -204,7 +204,7 @@ show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: ev
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
 show_job python "python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
-show_job web "web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
+show_job web "web page (web/, WebAssembly) in chromium via playwright-core: opens meshed, slider, cancel, drop, file, paste, bad file; each mesh the native erd's"
 
 stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"
