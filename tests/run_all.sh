@@ -78,9 +78,9 @@ stage_asan() {
 }
 
 # The thread-equality tests under ThreadSanitizer (make tsan: build-tsan/erd_tsan_tests, the ASan
-# build's Catch2 main reused): the library's stages at 1 and 3 threads (ERD_SANITIZED) and two API
-# calls on two threads; a race report fails it (exit 66). The [cli] case runs the erd binary,
-# which this build has not.
+# build's Catch2 main reused; in the foreground chain, after the fuzz smoke runs): the library's
+# stages at 1 and 3 threads (ERD_SANITIZED) and two API calls on two threads; a race report fails
+# it (exit 66). The [cli] case runs the erd binary, which this build has not.
 stage_tsan() {
     local t0=$SECONDS
     if ! make -s -j2 tsan >"$log/tsan-build" 2>&1; then
@@ -182,10 +182,10 @@ make -s python-deps /usr/bin/em++ >"$log/stage-deps" 2>&1 || true
 # package, in the background; the fuzz smoke runs (one core: a target at a time for a fixed time,
 # linked against the sanitizer build's objects), the web page and the vector SVG renderers in the
 # foreground. Each chain is about 4-5 minutes on a quiet machine.
-echo "== unit tests under ASan+UBSan and ThreadSanitizer, embedded build, python (in the background, beside the fuzz smoke runs, the web page and the vector SVG renderers; printed below)"
+echo "== unit tests under ASan+UBSan, embedded build, python (in the background, beside the fuzz smoke runs, the web page and the vector SVG renderers; printed below)"
 [[ -n $asan_build_pid ]] && wait "$asan_build_pid"
 stage
-( run_job asan stage_asan; run_job tsan stage_tsan; run_job embedded stage_embedded; run_job python stage_python ) &
+( run_job asan stage_asan; run_job embedded stage_embedded; run_job python stage_python ) &
 chain_pid=$!
 
 echo "== fuzz smoke runs"
@@ -196,13 +196,16 @@ if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1;
     passed=$((passed + p)); failed=$((failed + f))
 fi
 stage
+# ThreadSanitizer in this chain: the other one is the longer (asan 501 s + embedded 77 s + python
+# 260 s against fuzz 147 s + vector 146 s + web 297 s on a loaded machine).
+run_job tsan stage_tsan
 run_job web stage_web
 run_job vector stage_vector
 wait "$chain_pid"
 show_job asan "unit tests under ASan+UBSan: result"
-show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: every -j stage, two API calls on two threads)"
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
 show_job python "python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
+show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: every -j stage, two API calls on two threads)"
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
 show_job web "web page (web/, WebAssembly) in chromium via playwright-core: opens meshed, slider, cancel, drop, file, paste, bad file; each mesh the native erd's"
 
