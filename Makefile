@@ -57,7 +57,8 @@ help:
 	@echo "make embedded   the library at -Os -fno-exceptions -fno-rtti and docs/examples/embedded.cpp"
 	@echo "make bench      speed and memory beside hmm (medians) -> docs/RESULTS.md"
 	@echo "make codec-bench  .erdz bpp at equal PSNR against JPEG, JPEG 2000, WebP (installs them) -> out/codec/"
-	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
+	@echo "make eval       PSNR on the thesis images, colour images, drawings and graphics -> docs/RESULTS.md"
+	@echo "make graphics-deps  apt-get install what the graphics table needs (librsvg2-bin, fonts-dejavu-core, adwaita-icon-theme)"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make regenerate rewrite the docs the tests generate (docs/HOSTILE.md, docs/hostile_images.md)"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
@@ -125,7 +126,7 @@ $(BUILD)/%.o: %.cpp
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
 # `make test` = tests/run_all.sh: unit tests, ASan+UBSan unit tests, fuzz smoke; one summary line.
-test: deps
+test: deps graphics-deps
 	@bash tests/run_all.sh
 
 # ERD_BIN and ERD_IMAGES given in the environment win (`ERD_BIN=/nonexistent make unit` fails:
@@ -174,8 +175,19 @@ bench: $(BUILD)/erd
 codec-bench: $(BUILD)/erd
 	@ERD=$(BUILD)/erd IMAGES=$(IMAGES) bash bench/codec.sh out/codec
 
-eval: $(BUILD)/erd
+eval: $(BUILD)/erd graphics-deps
 	@bash tools/eval.sh $(BUILD)/erd $(IMAGES)
+
+# The graphics test set (issue 44, tools/graphics_svg.py, tools/eval_graphics.sh): our SVGs rendered
+# by rsvg-convert, text in DejaVu fonts, icons of Debian's Adwaita theme (its scalable SVGs).
+GRAPHICS_DEBS := librsvg2-bin fonts-dejavu-core adwaita-icon-theme
+GRAPHICS_FILES := /usr/bin/rsvg-convert /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf /usr/share/icons/Adwaita/scalable/places/user-home-symbolic.svg
+.PHONY: graphics-deps
+graphics-deps:
+	@for f in $(GRAPHICS_FILES); do [ -e $$f ] || missing=1; done; [ -z "$$missing" ] || { \
+	  echo "installing Debian packages $(GRAPHICS_DEBS)" >&2; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(GRAPHICS_DEBS) >/dev/null 2>&1 || \
+	  { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(GRAPHICS_DEBS) >/dev/null; }; }
 
 docs-images: $(BUILD)/erd
 	@bash tools/docs_images.sh $(BUILD)/erd $(IMAGES) docs/img
@@ -310,7 +322,7 @@ python-venv-check: python
 # erd in a web page (web/): erd compiled to WebAssembly with Debian's emscripten (installed with
 # apt when missing), served on 127.0.0.1 by `make serve`.
 WEB_PORT ?= 8000
-WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels,_erd_builtin,_erd_mesh_vertices,_erd_mesh_faces,_erd_faces,_erd_mesh_constraints,_erd_constraints
+WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels,_erd_builtin,_erd_mesh_vertices,_erd_mesh_faces,_erd_faces,_erd_mesh_constraints,_erd_constraints,_erd_edge_kinds
 .PHONY: web serve web-shots
 web: web/build/erd.js
 /usr/bin/em++:

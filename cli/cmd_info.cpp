@@ -1,5 +1,7 @@
 // erd info FILE [--json]: what an image file holds, as erd reads it; for a model (.model, .erd,
 // .erdz, .tri), what it holds and what its file costs, and for an .erdz the size of each section.
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -10,6 +12,7 @@
 #include "cli/image_io.h"
 #include "cli/json.h"
 #include "cli/model_file.h"
+#include "algorithms/model/edge_kinds.h"
 
 namespace erd::cli {
 
@@ -59,9 +62,13 @@ static bool model_file(const std::string& path) {
     return i != std::string::npos && ((start[i] >= '0' && start[i] <= '9') || start.compare(i, 4, "erd-") == 0);
 }
 
-// The kind of m's constrained edge i. A model has one kind for all its edges today
-// (Model::edges); every count below goes through here, edge by edge.
-static EdgeKind edge_kind(const Model& m, std::size_t /*i*/) { return m.edges; }
+// The kind of m's constrained edge i: Model::edges, or the other kind for an edge of
+// Model::kind_exceptions (algorithms/model/edge_kinds.h); every count below goes through here.
+static EdgeKind edge_kind(const Model& m, std::size_t i) {
+    const auto& c = m.constraints[i];
+    const std::array<std::uint32_t, 2> e{std::min(c[0], c[1]), std::max(c[0], c[1])};
+    return std::binary_search(m.kind_exceptions.begin(), m.kind_exceptions.end(), e) ? exception_kind(m) : m.edges;
+}
 
 static const char* edge_kind_name(EdgeKind k) { return k == EdgeKind::hard ? "hard" : "soft"; }
 
@@ -108,6 +115,7 @@ static int erdz_info(const std::string& path, const Model& m, const ErdzInfo& in
         j.num("step", info.step).integer("vertices", std::int64_t(m.vertices.size())).integer("faces", std::int64_t(m.faces.size()));
         j.integer("constraints", std::int64_t(m.constraints.size())).object("edge_kinds", edge_kinds_json(m));
         j.integer("header_bits", std::int64_t(info.header_bits)).integer("position_bits", std::int64_t(info.position_bits));
+        j.integer("kind_bits", std::int64_t(info.kind_bits));
         j.integer("edge_bits", std::int64_t(info.edge_bits)).integer("flip_bits", std::int64_t(info.flip_bits));
         j.integer("value_bits", std::int64_t(info.value_bits)).integer("flips", std::int64_t(info.flips));
         j.integer("total_bits", std::int64_t(info.total_bits)).integer("bytes", std::int64_t(file.bytes)).num("bpp", bpp(info.total_bits));
@@ -126,6 +134,9 @@ static int erdz_info(const std::string& path, const Model& m, const ErdzInfo& in
                 info.chain_steps);
     std::printf("flips:     %9zu bits  %.5f bpp  (%zu edges flipped)\n", info.flip_bits, bpp(info.flip_bits), info.flips);
     std::printf("values:    %9zu bits  %.5f bpp  (%zu values)\n", info.value_bits, bpp(info.value_bits), info.coded_values);
+    if (info.version >= 4)
+        std::printf("kinds:     %9zu bits  %.5f bpp  (%zu %s edges)\n", info.kind_bits, bpp(info.kind_bits), info.other_kind_edges,
+                    edge_kind_name(exception_kind(m)));
     std::printf("total:     %9zu bits  %.5f bpp  (%zu bytes)\n", info.total_bits, bpp(info.total_bits), info.total_bits / 8);
     return 0;
 }

@@ -296,6 +296,9 @@ function fromWorker(r) {
     $('psnr').textContent = r.psnr.toFixed(2);
     $('psnr').dataset.value = r.psnr.toFixed(4);  // as erd psnr prints it
     $('psnr').title = `${r.psnr.toFixed(4)} dB${r.channels === 3 ? ' (RGB-PSNR, as erd psnr)' : ''}`;
+    // An ERD model's edge kinds (issue 44): its own kind, and how many edges are of the other.
+    $('edge-kinds').textContent = r.edges || '';
+    $('edge-kinds-figure').hidden = !r.edges;
     $('time').textContent = `${(r.ms / 1000).toFixed(2)} s`;
     $('stage').textContent = 'writing the downloads';
     $('result').dataset.channels = String(r.channels);

@@ -27,7 +27,7 @@ namespace {
 
 struct Job {
     erd::Model model;
-    std::string error, model_text, vector_svg, timings;
+    std::string error, model_text, vector_svg, timings, edge_kinds;
     std::vector<std::uint8_t> recon;
     std::vector<std::int32_t> vertices_xy;  // doubled coordinates, x y per vertex
     double psnr = 0;
@@ -117,10 +117,22 @@ int erd_mesh(const std::uint8_t* rgb, int w, int h, const char* method, double d
     job.channels = model.channels;
     job.vertices_xy.reserve(2 * model.vertices.size());
     for (const erd::LatticePoint& p : model.vertices) job.vertices_xy.insert(job.vertices_xy.end(), {p.x, p.y});
+    // The kinds of its edges (algorithms/model/edge_kinds.h): "hard", "soft", "hard, 75 soft", ...
+    job.edge_kinds.clear();
+    if (model.kind == erd::ModelKind::erd) {
+        const bool hard = model.edges == erd::EdgeKind::hard;
+        job.edge_kinds = hard ? "hard" : "soft";
+        if (!model.kind_exceptions.empty())
+            job.edge_kinds += ", " + std::to_string(model.kind_exceptions.size()) + (hard ? " soft" : " hard");
+    }
     job.recon.resize(approx.samples.size());
     for (std::size_t i = 0; i < approx.samples.size(); ++i) job.recon[i] = std::uint8_t(approx.samples[i]);
     return 0;
 }
+
+// The kinds of the last erd_mesh's model's edges ("" for a basic model): its kind, and how many
+// edges are of the other one (issue 44), e.g. "hard, 75 soft".
+const char* erd_edge_kinds() { return job.edge_kinds.c_str(); }
 
 // The page's opening picture, w x h RGB: `erd synth -W w -H h` (a ramp, a bump, two discs, a
 // triangle and a slanted step, mild noise; seed 1) with its gray levels coloured by kStops. Null

@@ -6,7 +6,8 @@
 //   {id, pixels: Uint8Array (RGB, interleaved), width, height, method, density, flags: {edges,
 //    thesis, wedgeRule, wedgeFit, psnr, maxError, gray}}: a mesh. Out: {progress: stage, fraction}
 //    while it runs (posted by the module itself); then {id, ok: true, ms, timings, psnr, vertices,
-//    channels, recon (the reconstruction, `channels` samples a pixel), mesh: {vertices (Int32Array,
+//    channels, edges (an ERD model's edge kinds, e.g. "hard, 75 soft"; "" otherwise), recon (the
+//    reconstruction, `channels` samples a pixel), mesh: {vertices (Int32Array,
 //    doubled x y), faces (Uint32Array, i j k), constraints (Uint32Array, i j)}} as soon as the
 //    mesh and its reconstruction are there; then {id, files: {model, vector}, ms, timings} once
 //    the downloads are written. A failure: {id, ok: false, error}.
@@ -50,7 +51,8 @@ onmessage = async (e) => {
         faces: copy(erd, Uint32Array, erd._erd_mesh_faces(), 3 * erd._erd_faces()),
         constraints: copy(erd, Uint32Array, erd._erd_mesh_constraints(), 2 * erd._erd_constraints()),
     };
-    postMessage({id, ok: true, ms, timings: timings(erd), width, height, method, channels, psnr: erd._erd_psnr(), vertices: nv, recon, mesh},
+    postMessage({id, ok: true, ms, timings: timings(erd), width, height, method, channels, psnr: erd._erd_psnr(), vertices: nv,
+                 edges: erd.UTF8ToString(erd._erd_edge_kinds()), recon, mesh},
                 [recon.buffer, mesh.vertices.buffer, mesh.faces.buffer, mesh.constraints.buffer]);
     const t1 = performance.now();
     if (erd._erd_files() !== 0) { postMessage({id, ok: false, error: erd.UTF8ToString(erd._erd_error())}); return; }

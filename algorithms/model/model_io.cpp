@@ -147,7 +147,6 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
         listed[v] = 1;
         for (std::size_t c = 0; c < C; ++c) cv(h, c) = z[c];
     }
-    if (Status s = expect_end(tk, "wedge line"); !s) return s;
     std::vector<std::uint32_t> fan;
     for (std::uint32_t v = 0; v < nv; ++v) {
         const std::uint32_t b = topo.corner_begin[v], e = topo.corner_begin[v + 1];
@@ -229,20 +228,83 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
 
 }  // namespace
 
-// The header block (model_io.h): "erd-header 1", then key lines, then "end". *edges_line receives
-// the line of the "edges" key (0 when absent).
-Status read_header(Tokens& tk, Model* m, int* edges_line) {
+// The n edge lines after the wedge lines ("i j": a discontinuity edge of the other kind than the
+// model's, hard-edges / soft-edges in the header) into m->kind_exceptions, sorted.
+Status read_edge_lines(Tokens& tk, const ModelTopology& topo, std::uint64_t n, Model* m) {
+    m->kind_exceptions.clear();
+    if (n == 0) return Status::success();
+    const std::uint64_t nv = m->vertices.size();
+    std::vector<std::pair<std::array<std::uint32_t, 2>, int>> lines;  // the pair and its line
+    reserve_arriving(&lines, n);
+    for (std::uint64_t i = 0; i < n; ++i) {
+        std::uint64_t v[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            if (Status s = tk.uint([&] { return std::string(k ? "second" : "first") + " vertex index of edge line " + std::to_string(i); }, 0,
+                                   std::uint64_t(1) << 40, &v[k]);
+                !s)
+                return s;
+            if (v[k] >= nv)
+                return Status::bad_input(tk.where() + "edge line " + std::to_string(i) + ": vertex index " + std::to_string(v[k]) +
+                                         " out of range (" + std::to_string(nv) + " vertices)");
+        }
+        lines.push_back({{std::uint32_t(std::min(v[0], v[1])), std::uint32_t(std::max(v[0], v[1]))}, tk.line()});
+    }
+    std::sort(lines.begin(), lines.end());
+    std::vector<std::array<std::uint32_t, 2>> disc;
+    for (std::uint32_t h = 0; h < topo.twin.size(); ++h)
+        if (topo.twin[h] != kNoHalfEdge && h < topo.twin[h] && is_discontinuity(*m, topo, h)) {
+            const std::uint32_t a = m->faces[h / 3][h % 3], b = m->faces[h / 3][(h + 1) % 3];
+            disc.push_back({std::min(a, b), std::max(a, b)});
+        }
+    std::sort(disc.begin(), disc.end());
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const auto& e = lines[i].first;
+        const std::string edge = "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]);
+        if (i > 0 && lines[i - 1].first == e)
+            return Status::bad_input("line " + std::to_string(lines[i].second) + ": " + edge + " is listed twice");
+        if (!std::binary_search(disc.begin(), disc.end(), e))
+            return Status::bad_input("line " + std::to_string(lines[i].second) + ": " + edge +
+                                     " is not a discontinuity of the model (no edge of a face, or equal values on both sides)");
+        m->kind_exceptions.push_back(e);
+    }
+    return Status::success();
+}
+
+// What the header block says beyond Model's fields: the lines of the "edges" key and of the
+// per-edge kind key (0 when absent), and that key's count of edge lines.
+struct HeaderFacts {
+    int edges_line = 0;
+    int listed_line = 0;
+    EdgeKind listed_kind = EdgeKind::hard;  // "hard-edges N" or "soft-edges N"
+    std::uint64_t listed = 0;
+};
+
+// The header block (model_io.h): "erd-header 1", then key lines, then "end".
+Status read_header(Tokens& tk, Model* m, HeaderFacts* facts) {
     std::string_view t;
     tk.next(&t);  // "erd-header"
     std::uint64_t version = 0;
     if (Status s = tk.uint("header version", 0, ~0ull >> 1, &version); !s) return s;
     if (version != 1)
         return Status::bad_input(tk.where() + "header version " + std::to_string(version) + " is not supported (this reader knows 1)");
-    *edges_line = 0;
+    int* edges_line = &facts->edges_line;
     int channels_line = 0;
     for (;;) {
         if (!tk.next(&t)) return Status::bad_input("file ends early: expected a header key or 'end'");
-        if (t == "end") return Status::success();
+        if (t == "end") {
+            if (facts->listed_line && facts->listed_kind == m->edges)
+                return Status::bad_input("line " + std::to_string(facts->listed_line) + ": header key '" +
+                                         (m->edges == EdgeKind::hard ? "hard" : "soft") + "-edges' lists edges of the kind 'edges' gives them already (" +
+                                         (m->edges == EdgeKind::hard ? "hard" : "soft") + ")");
+            return Status::success();
+        }
+        if (t == "hard-edges" || t == "soft-edges") {
+            if (facts->listed_line) return Status::bad_input(tk.where() + "header keys 'hard-edges' and 'soft-edges': only one of them, once");
+            facts->listed_line = tk.line();
+            facts->listed_kind = t == "hard-edges" ? EdgeKind::hard : EdgeKind::soft;
+            if (Status s = count(tk, [&] { return "the count of '" + std::string(t) + "'"; }, 0, 4, &facts->listed); !s) return s;
+            continue;
+        }
         if (t == "channels") {
             if (channels_line) return Status::bad_input(tk.where() + "header key 'channels' given twice");
             channels_line = tk.line();
@@ -253,7 +315,7 @@ Status read_header(Tokens& tk, Model* m, int* edges_line) {
             continue;
         }
         if (t != "edges")
-            return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges, channels)");
+            return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges, hard-edges, soft-edges, channels)");
         if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
         *edges_line = tk.line();
         if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
@@ -280,9 +342,10 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     Tokens tk(text);
     if (tk.at_end()) return Status::bad_input("empty file");
     Model m;
-    int edges_line = 0;
+    HeaderFacts header;
     if (tk.peek_is("erd-header"))
-        if (Status s = read_header(tk, &m, &edges_line); !s) return s;
+        if (Status s = read_header(tk, &m, &header); !s) return s;
+    const int edges_line = header.edges_line ? header.edges_line : header.listed_line;
     std::uint64_t maxval = 0, nv = 0;
     if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
     m.maxval = std::uint32_t(maxval);
@@ -308,7 +371,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     if (kind == ModelFileKind::basic) {
         m.kind = ModelKind::basic;
         if (edges_line)
-            return Status::bad_input("line " + std::to_string(edges_line) + ": header key 'edges' is for .erd files only");
+            return Status::bad_input("line " + std::to_string(edges_line) + ": header key '" + (header.edges_line ? "edges" : header.listed_kind == EdgeKind::hard ? "hard-edges" : "soft-edges") +
+                                     "' is for .erd files only");
         if (Status s = expect_end(tk, "face"); !s) return s;
         // Pixel coordinates in the file, doubled in the model.
         for (std::size_t i = 0; i < nv; ++i) {
@@ -339,8 +403,11 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         return Status::bad_input("not a triangulation of the image domain: " + s.message);
     }
     if (Status s = check_all_used(m.vertices, m.faces, vlines, erd ? 1 : 2); !s) return s;
-    if (m.kind == ModelKind::erd)
+    if (m.kind == ModelKind::erd) {
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
+        if (Status s = read_edge_lines(tk, topo, header.listed, &m); !s) return s;
+        if (Status s = expect_end(tk, header.listed ? "edge line" : "wedge line"); !s) return s;
+    }
     *out = std::move(m);
     if (topo_out) *topo_out = std::move(topo);
     return Status::success();
