@@ -1,5 +1,7 @@
 #include "cli/model_file.h"
 
+#include <cstdint>
+
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model_io.h"
 #include "cli/fileio.h"
@@ -34,8 +36,14 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
     if (warning) warning->clear();
     std::string text;
     const ModelFileKind kind = model_kind_from_name(path);
-    Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
+    std::uint64_t unread = 0;
+    Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation), nullptr, &unread);
     if (!st) return st;
+    // An .erdz file read as far as its header says, and a long tail after it never read: the
+    // decoder's own refusal of bytes after the last section (a text file stops at a NUL, which
+    // its reader refuses itself).
+    if (unread && is_erdz(text))
+        return Status::bad_input(escape_name(path) + ": " + std::to_string(unread) + " bytes after the last section");
     if (file) *file = ModelFileFacts{ModelFileKind::unknown, false, text.size()};
     if (is_erdz(text)) {
         if (!(st = decode_erdz_topology(text, out, topo, info))) return Status::error(st.code, escape_name(path) + ": " + st.message);
