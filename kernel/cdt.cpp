@@ -23,15 +23,27 @@ void Cdt::begin_change() {
     changes_.destroyed.clear();
     changes_.created.clear();
     changes_.old_face_count = face_count();
+    revived_.clear();
 }
 
 // The arrays are kept longer than face_count() and grown geometrically, so taking a slot is a
 // counter increment (not a push_back with its capacity check per array). Slots past nfaces_ are
 // all zero (a memset to grow): split_face relies on new faces' flags being 0 and stamps must not
-// match a change id; vertices and twins of a new face are always written by its creator.
-FaceInd Cdt::new_faces(FaceInd n) {
-    const FaceInd f = nfaces_;
-    nfaces_ += n;
+// match a change id; vertices and twins of a new face are always written by its creator. Slots
+// freed by remove_vertex come first; their flags are 0 too (cdt_remove.cpp).
+FaceInd Cdt::new_face() {
+    if (!free_faces_.empty()) {
+        const FaceInd f = free_faces_.back();
+        free_faces_.pop_back();
+        // The slot held no triangle when the call began: created, not destroyed.
+        if (tracking_ != Tracking::none && stamp_[f] != change_id_) {
+            stamp_[f] = change_id_;
+            if (tracking_ == Tracking::lists) changes_.created.push_back(f);
+            else revived_.push_back(f);
+        }
+        return f;
+    }
+    const FaceInd f = nfaces_++;
     if (stamp_.size() < nfaces_) grow_faces(std::max<std::size_t>(nfaces_, 2 * stamp_.size()));
     return f;
 }
@@ -80,7 +92,10 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     flags_.clear();
     segments_.clear();
     stamp_.clear();
+    free_faces_.clear();
     nfaces_ = 0;
+    dead_vertices_ = 0;
+    delaunay_ = true;
     change_id_ = 0;
     last_face_ = 0;
     begin_change();
@@ -88,7 +103,7 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     add_vertex({max_x, 0});
     add_vertex({max_x, max_y});
     add_vertex({0, max_y});
-    const FaceInd f0 = new_faces(2), f1 = f0 + 1;
+    const FaceInd f0 = new_face(), f1 = new_face();
     set_face(f0, 0, 1, 2);
     set_face(f1, 0, 2, 3);
     for (EdgeInd e = 0; e < 6; ++e) twin_[e] = noEdge;
@@ -192,7 +207,7 @@ void Cdt::legalize_around(VertInd p, const EdgeInd* seeds, unsigned count) {
 // link per corner reloaded every array pointer after each byte store); the final out_ entries,
 // twins, flags and touch order are those of set_face(f), set_face(n1), set_face(n2) + links.
 void Cdt::split_face(FaceInd f, VertInd p) {
-    const FaceInd n1 = new_faces(2), n2 = n1 + 1;  // may grow the arrays: take pointers after it
+    const FaceInd n1 = new_face(), n2 = new_face();  // may grow the arrays: take pointers after it
     VertInd* const V = vert_.data();
     EdgeInd* const T = twin_.data();
     std::uint8_t* const F = flags_.data();
@@ -220,7 +235,7 @@ void Cdt::split_face(FaceInd f, VertInd p) {
     T[e2 + 2] = e1 + 1;
     T[e2 + 1] = e + 2;
     T[e + 2] = e2 + 1;
-    F[e1] = fbc;  // the other new corners are zero already (new_faces)
+    F[e1] = fbc;  // the other new corners are zero already (new_face)
     F[e2] = fca;
     F[e + 1] = 0;
     F[e + 2] = 0;
@@ -255,7 +270,7 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         fad = flags_[ead];
         fdb = flags_[edb];
     }
-    const FaceInd n1 = new_faces(t != noEdge ? 2 : 1);
+    const FaceInd n1 = new_face(), n2 = t != noEdge ? new_face() : noFace;
     set_face(f, c, a, p);
     set_face(n1, c, p, b);
     link(3 * f + 0, tca);
@@ -269,7 +284,6 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
     flags_[3 * n1 + 1] = fe;
     EdgeInd seeds[4] = {3 * f + 0, 3 * n1 + 2, noEdge, noEdge};
     if (t != noEdge) {
-        const FaceInd n2 = n1 + 1;
         set_face(g, d, b, p);
         set_face(n2, d, p, a);
         link(3 * g + 0, tdb);
@@ -380,6 +394,7 @@ Location Cdt::walk_as(LatticePoint p, FaceInd start) const {
 
 Location Cdt::locate_brute(LatticePoint p) const {
     for (FaceInd f = 0; f < face_count(); ++f) {
+        if (!face_live(f)) continue;
         const EdgeInd base = 3 * f;
         int o[3];
         bool inside = true;
@@ -411,8 +426,8 @@ Location Cdt::locate_brute(LatticePoint p) const {
 
 Location Cdt::locate(LatticePoint p, FaceInd hint) const {
     if (face_count() == 0 || p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_) return Location{};
-    if (hint < face_count()) return walk(p, hint);
-    FaceInd start = last_face_ < face_count() ? last_face_ : 0;
+    if (face_live(hint)) return walk(p, hint);
+    FaceInd start = face_live(last_face_) ? last_face_ : face_of(out_[0]);  // corner 0 is never removed
     // Jump and walk (Muecke, Saias, Zhu): when the previous face is far from p compared with the
     // mean vertex spacing, start from the nearest of about n^(1/3) sampled vertices instead, which
     // cuts a random-order walk from O(sqrt n) to O(n^(1/6)) steps. Spatially coherent callers never
@@ -432,7 +447,7 @@ Location Cdt::locate(LatticePoint p, FaceInd hint) const {
                 rng_ = rng_ * 1664525u + 1013904223u;
                 const VertInd v = static_cast<VertInd>((std::uint64_t(rng_) * nv) >> 32);
                 const std::int64_t d = dist2(points_[v]);
-                if (d < best) {
+                if (d < best && out_[v] != noEdge) {  // removed vertices have no face
                     best = d;
                     start = face_of(out_[v]);
                 }
@@ -507,9 +522,15 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
     }
     tracking_ = Tracking::lists;
     if (!report_changes) return st;
+    std::sort(revived_.begin(), revived_.end());  // freed slots taken: created, not destroyed
+    std::size_t r = 0;
     for (FaceInd f = 0; f < face_count(); ++f) {
         if (stamp_[f] != change_id_) continue;
         changes_.created.push_back(f);
+        if (r < revived_.size() && revived_[r] == f) {
+            ++r;
+            continue;
+        }
         if (f < changes_.old_face_count) changes_.destroyed.push_back(f);
     }
     return st;
