@@ -169,6 +169,17 @@ stage
 ( run_job asan stage_asan; run_job embedded stage_embedded; run_job python stage_python ) &
 chain_pid=$!
 
+# erd's CDT against CGAL's (tests/cgal/, its own binary so that erd_tests never needs CGAL);
+# the build installs libcgal-dev when missing (Makefile, deps-cgal).
+echo "== CGAL differential tests (build/cgal_tests)"
+if make -s -j2 build/cgal_tests >"$log/cgal-build" 2>&1; then
+    build/cgal_tests 2>&1 | tee "$log/cgal" | tail -3
+    count_catch "$log/cgal" "${PIPESTATUS[0]}"
+else
+    tail -20 "$log/cgal-build"; echo "CGAL differential tests: build failed"; failed=$((failed + 1))
+fi
+stage
+
 echo "== fuzz smoke runs"
 if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
     FUZZ_SHORT_SECONDS=${FUZZ_SHORT_SECONDS:-3} bash fuzz/run.sh "${FUZZ_SMOKE_SECONDS:-10}" >"$log/fuzz" 2>&1
