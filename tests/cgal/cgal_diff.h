@@ -2,14 +2,15 @@
 // 49): the same operations go to both and to a model of erd's constraint policy, and the results
 // are compared exactly. Used by tests/cgal/test_cgal_diff.cpp and fuzz/fuzz_cgal_diff.cpp.
 //
-// What "the same" means. The vertex sets and the constrained edges must be equal. Triangles: a
-// (constrained) Delaunay triangulation is unique up to cocircular ties, which erd breaks by its
-// symbolic perturbation and CGAL by its own. Removing from a triangulation every unconstrained
-// interior edge whose two faces are cocircular (incircle exactly 0) leaves the constrained
-// Delaunay subdivision, which is unique: those edges must be equal, and so must the triangle
-// counts; where no four points are cocircular that is triangle for triangle. Both must also pass
-// the exact Delaunay check (no vertex strictly inside the circle of a neighbouring face across an
-// unconstrained edge), and erd its own verify().
+// What "the same" means. The vertex sets and the constrained edges must be equal, and so must the
+// triangle counts. Both must pass the exact Delaunay check (no vertex strictly inside the circle
+// of a neighbouring face across an unconstrained edge), and erd its own verify(). A (constrained)
+// Delaunay triangulation is unique up to cocircular ties: removing every unconstrained interior
+// edge whose two faces are cocircular (incircle exactly 0) leaves the constrained Delaunay
+// subdivision, which is unique, so those edges must be equal (where no four points are cocircular
+// that is triangle for triangle). Ties: erd breaks them by its symbolic perturbation, CGAL by its
+// own; given mirrored points (mirror() below) CGAL's rule is erd's, so the triangles must then be
+// the same, ties included: the check that sees a wrong tie rule.
 //
 // Constraints: CGAL splits crossing constraints at their crossing (a new vertex), erd drops the
 // later piece (kernel/cdt.h, ConstraintReport). The model below applies erd's policy on its own:
@@ -46,6 +47,7 @@ struct Result {
     std::string difference;
     std::size_t faces = 0;
     std::size_t tie_edges = 0;  // erd's unconstrained interior edges with 4 cocircular points
+    bool same_triangles = false;  // triangle for triangle, ties included
 };
 
 // A triangulation as coordinates with its edges: for each (smaller, larger) edge the opposite
@@ -104,6 +106,17 @@ inline std::vector<Seg> constrained_of(const erd::Cdt& cdt) {
     return out;
 }
 
+// Faces as sorted point triples, sorted: equal iff the same triangles.
+inline std::vector<Face> sorted_faces(std::vector<Face> faces) {
+    for (Face& f : faces) std::sort(f.begin(), f.end(), less);
+    std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+        for (int i = 0; i < 3; ++i)
+            if (a[i] != b[i]) return less(a[i], b[i]);
+        return false;
+    });
+    return faces;
+}
+
 inline Result compare(const erd::Cdt& cdt, const cgal_glue::Mesh& m) {
     Result r;
     std::string why;
@@ -146,8 +159,28 @@ inline Result compare(const erd::Cdt& cdt, const cgal_glue::Mesh& m) {
         r.difference = "CGAL: " + bad;
         return r;
     }
-    if (se != sc) r.difference = "Delaunay subdivisions differ (" + std::to_string(se.size()) + " and " + std::to_string(sc.size()) + " edges)";
+    if (se != sc) {
+        r.difference = "Delaunay subdivisions differ (" + std::to_string(se.size()) + " and " + std::to_string(sc.size()) + " edges)";
+        return r;
+    }
+    r.same_triangles = sorted_faces(fe) == sorted_faces(m.faces);
+    if (!r.same_triangles) r.difference = "triangles differ at cocircular points: the tie rules disagree";
     return r;
+}
+
+// Ties. CGAL breaks them by its own symbolic perturbation (Triangulation_2::side_of_oriented_circle):
+// of the four points, the largest in (x, y) order decides; erd's (predicates.h) lets the smallest in
+// (Y, X) order decide, by the same terms. CGAL is given every point mirrored, (x, y) -> (-y, -x),
+// which makes its order erd's; a mirror flips every orientation and CGAL orders each face
+// positively again, so the two rules agree term for term, and where both build the unique
+// perturbed CDT the triangles are the same, ties included (Result::same_triangles).
+inline LatticePoint mirror(LatticePoint p) { return {-p.y, -p.x}; }  // its own inverse
+
+inline cgal_glue::Mesh unmirror(cgal_glue::Mesh m) {
+    for (LatticePoint& p : m.vertices) p = mirror(p);
+    for (Face& f : m.faces) f = {mirror(f[0]), mirror(f[2]), mirror(f[1])};
+    for (Seg& s : m.constrained) s = {mirror(s[0]), mirror(s[1])};
+    return m;
 }
 
 // erd's constraint policy on its own terms (see the top).
@@ -221,14 +254,14 @@ public:
         ok_ = cdt_.reset(max_x, max_y).ok();
         cdt_.set_removal_scan_limit(scan_limit);
         for (const LatticePoint c : {LatticePoint{0, 0}, LatticePoint{max_x, 0}, LatticePoint{max_x, max_y}, LatticePoint{0, max_y}}) {
-            cgal_.insert(c);
+            cgal_.insert(mirror(c));
             model_.insert_point(c);
         }
     }
     std::string insert_point(LatticePoint p) {
         if (!ok_) return "reset failed";
         if (!cdt_.insert_point(p, nullptr).ok()) return "erd refused point " + str(p);
-        cgal_.insert(p);
+        cgal_.insert(mirror(p));
         model_.insert_point(p);
         return "";
     }
@@ -243,7 +276,7 @@ public:
         if (got.pieces != want.pieces || got.inserted != want.inserted || got.already != want.already ||
             got.dropped_crossing != want.dropped_crossing)
             return "constraint " + str(a) + "-" + str(b) + ": erd's pieces differ from the policy";
-        for (const Seg& s : fresh) cgal_.insert_constraint(s[0], s[1]);
+        for (const Seg& s : fresh) cgal_.insert_constraint(mirror(s[0]), mirror(s[1]));
         dropped_ += want.dropped_crossing;
         return "";
     }
@@ -256,12 +289,12 @@ public:
         if (can != (!corner && !model_.on_constraint(p))) return "erd and the policy disagree on removing " + str(p);
         if (!can) return cdt_.remove_vertex(l.vertex).ok() ? "erd removed a vertex it should refuse" : "";
         if (!cdt_.remove_vertex(l.vertex).ok()) return "erd failed to remove " + str(p);
-        if (!cgal_.remove(p)) return "CGAL failed to remove " + str(p);
+        if (!cgal_.remove(mirror(p))) return "CGAL failed to remove " + str(p);
         model_.remove_point(p);
         *removed = true;
         return "";
     }
-    Result compare() const { return cgal_diff::compare(cdt_, cgal_.mesh()); }
+    Result compare() const { return cgal_diff::compare(cdt_, unmirror(cgal_.mesh())); }
     const erd::Cdt& cdt() const { return cdt_; }
     std::uint32_t dropped() const { return dropped_; }
 

@@ -15,14 +15,15 @@ using namespace cgal_diff;
 
 namespace {
 
-std::size_t g_cases = 0, g_tie_cases = 0, g_removals = 0;
+std::size_t g_cases = 0, g_tie_cases = 0, g_removals = 0, g_same = 0, g_same_ties = 0;
 
 // The counts, printed once at exit (for docs/DECISIONS.md): comparisons, of which with cocircular
 // ties, and removals compared.
 struct Counts {
     ~Counts() {
-        std::printf("cgal differential: %zu comparisons (%zu with cocircular ties), %zu removals compared\n", g_cases,
-                    g_tie_cases, g_removals);
+        std::printf("cgal differential: %zu comparisons (%zu with cocircular ties), %zu removals compared; "
+                    "the same triangles in %zu (%zu with ties)\n",
+                    g_cases, g_tie_cases, g_removals, g_same, g_same_ties);
     }
 } g_counts;
 
@@ -32,6 +33,8 @@ void must_match(const Differential& d) {
     REQUIRE(r.difference.empty());
     ++g_cases;
     if (r.tie_edges > 0) ++g_tie_cases;
+    if (r.same_triangles) ++g_same;
+    if (r.same_triangles && r.tie_edges > 0) ++g_same_ties;
 }
 
 void must(const std::string& what) {
