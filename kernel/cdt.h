@@ -159,7 +159,8 @@ public:
     // True when remove_vertex(v) would remove v (not refuse it).
     bool can_remove(VertInd v) const;
     // The largest hole (star polygon) remove_vertex fills by its apex scan rather than by a
-    // CDT of the polygon (cdt_remove.cpp); both give the same faces. For tests and benchmarks.
+    // CDT of the polygon (cdt_remove.cpp); both give the same faces. Default 64; for tests and
+    // benchmarks.
     void set_removal_scan_limit(std::uint32_t m) { scan_max_ = m; }
 
     // Locates p: outside, in the interior of a face, in the interior of an edge, or on a vertex.
@@ -265,7 +266,8 @@ private:
     void set_face(FaceInd f, VertInd a, VertInd b, VertInd c);
     void link(EdgeInd e, EdgeInd t);  // twins (t may be noEdge)
     FaceInd new_face();  // a freed slot (the last freed) or a new one
-    void retire(FaceInd f);  // marks live slot f destroyed (not created) and frees it
+    void retire(FaceInd f);  // frees live slot f (remove_vertex)
+    void grow_hole(std::size_t n);  // remove_vertex's scratch arrays for n polygon vertices
     void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
     template <bool Branchless>
@@ -293,7 +295,7 @@ private:
     std::vector<FaceInd> revived_;    // freed slots taken during insert_points (created, not destroyed)
     std::size_t dead_vertices_ = 0;   // vertices removed
     bool delaunay_ = true;            // false after flip_edge / move_vertex (remove_vertex's method)
-    std::uint32_t scan_max_ = 10;     // set_removal_scan_limit
+    std::uint32_t scan_max_ = 64;     // set_removal_scan_limit
     std::vector<std::uint8_t> flags_; // per half-edge: 1 = constrained
     std::vector<Pair> segments_;      // every constraint piece ever made constrained (for verify)
     ChangeReport changes_;
@@ -310,9 +312,11 @@ private:
     std::vector<EdgeInd> stack_;
     std::vector<Pair> pairs_, pairs2_;
     std::vector<std::uint64_t> sort_buf_, sort_tmp_;  // insert_points' order (spatial_order.h)
-    // remove_vertex's hole (kernel/cdt_remove.cpp): the polygon's vertices, its sides' outer twins
-    // and flags, the star's slots; the new faces' corners (vertex, twin, flag); the apex scan's stack.
+    // remove_vertex's hole (kernel/cdt_remove.cpp): the polygon's vertices and points, its sides'
+    // outer twins and flags, the star's slots; the new faces' corners (vertex, twin, flag); the
+    // apex scan's stack. All sized by grow_hole.
     std::vector<VertInd> hole_v_;
+    std::vector<LatticePoint> hole_p_;
     std::vector<EdgeInd> hole_t_;
     std::vector<std::uint8_t> hole_f_;
     std::vector<FaceInd> hole_slots_;
@@ -321,6 +325,8 @@ private:
     std::vector<std::uint8_t> new_f_;
     std::vector<std::uint32_t> scan_stack_;
     bool fill_hole_scan(std::uint32_t m);
+    template <class Wide>
+    bool scan_as(std::uint32_t m);  // fill_hole_scan in int64 or __int128
     bool fill_hole_cdt(std::uint32_t m);
 };
 
