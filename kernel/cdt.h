@@ -266,8 +266,8 @@ private:
     void set_face(FaceInd f, VertInd a, VertInd b, VertInd c);
     void link(EdgeInd e, EdgeInd t);  // twins (t may be noEdge)
     FaceInd new_face();  // a freed slot (the last freed) or a new one
-    void retire(FaceInd f);  // frees live slot f (remove_vertex)
     void grow_hole(std::size_t n);  // remove_vertex's scratch arrays for n polygon vertices
+    void place_new_faces(std::uint32_t m, std::uint32_t slots, bool flagged);
     void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
     template <bool Branchless>
@@ -312,17 +312,23 @@ private:
     std::vector<EdgeInd> stack_;
     std::vector<Pair> pairs_, pairs2_;
     std::vector<std::uint64_t> sort_buf_, sort_tmp_;  // insert_points' order (spatial_order.h)
-    // remove_vertex's hole (kernel/cdt_remove.cpp): the polygon's vertices and points, its sides'
-    // outer twins and flags, the star's slots; the new faces' corners (vertex, twin, flag); the
-    // apex scan's stack. All sized by grow_hole.
+    // remove_vertex's hole (kernel/cdt_remove.cpp), all sized by grow_hole: per polygon vertex
+    // (and its side, q_i -> q_{i+1}) the vertex, point, side's outer twin, flag and half-edge, an
+    // out_ candidate and whether the side kept its half-edge; per new face corner the polygon
+    // vertex and the side or partner corner (kInner | face << 2 | corner); per new face its slot and turn;
+    // the apex scan's stack.
+    static constexpr std::uint32_t kInner = 0x80000000u;
     std::vector<VertInd> hole_v_;
     std::vector<LatticePoint> hole_p_;
     std::vector<EdgeInd> hole_t_;
     std::vector<std::uint8_t> hole_f_;
-    std::vector<FaceInd> hole_slots_;
-    std::vector<VertInd> new_v_;
-    std::vector<EdgeInd> new_t_;
-    std::vector<std::uint8_t> new_f_;
+    std::vector<EdgeInd> hole_e_;
+    std::vector<std::uint8_t> hole_pos_;  // hole_e_ % 3
+    std::vector<EdgeInd> hole_out_;
+    std::vector<std::uint8_t> hole_kept_;
+    std::vector<std::uint32_t> new_q_, new_s_;
+    std::vector<FaceInd> new_slot_;
+    std::vector<std::uint8_t> new_rot_;
     std::vector<std::uint32_t> scan_stack_;
     bool fill_hole_scan(std::uint32_t m);
     template <class Wide>

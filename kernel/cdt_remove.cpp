@@ -28,13 +28,26 @@
 //   faces inside the sides are the answer. The sides enclose the hole, so nothing outside is
 //   visible from inside: the polygon's CDT, a valid triangulation of it in any case.
 //
-// Both only compute the new faces (vertices, twins, flags) into buffers; the mesh is written once
+// Both only compute the new faces into buffers (each corner as a polygon vertex, and either the
+// polygon side it lies on or its partner corner in another new face); the mesh is written once
 // they succeeded, so a refusal or a failure changes nothing.
+//
+// Where the new faces go. Each new face that has a polygon side takes the slot of the old face
+// that had that side, turned so that the side keeps its half-edge: its outer twin already points
+// there and its flag is in place, and every out_ entry of the side's two ends that pointed into
+// that slot stays valid, so neither the neighbour's twin nor those out_ entries are written. Faces
+// without a side take the slots left over. On random points that saves about 40% of the writes to
+// other faces' twins and vertices' out_ entries, which are cache misses on a large mesh
+// (docs/DECISIONS.md "Vertex removal").
 #include <algorithm>
 
 #include "kernel/cdt.h"
 
 namespace erd {
+
+namespace {
+constexpr std::uint8_t kMod3[6] = {0, 1, 2, 0, 1, 2};  // (a + b) % 3 for a, b < 3, without a division
+}  // namespace
 
 bool Cdt::can_remove(VertInd v) const {
     if (v < 4 || v >= out_.size() || out_[v] == noEdge) return false;
@@ -50,28 +63,22 @@ bool Cdt::can_remove(VertInd v) const {
     return true;
 }
 
-// Frees live slot f: no vertices, twins or flags, on the free list. (remove_vertex reports it.)
-void Cdt::retire(FaceInd f) {
-    for (EdgeInd e = 3 * f; e < 3 * f + 3; ++e) {
-        vert_[e] = noVertex;
-        twin_[e] = noEdge;
-        flags_[e] = 0;
-    }
-    free_faces_.push_back(f);
-}
-
 // The scratch arrays for a hole of up to n polygon vertices.
 void Cdt::grow_hole(std::size_t n) {
     if (hole_v_.size() >= n) return;
     n = std::max<std::size_t>(n, 2 * hole_v_.size());
     hole_v_.resize(n);
+    hole_p_.resize(n);
     hole_t_.resize(n);
     hole_f_.resize(n);
-    hole_slots_.resize(n);
-    hole_p_.resize(n);
-    new_v_.resize(3 * n);
-    new_t_.resize(3 * n);
-    new_f_.resize(3 * n);
+    hole_e_.resize(n);
+    hole_pos_.resize(n);
+    hole_out_.resize(n);
+    hole_kept_.resize(n);
+    new_q_.resize(3 * n);
+    new_s_.resize(3 * n);
+    new_slot_.resize(n);
+    new_rot_.resize(n);
     scan_stack_.resize(4 * n);
 }
 
@@ -83,10 +90,10 @@ Status Cdt::remove_vertex(VertInd v) {
     // No constraint piece was ever made: every flag is 0 and stays 0, so none is read or written.
     const bool flagged = !segments_.empty();
     // The star, in one walk: corners e_0 .. e_{d-1} in positive order (an open fan from its hull
-    // edge on). Polygon vertex i is dest(e_i), side i is next(e_i) = q_i -> q_{i+1} with its outer
-    // twin and flag, and face e_i / 3 is a slot for the new faces. A constrained edge at v refuses.
-    // The walk starts at out_[v]; when it runs into the hull, v is on a rectangle side (its fan is
-    // open: rare) and it starts again from the fan's first corner.
+    // edge on). Polygon vertex i is q_i = dest(e_i); side i is the half-edge next(e_i) = q_i ->
+    // q_{i+1}, with its outer twin and flag; its face is a slot for the new faces. A constrained
+    // edge at v refuses. The walk starts at out_[v]; when it runs into the hull, v is on a
+    // rectangle side (its fan is open: rare) and it starts again from the fan's first corner.
     grow_hole(16);
     EdgeInd first = out_[v], e, last;
     bool open = false;
@@ -100,11 +107,16 @@ Status Cdt::remove_vertex(VertInd v) {
             if (flagged && flags_[e]) return Status::bad_input("vertex " + std::to_string(v) + " lies on a constrained edge");
             const EdgeInd side = next_edge(e);
             const VertInd q = vert_[side];
+            const EdgeInd tw = twin_[side];
+            // The writes at the end miss the cache on a large mesh: start fetching their lines now.
+            __builtin_prefetch(&out_[q], 1);
+            if (tw != noEdge) __builtin_prefetch(&twin_[tw], 1);
             hole_v_[m] = q;
             hole_p_[m] = points_[q];
-            hole_t_[m] = twin_[side];
+            hole_t_[m] = tw;
             hole_f_[m] = flagged ? flags_[side] : 0;
-            hole_slots_[m] = face_of(e);
+            hole_e_[m] = side;
+            hole_pos_[m] = static_cast<std::uint8_t>(side - 3 * face_of(side));
             ++m;
             last = e;
             e = twin_[prev_edge(e)];  // rot_next
@@ -113,22 +125,21 @@ Status Cdt::remove_vertex(VertInd v) {
         open = true;
         for (EdgeInd p = rot_prev(first); p != noEdge; p = rot_prev(p)) first = p;
     }
-    const std::uint32_t slots = m;
+    const std::uint32_t slots = m;  // sides 0..slots-1 have a face; an open fan's chord has none
     if (open) {  // q_k and the chord q_k -> q_0, a hull edge from now on
         if (flagged && flags_[prev_edge(last)]) return Status::bad_input("vertex " + std::to_string(v) + " lies on a constrained edge");
         hole_v_[m] = vert_[prev_edge(last)];
         hole_p_[m] = points_[hole_v_[m]];
         hole_t_[m] = noEdge;
         hole_f_[m] = 0;
+        hole_e_[m] = noEdge;
         ++m;
     }
-    const std::uint32_t nt = m - 2;  // new faces
     bool ok = true;
     if (m == 3) {
-        for (unsigned i = 0; i < 3; ++i) {
-            new_v_[i] = hole_v_[i];
-            new_t_[i] = hole_t_[i];
-            new_f_[i] = hole_f_[i];
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            new_q_[i] = i;
+            new_s_[i] = i;
         }
     } else if (delaunay_ && m <= scan_max_) {
         ok = fill_hole_scan(m);
@@ -136,39 +147,103 @@ Status Cdt::remove_vertex(VertInd v) {
         ok = fill_hole_cdt(m);
     }
     if (!ok) return Status::failure("vertex removal found no triangulation of the hole (corrupted mesh)");
-    // Write the new faces in order: a twin given as a later face's half-edge is linked (both
-    // ways) when that face is written, which overwrites the earlier placeholder.
-    VertInd* const V = vert_.data();
-    EdgeInd* const T = twin_.data();
-    EdgeInd* const O = out_.data();
-    for (std::uint32_t t = 0; t < nt; ++t) {
-        const EdgeInd base = 3 * hole_slots_[t];
-        for (unsigned i = 0; i < 3; ++i) {
-            const EdgeInd h = base + i, tw = new_t_[3 * t + i];
-            V[h] = new_v_[3 * t + i];
-            O[V[h]] = h;
-            T[h] = tw;
-            if (tw != noEdge) T[tw] = h;
-            if (flagged) flags_[h] = new_f_[3 * t + i];
-        }
-    }
-    // The change report: the star's slots destroyed, the first nt created again, the rest freed
-    // (each slot once, so no stamps are needed).
-    changes_.destroyed.resize(slots);
-    changes_.created.resize(nt);
-    std::copy(hole_slots_.data(), hole_slots_.data() + slots, changes_.destroyed.data());
-    std::copy(hole_slots_.data(), hole_slots_.data() + nt, changes_.created.data());
-    for (std::uint32_t t = nt; t < slots; ++t) retire(hole_slots_[t]);
+    place_new_faces(m, slots, flagged);
     out_[v] = noEdge;
     ++dead_vertices_;
-    last_face_ = hole_slots_[0];
+    last_face_ = new_slot_[0];
     return Status::success();
 }
 
+// Writes the nt = m - 2 new faces into the star's slots (see the top), frees the slots left over
+// and fills the change report. new_q_ / new_s_ hold, per corner 3t + k, the polygon vertex and
+// either the polygon side (< m) or the partner corner u, l in another new face as kInner | u << 2 | l.
+void Cdt::place_new_faces(std::uint32_t m, std::uint32_t slots, bool flagged) {
+    // Local array pointers: the byte stores (flags, kept, turns) may alias anything, and through
+    // the members the compiler would reload every vector after each of them.
+    const std::uint32_t nt = m - 2;
+    const VertInd* const HV = hole_v_.data();
+    const EdgeInd* const HT = hole_t_.data();
+    const std::uint8_t* const HF = hole_f_.data();
+    const EdgeInd* const HE = hole_e_.data();
+    const std::uint8_t* const HP = hole_pos_.data();
+    EdgeInd* const HO = hole_out_.data();
+    std::uint8_t* const kept = hole_kept_.data();
+    const std::uint32_t* const NQ = new_q_.data();
+    const std::uint32_t* const NS = new_s_.data();
+    FaceInd* const slot = new_slot_.data();
+    std::uint8_t* const rot = new_rot_.data();
+    VertInd* const V = vert_.data();
+    EdgeInd* const T = twin_.data();
+    std::uint8_t* const F = flags_.data();
+    EdgeInd* const O = out_.data();
+    for (std::uint32_t i = 0; i < m; ++i) kept[i] = 0;
+    // Faces with a side of their own take its slot, turned so the side keeps its position.
+    const bool keep = m <= 32;  // bit i of `taken`: the slot of side i is taken (larger holes keep none)
+    std::uint32_t taken = 0;
+    for (std::uint32_t t = 0; t < nt; ++t) {
+        slot[t] = noFace;
+        rot[t] = 0;
+        for (unsigned k = 0; k < 3 && keep; ++k) {
+            const std::uint32_t s = NS[3 * t + k];
+            if (s >= slots) continue;  // an inner edge, or the chord (no slot)
+            slot[t] = face_of(HE[s]);
+            rot[t] = kMod3[HP[s] + 3 - k];  // corner k -> position of side s
+            kept[s] = 1;
+            taken |= std::uint32_t(1) << s;
+            break;
+        }
+    }
+    // The other faces take the slots left over, in side order; what is left then is freed.
+    std::uint32_t next = 0;
+    for (std::uint32_t t = 0; t < nt; ++t) {
+        if (slot[t] != noFace) continue;
+        while (keep && (taken >> next & 1)) ++next;
+        slot[t] = face_of(HE[next++]);
+    }
+    for (std::uint32_t t = 0; t < nt; ++t) {
+        const EdgeInd base = 3 * slot[t];
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeInd h = base + kMod3[k + rot[t]];
+            const std::uint32_t q = NQ[3 * t + k], s = NS[3 * t + k];
+            V[h] = HV[q];
+            HO[q] = h;
+            if (s < m) {
+                if (kept[s] && h == HE[s]) continue;  // twin and flag in place
+                const EdgeInd tw = HT[s];
+                T[h] = tw;
+                if (tw != noEdge) T[tw] = h;
+                if (flagged) F[h] = HF[s];
+            } else {
+                const std::uint32_t u = (s - kInner) >> 2;
+                T[h] = 3 * slot[u] + kMod3[(s & 3) + rot[u]];
+                if (flagged) F[h] = 0;
+            }
+        }
+    }
+    // out_ of q_i may point into the faces of sides i-1 and i; unless both kept their side (and
+    // with it q_i's corner), it gets a corner of a new face.
+    for (std::uint32_t i = 0, before = m - 1; i < m; before = i++)
+        if (!(kept[before] && kept[i])) O[HV[i]] = HO[i];
+    // The change report: the star's slots destroyed, those taken created again, the rest freed
+    // (each slot once, so no stamps are needed).
+    for (std::uint32_t i = 0; i < slots; ++i) changes_.destroyed.push_back(face_of(HE[i]));
+    for (std::uint32_t t = 0; t < nt; ++t) changes_.created.push_back(slot[t]);
+    for (; next < slots; ++next) {
+        if (keep && (taken >> next & 1)) continue;
+        const EdgeInd b = 3 * face_of(HE[next]);
+        for (EdgeInd h = b; h < b + 3; ++h) {
+            V[h] = noVertex;
+            T[h] = noEdge;
+            F[h] = 0;
+        }
+        free_faces_.push_back(b / 3);
+    }
+}
+
 // Apex scan over the hole polygon hole_v_[0..m). A sub-polygon (i, j) is hole_v_[i..j] closed by
-// its base j -> i, with the polygon on the base's left; its face is (j, i, apex) and its base's
-// twin is the half-edge given with it (the enclosing face's, or the outer twin of side m-1). The
-// stack of sub-polygons holds 4 numbers each: i, j, the base's twin and its flag.
+// its base j -> i, with the polygon on the base's left; its face is (j, i, apex), and its base is
+// either side m-1 (the whole polygon) or the partner of a corner of the enclosing face. The stack
+// of sub-polygons holds 3 numbers each: i, j and that corner (as in new_s_; or the side).
 //
 // The in-circle test against the base a -> b (a = j's point, b = i's) reuses two numbers per
 // candidate: O_k = orient2d(a, b, k) > 0 (the side test) and L_k = (k - a).(k - b). For O_c, O_d > 0,
@@ -178,25 +253,18 @@ Status Cdt::remove_vertex(VertInd v) {
 // int64; otherwise |L|, O < 2^49 and they need __int128 (Wide). Zero is a tie: incircle_tie.
 template <class Wide>
 bool Cdt::scan_as(std::uint32_t m) {
-    const VertInd* const Q = hole_v_.data();
     const LatticePoint* const P = hole_p_.data();
-    const EdgeInd* const HT = hole_t_.data();
-    const std::uint8_t* const HF = hole_f_.data();
-    VertInd* const NV = new_v_.data();
-    EdgeInd* const NT = new_t_.data();
-    std::uint8_t* const NF = new_f_.data();
+    std::uint32_t* const NQ = new_q_.data();
+    std::uint32_t* const NS = new_s_.data();
     std::uint32_t* const S = scan_stack_.data();
     std::size_t n = 0;
     S[n++] = 0;
     S[n++] = m - 1;
-    S[n++] = HT[m - 1];
-    S[n++] = HF[m - 1];
+    S[n++] = m - 1;
     std::uint32_t t = 0;
     while (n > 0) {
-        n -= 4;
-        const std::uint32_t i = S[n], j = S[n + 1];
-        const EdgeInd tw = S[n + 2];
-        const std::uint8_t fl = static_cast<std::uint8_t>(S[n + 3]);
+        n -= 3;
+        const std::uint32_t i = S[n], j = S[n + 1], base = S[n + 2];
         const LatticePoint a = P[j], b = P[i];
         std::uint32_t c = noVertex;
         Wide oc = 0, lc = 0;
@@ -214,35 +282,26 @@ bool Cdt::scan_as(std::uint32_t m) {
             oc = o;
             lc = l;
         }
-        if (c == noVertex) return false;
-        const EdgeInd h = 3 * hole_slots_[t];
-        const std::size_t o = 3 * std::size_t(t);
-        NV[o] = Q[j];
-        NV[o + 1] = Q[i];
-        NV[o + 2] = Q[c];
-        NT[o] = tw;
-        NF[o] = fl;
-        if (c == i + 1) {  // i -> c is side i
-            NT[o + 1] = HT[i];
-            NF[o + 1] = HF[i];
-        } else {  // linked by the face of sub-polygon (i, c)
-            NT[o + 1] = noEdge;
-            NF[o + 1] = 0;
-            S[n++] = i;
-            S[n++] = c;
-            S[n++] = h + 1;
-            S[n++] = 0;
-        }
-        if (j == c + 1) {  // c -> j is side c
-            NT[o + 2] = HT[c];
-            NF[o + 2] = HF[c];
+        if (c == noVertex || t == m - 2) return false;
+        const std::uint32_t o = 3 * t;
+        NQ[o] = j;
+        NQ[o + 1] = i;
+        NQ[o + 2] = c;
+        NS[o] = base;
+        if (base >= kInner) NS[3 * ((base - kInner) >> 2) + (base & 3)] = kInner | t << 2;  // the enclosing face's corner
+        if (c == i + 1) {
+            NS[o + 1] = i;  // i -> c is side i
         } else {
-            NT[o + 2] = noEdge;
-            NF[o + 2] = 0;
+            S[n++] = i;  // sub-polygon (i, c), its base the partner of corner 1
+            S[n++] = c;
+            S[n++] = kInner | t << 2 | 1;
+        }
+        if (j == c + 1) {
+            NS[o + 2] = c;  // c -> j is side c
+        } else {
             S[n++] = c;
             S[n++] = j;
-            S[n++] = h + 2;
-            S[n++] = 0;
+            S[n++] = kInner | t << 2 | 2;
         }
         ++t;
     }
@@ -255,10 +314,8 @@ bool Cdt::fill_hole_scan(std::uint32_t m) { return small_ ? scan_as<std::int64_t
 bool Cdt::fill_hole_cdt(std::uint32_t m) {
     Cdt tmp;
     if (!tmp.reset(max_x_, max_y_).ok()) return false;
-    std::vector<LatticePoint> pts(m);
-    for (std::uint32_t i = 0; i < m; ++i) pts[i] = points_[hole_v_[i]];
     std::vector<VertInd> tv;
-    if (!tmp.insert_points(pts, &tv, false).ok()) return false;
+    if (!tmp.insert_points(std::vector<LatticePoint>(hole_p_.begin(), hole_p_.begin() + m), &tv, false).ok()) return false;
     std::vector<std::uint32_t> index(tmp.vertex_count(), noVertex);  // temporary vertex -> polygon index
     for (std::uint32_t i = 0; i < m; ++i) index[tv[i]] = i;
     for (std::uint32_t i = 0; i < m; ++i) {
@@ -268,7 +325,7 @@ bool Cdt::fill_hole_cdt(std::uint32_t m) {
             return false;
     }
     // The faces inside, numbered in the order a flood from side 0 reaches them; a half-edge k -> l
-    // with l == k + 1 (mod m) is a side, any other leads to a face inside.
+    // with l == k + 1 (mod m) is side k, any other leads to a face inside.
     const EdgeInd seed = tmp.find_edge(tv[0], tv[1]);
     if (seed == noEdge) return false;
     std::vector<std::uint32_t> number(tmp.face_count(), noVertex);
@@ -293,16 +350,9 @@ bool Cdt::fill_hole_cdt(std::uint32_t m) {
         for (unsigned s = 0; s < 3; ++s) {
             const EdgeInd e = 3 * inside[t] + s;
             const std::uint32_t k = index[tmp.org(e)], l = index[tmp.dest(e)];
-            const std::size_t o = 3 * std::size_t(t) + s;
-            new_v_[o] = hole_v_[k];
-            if (l == (k + 1 == m ? 0 : k + 1)) {
-                new_t_[o] = hole_t_[k];
-                new_f_[o] = hole_f_[k];
-            } else {
-                const EdgeInd u = tmp.twin(e);
-                new_t_[o] = 3 * hole_slots_[number[face_of(u)]] + u % 3;
-                new_f_[o] = 0;
-            }
+            new_q_[3 * t + s] = k;
+            const EdgeInd u = tmp.twin(e);
+            new_s_[3 * t + s] = l == (k + 1 == m ? 0 : k + 1) ? k : kInner | number[face_of(u)] << 2 | u % 3;
         }
     return true;
 }
