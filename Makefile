@@ -107,9 +107,9 @@ $(BUILD)/erd_tests: $(TEST_OBJ) $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(B
 $(BUILD)/third_party/stb_glue.o: $(STB_HDR)
 # CGAL (issue 49): Debian's libcgal-dev, for the differential tests, fuzz/fuzz_cgal_diff.cpp and the
 # kernel bench only; erd and liberd never link it. Its headers are compiled in one translation
-# unit, third_party/cgal_glue.cpp, at -O1 without debug information: 36 s against 69 s at -O2
-# -g on the loaded 2 cores it was measured on (docs/DECISIONS.md "Vertex removal"); the bench
-# compiles its own at -O2.
+# unit, third_party/cgal_glue.cpp, at -O1 without debug information: 11 s of CPU against 17.5 s
+# at -O2 -g, most of it parsing (docs/DECISIONS.md "Vertex removal"); the bench compiles its own
+# at -O2.
 CGAL_HDR  := /usr/include/CGAL/Constrained_Delaunay_triangulation_2.h
 CGAL_LIBS := -lgmp -lmpfr
 .PHONY: deps-cgal cgal-test

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# `make test`: the layer check, the unit tests, the same tests under ASan+UBSan, and a short run
-# of every fuzz target. Counts test cases (a fuzz target and the layer check count as one each)
+# `make test`: the layer check, the unit tests, the same tests under ASan+UBSan, the kernel
+# against CGAL (build/cgal_tests), and a short run of every fuzz target. Counts test cases (a fuzz target and the layer check count as one each)
 # and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
 # (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
