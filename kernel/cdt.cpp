@@ -32,20 +32,34 @@ void Cdt::begin_change() {
 // match a change id; vertices and twins of a new face are always written by its creator. Slots
 // freed by remove_vertex come first; their flags are 0 too (cdt_remove.cpp).
 FaceInd Cdt::new_face() {
-    if (!free_faces_.empty()) {
-        const FaceInd f = free_faces_.back();
-        free_faces_.pop_back();
-        // The slot held no triangle when the call began: created, not destroyed.
-        if (tracking_ != Tracking::none && stamp_[f] != change_id_) {
-            stamp_[f] = change_id_;
-            if (tracking_ == Tracking::lists) changes_.created.push_back(f);
-            else revived_.push_back(f);
-        }
-        return f;
+    if (free_faces_.empty()) return append_faces(1);
+    const FaceInd f = free_faces_.back();
+    free_faces_.pop_back();
+    // The slot held no triangle when the call began: created, not destroyed.
+    if (tracking_ != Tracking::none && stamp_[f] != change_id_) {
+        stamp_[f] = change_id_;
+        if (tracking_ == Tracking::lists) changes_.created.push_back(f);
+        else revived_.push_back(f);
     }
-    const FaceInd f = nfaces_++;
+    return f;
+}
+
+FaceInd Cdt::append_faces(FaceInd n) {
+    const FaceInd f = nfaces_;
+    nfaces_ += n;
     if (stamp_.size() < nfaces_) grow_faces(std::max<std::size_t>(nfaces_, 2 * stamp_.size()));
     return f;
+}
+
+// Two slots for a split; appended together when none is free (the common case).
+void Cdt::new_face_pair(FaceInd* a, FaceInd* b) {
+    if (free_faces_.empty()) {
+        *a = append_faces(2);
+        *b = *a + 1;
+        return;
+    }
+    *a = new_face();
+    *b = new_face();
 }
 
 void Cdt::grow_faces(std::size_t faces) {
@@ -207,7 +221,8 @@ void Cdt::legalize_around(VertInd p, const EdgeInd* seeds, unsigned count) {
 // link per corner reloaded every array pointer after each byte store); the final out_ entries,
 // twins, flags and touch order are those of set_face(f), set_face(n1), set_face(n2) + links.
 void Cdt::split_face(FaceInd f, VertInd p) {
-    const FaceInd n1 = new_face(), n2 = new_face();  // may grow the arrays: take pointers after it
+    FaceInd n1, n2;
+    new_face_pair(&n1, &n2);  // may grow the arrays: take pointers after it
     VertInd* const V = vert_.data();
     EdgeInd* const T = twin_.data();
     std::uint8_t* const F = flags_.data();
@@ -270,7 +285,11 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         fad = flags_[ead];
         fdb = flags_[edb];
     }
-    const FaceInd n1 = new_face(), n2 = t != noEdge ? new_face() : noFace;
+    FaceInd n1 = noFace, n2 = noFace;
+    if (t != noEdge)
+        new_face_pair(&n1, &n2);
+    else
+        n1 = new_face();
     set_face(f, c, a, p);
     set_face(n1, c, p, b);
     link(3 * f + 0, tca);

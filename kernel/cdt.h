@@ -266,6 +266,8 @@ private:
     void set_face(FaceInd f, VertInd a, VertInd b, VertInd c);
     void link(EdgeInd e, EdgeInd t);  // twins (t may be noEdge)
     FaceInd new_face();  // a freed slot (the last freed) or a new one
+    void new_face_pair(FaceInd* a, FaceInd* b);  // two of them
+    FaceInd append_faces(FaceInd n);  // n new slots after the last, the first returned
     void grow_hole(std::size_t n);  // remove_vertex's scratch arrays for n polygon vertices
     void place_new_faces(std::uint32_t m, std::uint32_t slots, bool flagged);
     void grow_faces(std::size_t faces);
