@@ -64,6 +64,8 @@ help:
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make fuzz-campaign  every fuzz target for FUZZ_SECONDS (default 3600) on a kept corpus, FUZZ_JOBS (default 2)"
 	@echo "                at a time; executions, corpus, findings, new seeds into fuzz/corpus (fuzz/campaign.sh)"
+	@echo "make cgal-test  erd's CDT against CGAL's, build/cgal_tests (installs libcgal-dev; a stage of make test)"
+	@echo "make deps-cgal  apt-get install libcgal-dev when its headers are missing (tests, fuzz, bench only)"
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
 	@echo "make web-shots  the browser test (tests/web_test.sh), keeping its screenshots -> docs/img/web-1280.png, web-390.png"
@@ -109,6 +111,28 @@ $(BUILD)/erd_tests: $(TEST_OBJ) $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(B
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lz -lpthread
 
 $(BUILD)/third_party/stb_glue.o: $(STB_HDR)
+# CGAL (issue 49): Debian's libcgal-dev, for the differential tests, fuzz/fuzz_cgal_diff.cpp and the
+# kernel bench only; erd and liberd never link it. Its headers are compiled in one translation
+# unit, third_party/cgal_glue.cpp, at -O1 without debug information: 11 s of CPU against 17.5 s
+# at -O2 -g, most of it parsing (docs/DECISIONS.md "Vertex removal"); the bench compiles its own
+# at -O2.
+CGAL_HDR  := /usr/include/CGAL/Constrained_Delaunay_triangulation_2.h
+CGAL_LIBS := -lgmp -lmpfr
+.PHONY: deps-cgal cgal-test
+deps-cgal: $(CGAL_HDR)
+$(CGAL_HDR):
+	@echo "installing Debian package libcgal-dev" >&2
+	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q libcgal-dev >/dev/null 2>&1 || \
+	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q libcgal-dev >/dev/null; }
+	@touch -c $@
+$(BUILD)/third_party/cgal_glue.o: $(CGAL_HDR)
+$(BUILD)/third_party/cgal_glue.o: CXXFLAGS += -O1 -g0
+$(BUILD)/tests/cgal/test_cgal_diff.o: $(CATCH_HDR) $(CGAL_HDR)
+$(BUILD)/tests/cgal/test_cgal_diff.o: DEBUG = $(TEST_DEBUG)
+$(BUILD)/cgal_tests: $(BUILD)/third_party/catch_main.o $(BUILD)/tests/cgal/test_cgal_diff.o $(BUILD)/third_party/cgal_glue.o $(BUILD)/liberd.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) $(CGAL_LIBS)
+cgal-test: deps $(BUILD)/cgal_tests
+	$(BUILD)/cgal_tests
 $(BUILD)/imageio/png.o: $(ZLIB_HDR)
 $(BUILD)/third_party/catch_main.o: $(CATCH_HDR)
 $(TEST_OBJ): $(CATCH_HDR)

@@ -128,6 +128,35 @@ else
 fi
 # ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
+# remove (issue 45): vertex removal beside CGAL's Delaunay_triangulation_2::remove on the same
+# points in the same order (bench/remove_bench.cpp): 1e5 and 1e6 random lattice points, a random
+# half removed; medians of REMOVE_RUNS (default 5) of the thread CPU time per removed vertex, the
+# two alternating, and their ratio (target erd <= 0.5x CGAL). CGAL (make deps-cgal installs it) is
+# only ever linked into this benchmark and the tests; its glue is compiled here at -O2, once (about
+# a minute; the tests' is -O1). With CALLGRIND=1, instructions per removed vertex at 1e5 as well.
+if [[ -f $(dirname "$ERD")/liberd.a ]] && make -s deps-cgal >/dev/null 2>&1; then
+    RB=$(dirname "$ERD")/remove_bench
+    GLUE=$(dirname "$ERD")/bench/cgal_glue.o
+    mkdir -p "$(dirname "$GLUE")"
+    if [[ ! -f $GLUE || third_party/cgal_glue.cpp -nt $GLUE || third_party/cgal_glue.h -nt $GLUE ]]; then
+        # CGAL checks the FPU's rounding modes at start-up, which valgrind does not emulate.
+        ${CXX:-g++} -O2 -std=c++17 -I. -DCGAL_DISABLE_ROUNDING_MATH_CHECK -c third_party/cgal_glue.cpp -o "$GLUE" || rm -f "$GLUE"
+    fi
+    if [[ -f $GLUE ]] && ${CXX:-g++} -O2 -std=c++17 -I. bench/remove_bench.cpp "$GLUE" "$(dirname "$ERD")/liberd.a" -lgmp -lmpfr -o "$RB"; then
+        "$RB" "${REMOVE_RUNS:-5}"
+        if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
+            for side in erd cgal; do
+                valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect="*phase_${side}_remove*" "$RB" 1 $side 100000 2>&1 >/dev/null |
+                    sed -n "s/.*Collected : \([0-9]*\).*/\1/p" | awk -v s=$side '{ printf "remove %s: %.0f instructions per removed vertex (1e5 points, callgrind)\n", s, $1 / 50000 }'
+            done
+        fi
+    else
+        echo "remove: bench/remove_bench.cpp or the CGAL glue did not build; skipped"
+    fi
+else
+    echo "remove: $(dirname "$ERD")/liberd.a or libcgal-dev (make deps-cgal) missing; skipped"
+fi
+# ---------------------------------------------------------------------------------------------
 # erdmodel (issue 6): ERDGPI and ERDED, whole process: read the PGM, mesh, write the .erd.
 # Targets: erdgpi lena 1% <= 75 ms, erdgpi bull 1% <= 150 ms, erded lena 1% <= 60 ms;
 # peak RSS <= 64 bytes per pixel (lena 16384 KB, bull 49152 KB).

@@ -27,7 +27,16 @@ status=0
 if [[ $# -gt 0 ]]; then targets=$(printf 'fuzz/%s.cpp ' "$@"); else targets=$(ls fuzz/fuzz_*.cpp); fi
 for src in $targets; do
     name=$(basename "$src" .cpp)
-    if ! clang++ $FLAGS -fsanitize=fuzzer "$src" $objs -o $B/$name 2>$B/$name.build.log; then
+    # A target comparing with CGAL links the CGAL glue: g++'s object from the unit-test build (the
+    # one slow CGAL compile, shared; CGAL itself need not be instrumented), installing libcgal-dev.
+    extra=""
+    if grep -q 'third_party/cgal_glue.h' "$src"; then
+        if ! make -s build/third_party/cgal_glue.o >$B/$name.build.log 2>&1; then
+            echo "FAIL $name (CGAL glue build)"; head -20 $B/$name.build.log; status=1; continue
+        fi
+        extra="build/third_party/cgal_glue.o -lgmp -lmpfr"
+    fi
+    if ! clang++ $FLAGS -fsanitize=fuzzer "$src" $objs $extra -o $B/$name 2>$B/$name.build.log; then
         echo "FAIL $name (build)"; cat $B/$name.build.log | head -20; status=1; continue
     fi
     # FUZZ_BUILD_ONLY=1: build the targets, run none (fuzz/campaign.sh runs them itself).

@@ -24,17 +24,43 @@ void Cdt::begin_change() {
     changes_.destroyed.clear();
     changes_.created.clear();
     changes_.old_face_count = face_count();
+    revived_.clear();
 }
 
 // The arrays are kept longer than face_count() and grown geometrically, so taking a slot is a
 // counter increment (not a push_back with its capacity check per array). Slots past nfaces_ are
 // all zero (a memset to grow): split_face relies on new faces' flags being 0 and stamps must not
-// match a change id; vertices and twins of a new face are always written by its creator.
-FaceInd Cdt::new_faces(FaceInd n) {
+// match a change id; vertices and twins of a new face are always written by its creator. Slots
+// freed by remove_vertex come first; their flags are 0 too (cdt_remove.cpp).
+FaceInd Cdt::new_face() {
+    if (free_faces_.empty()) return append_faces(1);
+    const FaceInd f = free_faces_.back();
+    free_faces_.pop_back();
+    // The slot held no triangle when the call began: created, not destroyed.
+    if (tracking_ != Tracking::none && stamp_[f] != change_id_) {
+        stamp_[f] = change_id_;
+        if (tracking_ == Tracking::lists) changes_.created.push_back(f);
+        else revived_.push_back(f);
+    }
+    return f;
+}
+
+FaceInd Cdt::append_faces(FaceInd n) {
     const FaceInd f = nfaces_;
     nfaces_ += n;
     if (stamp_.size() < nfaces_) grow_faces(std::max<std::size_t>(nfaces_, 2 * stamp_.size()));
     return f;
+}
+
+// Two slots for a split; appended together when none is free (the common case).
+void Cdt::new_face_pair(FaceInd* a, FaceInd* b) {
+    if (free_faces_.empty()) {
+        *a = append_faces(2);
+        *b = *a + 1;
+        return;
+    }
+    *a = new_face();
+    *b = new_face();
 }
 
 void Cdt::grow_faces(std::size_t faces) {
@@ -81,7 +107,10 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     flags_.clear();
     segments_.clear();
     stamp_.clear();
+    free_faces_.clear();
     nfaces_ = 0;
+    dead_vertices_ = 0;
+    delaunay_ = true;
     change_id_ = 0;
     last_face_ = 0;
     begin_change();
@@ -89,7 +118,7 @@ Status Cdt::reset(std::int32_t max_x, std::int32_t max_y) {
     add_vertex({max_x, 0});
     add_vertex({max_x, max_y});
     add_vertex({0, max_y});
-    const FaceInd f0 = new_faces(2), f1 = f0 + 1;
+    const FaceInd f0 = new_face(), f1 = new_face();
     set_face(f0, 0, 1, 2);
     set_face(f1, 0, 2, 3);
     for (EdgeInd e = 0; e < 6; ++e) twin_[e] = noEdge;
@@ -193,7 +222,8 @@ void Cdt::legalize_around(VertInd p, const EdgeInd* seeds, unsigned count) {
 // link per corner reloaded every array pointer after each byte store); the final out_ entries,
 // twins, flags and touch order are those of set_face(f), set_face(n1), set_face(n2) + links.
 void Cdt::split_face(FaceInd f, VertInd p) {
-    const FaceInd n1 = new_faces(2), n2 = n1 + 1;  // may grow the arrays: take pointers after it
+    FaceInd n1, n2;
+    new_face_pair(&n1, &n2);  // may grow the arrays: take pointers after it
     VertInd* const V = vert_.data();
     EdgeInd* const T = twin_.data();
     std::uint8_t* const F = flags_.data();
@@ -221,7 +251,7 @@ void Cdt::split_face(FaceInd f, VertInd p) {
     T[e2 + 2] = e1 + 1;
     T[e2 + 1] = e + 2;
     T[e + 2] = e2 + 1;
-    F[e1] = fbc;  // the other new corners are zero already (new_faces)
+    F[e1] = fbc;  // the other new corners are zero already (new_face)
     F[e2] = fca;
     F[e + 1] = 0;
     F[e + 2] = 0;
@@ -256,11 +286,14 @@ void Cdt::split_edge(EdgeInd e, VertInd p) {
         fad = flags_[ead];
         fdb = flags_[edb];
     }
-    const FaceInd n1 = new_faces(t != noEdge ? 2 : 1);
+    FaceInd n1 = noFace, n2 = noFace;
+    if (t != noEdge)
+        new_face_pair(&n1, &n2);
+    else
+        n1 = new_face();
     split_side(f, n1, c, a, b, p, tca, fca, tbc, fbc, fe);
     EdgeInd seeds[4] = {3 * f + 0, 3 * n1 + 2, noEdge, noEdge};
     if (t != noEdge) {
-        const FaceInd n2 = n1 + 1;
         split_side(g, n2, d, b, a, p, tdb, fdb, tad, fad, fe);
         link(3 * f + 1, 3 * n2 + 1);
         link(3 * n1 + 1, 3 * g + 1);
@@ -356,9 +389,15 @@ Status Cdt::insert_points(const std::vector<LatticePoint>& pts, std::vector<Vert
     }
     tracking_ = Tracking::lists;
     if (!report_changes) return st;
+    std::sort(revived_.begin(), revived_.end());  // freed slots taken: created, not destroyed
+    std::size_t r = 0;
     for (FaceInd f = 0; f < face_count(); ++f) {
         if (stamp_[f] != change_id_) continue;
         changes_.created.push_back(f);
+        if (r < revived_.size() && revived_[r] == f) {
+            ++r;
+            continue;
+        }
         if (f < changes_.old_face_count) changes_.destroyed.push_back(f);
     }
     return st;

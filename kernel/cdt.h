@@ -30,9 +30,15 @@
 //   f1: 3f1+0 = c->a, 3f1+1 = a->d, 3f1+2 = d->c;   f2: 3f2+0 = d->b, 3f2+1 = b->c, 3f2+2 = c->d
 //
 // Contract
-//   - Faces are never deleted. Point insertion adds 2 faces (1 on the hull), reusing the slot of
-//     every face it destroys; constraint insertion keeps the count. Face indices
-//     0..face_count()-1 are always all live. Vertex indices are never reused either.
+//   - Face slots are stable: an operation rewrites the slots of the faces it destroys and never
+//     moves a face it keeps. Point insertion adds 2 faces (1 on the hull), constraint insertion
+//     keeps the count, remove_vertex takes 2 (1 on the rectangle side): it frees their slots, and
+//     later insertions take freed slots (last freed, first taken) before new ones. face_count() is
+//     the number of slots; while nothing was removed every slot 0..face_count()-1 is live, after a
+//     removal face_live(f) tells (live_face_count() counts them).
+//   - Vertex indices are never reused: a removed vertex stays allocated but dead (vertex_live() is
+//     false, its point() stays readable); a point inserted later at its place gets a new index.
+//     vertex_count() is the number of indices, live_vertex_count() of live vertices.
 //   - Ties are broken by symbolic perturbation (predicates.h), so the triangulation depends only
 //     on the point set and the set of constraint segments, never on the insertion order (as long
 //     as no crossing constraint piece was refused; the refusal itself depends on order).
@@ -79,7 +85,9 @@ struct Location {
 // What the last mutating call did to the faces. Slots are reused, so a slot can appear in both
 // lists: `destroyed` = slots whose previous triangle is gone (each once), `created` = slots that
 // now hold a new triangle (each once, including the new slots >= the previous face_count()).
-// Every destroyed slot is also created. Faces not listed are unchanged.
+// Insertions and constraints: every destroyed slot is also created. remove_vertex: the slots it
+// frees are destroyed only; a freed slot taken again later is created only. Always
+// created.size() - destroyed.size() = the change of live_face_count(). Faces not listed are unchanged.
 struct ChangeReport {
     std::vector<FaceInd> destroyed;
     std::vector<FaceInd> created;
@@ -137,15 +145,39 @@ public:
     // CDT condition. a == b is a no-op. Invalid vertex indices -> bad_input.
     Status insert_constraint(VertInd a, VertInd b, ConstraintReport* rep = nullptr);
 
+    // Removes vertex v and retriangulates its star: the result is the CDT of the remaining points
+    // and constraint pieces, exactly the triangulation a fresh build of them gives (the same tie
+    // rule), in time about proportional to v's degree (kernel/cdt_remove.cpp). Works for interior
+    // vertices and for vertices on a rectangle side. Refused with bad_input, nothing changed: v out
+    // of range or already removed, a rectangle corner (0..3), or v on a constrained edge (an end or
+    // an inner vertex of a constraint piece: what would become of the constraint is the caller's
+    // decision; none of erd's uses needs it). changes(): the star's d faces destroyed, d-2 of their
+    // slots (d-1 for a vertex on a side) created again, the others freed. After flip_edge or
+    // move_vertex (a data-dependent mesh) the hole is still filled with valid positive faces by the
+    // same rule, but the result is no longer a CDT; the call never fails there either.
+    Status remove_vertex(VertInd v);
+    // True when remove_vertex(v) would remove v (not refuse it).
+    bool can_remove(VertInd v) const;
+    // The largest hole (star polygon) remove_vertex fills by its apex scan rather than by a
+    // CDT of the polygon (cdt_remove.cpp); both give the same faces. Default 64; for tests and
+    // benchmarks.
+    void set_removal_scan_limit(std::uint32_t m) { scan_max_ = m; }
+
     // Locates p: outside, in the interior of a face, in the interior of an edge, or on a vertex.
     // `hint` as for insert_point.
     Location locate(LatticePoint p, FaceInd hint = noFace) const;
 
-    // Faces destroyed and created by the last mutating call (reset, insert_*).
+    // Faces destroyed and created by the last mutating call (reset, insert_*, remove_vertex).
     const ChangeReport& changes() const { return changes_; }
 
+    // Vertex indices are 0..vertex_count()-1, face slots 0..face_count()-1; all live unless
+    // remove_vertex ran (see the contract at the top).
     std::size_t vertex_count() const { return points_.size(); }
     std::size_t face_count() const { return nfaces_; }
+    std::size_t live_vertex_count() const { return points_.size() - dead_vertices_; }
+    std::size_t live_face_count() const { return nfaces_ - free_faces_.size(); }
+    bool vertex_live(VertInd v) const { return v < out_.size() && out_[v] != noEdge; }
+    bool face_live(FaceInd f) const { return f < nfaces_ && vert_[3 * f] != noVertex; }
     std::int32_t max_x() const { return max_x_; }
     std::int32_t max_y() const { return max_y_; }
     LatticePoint point(VertInd v) const { return points_[v]; }
@@ -186,7 +218,8 @@ public:
     // The wedges of v in positive rotational order (corners_around order).
     void wedges(VertInd v, std::vector<Wedge>* out) const;
 
-    // Export: faces as vertex triples with positive orientation, constrained edges as (i < j).
+    // Export: faces as vertex triples with positive orientation (the live slots in slot order,
+    // so out[f] is slot f while nothing was removed), constrained edges as (i < j).
     void export_faces(std::vector<std::array<VertInd, 3>>* out) const;
     void export_constraints(std::vector<std::array<VertInd, 2>>* out) const;
 
@@ -232,7 +265,11 @@ private:
     }
     void set_face(FaceInd f, VertInd a, VertInd b, VertInd c);
     void link(EdgeInd e, EdgeInd t);  // twins (t may be noEdge)
-    FaceInd new_faces(FaceInd n);  // appends n slots, returns the first
+    FaceInd new_face();  // a freed slot (the last freed) or a new one
+    void new_face_pair(FaceInd* a, FaceInd* b);  // two of them
+    FaceInd append_faces(FaceInd n);  // n new slots after the last, the first returned
+    void grow_hole(std::size_t n);  // remove_vertex's scratch arrays for n polygon vertices
+    void place_new_faces(std::uint32_t m, std::uint32_t slots, bool flagged);
     void grow_faces(std::size_t faces);
     Location walk(LatticePoint p, FaceInd start) const;
     template <bool Branchless>
@@ -257,7 +294,12 @@ private:
     std::vector<EdgeInd> out_;        // per vertex: a half-edge leaving it
     std::vector<VertInd> vert_;       // per half-edge: origin
     std::vector<EdgeInd> twin_;       // per half-edge: twin or noEdge
-    FaceInd nfaces_ = 0;              // faces in use; the per-face arrays may be longer (new_faces)
+    FaceInd nfaces_ = 0;              // face slots in use; the per-face arrays may be longer (new_face)
+    std::vector<FaceInd> free_faces_; // slots freed by remove_vertex (vert_ = noVertex), taken first
+    std::vector<FaceInd> revived_;    // freed slots taken during insert_points (created, not destroyed)
+    std::size_t dead_vertices_ = 0;   // vertices removed
+    bool delaunay_ = true;            // false after flip_edge / move_vertex (remove_vertex's method)
+    std::uint32_t scan_max_ = 64;     // set_removal_scan_limit
     std::vector<std::uint8_t> flags_; // per half-edge: 1 = constrained
     std::vector<Pair> segments_;      // every constraint piece ever made constrained (for verify)
     ChangeReport changes_;
@@ -274,6 +316,28 @@ private:
     std::vector<EdgeInd> stack_;
     std::vector<Pair> pairs_, pairs2_;
     std::vector<std::uint64_t> sort_buf_, sort_tmp_;  // insert_points' order (spatial_order.h)
+    // remove_vertex's hole (kernel/cdt_remove.cpp), all sized by grow_hole: per polygon vertex
+    // (and its side, q_i -> q_{i+1}) the vertex, point, side's outer twin, flag and half-edge, an
+    // out_ candidate and whether the side kept its half-edge; per new face corner the polygon
+    // vertex and the side or partner corner (kInner | face << 2 | corner); per new face its slot and turn;
+    // the apex scan's stack.
+    static constexpr std::uint32_t kInner = 0x80000000u;
+    std::vector<VertInd> hole_v_;
+    std::vector<LatticePoint> hole_p_;
+    std::vector<EdgeInd> hole_t_;
+    std::vector<std::uint8_t> hole_f_;
+    std::vector<EdgeInd> hole_e_;
+    std::vector<std::uint8_t> hole_pos_;  // hole_e_ % 3
+    std::vector<EdgeInd> hole_out_;
+    std::vector<std::uint8_t> hole_kept_;
+    std::vector<std::uint32_t> new_q_, new_s_;
+    std::vector<FaceInd> new_slot_;
+    std::vector<std::uint8_t> new_rot_;
+    std::vector<std::uint32_t> scan_stack_;
+    bool fill_hole_scan(std::uint32_t m);
+    template <class Wide>
+    bool scan_as(std::uint32_t m);  // fill_hole_scan in int64 or __int128
+    bool fill_hole_cdt(std::uint32_t m);
 };
 
 // A canonical form of the triangulation for comparisons: every face as its three points rotated

@@ -19,7 +19,7 @@
 namespace erd {
 
 EdgeInd Cdt::find_edge(VertInd a, VertInd b) const {
-    if (a >= out_.size() || b >= out_.size()) return noEdge;
+    if (a >= out_.size() || b >= out_.size() || out_[a] == noEdge) return noEdge;
     const EdgeInd start = out_[a];
     EdgeInd e = start;
     do {
@@ -62,6 +62,7 @@ Status Cdt::insert_constraint(VertInd a, VertInd b, ConstraintReport* rep) {
     begin_change();
     if (a >= points_.size() || b >= points_.size())
         return Status::bad_input("constraint vertex index out of range");
+    if (out_[a] == noEdge || out_[b] == noEdge) return Status::bad_input("constraint vertex was removed");
     ConstraintReport r;
     VertInd cur = a;
     Status st;

@@ -16,11 +16,12 @@ bool Cdt::can_flip(EdgeInd e) const {
 EdgeInd Cdt::flip_edge(EdgeInd e) {
     begin_change();
     if (!can_flip(e)) return noEdge;
+    delaunay_ = false;
     return flip(e);
 }
 
 bool Cdt::can_move(VertInd v, LatticePoint p) const {
-    if (v < 4 || v >= points_.size() || p == points_[v]) return false;
+    if (v < 4 || v >= points_.size() || out_[v] == noEdge || p == points_[v]) return false;
     if (p.x <= 0 || p.y <= 0 || p.x >= max_x_ || p.y >= max_y_) return false;
     const EdgeInd first = out_[v];
     EdgeInd e = first;
@@ -36,6 +37,7 @@ bool Cdt::can_move(VertInd v, LatticePoint p) const {
 bool Cdt::move_vertex(VertInd v, LatticePoint p) {
     begin_change();
     if (!can_move(v, p)) return false;
+    delaunay_ = false;
     points_[v] = p;
     EdgeInd e = out_[v];
     do {

@@ -93,6 +93,7 @@ Location Cdt::walk_as(LatticePoint p, FaceInd start) const {
 
 Location Cdt::locate_brute(LatticePoint p) const {
     for (FaceInd f = 0; f < face_count(); ++f) {
+        if (!face_live(f)) continue;
         const EdgeInd base = 3 * f;
         int o[3];
         bool inside = true;
@@ -124,8 +125,8 @@ Location Cdt::locate_brute(LatticePoint p) const {
 
 Location Cdt::locate(LatticePoint p, FaceInd hint) const {
     if (face_count() == 0 || p.x < 0 || p.y < 0 || p.x > max_x_ || p.y > max_y_) return Location{};
-    if (hint < face_count()) return walk(p, hint);
-    FaceInd start = last_face_ < face_count() ? last_face_ : 0;
+    if (face_live(hint)) return walk(p, hint);
+    FaceInd start = face_live(last_face_) ? last_face_ : face_of(out_[0]);  // corner 0 is never removed
     // Jump and walk (Muecke, Saias, Zhu): when the previous face is far from p compared with the
     // mean vertex spacing, start from the nearest of about n^(1/3) sampled vertices instead, which
     // cuts a random-order walk from O(sqrt n) to O(n^(1/6)) steps. Spatially coherent callers never
@@ -145,7 +146,7 @@ Location Cdt::locate(LatticePoint p, FaceInd hint) const {
                 rng_ = rng_ * 1664525u + 1013904223u;
                 const VertInd v = static_cast<VertInd>((std::uint64_t(rng_) * nv) >> 32);
                 const std::int64_t d = dist2(points_[v]);
-                if (d < best) {
+                if (d < best && out_[v] != noEdge) {  // removed vertices have no face
                     best = d;
                     start = face_of(out_[v]);
                 }

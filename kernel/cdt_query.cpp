@@ -100,8 +100,10 @@ void Cdt::wedges(VertInd v, std::vector<Wedge>* out) const {
 }
 
 void Cdt::export_faces(std::vector<std::array<VertInd, 3>>* out) const {
-    out->resize(face_count());
-    for (FaceInd f = 0; f < face_count(); ++f) (*out)[f] = {vert_[3 * f], vert_[3 * f + 1], vert_[3 * f + 2]};
+    out->resize(live_face_count());
+    std::size_t n = 0;
+    for (FaceInd f = 0; f < face_count(); ++f)
+        if (face_live(f)) (*out)[n++] = {vert_[3 * f], vert_[3 * f + 1], vert_[3 * f + 2]};
 }
 
 void Cdt::export_constraints(std::vector<std::array<VertInd, 2>>* out) const {
@@ -159,10 +161,23 @@ bool Cdt::verify_checks(std::string* why, bool delaunay) const {
     for (std::size_t e = ne; e < vert_.size(); ++e)  // new_faces relies on spare slots being zero
         if (vert_[e] != 0 || twin_[e] != 0 || flags_[e] != 0 || stamp_[e / 3] != 0)
             return fail(why, "spare half-edge slot " + es(e) + " not zero");
+    // Freed slots (remove_vertex): no vertices, no twins, no flags, each in the free list once.
+    std::size_t dead = 0;
+    for (FaceInd f = 0; f < nf; ++f) {
+        if (face_live(f)) continue;
+        ++dead;
+        for (EdgeInd e = 3 * f; e < 3 * f + 3; ++e)
+            if (vert_[e] != noVertex || twin_[e] != noEdge || flags_[e] != 0)
+                return fail(why, "freed face slot " + es(f) + " not cleared");
+    }
+    if (dead != free_faces_.size()) return fail(why, "free list disagrees with the freed slots");
+    for (const FaceInd f : free_faces_)
+        if (f >= nf || face_live(f)) return fail(why, "free list holds a live or invalid slot");
     std::vector<std::uint8_t> used(nv, 0);
     __int128 area = 0;
     std::size_t hull = 0;
     for (EdgeInd e = 0; e < ne; ++e) {
+        if (!face_live(face_of(e))) continue;
         const VertInd v = vert_[e];
         if (v >= nv) return fail(why, "half-edge " + es(e) + " has no valid origin");
         used[v] = 1;
@@ -174,36 +189,47 @@ bool Cdt::verify_checks(std::string* why, bool delaunay) const {
             if (!on_side) return fail(why, "hull half-edge " + es(e) + " not on the rectangle boundary");
             continue;
         }
-        if (t >= ne || twin_[t] != e) return fail(why, "twin asymmetry at half-edge " + es(e));
+        if (t >= ne || twin_[t] != e || !face_live(face_of(t))) return fail(why, "twin asymmetry at half-edge " + es(e));
         if (face_of(t) == face_of(e)) return fail(why, "half-edge " + es(e) + " twinned inside its face");
         if (vert_[t] != vert_[next_edge(e)] || vert_[next_edge(t)] != v)
             return fail(why, "twin endpoints disagree at half-edge " + es(e));
         if (flags_[t] != flags_[e]) return fail(why, "constraint flag asymmetric at half-edge " + es(e));
     }
     for (FaceInd f = 0; f < nf; ++f) {
+        if (!face_live(f)) continue;
         const std::int64_t o = orient2d(points_[vert_[3 * f]], points_[vert_[3 * f + 1]], points_[vert_[3 * f + 2]]);
         if (o <= 0) return fail(why, "face " + es(f) + " not positively oriented");
         area += o;
     }
     if (area != __int128(2) * max_x_ * max_y_) return fail(why, "face areas do not sum to the rectangle");
+    std::size_t dead_vertices = 0;
     for (VertInd v = 0; v < nv; ++v) {
+        if (out_[v] == noEdge) {  // removed
+            if (used[v]) return fail(why, "removed vertex " + es(v) + " still in a face");
+            ++dead_vertices;
+            continue;
+        }
         if (!used[v]) return fail(why, "vertex " + es(v) + " in no face");
         if (out_[v] >= ne || vert_[out_[v]] != v) return fail(why, "out_edge of vertex " + es(v) + " invalid");
     }
     // Euler: V - E + F = 1 without the outer face; E = (3F + hull) / 2.
-    if ((3 * nf + hull) % 2 != 0) return fail(why, "odd half-edge count");
-    const std::int64_t edges = std::int64_t(3 * nf + hull) / 2;
-    if (std::int64_t(nv) - edges + std::int64_t(nf) != 1) return fail(why, "Euler's relation fails");
+    if (dead_vertices != dead_vertices_ || nv - dead_vertices < 4) return fail(why, "removed vertex count disagrees");
+    const std::size_t lf = nf - dead, lv = nv - dead_vertices;
+    if ((3 * lf + hull) % 2 != 0) return fail(why, "odd half-edge count");
+    const std::int64_t edges = std::int64_t(3 * lf + hull) / 2;
+    if (std::int64_t(lv) - edges + std::int64_t(lf) != 1) return fail(why, "Euler's relation fails");
     // Distinct points (a duplicate would make a zero-length edge, but check directly).
     {
-        std::vector<std::pair<std::int32_t, std::int32_t>> pts(nv);
-        for (VertInd v = 0; v < nv; ++v) pts[v] = {points_[v].y, points_[v].x};
+        std::vector<std::pair<std::int32_t, std::int32_t>> pts;
+        pts.reserve(lv);
+        for (VertInd v = 0; v < nv; ++v)
+            if (out_[v] != noEdge) pts.push_back({points_[v].y, points_[v].x});
         std::sort(pts.begin(), pts.end());
         if (std::adjacent_find(pts.begin(), pts.end()) != pts.end()) return fail(why, "duplicate vertex");
     }
     // Constrained Delaunay condition with the tie rule.
     for (EdgeInd e = 0; delaunay && e < ne; ++e)
-        if (is_illegal(e)) return fail(why, "edge " + es(e) + " violates the constrained Delaunay condition");
+        if (face_live(face_of(e)) && is_illegal(e)) return fail(why, "edge " + es(e) + " violates the constrained Delaunay condition");
     // Every constraint piece present as a chain of collinear constrained edges.
     for (const Pair& s : segments_) {
         VertInd cur = s.a;

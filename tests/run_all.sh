@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `make test`: the layer and map checks, the unit tests, the same tests under ASan+UBSan, the
-# thread tests under ThreadSanitizer, and a short run of every fuzz target. Counts test cases (a
-# fuzz target and each check count as one) and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
+# thread tests under ThreadSanitizer, the kernel against CGAL (build/cgal_tests), and a short run
+# of every fuzz target. Counts test cases (a fuzz target and each check count as one) and ends with
+# "N passed, M failed". A missing binary or image fails its tests here: skipping
 # (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
 unset ERD_ALLOW_SKIP ERD_REGENERATE
@@ -187,6 +188,17 @@ echo "== unit tests under ASan+UBSan, embedded build, python (in the background,
 stage
 ( run_job asan stage_asan; run_job embedded stage_embedded; run_job python stage_python ) &
 chain_pid=$!
+
+# erd's CDT against CGAL's (tests/cgal/, its own binary so that erd_tests never needs CGAL);
+# the build installs libcgal-dev when missing (Makefile, deps-cgal).
+echo "== CGAL differential tests (build/cgal_tests)"
+if make -s -j2 build/cgal_tests >"$log/cgal-build" 2>&1; then
+    build/cgal_tests 2>&1 | tee "$log/cgal" | tail -3
+    count_catch "$log/cgal" "${PIPESTATUS[0]}"
+else
+    tail -20 "$log/cgal-build"; echo "CGAL differential tests: build failed"; failed=$((failed + 1))
+fi
+stage
 
 echo "== fuzz smoke runs"
 if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1; then
