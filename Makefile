@@ -40,6 +40,13 @@ TEST_OBJ  := $(BUILD)/third_party/catch_main.o $(TEST_SRC:%.cpp=$(BUILD)/%.o)
 CATCH_HDR := /usr/include/catch2/catch.hpp
 STB_HDR   := /usr/include/stb/stb_image.h
 ZLIB_HDR  := /usr/include/zlib.h
+# libtiff (issue 47): TIFF and GeoTIFF in imageio/. build/erd links it statically with the codecs
+# it was built with, as pkg-config lists them (docs/DECISIONS.md "Rasters"); the tests, the
+# sanitizer build and the Python module link the shared library.
+TIFF_HDR  := /usr/include/$(shell $(CXX) -print-multiarch 2>/dev/null)/tiffio.h
+TIFF_STATIC_LIBS = $(shell pkg-config --static --libs libtiff-4 2>/dev/null || echo -ltiff -lwebp -lLerc -ljbig -lzstd -llzma -ljpeg -ldeflate -lz -lm)
+# The real elevation models the tests write as GeoTIFF and PFM (Debian's python-matplotlib-data).
+MPL_DEM   := /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
 .PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate codec-bench
@@ -61,7 +68,7 @@ help:
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
-	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev when their headers are missing"
+	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data when missing"
 	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
 	@echo "make python-test  the Python package's pytest suite"
@@ -74,11 +81,11 @@ help:
 	@echo "make clean-embedded  remove build-embedded only"
 	@echo "make help       this list"
 
-deps: $(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR)
-$(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR):
-	@echo "installing Debian packages catch2 libstb-dev zlib1g-dev" >&2
-	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev >/dev/null 2>&1 || \
-	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev >/dev/null; }
+deps: $(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR) $(TIFF_HDR) $(MPL_DEM)
+$(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR) $(TIFF_HDR) $(MPL_DEM):
+	@echo "installing Debian packages catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data" >&2
+	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data >/dev/null 2>&1 || \
+	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data >/dev/null; }
 	@touch -c $@
 
 $(BUILD)/liberd.a: $(LIB_OBJ)
@@ -96,14 +103,16 @@ $(BUILD)/liberd_imageio.a: $(IMAGEIO_OBJ)
 	ar rcs $@ $^
 
 $(BUILD)/erd: $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a
-	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) -lz -lpthread
+	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) \
+	  $(if $(filter -static,$(ERD_LINK)),$(TIFF_STATIC_LIBS),-ltiff) -lz -lpthread
 
 # Tests link the CLI objects too (all but main) so readers and writers are tested in process.
 $(BUILD)/erd_tests: $(TEST_OBJ) $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a
-	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lz -lpthread
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -ltiff -lz -lpthread
 
 $(BUILD)/third_party/stb_glue.o: $(STB_HDR)
 $(BUILD)/imageio/png.o: $(ZLIB_HDR)
+$(BUILD)/imageio/tiff.o: $(TIFF_HDR)
 $(BUILD)/third_party/catch_main.o: $(CATCH_HDR)
 $(TEST_OBJ): $(CATCH_HDR)
 # The tests' own objects carry no debug information (a failing test names its file and line

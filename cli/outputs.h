@@ -25,6 +25,7 @@
 // the short ones above, so they fit NAME_MAX whatever the output name. ERD_NO_TMPFILE=1 in the
 // environment takes the named path everywhere (for the tests of it).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,12 @@ public:
     // for commit() when the target is special. Failures (Code::runtime) name the path.
     Status stage(const std::string& path, const std::string& bytes);
 
+    // The same for an output written as it is made (a raster larger than memory, by rows): `write`
+    // gets the temporary's descriptor (read-write, at offset 0) and may seek in it. Needs a
+    // regular file (or a new name): "-" and special files are refused. Its failure is returned
+    // as it is, the temporary removed.
+    Status stage_stream(const std::string& path, const std::function<Status(int fd)>& write);
+
     // Writes the special outputs in place, then moves every temporary onto its target. A failed
     // special output leaves every regular target untouched. Signals are held until it is done.
     Status commit();
@@ -62,6 +69,7 @@ public:
     void discard();
 
 private:
+    Status stage_file(const std::string& path, const std::string* bytes, const std::function<Status(int fd)>* write);
     struct Staged {
         std::string path;    // as given, for messages
         std::string target;  // the file to replace (symbolic links resolved)
