@@ -49,6 +49,8 @@ bool pixel_to_world(const GeoTags& g, PixelToWorld* out) {
     return false;
 }
 
+bool geo_projected(const GeoTags& g) { return geo_key(g, 1024) == 1; }
+
 int geo_epsg(const GeoTags& g) {
     int code = geo_key(g, 3072);  // ProjectedCSTypeGeoKey
     if (code <= 0 || code == 32767) code = geo_key(g, 2048);  // GeographicTypeGeoKey

@@ -25,6 +25,10 @@ bool pixel_to_world(const GeoTags& g, PixelToWorld* out);
 // 0 when none (or user-defined).
 int geo_epsg(const GeoTags& g);
 
+// True when the GeoKeys say the model space is projected (GTModelTypeGeoKey 1): x, y in metres
+// (or the CRS's linear unit), as heights are.
+bool geo_projected(const GeoTags& g);
+
 // One line for people: "EPSG:32615, pixel 30 x 30 at (500000, 4100000)" or "none".
 std::string describe_georef(const GeoTags& g);
 
