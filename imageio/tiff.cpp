@@ -142,7 +142,7 @@ std::string why(const Messages& m, const std::string& fallback) { return m.error
 
 // A tag of doubles (stored as DOUBLE or FLOAT), shorts or text, as libtiff has it.
 bool get_doubles(TIFF* tif, ttag_t tag, std::vector<double>* out) {
-    const TIFFField* f = TIFFFieldWithTag(tif, tag);
+    const TIFFField* f = TIFFFindField(tif, tag, TIFF_ANY);
     if (!f) return false;
     std::uint32_t n = 0;
     void* p = nullptr;
@@ -159,7 +159,7 @@ bool get_doubles(TIFF* tif, ttag_t tag, std::vector<double>* out) {
 }
 
 bool get_shorts(TIFF* tif, ttag_t tag, std::vector<std::uint16_t>* out) {
-    const TIFFField* f = TIFFFieldWithTag(tif, tag);
+    const TIFFField* f = TIFFFindField(tif, tag, TIFF_ANY);
     std::uint32_t n = 0;
     void* p = nullptr;
     if (!f || TIFFFieldReadCount(f) != TIFF_VARIABLE2 || TIFFFieldDataType(f) != TIFF_SHORT || !TIFFGetField(tif, tag, &n, &p) || !p)
@@ -169,7 +169,7 @@ bool get_shorts(TIFF* tif, ttag_t tag, std::vector<std::uint16_t>* out) {
 }
 
 bool get_text(TIFF* tif, ttag_t tag, std::string* out) {
-    const TIFFField* f = TIFFFieldWithTag(tif, tag);
+    const TIFFField* f = TIFFFindField(tif, tag, TIFF_ANY);
     if (!f || TIFFFieldDataType(f) != TIFF_ASCII) return false;
     std::uint32_t n = 0;
     char* p = nullptr;
@@ -380,6 +380,9 @@ Status TiffReader::Impl::check(const ImageLimits& limits) {
     get_shorts(tif, kGeoKeys, &g.keys);
     get_doubles(tif, kGeoDoubles, &g.doubles);
     get_text(tif, kGeoAscii, &g.ascii);
+    for (const auto* v : {&g.pixel_scale, &g.tiepoints, &g.transform, &g.doubles})
+        for (double x : *v)
+            if (!std::isfinite(x)) return Status::bad_input("TIFF GeoTIFF tag has a value that is not a finite number");
     std::string nodata;
     if (get_text(tif, kGdalNodata, &nodata)) {
         double v = 0;

@@ -42,11 +42,12 @@ void fill_nodata(Image* im) {
 void make_proxy(Image* im) {
     im->maxval = 65535;
     im->samples.resize(im->reals.size());
-    const double span = im->hi - im->lo;
-    const double k = span > 0 ? 65535.0 / span : 0.0;
+    // In halves, so that no difference of two finite values overflows; NaN never reaches the cast.
+    const double lo = 0.5 * im->lo, half_span = 0.5 * im->hi - lo;
+    const double k = half_span > 0 ? 65535.0 / half_span : 0.0;
     for (std::size_t i = 0; i < im->reals.size(); ++i) {
-        const double q = (im->reals[i] - im->lo) * k + 0.5;
-        im->samples[i] = std::uint16_t(q <= 0 ? 0.0 : (q >= 65535.0 ? 65535.0 : q));
+        const double q = (0.5 * im->reals[i] - lo) * k + 0.5;
+        im->samples[i] = std::uint16_t(q > 0 ? (q >= 65535.0 ? 65535.0 : q) : 0.0);
     }
 }
 

@@ -139,12 +139,15 @@ namespace {
 
 // --max-error on a real image is a bound on the model given back: after the method's own stages
 // (which may move values: a refit, flips, --optimize's fit) greedy insertion goes on, on the
-// model's current values, until the largest error over the valid pixels is at most E (or N).
+// model's current values, until the largest error over the valid pixels is at most E. N caps it
+// for the greedy methods (as their other stop rules); ED and ERDED choose N points first, and the
+// bound then wins over N (the exact-count rule, -x, reports the points beyond).
 Status max_error_fixup(Cdt& cdt, const Image& image, const GenerateOptions& options, GreedyModel& model,
                        GenerateResult* result) {
     if (!image.real() || options.max_error < 0) return Status::success();
     GreedyStats gs;
-    const Status st = greedy_refine(cdt, image, model, greedy_options(options, result->requested), &gs);
+    const std::size_t cap = result->stats.has_greedy ? result->requested : image.pixels() + cdt.vertex_count();
+    const Status st = greedy_refine(cdt, image, model, greedy_options(options, cap), &gs);
     result->stats.has_raster = true;
     result->stats.raster.fixup_insertions = gs.insertions;
     return st;
