@@ -328,6 +328,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
         rep.detail(buf);
     }
     for (const std::string& s : result_lines(res.stats)) rep.detail(s);
+    if (res.stats.has_raster && opt.max_error >= 0 && res.stats.raster.max_error > opt.max_error)
+        rep.warn(escape_name(in) + ": the largest error is " + real_text(res.stats.raster.max_error) + ", above --max-error " +
+                 real_text(opt.max_error) + ": N points were reached first (raise -d or -n)");
 
     std::string exact_warning;
     st = check_exact_count(res.requested, res.achieved, ExactMode(exit_mode), &exact_warning);
