@@ -24,7 +24,7 @@ namespace erd::cli {
 
 const CommandLine kSynth = {
     "synth",
-    "erd synth [-W 256 -H 256 --bits 8|16 --seed N] [--kind K --blur N] [--type T --no-holes] -o FILE",
+    "erd synth [-W 256 -H 256 --bits 8|16 --seed N] [--kind K --blur N] [--type T --solid] -o FILE",
     "Writes a deterministic test image: a smooth ramp and bump, two discs, a triangle and a\n"
     "slanted step with sharp edges, and mild noise; or, with --kind, a hard-edged picture (no\n"
     "anti-aliasing: every edge a step between two pixels), blurred with --blur; or, with --kind dem,\n"
@@ -41,7 +41,7 @@ const CommandLine kSynth = {
         {0, "kind", "K", "mixed (default) or a hard-edged picture: drawing, cartoon, screenshot, icons, map, scene, chart, pixelart, cel"},
         {0, "blur", "N", "hard-edged kinds: N passes of the binomial [1 2 1]/4 along x and y (soft edges; default 0)"},
         {0, "type", "T", "--kind dem, TIFF: sample type float32 (default), float64, int16, int32, uint16"},
-        {0, "no-holes", nullptr, "--kind dem: no nodata"},
+        {0, "solid", nullptr, "--kind dem: no nodata"},
         {'o', "output", "FILE", "output: .png (8 bits at most) or PGM; \"-\" = stdout"},
         {0, "plain", nullptr, "write plain PGM (P2) instead of raw (P5)"},
     },
@@ -85,7 +85,7 @@ int synth_dem(const Args& args, const Reporter& rep, int w, int h, std::uint64_t
     dp.width = w;
     dp.height = h;
     dp.seed = seed;
-    dp.holes = !args.has("no-holes");
+    dp.holes = !args.has("solid");
     const std::string out = args.str("output");
     const ImageFormat fmt = imageio::format_for_name(out);
     RasterMeta meta;
@@ -161,7 +161,7 @@ static int run_synth(const Args& args, const Reporter& rep) {
     if (!st) return rep.usage(st.message);
     if (kind == "mixed" && args.has("blur")) return rep.usage("--blur needs a hard-edged --kind");
     if (kind == "dem") return synth_dem(args, rep, p.width, p.height, p.seed);
-    if (args.has("type") || args.has("no-holes")) return rep.usage("--type and --no-holes are for --kind dem");
+    if (args.has("type") || args.has("solid")) return rep.usage("--type and --solid are for --kind dem");
 
     Image im;
     if (!(st = kind == "mixed" ? synth(p, &im) : draw_picture(dp, &im))) return rep.fail(st);
