@@ -34,7 +34,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     Cdt cdt;
     st = cdt.reset(2 * (w - 1), 2 * (h - 1));
     if (!st) return st;
-    if (!(st = insert_valid_outline(image, &cdt, &result->stats))) return st;
+    if (!(st = insert_valid_outline(image, &cdt, &result->stats, std::size_t(n)))) return st;
     if (image.has_holes())
         for (std::size_t i = 0; i < corners.size(); ++i)
             if (!image.valid[i]) {
@@ -47,9 +47,6 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     params.threads = options.threads;
     DiffusionResult chosen;
     const std::size_t have = cdt.vertex_count();
-    if (std::size_t(n) < have)
-        return Status::bad_input("target of " + std::to_string(n) + " points is below the " + std::to_string(have) +
-                                 " of the corners and the outline of the valid region");
     const std::size_t want = std::size_t(n) - have;
     st = select_points(sigma, want, params, &chosen);
     if (!st) return st;

@@ -14,7 +14,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
     if (!st) return st;
     cdt.reserve(std::size_t(n));
-    if (!(st = insert_valid_outline(image, &cdt, &result->stats))) return st;
+    if (!(st = insert_valid_outline(image, &cdt, &result->stats, std::size_t(n)))) return st;
     timer.lap("triangulate corners");
 
     BasicGreedyModel model(image);

@@ -66,7 +66,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         touched_.clear();
     }
-    for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) rescan(f);
+    for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
 
     GreedyStop stop;
     std::vector<FaceInd> dirty;
@@ -88,7 +88,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (!model_.admissible(cdt_, p)) {
             ban(p);
             ++stats->banned;
-            rescan(f);
+            scan(f);
             continue;
         }
         const std::size_t before = cdt_.vertex_count();
@@ -97,7 +97,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (!st) return st;
         ban(p);
         if (cdt_.vertex_count() == before) {  // already a vertex: cannot happen with p banned
-            rescan(f);
+            scan(f);
             continue;
         }
         ++stats->insertions;
@@ -109,17 +109,17 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (options_.supersampled) {
             touched_.clear();
             for (FaceInd c : cdt_.changes().created) paint(c);
-            for (FaceInd c : cdt_.changes().created) rescan(c);
+            for (FaceInd c : cdt_.changes().created) scan(c);
             for (const Span& t : touched_)
                 for (std::int32_t x = t.x_begin; x <= t.x_end; ++x) {
                     const FaceInd o = owner_[std::size_t(t.y) * std::size_t(image_.width) + std::size_t(x)];
-                    if (stamp_[o] != generation_) rescan(o);
+                    if (stamp_[o] != generation_) scan(o);
                 }
         } else {
-            for (FaceInd c : cdt_.changes().created) rescan(c);
+            for (FaceInd c : cdt_.changes().created) scan(c);
         }
         for (FaceInd d : dirty)
-            if (d < faces_.size() && stamp_[d] != generation_) rescan(d);
+            if (d < faces_.size() && stamp_[d] != generation_) scan(d);
     }
     stats->stop = stop;
     stats->total_squared_error = total_;

@@ -16,7 +16,6 @@ namespace erd {
 using namespace greedy_scan;
 
 void GreedyRefiner::rescan(FaceInd f) {
-    if (real_) return rescan_real(f);
     if (channels_ > 1) return rescan_colour(f);
     stamp_[f] = generation_;
     FaceState& fs = faces_[f];

@@ -109,13 +109,16 @@ std::size_t distinct_points_of(const std::vector<Polyline>& lines) {
 
 }  // namespace
 
-Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats) {
+Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats, std::size_t target) {
     if (!image.has_holes()) return Status::success();
     const std::vector<Polyline> outline = valid_outline(image.valid, image.width, image.height);
     std::size_t dropped = 0;
     if (Status st = insert_polylines(outline, cdt, &dropped, true); !st) return st;
     stats->has_raster = true;
     stats->raster.outline_points = cdt->vertex_count() - 4;
+    if (target < cdt->vertex_count())
+        return Status::bad_input("target of " + std::to_string(target) + " points is below the " + std::to_string(cdt->vertex_count()) +
+                                 " of the corners and the outline of the valid region (nodata)");
     return Status::success();
 }
 
@@ -293,6 +296,8 @@ void finish_erd_stats(InitialMesh* mesh, const ErdModel* model, StageTimer* time
     s.alpha_first = model->stats().alpha_first;
     s.alpha_last = model->stats().alpha_last;
     result->polylines = std::move(mesh->polylines);
+    // Vertices over nodata dropped from the model still count: N is the mesh's before the drop.
+    result->achieved += result->stats.raster.dropped_vertices;
     timer->lap("model");
 }
 

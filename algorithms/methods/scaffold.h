@@ -46,8 +46,9 @@ Model basic_model(const Cdt& cdt, const Image& image);
 
 // An image with nodata (issue 47): the outline of its valid region (algorithms/imaging/
 // valid_region.h) inserted into cdt (just reset) as constraints, before anything else, so that no
-// face crosses it; counted in stats->raster. Does nothing for an image without nodata.
-Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats);
+// face crosses it; counted in stats->raster. Does nothing for an image without nodata. Fails
+// (Code::input) when the corners and the outline are more than `target` points.
+Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats, std::size_t target);
 
 // Gives *m (a model of image made on the whole rectangle) the image's raster facts: its meta
 // (type, nodata, georeferencing) and, for a real image, real values with the image's range and
