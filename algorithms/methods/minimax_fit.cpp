@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 #include "algorithms/methods/wedge_fit.h"
@@ -17,24 +15,18 @@ namespace {
 
 // The smallest weight: a pixel far inside the bound still holds its face (without it the values
 // no large error pins down drift, and the errors IRLS ignored become the largest).
-static double kFloor = std::getenv("ERD_MM_FLOOR") ? std::atof(std::getenv("ERD_MM_FLOOR")) : 0.1;
+constexpr double kFloor = 0.1;
 
 
 // One pass over the valid pixels of every face: the largest error of the current values, and (with
-// p > 2) the face systems of the errors weighted by (|e| / e_norm)^(p-2).
-struct PassScore {
-    double max = 0;          // the largest error
-    std::size_t above = 0;   // pixels above the bound
-};
-
-// squarings: the weight is (|e| / e_norm)^(2^squarings); p = 2 + 2^squarings.
-PassScore weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, int squarings, double e_norm, double bound,
-                        std::vector<FaceSystem>* systems) {
+// systems) the face systems of the errors weighted by (|e| / e_norm)^(2^squarings), p = 2 + 2^squarings.
+double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, int squarings, double e_norm,
+                     std::vector<FaceSystem>* systems) {
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
     const std::size_t W = std::size_t(image.width);
     const std::uint8_t* ok = image.valid.empty() ? nullptr : image.valid.data();
     const double inv = e_norm > 0 ? 1.0 / e_norm : 0.0;
-    PassScore score;
+    double emax = 0;
     if (systems) systems->assign(cdt.face_count(), FaceSystem());
     for (FaceInd f = 0; f < cdt.face_count(); ++f) {
         const EdgeInd e = 3 * f;
@@ -52,8 +44,7 @@ PassScore weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& mode
                 if (ok && !ok[row + std::size_t(i)]) continue;
                 const double X = double(2 * i), b = image.reals[row + std::size_t(i)];
                 const double err = b - plane.at(X, Y);
-                score.max = std::max(score.max, std::fabs(err));
-                score.above += std::fabs(err) > bound;
+                emax = std::max(emax, std::fabs(err));
                 if (!systems) continue;
                 double w = std::fabs(err) * inv;
                 for (int k = 0; k < squarings; ++k) w *= w;
@@ -77,14 +68,12 @@ PassScore weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& mode
         for (int k = 0; k < 3; ++k) fs.entry[k] = model.corner_entry(cdt, e + EdgeInd(k));
         (*systems)[f] = fs;
     }
-    return score;
+    return emax;
 }
-
-bool better(const PassScore& a, const PassScore& b) { return a.max < b.max; }
 
 }  // namespace
 
-double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, double bound, int rounds, ProgressHook progress) {
+double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress) {
     if (!image.real()) return -1.0;
     std::vector<double> kept(model->entry_count()), start(model->entry_count());
     for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = model->entry_value(i);
@@ -95,33 +84,32 @@ double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, double b
     fo.support_bounds = -1;
     // Each pass measures the values the round before left (the first: those given) and weighs by
     // them; a last pass without weights measures the last round's.
-    PassScore best, last;
+    double best = 0, last = 0;
     double e_norm = 0;
     for (int r = 0; r <= rounds; ++r) {
         progress("minimax fit", double(r) / double(rounds + 1));
         // The first pass has no weights yet: it measures only.
         const bool fit = r < rounds;
-        last = weighted_pass(cdt, image, *model, std::min(r + 1, 5), e_norm > 0 ? e_norm : 1.0, bound, fit && r > 0 ? &systems.faces : nullptr);
+        last = weighted_pass(cdt, image, *model, std::min(r + 1, 5), e_norm > 0 ? e_norm : 1.0, fit && r > 0 ? &systems.faces : nullptr);
         if (r == 0 && fit) {
             // The first round's weights need the first measure: one pass more.
-            e_norm = last.max;
-            last = weighted_pass(cdt, image, *model, 1, e_norm, bound, &systems.faces);
+            e_norm = last;
+            last = weighted_pass(cdt, image, *model, 1, e_norm, &systems.faces);
         }
-        if (std::getenv("ERD_DEBUG_MINIMAX")) std::fprintf(stderr, "minimax pass %d: max error %g\n", r, last.max);
-        if (r == 0 || better(last, best)) {
+        if (r == 0 || last < best) {
             best = last;
             if (r > 0)
                 for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = model->entry_value(i);
         }
-        if (!fit || best.max <= 0) break;
-        e_norm = last.max;
+        if (!fit || best <= 0) break;
+        e_norm = last;
         systems.stale.assign(systems.faces.size(), 0);
         for (std::size_t i = 0; i < start.size(); ++i) start[i] = model->entry_value(i);
         fit_wedge_values(cdt, image, fo, model, nullptr, &start, {}, &systems);
     }
     for (std::size_t i = 0; i < kept.size(); ++i) model->set_entry_value(i, kept[i]);
     progress("minimax fit", 1.0);
-    return best.max;
+    return best;
 }
 
 }  // namespace erd

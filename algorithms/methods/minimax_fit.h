@@ -5,9 +5,9 @@
 // value, so on a convex or concave stretch every face's plane lies on one side of the data and its
 // largest error is twice what a plane shifted half way would have. The ERD model's values are
 // free (its wedge values are fitted, beyond the thesis: wedge_fit.h), so the fit here moves them
-// to balance the errors: iteratively reweighted least squares for the p-norm of the errors, p
-// doubling 4, 8, ... (weights (|e| / e_max)^(p-2), the refit's face systems with them), the values
-// of the round with the smallest largest error kept. The methods then insert points where the
+// to balance the errors: iteratively reweighted least squares for ever higher norms of the errors
+// (weights (|e| / e_max)^2, ^4, ^8, ... at least 0.1, in the refit's face systems), the values of
+// the round with the smallest largest error kept. The methods then insert points where the
 // error is still above the bound (scaffold.h), so the bound holds whatever the fit reached.
 #pragma once
 #include "algorithms/imaging/image.h"
@@ -20,6 +20,6 @@ namespace erd {
 // Refits model's values on cdt against the real image (valid pixels) for `rounds` rounds; returns
 // the largest error over the valid pixels of the values kept (those of the best round, or the
 // values it was given when none was better).
-double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, double bound, int rounds, ProgressHook progress = {});
+double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress = {});
 
 }  // namespace erd

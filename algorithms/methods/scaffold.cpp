@@ -351,7 +351,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
             // The values towards the smallest largest error; the vertices' own pixels kept
             // within the bound (the refits moved them too), the rest of the bound enforced by the
             // insertions below.
-            if (options.minimax_rounds > 0) fit_minimax(cdt, image, model, options.max_error, options.minimax_rounds, options.progress);
+            if (options.minimax_rounds > 0) fit_minimax(cdt, image, model, options.minimax_rounds, options.progress);
             model->pin_pixel_vertices(cdt, options.max_error);
             timer->lap("minimax fit");
         }
