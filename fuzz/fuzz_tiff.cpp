@@ -43,9 +43,7 @@ bool same(const erd::Image& a, const erd::Image& b) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    erd::imageio::ImageLimits limits;
-    limits.max_side = 2048;
-    limits.max_pixels = std::int64_t(1) << 18;
+    const erd::imageio::ImageLimits limits = fuzz_checks::image_limits();
     erd::Image im;
     std::string warning;
     const bool pfm = size >= 2 && data[0] == 'P';

@@ -11,6 +11,7 @@
 #include "algorithms/imaging/georef.h"
 #include "algorithms/model/model_topology.h"
 #include "algorithms/output/gltf.h"
+#include "algorithms/output/little_endian.h"
 
 namespace erd {
 
@@ -47,15 +48,6 @@ void append_face(std::string* s, const char* fmt, std::uint32_t a, std::uint32_t
     if (n > 0) s->append(buf, std::size_t(std::min(n, int(sizeof buf) - 1)));
 }
 
-// Little-endian float and uint32 (STL's byte order whatever the host's).
-void put_u32(std::string* s, std::uint32_t v) {
-    for (int k = 0; k < 4; ++k) s->push_back(char((v >> (8 * k)) & 0xFFu));
-}
-void put_f32(std::string* s, float f) {
-    std::uint32_t u;
-    std::memcpy(&u, &f, sizeof u);
-    put_u32(s, u);
-}
 
 using Vec3 = std::array<float, 3>;
 

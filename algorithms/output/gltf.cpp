@@ -5,19 +5,11 @@
 #include <cstdio>
 #include <cstring>
 
+#include "algorithms/output/little_endian.h"
+
 namespace erd {
 
 namespace {
-
-void put_u32(std::string* s, std::uint32_t v) {
-    for (int k = 0; k < 4; ++k) s->push_back(char((v >> (8 * k)) & 0xFFu));
-}
-
-void put_f32(std::string* s, float f) {
-    std::uint32_t u;
-    std::memcpy(&u, &f, sizeof u);
-    put_u32(s, u);
-}
 
 // A JSON number that reads back as the same double (and as an integer when it is one).
 std::string num(double v) {
@@ -27,22 +19,12 @@ std::string num(double v) {
     return buf;
 }
 
-// The text as a JSON string (quotes, backslashes and control characters escaped).
-std::string quoted(const std::string& s) {
-    std::string o = "\"";
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\') {
-            o += '\\';
-            o += char(c);
-        } else if (c < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            o += buf;
-        } else {
-            o += char(c);
-        }
-    }
-    return o + "\"";
+// Our own description as a JSON string: any quote, backslash or control character (there are
+// none in the texts export.cpp makes) becomes a space.
+std::string quoted(std::string s) {
+    for (char& c : s)
+        if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) c = ' ';
+    return "\"" + s + "\"";
 }
 
 }  // namespace
