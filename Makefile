@@ -1,7 +1,7 @@
 # erd: build, test, fuzz, bench, eval.  `make help` lists the targets.
 #
 # Layout: kernel/ + algorithms/*/ + api/ -> build/liberd.a (standard library only);
-#         imageio/ + third_party/stb glue -> build/liberd_imageio.a (image files; stb, zlib);
+#         imageio/ + third_party/stb glue -> build/liberd_imageio.a (image files; stb, zlib, libtiff);
 #         cli/ -> build/erd; tests/ -> build/erd_tests.
 # Every source directory is globbed, so adding a file needs no Makefile edit.
 
@@ -199,7 +199,8 @@ ERD_PC_VERSION ?= 0.1.0
 # The public headers: api/erd.h and every header it includes, directly or not, as the compiler
 # finds them (so the list follows api/erd.h). `make public-headers` prints it.
 # The image-I/O library's headers (imageio/, for build/liberd_imageio.a) and theirs are public too.
-IMAGEIO_PUBLIC := imageio/image_file.h imageio/image_format.h imageio/jpeg.h imageio/pam.h imageio/png.h imageio/pnm.h
+IMAGEIO_PUBLIC := imageio/image_file.h imageio/image_format.h imageio/jpeg.h imageio/pam.h imageio/png.h imageio/pnm.h \
+                  imageio/tiff.h imageio/pfm.h imageio/raster_window.h imageio/row_writer.h
 PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h $(IMAGEIO_PUBLIC))))
 
 .PHONY: install install-aliases uninstall public-headers embedded
