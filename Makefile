@@ -49,7 +49,7 @@ TIFF_STATIC_LIBS = $(shell pkg-config --static --libs libtiff-4 2>/dev/null || e
 MPL_DEM   := /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
-.PHONY: all deps test unit run bench eval fuzz asan clean help docs-images regenerate codec-bench
+.PHONY: all deps test unit run bench eval fuzz fuzz-campaign asan tsan clean help docs-images regenerate codec-bench
 all: $(BUILD)/erd
 
 help:
@@ -59,15 +59,21 @@ help:
 	@echo "                ends 'N passed, M failed'"
 	@echo "make unit       the unit tests only (ERD_BIN, ERD_IMAGES from the environment override)"
 	@echo "make asan       the ASan+UBSan build in build-asan/ (clang++)"
+	@echo "make tsan       the library and the thread tests (tests/test_row_parallel.cpp) under ThreadSanitizer:"
+	@echo "                build-tsan/erd_tsan_tests (clang++; a stage of make test)"
 	@echo "make embedded   the library at -Os -fno-exceptions -fno-rtti and docs/examples/embedded.cpp"
 	@echo "make bench      speed and memory beside hmm (medians) -> docs/RESULTS.md"
 	@echo "make codec-bench  .erdz bpp at equal PSNR against JPEG, JPEG 2000, WebP (installs them) -> out/codec/"
-	@echo "make eval       PSNR on the thesis images -> docs/RESULTS.md"
+	@echo "make eval       PSNR on the thesis images, colour images, drawings and graphics -> docs/RESULTS.md"
+	@echo "make graphics-deps  apt-get install what the graphics table needs (librsvg2-bin, fonts-dejavu-core, adwaita-icon-theme)"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
 	@echo "make regenerate rewrite the docs the tests generate (docs/HOSTILE.md, docs/hostile_images.md)"
 	@echo "make fuzz       every fuzz target for FUZZ_SECONDS (default 300)"
+	@echo "make fuzz-campaign  every fuzz target for FUZZ_SECONDS (default 3600) on a kept corpus, FUZZ_JOBS (default 2)"
+	@echo "                at a time; executions, corpus, findings, new seeds into fuzz/corpus (fuzz/campaign.sh)"
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
+	@echo "make web-shots  the browser test (tests/web_test.sh), keeping its screenshots -> docs/img/web-1280.png, web-390.png"
 	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data when missing"
 	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
@@ -77,7 +83,7 @@ help:
 	@echo "make install-aliases  also the thesis's program names (ywb gpi erd_ed ...) as links to erd"
 	@echo "make uninstall  remove what install and install-aliases put there"
 	@echo "make public-headers  list the headers make install installs"
-	@echo "make clean      remove build, build-asan, build-fuzz, build-embedded, out, the Python build"
+	@echo "make clean      remove build, build-asan, build-tsan, build-fuzz, build-embedded, out, the Python build"
 	@echo "make clean-embedded  remove build-embedded only"
 	@echo "make help       this list"
 
@@ -129,7 +135,7 @@ $(BUILD)/%.o: %.cpp
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
 # `make test` = tests/run_all.sh: unit tests, ASan+UBSan unit tests, fuzz smoke; one summary line.
-test: deps
+test: deps graphics-deps
 	@bash tests/run_all.sh
 
 # ERD_BIN and ERD_IMAGES given in the environment win (`ERD_BIN=/nonexistent make unit` fails:
@@ -155,6 +161,20 @@ asan:
 	  DEBUG=-gline-tables-only TEST_DEBUG=-gline-tables-only \
 	  LDFLAGS="-fsanitize=address,undefined" ERD_LINK= $(ASAN_GOALS)
 
+# ThreadSanitizer over the -j paths (issue 49): the thread-equality tests (TSAN_TESTS: every
+# stage at 1, 2 and 3 threads, two API calls on two threads) in build-tsan/, one small test binary
+# over the library objects they need: all but codec/ and output/, which no method includes (the
+# layer rule), 48 of 62. Catch2's main is the sanitizer build's when there is one (built alike:
+# clang, -O1, no instrumentation). make test runs it (tests/run_all.sh).
+TSAN_TESTS := tests/test_row_parallel.cpp
+TSAN_LIB_OBJ = $(patsubst %.cpp,$(BUILD)/%.o,$(filter-out algorithms/codec/% algorithms/output/%,$(LIB_SRC)))
+TSAN_CATCH_MAIN = $(or $(wildcard build-asan/third_party/catch_main.o),$(BUILD)/third_party/catch_main.o)
+tsan:
+	$(MAKE) BUILD=build-tsan CXX=clang++ WARN="-Wall -Wextra" OPT="-O1 -fsanitize=thread" \
+	  DEBUG=-gline-tables-only TEST_DEBUG=-gline-tables-only LDFLAGS="-fsanitize=thread" build-tsan/erd_tsan_tests
+$(BUILD)/erd_tsan_tests: $(TSAN_CATCH_MAIN) $(TSAN_TESTS:%.cpp=$(BUILD)/%.o) $(TSAN_LIB_OBJ)
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lpthread
+
 run: $(BUILD)/erd
 	@bash tools/run.sh $(BUILD)/erd $(IMAGES)
 
@@ -164,8 +184,19 @@ bench: $(BUILD)/erd
 codec-bench: $(BUILD)/erd
 	@ERD=$(BUILD)/erd IMAGES=$(IMAGES) bash bench/codec.sh out/codec
 
-eval: $(BUILD)/erd
+eval: $(BUILD)/erd graphics-deps
 	@bash tools/eval.sh $(BUILD)/erd $(IMAGES)
+
+# The graphics test set (issue 44, tools/graphics_svg.py, tools/eval_graphics.sh): our SVGs rendered
+# by rsvg-convert, text in DejaVu fonts, icons of Debian's Adwaita theme (its scalable SVGs).
+GRAPHICS_DEBS := librsvg2-bin fonts-dejavu-core adwaita-icon-theme
+GRAPHICS_FILES := /usr/bin/rsvg-convert /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf /usr/share/icons/Adwaita/scalable/places/user-home-symbolic.svg
+.PHONY: graphics-deps
+graphics-deps:
+	@for f in $(GRAPHICS_FILES); do [ -e $$f ] || missing=1; done; [ -z "$$missing" ] || { \
+	  echo "installing Debian packages $(GRAPHICS_DEBS)" >&2; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(GRAPHICS_DEBS) >/dev/null 2>&1 || \
+	  { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(GRAPHICS_DEBS) >/dev/null; }; }
 
 docs-images: $(BUILD)/erd
 	@bash tools/docs_images.sh $(BUILD)/erd $(IMAGES) docs/img
@@ -173,8 +204,15 @@ docs-images: $(BUILD)/erd
 fuzz: deps
 	@bash fuzz/run.sh $(FUZZ_SECONDS)
 
+# The campaign (fuzz/campaign.sh): an hour a target unless FUZZ_SECONDS is given; the kept corpus
+# lives outside the checkout (FUZZ_CORPUS, default ~/.cache/erd-fuzz).
+FUZZ_JOBS ?= 2
+CAMPAIGN_SECONDS := $(if $(filter command line environment,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),3600)
+fuzz-campaign: deps
+	@bash fuzz/campaign.sh -j $(FUZZ_JOBS) $(CAMPAIGN_SECONDS) $(FUZZ_TARGETS)
+
 clean:
-	rm -rf build build-asan build-fuzz out python/build python/erd.egg-info python/erd/_erd*.so
+	rm -rf build build-asan build-tsan build-fuzz out python/build python/erd.egg-info python/erd/_erd*.so
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
@@ -294,8 +332,8 @@ python-venv-check: python
 # erd in a web page (web/): erd compiled to WebAssembly with Debian's emscripten (installed with
 # apt when missing), served on 127.0.0.1 by `make serve`.
 WEB_PORT ?= 8000
-WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_mesh_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels
-.PHONY: web serve
+WEB_EXPORTS := _malloc,_free,_erd_mesh,_erd_files,_erd_error,_erd_model_text,_erd_vector_svg,_erd_timings,_erd_reconstruction,_erd_psnr,_erd_vertices,_erd_channels,_erd_builtin,_erd_mesh_vertices,_erd_mesh_faces,_erd_faces,_erd_mesh_constraints,_erd_constraints,_erd_edge_kinds
+.PHONY: web serve web-shots
 web: web/build/erd.js
 /usr/bin/em++:
 	@echo "installing Debian package emscripten" >&2
@@ -314,6 +352,8 @@ web/build/erd.js: /usr/bin/em++ $(WEB_OBJ)
 	NODE_PATH=/usr/share/nodejs em++ -O2 $(WEB_OBJ) -o $@ \
 	  -sMODULARIZE=1 -sEXPORT_NAME=createErd -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=worker \
 	  -sEXPORTED_FUNCTIONS=$(WEB_EXPORTS) -sEXPORTED_RUNTIME_METHODS=ccall,UTF8ToString
+web-shots: $(BUILD)/erd
+	@bash tests/web_test.sh $(IMAGES) docs/img
 serve: web
 	@echo "erd in the browser: http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
 	python3 -m http.server $(WEB_PORT) --bind 127.0.0.1 --directory web

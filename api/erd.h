@@ -141,7 +141,10 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
 // Rasterises a model into *out (model's width, height, maxval and channels): point evaluation at every
 // pixel (the thesis's imgsyn), or with `supersample` the mean of 4x4 sub-samples per pixel
 // (imgsyn_aa). Values rounded to the nearest integer and clamped to [0, maxval]. A model's own
-// reconstruction is supersample = supersampled(model): soft-edged ERD models only (model.h).
+// reconstruction is supersample = supersampled(model): soft-edged ERD models only (model.h). The
+// pixels along the edges a model lists in kind_exceptions (edges of the other kind than its own;
+// algorithms/model/edge_kinds.h) are evaluated as that kind says whatever `supersample` is; clear
+// the list for one evaluation at every pixel.
 // threads: the faces or row bands on that many threads (0 = the machine's processors), the same
 // image for every count (as Options::generate.threads, 1 by default).
 Status reconstruct(const Model& model, bool supersample, Image* out, int threads = 1);

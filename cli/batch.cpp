@@ -221,6 +221,9 @@ int run_batch(const std::vector<BatchItem>& items, int jobs, const BatchJob& job
     }
     if (!summary.empty()) outs.push_back(summary);
     if (Status st = Outputs::clashes(outs, inputs); !st) return rep.fail(st);
+    // Every output's folder too, so a batch into a missing folder stops here, not after the work
+    // of each file (the summary's is checked below).
+    if (Status st = Outputs::folders(outs); !st) return rep.fail(st);
     Outputs outputs;
     if (!summary.empty())
         if (Status st = outputs.check({summary}, inputs); !st) return rep.fail(st);

@@ -1,9 +1,11 @@
-// erd info FILE [--json]: what an image file holds, as erd reads it; for an .erdz model, its
-// header and the size of each section.
+// erd info FILE [--json]: what an image file holds, as erd reads it; for a model (.model, .erd,
+// .erdz, .tri), what it holds and what its file costs, and for an .erdz the size of each section.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/imaging/georef.h"
@@ -14,6 +16,7 @@
 #include "cli/image_io.h"
 #include "cli/json.h"
 #include "cli/model_file.h"
+#include "algorithms/model/edge_kinds.h"
 
 namespace erd::cli {
 
@@ -35,61 +38,103 @@ static const char* format_key(ImageFormat f) {
 
 const CommandLine kInfo = {
     "info",
-    "erd info IMAGE|MODEL.erdz [--json]",
+    "erd info IMAGE|MODEL [--json]",
     "Prints the size, channels, maxval, bits per sample, format and sample range of a PGM\n"
     "(P2, P5), PPM (P3, P6), PAM (P7), PNG, JPEG, TIFF or PFM file (\"-\" reads stdin). The format is\n"
     "recognised from the content, not the name; a colour file whose channels are all equal is gray.\n"
     "A TIFF or PFM also shows its sample type, the range of its valid samples, its nodata value and\n"
     "count, and its georeferencing (GeoTIFF).\n"
-    "For an .erdz model (by name, or a file that starts with its magic): the header, the\n"
-    "size of each section in bits and the bits per pixel.",
+    "For a model (.model, .erd, .erdz, or a -t triangulation .tri; by name or content): its kind,\n"
+    "size, vertices, faces, constrained edges and their kinds, channels, the file's size and bits\n"
+    "per pixel; for an .erdz also the size of each section.",
     {
         {0, "json", nullptr, "one JSON object on stdout"},
     },
-    "no warnings", 1, 1, "expected one IMAGE",
+    "no warnings", 1, 1, "expected one IMAGE or MODEL",
 };
 
-// A file named .erdz, or a regular file that starts with the magic.
-static bool erdz_file(const std::string& path) {
-    if (erdz_name(path)) return true;
+// What a model file is, by its name or its first bytes: an .erdz (its magic), a text model
+// (.model, .erd, .tri; or content that starts with a number or "erd-", which no image does), or
+// not a model. Standard input is read as an image.
+static bool model_file(const std::string& path) {
+    if (erdz_name(path) || model_kind_from_name(path) != ModelFileKind::unknown) return true;
     if (path == "-") return false;
     FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) return false;
-    char magic[4] = {0, 0, 0, 0};
-    const bool four = std::fread(magic, 1, 4, f) == 4;
+    char head[64] = {0};
+    const std::size_t n = std::fread(head, 1, sizeof head, f);
     std::fclose(f);
-    return four && is_erdz(std::string(magic, 4));
+    const std::string start(head, n);
+    if (n >= 4 && is_erdz(start.substr(0, 4))) return true;
+    const std::size_t i = start.find_first_not_of(" \t\r\n");
+    return i != std::string::npos && ((start[i] >= '0' && start[i] <= '9') || start.compare(i, 4, "erd-") == 0);
 }
 
-static int erdz_info(const std::string& path, const Args& args, const Reporter& rep) {
-    Model m;
-    ErdzInfo info;
-    std::string warning;
-    Status st = load_model_file(path, &m, &warning, nullptr, &info);
-    if (!st) return rep.fail(st);
-    if (info.version == 0) return rep.fail(Status::bad_input(escape_name(path) + ": not an .erdz file"));
+// The kind of m's constrained edge i: Model::edges, or the other kind for an edge of
+// Model::kind_exceptions (algorithms/model/edge_kinds.h); every count below goes through here.
+static EdgeKind edge_kind(const Model& m, std::size_t i) {
+    const auto& c = m.constraints[i];
+    const std::array<std::uint32_t, 2> e{std::min(c[0], c[1]), std::max(c[0], c[1])};
+    return std::binary_search(m.kind_exceptions.begin(), m.kind_exceptions.end(), e) ? exception_kind(m) : m.edges;
+}
+
+static const char* edge_kind_name(EdgeKind k) { return k == EdgeKind::hard ? "hard" : "soft"; }
+
+// How many of m's constrained edges are of each kind, the kinds present only, soft first.
+static std::vector<std::pair<EdgeKind, std::size_t>> edge_kinds(const Model& m) {
+    std::size_t n[2] = {0, 0};
+    for (std::size_t i = 0; i < m.constraints.size(); ++i) ++n[edge_kind(m, i) == EdgeKind::hard ? 1 : 0];
+    std::vector<std::pair<EdgeKind, std::size_t>> out;
+    if (n[0]) out.push_back({EdgeKind::soft, n[0]});
+    if (n[1]) out.push_back({EdgeKind::hard, n[1]});
+    return out;
+}
+
+// "427 constrained edges (427 hard)"; a triangulation stores no kinds.
+static std::string constraints_text(const Model& m, bool triangulation) {
+    std::string s = std::to_string(m.constraints.size()) + " constrained edge" + (m.constraints.size() == 1 ? "" : "s");
+    if (triangulation && !m.constraints.empty()) return s + " (a triangulation stores no edge kinds)";
+    std::string kinds;
+    for (const auto& [k, n] : edge_kinds(m)) kinds += (kinds.empty() ? "" : ", ") + std::to_string(n) + " " + edge_kind_name(k);
+    return kinds.empty() ? s : s + " (" + kinds + ")";
+}
+
+// {"soft":n,"hard":m}: the kinds present.
+static JsonObject edge_kinds_json(const Model& m) {
+    JsonObject j;
+    for (const auto& [k, n] : edge_kinds(m)) j.integer(edge_kind_name(k), std::int64_t(n));
+    return j;
+}
+
+// "erd (hard edges)", "erd" or "basic".
+static const char* kind_text(const Model& m) {
+    return m.kind == ModelKind::erd ? (m.edges == EdgeKind::hard ? "erd (hard edges)" : "erd") : "basic";
+}
+
+static int erdz_info(const std::string& path, const Model& m, const ErdzInfo& info, const ModelFileFacts& file,
+                     const Args& args) {
     const double px = double(m.width) * double(m.height);
     const auto bpp = [&](std::size_t bits) { return double(bits) / px; };
-    const char* kind = m.kind == ModelKind::erd ? (m.edges == EdgeKind::hard ? "erd (hard edges)" : "erd") : "basic";
     if (args.has("json")) {
         JsonObject j;
         j.str("file", path).str("format", "erdz").integer("version", info.version).str("kind", m.kind == ModelKind::erd ? "erd" : "basic");
-        j.str("edges", m.edges == EdgeKind::hard ? "hard" : "soft").str("method", info.method);
+        j.str("edges", edge_kind_name(m.edges)).str("method", info.method);
         j.integer("width", m.width).integer("height", m.height).integer("maxval", m.maxval).integer("channels", m.channels);
         j.num("step", info.step).integer("vertices", std::int64_t(m.vertices.size())).integer("faces", std::int64_t(m.faces.size()));
-        j.integer("constraints", std::int64_t(m.constraints.size()));
+        j.integer("constraints", std::int64_t(m.constraints.size())).object("edge_kinds", edge_kinds_json(m));
         j.integer("header_bits", std::int64_t(info.header_bits)).integer("position_bits", std::int64_t(info.position_bits));
+        j.integer("kind_bits", std::int64_t(info.kind_bits));
         j.integer("edge_bits", std::int64_t(info.edge_bits)).integer("flip_bits", std::int64_t(info.flip_bits));
         j.integer("value_bits", std::int64_t(info.value_bits)).integer("flips", std::int64_t(info.flips));
-        j.integer("total_bits", std::int64_t(info.total_bits)).num("bpp", bpp(info.total_bits));
+        j.integer("total_bits", std::int64_t(info.total_bits)).integer("bytes", std::int64_t(file.bytes)).num("bpp", bpp(info.total_bits));
         std::printf("%s\n", j.text().c_str());
         return 0;
     }
     std::printf("file:      %s\nformat:    erdz %d, %s model, method %s\nsize:      %d x %d (%.0f pixels), maxval %u, %d channel%s\n"
-                "mesh:      %zu vertices, %zu faces, %zu constrained edges\nstep:      %g (values within %g)\n",
-                escape_name(path).c_str(), info.version, kind, info.method.empty() ? "(none)" : info.method.c_str(), m.width,
+                "mesh:      %zu vertices, %zu faces, %s\nstep:      %g (values within %g)\n",
+                escape_name(path).c_str(), info.version, kind_text(m), info.method.empty() ? "(none)" : info.method.c_str(), m.width,
                 m.height, px, m.maxval, m.channels, m.channels == 1 ? "" : "s", m.vertices.size(), m.faces.size(),
-                m.constraints.size(), info.step, info.step / 2);
+                constraints_text(m, false).c_str(), info.step, info.step / 2);
     std::printf("header:    %9zu bits  %.5f bpp\n", info.header_bits, bpp(info.header_bits));
     std::printf("positions: %9zu bits  %.5f bpp  (%zu free points on the %s lattice)\n", info.position_bits,
                 bpp(info.position_bits), info.free_points, info.full_lattice ? "half-pixel" : "pixel");
@@ -97,6 +142,9 @@ static int erdz_info(const std::string& path, const Args& args, const Reporter& 
                 info.chain_steps);
     std::printf("flips:     %9zu bits  %.5f bpp  (%zu edges flipped)\n", info.flip_bits, bpp(info.flip_bits), info.flips);
     std::printf("values:    %9zu bits  %.5f bpp  (%zu values)\n", info.value_bits, bpp(info.value_bits), info.coded_values);
+    if (info.version >= 4)
+        std::printf("kinds:     %9zu bits  %.5f bpp  (%zu %s edges)\n", info.kind_bits, bpp(info.kind_bits), info.other_kind_edges,
+                    edge_kind_name(exception_kind(m)));
     std::printf("total:     %9zu bits  %.5f bpp  (%zu bytes)\n", info.total_bits, bpp(info.total_bits), info.total_bits / 8);
     return 0;
 }
@@ -156,9 +204,63 @@ static int raster_info(const std::string& path, const Image& im, ImageFormat fmt
     return 0;
 }
 
+// A text model (.model, .erd) or triangulation (.tri): what it holds and what its file costs.
+static int text_model_info(const std::string& path, const Model& m, const ModelFileFacts& file, const Args& args) {
+    const bool tri = file.kind == ModelFileKind::triangulation;
+    const double px = double(m.width) * double(m.height);
+    const double bpp = 8.0 * double(file.bytes) / px;
+    const char* ext = tri ? "tri" : file.kind == ModelFileKind::erd ? "erd" : "model";
+    if (args.has("json")) {
+        JsonObject j;
+        j.str("file", path).str("format", ext).str("kind", tri ? "triangulation" : m.kind == ModelKind::erd ? "erd" : "basic");
+        if (tri || m.kind != ModelKind::erd) j.null("edges");
+        else j.str("edges", edge_kind_name(m.edges));
+        j.integer("width", m.width).integer("height", m.height);
+        if (tri) j.null("maxval").null("channels");
+        else j.integer("maxval", m.maxval).integer("channels", m.channels);
+        j.integer("vertices", std::int64_t(m.vertices.size())).integer("faces", std::int64_t(m.faces.size()));
+        j.integer("constraints", std::int64_t(m.constraints.size()));
+        if (tri) j.null("edge_kinds");
+        else j.object("edge_kinds", edge_kinds_json(m));
+        if (m.real || m.holes || !m.meta.geo.empty()) {  // a raster's model: its type, range, holes, georeferencing
+            j.str("type", sample_type_name(m.meta.type)).boolean("real", m.real);
+            if (m.real) j.raw("range", "[" + format_value(m.lo) + "," + format_value(m.hi) + "]");
+            j.boolean("holes", m.holes).boolean("georeferenced", !m.meta.geo.empty());
+        }
+        j.integer("bytes", std::int64_t(file.bytes)).num("bpp", bpp);
+        std::printf("%s\n", j.text().c_str());
+        return 0;
+    }
+    std::printf("file:      %s\n", escape_name(path).c_str());
+    if (tri) {
+        std::printf("format:    .tri text, triangulation (no values: erd render draws it, nothing reconstructs it)\n"
+                    "size:      %d x %d (%.0f pixels)\n", m.width, m.height, px);
+    } else {
+        std::printf("format:    .%s text, %s model\nsize:      %d x %d (%.0f pixels), maxval %u, %d channel%s\n", ext, kind_text(m),
+                    m.width, m.height, px, m.maxval, m.channels, m.channels == 1 ? "" : "s");
+    }
+    std::printf("mesh:      %zu vertices, %zu faces, %s\n", m.vertices.size(), m.faces.size(), constraints_text(m, tri).c_str());
+    if (m.real) std::printf("values:    real (%s), range %.10g .. %.10g\n", sample_type_name(m.meta.type), m.lo, m.hi);
+    if (m.holes) std::printf("holes:     the faces over nodata are dropped (holes in the mesh)\n");
+    if (!m.meta.geo.empty()) std::printf("georef:    %s\n", describe_georef(m.meta.geo).c_str());
+    std::printf("file size: %zu bytes, %.5f bpp\n", file.bytes, bpp);
+    return 0;
+}
+
+static int model_info(const std::string& path, const Args& args, const Reporter& rep) {
+    Model m;
+    ErdzInfo info;
+    ModelFileFacts file;
+    std::string warning;
+    Status st = load_model_file(path, &m, &warning, nullptr, &info, &file);
+    if (!st) return rep.fail(st);
+    rep.warn(warning);
+    return file.erdz ? erdz_info(path, m, info, file, args) : text_model_info(path, m, file, args);
+}
+
 static int run_info(const Args& args, const Reporter& rep) {
     const std::string path = args.positional()[0];
-    if (erdz_file(path)) return erdz_info(path, args, rep);
+    if (model_file(path)) return model_info(path, args, rep);
 
     Image im;
     ImageFormat fmt = ImageFormat::unknown;

@@ -21,8 +21,9 @@ const CommandLine kReconstruct = {
     "erd reconstruct [MODEL...] [-o OUT] [--no-aa] [--plain] [-j JOBS] [--summary FILE]",
     "Rasterises a mesh model back into an image. MODEL is a .model (basic model: point\n"
     "evaluation at every pixel, the thesis's imgsyn) or an .erd (ERD model: 4x4 supersampling,\n"
-    "imgsyn_aa, unless --no-aa or the file says \"edges hard\": then point evaluation); read from stdin when omitted or \"-\" (the kind is then told\n"
-    "from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
+    "imgsyn_aa, unless --no-aa or the file says \"edges hard\": then point evaluation; the pixels\n"
+    "along edges a file lists as \"hard-edges\" or \"soft-edges\" as that kind says); read from\n"
+    "stdin when omitted or \"-\" (the kind is then told from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
     "over the vertices), and its channels: a colour model (header \"channels 3\") gives an RGB image.\n"
     "A model of a real-valued raster (header \"range\") is point-evaluated, each pixel on the face\n"
     "that owns it, and written in its own sample type as TIFF (.tif, georeferenced as its raster,\n"
@@ -31,7 +32,7 @@ const CommandLine kReconstruct = {
     "model's name without its extension (erd reconstruct out/ -o rec/{name}.png -j 4).",
     {
         {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), .tif TIFF, .pfm PFM, else PGM (PPM for colour)"},
-        {0, "no-aa", nullptr, "point evaluation at the pixels also for a soft-edged .erd (default there: 4x4 supersampling)"},
+        {0, "no-aa", nullptr, "point evaluation at every pixel also for a soft-edged .erd or soft edges (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2; P3 for colour), as the thesis's imgsyn did"},
         kProgressOption,
         {'j', "jobs", "N", "one model: N threads (default and 0: one per processor); many: N models at a time (default 1)"},
@@ -47,6 +48,7 @@ static int reconstruct_one(const Args& args, const Reporter& rep, const std::str
     Status st = load_input_model(out, {in}, rep, &model, &topo);
     if (!st) return rep.fail(st);
     const bool supersample = supersampled(model) && !args.has("no-aa");
+    if (args.has("no-aa")) model.kind_exceptions.clear();  // no edge of any kind supersampled
     Image im;
     Progress progress("reconstruct", !record && Progress::should_show(args.has("progress"), rep.quiet()), args.has("progress"));
     st = reconstruct(model, topo, supersample, &im, progress.hook(), threads);

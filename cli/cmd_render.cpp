@@ -159,8 +159,8 @@ static int run_render(const Args& args, const Reporter& rep) {
         const std::string path = args.has("over") ? args.str("over") : args.str("error");
         Image im;
         // --over draws a colour image in colour; --error compares it with the reconstruction's
-        // values, which error_map does in one channel.
-        st = read_input_image(path, args.has("error") ? ColourInput::luma_warn : ColourInput::keep, rep, &im);
+        // values, channel by channel for a colour model (error_map shows the worst), else in gray.
+        st = read_input_image(path, args.has("error") && m.channels == 1 ? ColourInput::luma_warn : ColourInput::keep, rep, &im);
         if (!st) return rep.fail(st);
         if (im.width != m.width || im.height != m.height)
             return rep.fail(Status::bad_input(path + ": image is " + std::to_string(im.width) + "x" + std::to_string(im.height) +

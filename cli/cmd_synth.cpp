@@ -18,6 +18,7 @@
 #include "imageio/row_writer.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/fileio.h"
 #include "cli/image_io.h"
 
 namespace erd::cli {
@@ -163,11 +164,13 @@ static int run_synth(const Args& args, const Reporter& rep) {
     if (kind == "dem") return synth_dem(args, rep, p.width, p.height, p.seed);
     if (args.has("type") || args.has("solid")) return rep.usage("--type and --solid are for --kind dem");
 
+    // The output checked before the image is made (its folder, a read-only file, a folder named).
+    const std::string out = args.str("output");
+    if (!(st = refuse_overwrite(out, {}))) return rep.fail(st);
     Image im;
     if (!(st = kind == "mixed" ? synth(p, &im) : draw_picture(dp, &im))) return rep.fail(st);
     WriteOptions wo;
     wo.plain = args.has("plain");
-    const std::string out = args.str("output");
     if (!(st = write_image(out, im, wo))) return rep.fail(st);
     if (out != "-") rep.note("wrote " + out + " (" + std::to_string(p.width) + " x " + std::to_string(p.height) + ", maxval " +
                              std::to_string(im.maxval) + ")");

@@ -37,7 +37,7 @@ struct ImageFrame {
         const std::size_t n = so_far.size();
         *total = UINT64_MAX;
         if (n >= 1 && d[0] == 0x89) return png(d, n, total);
-        if (n >= 3 && d[0] == 0xff && d[1] == 0xd8 && d[2] == 0xff) return Status::success();  // JPEG: to the end
+        if (n >= 3 && d[0] == 0xff && d[1] == 0xd8 && d[2] == 0xff) return jpeg(d, n, total);
         if (n >= 2 && d[0] == 'P' && d[1] == '7') return pam(d, n, total);
         // TIFF: its directories may lie anywhere in it, so to the end (as JPEG).
         if (n >= 2 && ((d[0] == 'I' && d[1] == 'I') || (d[0] == 'M' && d[1] == 'M'))) return Status::success();
@@ -120,6 +120,51 @@ struct ImageFrame {
         return Status::success();
     }
 
+    // JPEG: the segments (each with its length) up to the first scan, then the entropy-coded data,
+    // where an FF byte is followed by 00 (a stuffed FF), a restart marker, another FF (fill) or a
+    // marker: the end of image (FF D9), or a segment between the scans of a progressive file
+    // (tables, the next scan's header) skipped by its length. Anything else (a header that is not
+    // a chain of segments, a length below 2) leaves the stream to be read to its end, as before,
+    // for the decoder to name the problem.
+    bool jpeg_scan = false, jpeg_to_end = false;
+    Status jpeg(const unsigned char* d, std::size_t n, std::uint64_t* total) {
+        if (jpeg_to_end) return Status::success();
+        if (pos < 2) pos = 2;
+        const auto length = [&](std::size_t k) { return std::size_t(d[k + 2]) << 8 | d[k + 3]; };
+        while (!jpeg_scan && pos < n) {
+            if (d[pos] != 0xff) return jpeg_end();
+            if (pos + 1 >= n) return Status::success();
+            const unsigned m = d[pos + 1];
+            if (m == 0xff) { ++pos; continue; }                        // fill byte
+            if ((m >= 0xd0 && m <= 0xd7) || m == 0x01) { pos += 2; continue; }  // no length
+            if (m == 0xd8 || m == 0xd9 || m == 0x00) return jpeg_end();
+            if (pos + 4 > n) return Status::success();
+            if (length(pos) < 2) return jpeg_end();
+            pos += 2 + length(pos);
+            jpeg_scan = m == 0xda;
+        }
+        while (jpeg_scan && pos < n) {
+            if (d[pos] != 0xff) { ++pos; continue; }
+            if (pos + 1 >= n) return Status::success();
+            const unsigned m = d[pos + 1];
+            if (m == 0xff) { ++pos; continue; }
+            if (m == 0x00 || (m >= 0xd0 && m <= 0xd7) || m == 0x01) { pos += 2; continue; }
+            if (m == 0xd9) {
+                *total = pos + 2;
+                return Status::success();
+            }
+            if (m == 0xd8) return jpeg_end();
+            if (pos + 4 > n) return Status::success();
+            if (length(pos) < 2) return jpeg_end();
+            pos += 2 + length(pos);
+        }
+        return Status::success();
+    }
+    Status jpeg_end() {
+        jpeg_to_end = true;
+        return Status::success();
+    }
+
     // PNG: chunk after chunk up to IEND.
     Status png(const unsigned char* d, std::size_t n, std::uint64_t* total) {
         if (n < 8) return Status::success();
@@ -151,29 +196,33 @@ struct ImageFrame {
 Framer image_framer(const ImageLimits& limits) {
     auto frame = std::make_shared<ImageFrame>();
     frame->limits = limits;
-    return [frame](const std::string& so_far, std::uint64_t* total) { return (*frame)(so_far, total); };
+    return [frame](const std::string& so_far, bool, std::uint64_t* total) { return (*frame)(so_far, total); };
 }
 
 namespace {
 
-// Text read from a stream, checked at 4 KiB, 16 KiB, 64 KiB, ...: the text so far (cut after its
-// last whitespace, so no token is split) is parsed, and a definite error stops the reading; an
-// error that only says the text ends early does not. The parses cost at most 4/3 of one parse of
-// the whole. With `erdz`, an .erdz stream is framed by its header instead.
+// Text stops at a NUL byte (text has none: a zero-filled or sparse tail is not read). Text from a
+// stream is also checked at 4 KiB, 16 KiB, 64 KiB, ...: the text so far (cut after its last
+// whitespace, so no token is split) is parsed, and a definite error stops the reading; an error
+// that only says the text ends early does not. The parses cost at most 4/3 of one parse of the
+// whole, which a regular file, whose end is known, does not pay. With `erdz`, an .erdz file or
+// stream is framed by its header instead.
 Framer text_framer(std::function<Status(const std::string&)> parse, bool erdz) {
     auto next = std::make_shared<std::size_t>(4096);
-    return [next, parse, erdz](const std::string& so_far, std::uint64_t* total) {
+    auto nul_from = std::make_shared<std::size_t>(0);
+    return [next, nul_from, parse, erdz](const std::string& so_far, bool stream, std::uint64_t* total) {
         *total = UINT64_MAX;
         if (erdz && so_far.size() >= 4 && is_erdz(so_far)) {  // binary: its header gives the size
             const std::uint64_t n = erdz_stream_size(so_far);
             if (n != 0) *total = n;
             return Status::success();
         }
-        if (std::memchr(so_far.data(), 0, so_far.size())) {
+        if (std::memchr(so_far.data() + *nul_from, 0, so_far.size() - *nul_from)) {
             *total = so_far.size();  // text has no NUL: the parser names the line
             return Status::success();
         }
-        if (so_far.size() < *next) return Status::success();
+        *nul_from = so_far.size();
+        if (!stream || so_far.size() < *next) return Status::success();
         *next = so_far.size() * 4;
         std::size_t cut = so_far.size();
         while (cut > 0 && !space(static_cast<unsigned char>(so_far[cut - 1]))) --cut;

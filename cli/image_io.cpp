@@ -1,5 +1,6 @@
 #include "cli/image_io.h"
 
+#include <cstdint>
 #include <cstdio>
 
 #include "algorithms/imaging/luma.h"
@@ -46,13 +47,17 @@ Status read_image(const std::string& path, Image* out, std::string* warning, Ima
     }
     std::string bytes;
     bool more = false;
-    Status s = read_file(path, &bytes, kMaxInputBytes, image_framer(limits), &more);
+    std::uint64_t unread = 0;
+    Status s = read_file(path, &bytes, kMaxInputBytes, image_framer(limits), &more, &unread);
     if (!s) return s;
     const std::string name = escape_name(path == "-" ? "stdin" : path);
     std::string w;
     s = decode_image(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), out, &w, format, limits);
     if (!s) return Status::bad_input(name + ": " + s.message);
     if (more) w += std::string(w.empty() ? "" : "\n") + "ignored the data after the image (a stream is read as far as its header says)";
+    if (unread)  // a file whose image ends long before it does: what follows was never read
+        w += std::string(w.empty() ? "" : "\n") + "ignored " + std::to_string(unread) +
+             " bytes after the image (only the first image of a file is read)";
     if (warning && !w.empty()) {
         // Prefix every line with the file name.
         std::string::size_type i = 0;

@@ -29,7 +29,7 @@ static const Command kCommands[] = {
     {"render", "draw a mesh as SVG or PNG", cmd_render},
     {"export", "write a mesh as OBJ or PLY", cmd_export},
     {"convert", "rewrite a model as .model/.erd text or .erdz binary", cmd_convert},
-    {"info", "size, maxval and bits per sample of an image; sections of an .erdz", cmd_info},
+    {"info", "what an image or a model file holds (size, channels, vertices, bits per pixel)", cmd_info},
     {"synth", "write a deterministic test image", cmd_synth},
     {"help", "list subcommands, or show one's help", cmd_help},
 };
@@ -45,6 +45,11 @@ static void list_commands(FILE* out) {
     for (const auto& c : kCommands) std::fprintf(out, "  %-12s %s\n", c.name, c.summary);
     std::fprintf(out, "\nExit status: 0 success, 1 runtime failure, 2 usage or input error,\n"
                       "3 target sampling density not achieved exactly (-x 0).\n");
+    // The three commands most people need, last, where the eye lands.
+    std::fprintf(out, "\nExamples:\n"
+                      "  erd generate -m erdgpi -i photo.png -d 1 -o photo.erd   mesh with 1%% of the pixels as vertices\n"
+                      "  erd reconstruct photo.erd -o approx.png                 the image the mesh stands for\n"
+                      "  erd psnr photo.png approx.png                           how close it is, in dB\n");
 }
 
 static int cmd_help(int argc, char** argv) {

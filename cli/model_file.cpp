@@ -1,5 +1,7 @@
 #include "cli/model_file.h"
 
+#include <cstdint>
+
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model_io.h"
 #include "cli/fileio.h"
@@ -29,14 +31,24 @@ bool is_triangulation(const std::string& text) {
 
 }  // namespace
 
-Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo, ErdzInfo* info) {
+Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo, ErdzInfo* info,
+                       ModelFileFacts* file) {
     if (warning) warning->clear();
     std::string text;
     const ModelFileKind kind = model_kind_from_name(path);
-    Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation));
+    std::uint64_t unread = 0;
+    Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation), nullptr, &unread);
     if (!st) return st;
+    // An .erdz file read as far as its header says, and a long tail after it never read: the
+    // decoder's own refusal of bytes after the last section (a text file stops at a NUL, which
+    // its reader refuses itself).
+    if (unread && is_erdz(text))
+        return Status::bad_input(escape_name(path) + ": " + std::to_string(unread) + " bytes after the last section");
+    if (file) *file = ModelFileFacts{ModelFileKind::unknown, false, text.size()};
     if (is_erdz(text)) {
         if (!(st = decode_erdz_topology(text, out, topo, info))) return Status::error(st.code, escape_name(path) + ": " + st.message);
+        if (file) file->kind = out->kind == ModelKind::erd ? ModelFileKind::erd : ModelFileKind::basic;
+        if (file) file->erdz = true;
         return st;
     }
     if (info) *info = ErdzInfo();
@@ -58,6 +70,7 @@ Status load_model_file(const std::string& path, Model* out, std::string* warning
         st = named == ModelFileKind::triangulation ? read_triangulation(text, &again) : read_model(text, named, &again);
     }
     if (!st) return Status::error(st.code, escape_name(path) + ": " + st.message);
+    if (file) file->kind = found;
     if (warning && named != ModelFileKind::unknown && named != found)
         *warning = escape_name(path) + ": the content is a " + extension_of(found) + " file, not a " + extension_of(named) +
                    " as the name says; read as " + extension_of(found);

@@ -1,11 +1,13 @@
 // Reading a model file (.model, .erd, .erdz) from a path for the commands that draw or export one,
 // and the bytes of a model for the name it is written to.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model.h"
+#include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
 #include "cli/report.h"
 #include "kernel/status.h"
@@ -21,8 +23,14 @@ namespace erd::cli {
 // *topo (may be null) receives the model's adjacency for a .model or .erd (see read_model).
 // A file that starts with the .erdz magic is decoded as one (algorithms/codec/erdz.h) whatever its
 // name; *info (may be null) then receives its section sizes (zeros for a text model).
+// *file (may be null) receives what the file turned out to be and its size in bytes.
+struct ModelFileFacts {
+    ModelFileKind kind = ModelFileKind::unknown;  // basic, erd or triangulation (an .erdz: basic or erd)
+    bool erdz = false;
+    std::size_t bytes = 0;  // as read
+};
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr,
-                       ErdzInfo* info = nullptr);
+                       ErdzInfo* info = nullptr, ModelFileFacts* file = nullptr);
 
 // The model a subcommand draws, exports or reconstructs into `out`: refuses an `out` that is one
 // of `inputs` (refuse_overwrite, cli/fileio.h; the model's path first), reads inputs[0] with

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <ctime>
 #include <cstdint>
 
 namespace erd::cli {
@@ -63,9 +64,14 @@ bool roll_back(const std::vector<Move>& moves, std::size_t n) {
 // Moves every temporary onto its target, in order, all or nothing: with several moves, each old
 // file first gets a second name (a hard link), so a failure of a later move puts the earlier ones
 // back. Returns the errno of the first failure (after the roll-back), or 0; *failed = its index.
-int move_all(const std::vector<Move>& moves, std::size_t* failed) {
+int move_all(const std::vector<Move>& moves, std::size_t* failed, long pause_ms) {
     for (std::size_t k = 0; k < moves.size(); ++k) {
         const Move& m = moves[k];
+        if (pause_ms > 0) {
+            struct timespec t = {pause_ms / 1000, (pause_ms % 1000) * 1000000L};
+            while (::nanosleep(&t, &t) != 0 && errno == EINTR) {
+            }
+        }
         // No second name where the file system has none (EPERM, ENOTSUP, EMLINK): this old file
         // then cannot come back (docs/DECISIONS.md "Outputs").
         if (!m.backup.empty()) (void)::linkat(m.dirfd, m.base.c_str(), m.dirfd, m.backup.c_str(), 0);
@@ -82,24 +88,28 @@ int move_all(const std::vector<Move>& moves, std::size_t* failed) {
 
 }  // namespace
 
-int commit_moves(const std::vector<Move>& moves, std::size_t* failed) {
+int commit_moves(const std::vector<Move>& moves, std::size_t* failed, long pause_ms) {
     int err = 0;
-    // Only a move through a name needs the child (a new file is linked in by one system call).
-    bool through_name = false;
-    for (const Move& m : moves) through_name = through_name || m.replace || !m.named.empty();
+    // One new file is linked in by one system call; anything more needs the child.
+    bool child = moves.size() > 1;
+    for (const Move& m : moves) child = child || m.replace || !m.named.empty();
     int report[2] = {-1, -1};  // the child's failed index
-    if (through_name && ::pipe(report) != 0) through_name = false;
-    const pid_t pid = through_name ? ::fork() : -1;
+    if (child && ::pipe(report) != 0) child = false;
+    const pid_t pid = child ? ::fork() : -1;
     if (pid == 0) {
-        const int e = move_all(moves, failed);
+        // Out of erd's process group, so a kill of the group does not reach it either (both
+        // sides call setpgid: whichever runs first, the child is out before its first move).
+        ::setpgid(0, 0);
+        const int e = move_all(moves, failed, pause_ms);
         const std::uint32_t index = std::uint32_t(*failed);
         if (e && ::write(report[1], &index, sizeof index) != ssize_t(sizeof index)) {
         }
         ::_exit(e);
     }
+    if (pid > 0) ::setpgid(pid, pid);
     if (report[1] >= 0) ::close(report[1]);
     if (pid < 0) {
-        err = move_all(moves, failed);
+        err = move_all(moves, failed, pause_ms);
     } else {
         int status = 0;
         while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {

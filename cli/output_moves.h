@@ -20,10 +20,16 @@ struct Move {
     bool replace = false;
 };
 
-// Moves every temporary onto its target, in order (in a child process when any move goes through
-// a name: a new file is linked in by one system call), all or nothing. Returns the errno of the
-// first failure, with the moves before it undone, or 0; *failed = its index. The caller holds the
-// handled signals (output_temporaries.h).
-int commit_moves(const std::vector<Move>& moves, std::size_t* failed);
+// Moves every temporary onto its target, in order, all or nothing: in a child process in a
+// process group of its own whenever there are several moves or one goes through a name (one new
+// file is linked in by one system call), so that a SIGKILL of erd, or of erd's process group
+// (`kill -9 %1`, timeout -s KILL), at any moment leaves every target old or every target new: the
+// child finishes. Only a kill of the child itself (a kill of every process, the OOM killer
+// choosing it) between two renames leaves some targets new and some old, each whole, and the old
+// files' second names (.erd-PID-N.tmp) beside them (docs/DECISIONS.md "Kill at any moment").
+// Returns the errno of the first failure, with the moves before it undone, or 0; *failed = its
+// index. The caller holds the handled signals (output_temporaries.h). pause_ms > 0 sleeps that
+// long before each move (the tests' ERD_TEST_COMMIT_PAUSE_MS, outputs.h).
+int commit_moves(const std::vector<Move>& moves, std::size_t* failed, long pause_ms = 0);
 
 }  // namespace erd::cli

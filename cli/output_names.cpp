@@ -78,6 +78,26 @@ Status refuse_read_only(const std::string& path, const std::string& target) {
     return Status::failure(escape_name(path) + ": " + std::strerror(EACCES) + " (a read-only file; erd does not replace it)");
 }
 
+Status check_output_folder(const std::string& path) {
+    std::string target;
+    if (path == "-" || !resolve_output(path, &target)) return Status::success();
+    struct stat st;
+    const bool exists = ::stat(target.c_str(), &st) == 0;
+    if (exists && !S_ISREG(st.st_mode)) return Status::success();
+    std::string dir, base;
+    split_path(target, &dir, &base);
+    if (base.empty()) return Status::failure(escape_name(path) + ": not a file name");
+    struct stat ds;
+    if (::stat(dir.c_str(), &ds) != 0) return Status::failure(os_error(path, errno));
+    if (!S_ISDIR(ds.st_mode)) return Status::failure(os_error(path, ENOTDIR));
+    if (::faccessat(AT_FDCWD, dir.c_str(), W_OK | X_OK, AT_EACCESS) != 0)
+        return Status::failure(os_error(path, errno) + " (erd cannot create files in " + escape_name(dir) + ")");
+    const uid_t me = ::geteuid();
+    if (exists && (ds.st_mode & S_ISVTX) && me != 0 && st.st_uid != me && ds.st_uid != me)
+        return Status::failure(os_error(path, EPERM) + " (another user's file in the sticky folder " + escape_name(dir) + ")");
+    return Status::success();
+}
+
 namespace {
 
 // What a name refers to, for the clash checks. Two names are one file that writing an output
@@ -185,6 +205,9 @@ Status check_output_names(const std::vector<std::string>& outputs, const std::ve
             return Status::bad_input(shown + ": the same file as the output " +
                                      (outputs[std::size_t(k)] == "-" ? std::string("stdout") : escape_name(outputs[std::size_t(k)])) +
                                      "; give each output its own file");
+        // Last: a clash (x/../in.pgm, x missing) is the better message than the missing folder.
+        if (whole && out != "-")
+            if (Status s = check_output_folder(out); !s) return s;
         outs.add(id, i);
     }
     return Status::success();

@@ -20,6 +20,13 @@ Status resolve_output(const std::string& path, std::string* target);
 // replaced either, although its folder would allow the rename: erd writes what `>` could write.
 Status refuse_read_only(const std::string& path, const std::string& target);
 
+// Whether the file an output name writes can be made: its folder exists, is a folder, and we may
+// create and rename files in it (write and search permission, a file system not mounted
+// read-only; in a sticky folder such as /tmp, an old file of another user cannot be replaced).
+// Asked with stat and access alone: nothing is created. "-" and an existing special file (a
+// device, a FIFO: written in place) pass; a name that does not resolve is left to resolve_output.
+Status check_output_folder(const std::string& path);
+
 // Outputs::check, and with whole = false only its clashes (Outputs::clashes).
 Status check_output_names(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, bool whole);
 

@@ -52,6 +52,12 @@ Status Outputs::clashes(const std::vector<std::string>& outputs, const std::vect
     return check_output_names(outputs, inputs, false);
 }
 
+Status Outputs::folders(const std::vector<std::string>& outputs) {
+    for (const std::string& out : outputs)
+        if (Status s = check_output_folder(out); !s) return s;
+    return Status::success();
+}
+
 Status Outputs::stage(const std::string& path, const std::string& bytes) {
     return stage_file(path, &bytes, nullptr);
 }
@@ -212,7 +218,11 @@ Status Outputs::commit() {
     add_handled_signals(&held);
     ::sigprocmask(SIG_BLOCK, &held, &old);
     std::size_t failed = 0;
-    const int err = commit_moves(moves, &failed);
+    // ERD_TEST_COMMIT_PAUSE_MS: the tests' hook that stretches the commit (a pause before each
+    // move) so that a kill lands inside it (tests/test_kill.cpp); unset, no pause.
+    const char* pause = std::getenv("ERD_TEST_COMMIT_PAUSE_MS");
+    const long pause_ms = pause ? std::strtol(pause, nullptr, 10) : 0;
+    const int err = commit_moves(moves, &failed, pause_ms > 0 && pause_ms <= 10000 ? pause_ms : 0);
     // Which targets are ours now: the ones whose inode is that of our temporary.
     std::string replaced;  // the targets that hold the new file after a failure
     for (Staged& s : staged_) {

@@ -24,6 +24,14 @@
 // target (linkat cannot replace), with the signals above held. The only names ever created are
 // the short ones above, so they fit NAME_MAX whatever the output name. ERD_NO_TMPFILE=1 in the
 // environment takes the named path everywhere (for the tests of it).
+//
+// Killed (SIGKILL, which no handler sees) at any moment: before commit() nothing is changed and
+// no name is left (the unnamed temporaries vanish with the process); from commit() on, the moves
+// run in a child out of erd's process group (output_moves.h), which finishes them: every regular
+// output is its old file or every one its complete new file. Only a kill of that child too (of
+// every process) between two of its renames leaves some new and some old, each file whole, and
+// the old files' second names. ERD_TEST_COMMIT_PAUSE_MS=N (tests only, 1..10000) pauses N ms
+// before each move so that a test's kill can land inside the commit (tests/test_kill.cpp).
 #pragma once
 #include <functional>
 #include <string>
@@ -43,9 +51,15 @@ public:
     // Refuses (Code::input) an output that is the same file as an input (device and inode, stdin
     // and stdout included; different spellings and hard links are the same file), two outputs
     // that are the same file, a second "-", an output that is a folder, a symbolic link to
-    // nothing, or a read-only file we could not write in place. Devices may repeat (/dev/null as
+    // nothing, a read-only file we could not write in place, or a name whose folder is missing or
+    // not writable for us (all before any work; nothing is created). Devices may repeat (/dev/null as
     // two outputs) and may be inputs too; a FIFO or pipe may not (stdout a pipe and /dev/stdout).
     Status check(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) const;
+
+    // Refuses (Code::runtime) an output whose file cannot be made: its folder missing, not a
+    // folder, or not writable for us (check_output_folder, cli/output_names.h). check() does this
+    // too; a batch asks it for every output of every file up front, before any work.
+    static Status folders(const std::vector<std::string>& outputs);
 
     // The clashes of check() alone (an output that is an input, two outputs one file), for every
     // file of a batch up front; a bad output name (a folder, a dangling link) is left to its job.

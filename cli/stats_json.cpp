@@ -44,6 +44,7 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
         s.simple = p.simple;
         s.hard_edges = rs.erd.hard_edges;
         s.dropped_constraints = rs.erd.dropped_crossing;
+        s.other_kind_edges = result.model.kind_exceptions.size();
     }
     if (rs.has_greedy) s.stop = to_string(rs.greedy.stop);
     return s;
@@ -58,6 +59,7 @@ std::string stats_json(const GenerateStats& s) {
     j.integer("constrained_vertices", (long long)s.constrained_vertices);
     j.integer("constrained_edges", (long long)s.constrained_edges);
     j.integer("dropped_constraints", (long long)s.dropped_constraints);
+    if (s.erd) j.integer("other_kind_edges", (long long)s.other_kind_edges);
     if (s.has_params)
         j.object("parameters", JsonObject().num("beta", s.beta).num("r", s.r).integer("l", s.l).num("epsilon", s.epsilon).boolean("simple", s.simple)
                                    .str("edges", s.hard_edges ? "hard" : "soft"));

@@ -29,6 +29,7 @@ struct GenerateStats {
     int l = 0;
     bool simple = false;
     bool hard_edges = false;         // the model's kind of edge ("edges": "hard" | "soft")
+    std::size_t other_kind_edges = 0;  // ERD: its edges of the other kind (Model::kind_exceptions)
     std::string stop;                // empty: not a greedy method
     std::vector<StageTime> stages;   // the method's stages, then the CLI's (read, write, psnr)
     double total_seconds = 0;        // wall time of the whole command

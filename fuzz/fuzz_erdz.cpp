@@ -73,7 +73,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     erd::Model r;
     if (!erd::decode_erdz(again, &r, nullptr, limits).ok()) std::abort();
     if (r.vertices != m.vertices || r.values != m.values || r.kind != m.kind || r.edges != m.edges ||
-        r.channels != m.channels || face_set(r) != face_set(m))
+        r.channels != m.channels || face_set(r) != face_set(m) || r.kind_exceptions != m.kind_exceptions)
         std::abort();
     return 0;
 }

@@ -1,7 +1,8 @@
 // libFuzzer target for the stream framing (cli/framing.h): how far a pipe or device is read.
 //
-// The input's first byte picks the framer (image, model, triangulation, polylines), the second the size of
-// the reads after the first 4 KiB (as cli/fileio.cpp read_fd makes them); the rest is the stream.
+// The input's first byte picks the framer (image, model, triangulation, polylines: bits 0-1) and
+// whether the bytes come as a stream or a regular file (bit 2), the second the size of the reads
+// after the first 4 KiB (as cli/fileio.cpp read_fd makes them); the rest is the stream.
 // Checks beyond "no crash": a framer error is one non-empty line; the framed bytes are a prefix
 // of the stream; a stream with a bad start (not P2, P5 or PNG) stops within its first read; and
 // whatever decodes as a whole file decodes the same from the framed bytes (reading from a pipe
@@ -18,9 +19,10 @@
 
 namespace {
 
-// read_fd's loop over an in-memory stream: the bytes it keeps, or false on a framer error.
-bool framed_read(const erd::cli::Framer& framer, const std::string& stream, std::size_t chunk, std::string* bytes,
-                 std::size_t* reads) {
+// read_fd's loop over an in-memory stream (or regular file: is_stream false): the bytes it
+// keeps, or false on a framer error.
+bool framed_read(const erd::cli::Framer& framer, const std::string& stream, bool is_stream, std::size_t chunk,
+                 std::string* bytes, std::size_t* reads) {
     bytes->clear();
     *reads = 0;
     std::uint64_t total = UINT64_MAX;
@@ -34,11 +36,13 @@ bool framed_read(const erd::cli::Framer& framer, const std::string& stream, std:
         at += n;
         ++*reads;
         if (total == UINT64_MAX) {
-            erd::Status s = framer(*bytes, &total);
+            erd::Status s = framer(*bytes, is_stream, &total);
             if (!s) {
                 if (s.message.empty() || s.message.find('\n') != std::string::npos) std::abort();
                 return false;
             }
+            // A file: whole when at most kLookAfter bytes follow the content, else cut there.
+            if (!is_stream && total != UINT64_MAX && stream.size() <= total + erd::cli::kLookAfter) total = stream.size();
             if (total < bytes->size()) bytes->resize(std::size_t(total));
         }
     }
@@ -50,6 +54,7 @@ bool framed_read(const erd::cli::Framer& framer, const std::string& stream, std:
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 2) return 0;
     const int kind = data[0] % 4;
+    const bool is_stream = (data[0] & 4) == 0;  // else a regular file of the stream's size
     const std::size_t chunk = 1 + std::size_t(data[1]) * 97;
     const std::string stream(reinterpret_cast<const char*>(data + 2), size - 2);
     erd::cli::ImageLimits limits;
@@ -60,7 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                 : erd::cli::model_framer(kind == 2);
     std::string bytes;
     std::size_t reads = 0;
-    const bool ok = framed_read(framer, stream, chunk, &bytes, &reads);
+    const bool ok = framed_read(framer, stream, is_stream, chunk, &bytes, &reads);
     if (ok && stream.compare(0, bytes.size(), bytes) != 0) std::abort();
     if (kind == 0) {
         // A start no reader takes is refused from the first read (PNG, JPEG, PGM/PPM, PAM are
@@ -70,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const bool pnm = stream[0] == 'P' && (stream[1] == '2' || stream[1] == '3' || stream[1] == '5' ||
                                               stream[1] == '6' || stream[1] == '7');
         const bool bad_start = stream.size() >= 2 && u(0) != 0x89 && !jpeg && !pnm;
-        if (bad_start && reads > 1) std::abort();
+        if (bad_start && reads > 1 && (is_stream || stream.size() > 4096 + erd::cli::kLookAfter)) std::abort();
         erd::Image whole, framed;
         std::string w;
         const auto* p = reinterpret_cast<const unsigned char*>(stream.data());

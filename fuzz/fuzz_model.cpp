@@ -42,7 +42,7 @@ void run(const std::string& text, erd::ModelFileKind kind) {
     if (!erd::read_model(out, m.kind == erd::ModelKind::erd ? erd::ModelFileKind::erd : erd::ModelFileKind::basic, &r).ok())
         std::abort();
     if (r.vertices != m.vertices || r.faces != m.faces || r.corner_values != m.corner_values || r.maxval != m.maxval ||
-        r.channels != m.channels)
+        r.channels != m.channels || r.edges != m.edges || r.kind_exceptions != m.kind_exceptions)
         std::abort();
     std::string again;
     if (!erd::write_model(r, &again).ok() || again != out) std::abort();

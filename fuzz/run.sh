@@ -4,6 +4,7 @@
 # Usage: fuzz/run.sh SECONDS [fuzz_NAME...]   (no names: every target). Targets, corpora and
 # findings go to build-asan/, whose objects (make asan) the targets link.
 # FUZZ_SHORT_SECONDS=S caps the targets named in FUZZ_SHORT (default fuzz_framing fuzz_erdz) at S seconds.
+# FUZZ_BUILD_ONLY=1 builds the targets and prints "BUILT name" for each (fuzz/campaign.sh).
 set -u
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
@@ -29,6 +30,8 @@ for src in $targets; do
     if ! clang++ $FLAGS -fsanitize=fuzzer "$src" $objs -o $B/$name 2>$B/$name.build.log; then
         echo "FAIL $name (build)"; cat $B/$name.build.log | head -20; status=1; continue
     fi
+    # FUZZ_BUILD_ONLY=1: build the targets, run none (fuzz/campaign.sh runs them itself).
+    [[ -n ${FUZZ_BUILD_ONLY:-} ]] && { echo "BUILT $name"; continue; }
     corpus=$B/corpus/$name
     mkdir -p "$corpus"
     seeds=fuzz/corpus/$name

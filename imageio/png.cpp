@@ -29,6 +29,16 @@ Status decode_png(const unsigned char* data, std::size_t size, Image* out, std::
     bool is16 = false;
     std::string why;
     if (size < 8 || std::memcmp(data, kPng, 8) != 0) return Status::bad_input("not a PNG file (no PNG signature)");
+    // Apple's CgBI variant (Xcode's "iPhone optimised" PNG: a CgBI chunk before IHDR, BGRA byte
+    // order, premultiplied alpha, deflate without the zlib wrapper) carries the PNG signature but
+    // is no PNG: stb would decode it with its colours changed. Refused by name, before IDAT.
+    for (std::size_t at = 8; at + 8 <= size;) {
+        if (std::memcmp(data + at + 4, "CgBI", 4) == 0)
+            return Status::bad_input("an Apple CgBI file (Xcode's iPhone-optimised PNG: byte-swapped BGRA, raw deflate), not a "
+                                     "standard PNG; convert it first (xcrun pngcrush -revert-iphone-optimizations)");
+        if (std::memcmp(data + at + 4, "IDAT", 4) == 0 || std::memcmp(data + at + 4, "IEND", 4) == 0) break;
+        at += 12 + std::size_t(be32(data + at));
+    }
     // Sizes from IHDR ourselves first, so a too-large image gets our message, not stb's "too large".
     if (size >= 24 && std::memcmp(data + 12, "IHDR", 4) == 0) {
         Status s = check_side("PNG width", be32(data + 16), limits);

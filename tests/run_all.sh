@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# `make test`: the layer and map checks, the unit tests, the same tests under ASan+UBSan, and a
-# short run of every fuzz target. Counts test cases (a fuzz target and each check count as one)
-# and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
+# `make test`: the layer and map checks, the unit tests, the same tests under ASan+UBSan, the
+# thread tests under ThreadSanitizer, and a short run of every fuzz target. Counts test cases (a
+# fuzz target and each check count as one) and ends with "N passed, M failed". A missing binary or image fails its tests here: skipping
 # (ERD_ALLOW_SKIP=1, tests/erd_run.h) is never allowed in this run.
 set -u
 unset ERD_ALLOW_SKIP ERD_REGENERATE
@@ -75,6 +75,23 @@ stage_asan() {
     local rc=$?
     tail -3 "$log/asan"
     count_catch "$log/asan" "$rc"
+}
+
+# The thread-equality tests under ThreadSanitizer (make tsan: build-tsan/erd_tsan_tests, the ASan
+# build's Catch2 main reused; in the foreground chain, after the fuzz smoke runs): the library's
+# stages at 1 and 3 threads (ERD_SANITIZED) and two API calls on two threads; a race report fails
+# it (exit 66). The [cli] case runs the erd binary, which this build has not.
+stage_tsan() {
+    local t0=$SECONDS
+    if ! make -s -j2 tsan >"$log/tsan-build" 2>&1; then
+        tail -20 "$log/tsan-build"; echo "ThreadSanitizer build failed"; failed=$((failed + 1)); return
+    fi
+    echo "built in $(( SECONDS - t0 )) s"
+    ERD_SANITIZED=1 build-tsan/erd_tsan_tests "~[cli]" >"$log/tsan" 2>&1
+    local rc=$?
+    grep -E '^(WARNING: ThreadSanitizer|SUMMARY: ThreadSanitizer)' "$log/tsan" | head -10
+    tail -3 "$log/tsan"
+    count_catch "$log/tsan" "$rc"
 }
 
 stage_embedded() {
@@ -191,6 +208,9 @@ if [[ -x fuzz/run.sh || -f fuzz/run.sh ]] && ls fuzz/fuzz_*.cpp >/dev/null 2>&1;
     passed=$((passed + p)); failed=$((failed + f))
 fi
 stage
+# ThreadSanitizer in this chain: the other one is the longer (asan 501 s + embedded 77 s + python
+# 260 s against fuzz 147 s + vector 146 s + web 297 s on a loaded machine).
+run_job tsan stage_tsan
 run_job web stage_web
 run_job vector stage_vector
 run_job raster stage_raster
@@ -198,8 +218,9 @@ wait "$chain_pid"
 show_job asan "unit tests under ASan+UBSan: result"
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
 show_job python "python package (make python, pytest python/tests: each test counts; pip install into a venv: one)"
+show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: every -j stage, two API calls on two threads)"
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
-show_job web "web page (web/, WebAssembly) in chromium via playwright-core: the page's mesh is the native erd's (lena gray, kodim03 colour)"
+show_job web "web page (web/, WebAssembly) in chromium via playwright-core: opens meshed, slider, cancel, drop, file, paste, bad file; each mesh the native erd's"
 show_job raster "rasters (tests/raster_test.sh): real DEMs' --max-error bounds checked by numpy, precision, TIFF round trips, glTF validator (each check counts)"
 
 stage

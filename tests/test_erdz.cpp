@@ -400,8 +400,8 @@ TEST_CASE("erdz: every truncation and many damaged bytes are refused with one li
     }
     CHECK(!erd::decode_erdz(bytes + "x", &d).ok());
     std::string bad = bytes;
-    bad[4] = 4;
-    CHECK(erd::decode_erdz(bad, &d).message.find("version 4") != std::string::npos);
+    bad[4] = 5;
+    CHECK(erd::decode_erdz(bad, &d).message.find("version 5") != std::string::npos);
     // Flipped bits: refused or decoded into a valid model, never a crash (the fuzzer goes further).
     int refused = 0;
     for (std::size_t i = 5; i < bytes.size(); i += 3) {

@@ -19,6 +19,7 @@
 #include "algorithms/model/metrics.h"
 #include "tests/erd_check.h"
 #include "tests/erd_run.h"
+#include "tests/method_run_util.h"
 
 using namespace erd;
 using namespace erd_test;
@@ -36,25 +37,7 @@ Image picture(const std::string& kind, int blur, int w = 160, int h = 120) {
     return im;
 }
 
-GenerateResult run(const char* method, const Image& im, double density, EdgeChoice edges) {
-    GenerateOptions o;
-    o.density = density;
-    o.density_given = true;
-    o.edges = edges;
-    GenerateResult r;
-    const MethodInfo* m = find_method(method);
-    REQUIRE(m != nullptr);
-    REQUIRE(m->run(im, o, &r).ok());
-    return r;
-}
 
-double psnr_of(const Image& im, const Model& m) {
-    Image rec;
-    REQUIRE(reconstruct(m, supersampled(m), &rec).ok());
-    double db = 0;
-    REQUIRE(psnr(im, rec, &db).ok());
-    return db;
-}
 
 // An .erd of a 3x3 image: centre vertex (2, 2), one wedge each (the thesis's body).
 const char* kBody = "255\n5\n0 0 10\n4 0 20\n0 4 30\n4 4 40\n2 2 25\n4\n0 1 4\n1 3 4\n3 2 4\n2 0 4\n0\n";
@@ -90,10 +73,10 @@ TEST_CASE("edge kind: every hard-edged picture is hard, its blurred versions sof
 
 TEST_CASE("edge kind: --edges auto picks hard for a drawing and soft for its blurred version", "[hardedges]") {
     const Image hard = picture("drawing", 0), soft = picture("drawing", 2);
-    CHECK(run("erdgpi", hard, 1, EdgeChoice::automatic).model.edges == EdgeKind::hard);
-    CHECK(run("erdgpi", soft, 1, EdgeChoice::automatic).model.edges == EdgeKind::soft);
-    CHECK(run("erdgpi", soft, 1, EdgeChoice::hard).model.edges == EdgeKind::hard);
-    CHECK(run("erdgpi", hard, 1, EdgeChoice::soft).model.edges == EdgeKind::soft);
+    CHECK(run_method("erdgpi", hard, 1, EdgeChoice::automatic).model.edges == EdgeKind::hard);
+    CHECK(run_method("erdgpi", soft, 1, EdgeChoice::automatic).model.edges == EdgeKind::soft);
+    CHECK(run_method("erdgpi", soft, 1, EdgeChoice::hard).model.edges == EdgeKind::hard);
+    CHECK(run_method("erdgpi", hard, 1, EdgeChoice::soft).model.edges == EdgeKind::soft);
 }
 
 namespace {
@@ -271,7 +254,7 @@ TEST_CASE("edges header: written for hard edges only, read back, thesis files un
 
 TEST_CASE("edges header: malformed blocks get one message naming the problem", "[hardedges][model_io]") {
     const std::string b = kBody;
-    CHECK(read_error("erd-header 1\ncolour rgb\nend\n" + b) == "line 2: unknown header key 'colour' (this reader knows: edges, channels, type, range, nodata, holes, doubled, geo-pixel-scale, geo-tiepoints, geo-transform, geo-keys, geo-doubles, geo-ascii)");
+    CHECK(read_error("erd-header 1\ncolour rgb\nend\n" + b) == "line 2: unknown header key 'colour' (this reader knows: edges, hard-edges, soft-edges, channels, type, range, nodata, holes, doubled, geo-pixel-scale, geo-tiepoints, geo-transform, geo-keys, geo-doubles, geo-ascii)");
     CHECK(read_error("erd-header 2\nend\n" + b) == "line 1: header version 2 is not supported (this reader knows 1)");
     CHECK(read_error("erd-header 1\nedges blurry\nend\n" + b) == "line 2: edges must be hard or soft, found 'blurry'");
     CHECK(read_error("erd-header 1\nedges hard\nedges hard\nend\n" + b) == "line 3: header key 'edges' given twice");
@@ -286,7 +269,7 @@ TEST_CASE("hard edges: ERDGPI and ERDED make exactly N points, verified meshes, 
         const Image im = picture(kind, 0);
         for (const char* method : {"erdgpi", "erded"}) {
             INFO(kind << " " << method);
-            const GenerateResult r = run(method, im, 1.0, EdgeChoice::automatic);
+            const GenerateResult r = run_method(method, im, 1.0, EdgeChoice::automatic);
             CHECK(r.achieved == r.requested);
             CHECK(r.model.size() == r.requested);
             CHECK(r.model.edges == EdgeKind::hard);
@@ -297,18 +280,18 @@ TEST_CASE("hard edges: ERDGPI and ERDED make exactly N points, verified meshes, 
     }
     // The drawing's hard edges: ERDGPI far above GPI and above its own soft version.
     const Image im = picture("drawing", 0);
-    const double gpi = psnr_of(im, run("gpi", im, 1.0, EdgeChoice::automatic).model);
-    const double hard = psnr_of(im, run("erdgpi", im, 1.0, EdgeChoice::automatic).model);
-    const double soft = psnr_of(im, run("erdgpi", im, 1.0, EdgeChoice::soft).model);
+    const double gpi = own_psnr(im, run_method("gpi", im, 1.0, EdgeChoice::automatic).model);
+    const double hard = own_psnr(im, run_method("erdgpi", im, 1.0, EdgeChoice::automatic).model);
+    const double soft = own_psnr(im, run_method("erdgpi", im, 1.0, EdgeChoice::soft).model);
     CHECK(hard > gpi + 10);
     CHECK(hard > soft + 10);
     // Both treatments of over-budget curves ran; the better one is the model (its PSNR).
-    const GenerateResult r = run("erdgpi", im, 1.0, EdgeChoice::automatic);
+    const GenerateResult r = run_method("erdgpi", im, 1.0, EdgeChoice::automatic);
     CHECK(r.stats.erd.hard_edges);
     CHECK(r.stats.erd.edges_measured);
     REQUIRE(r.stats.erd.plain_psnr > 0);
     REQUIRE(r.stats.erd.exact_psnr > 0);
-    CHECK(psnr_of(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
+    CHECK(own_psnr(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
     bool said = false;
     for (const std::string& line : result_lines(r.stats)) said = said || line.rfind("edges: hard (measured: ", 0) == 0;
     CHECK(said);
@@ -347,10 +330,10 @@ TEST_CASE("hard edges: the run without the fallback is skipped only where it wou
     // Through the method: no fallback, one run, both PSNRs the model's; with it, two runs.
     for (double d : {0.15, 5.0}) {
         const Image im = picture("drawing", 0);
-        const GenerateResult r = run("erdgpi", im, d, EdgeChoice::hard);
+        const GenerateResult r = run_method("erdgpi", im, d, EdgeChoice::hard);
         INFO("density " << d << " fallback " << r.stats.erd.plain_fallback);
         REQUIRE(r.stats.erd.plain_psnr > 0);
-        CHECK(psnr_of(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
+        CHECK(own_psnr(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
         CHECK(r.stats.erd.plain_fallback == (d < 1));  // the tiny mesh needs the plain curves, the large one not
         if (!r.stats.erd.plain_fallback) CHECK(r.stats.erd.plain_psnr == r.stats.erd.exact_psnr);
     }
@@ -367,7 +350,7 @@ TEST_CASE("hard edges in colour: both runs, the better kept by RGB-PSNR, verifie
     }
     for (const char* method : {"erdgpi", "erded"}) {
         INFO(method);
-        const GenerateResult r = run(method, im, 1.0, EdgeChoice::automatic);
+        const GenerateResult r = run_method(method, im, 1.0, EdgeChoice::automatic);
         CHECK(r.model.channels == 3);
         CHECK(r.model.edges == EdgeKind::hard);
         CHECK(r.model.size() == r.requested);
@@ -375,7 +358,7 @@ TEST_CASE("hard edges in colour: both runs, the better kept by RGB-PSNR, verifie
         REQUIRE(check_triangulation(r.model).ok());
         REQUIRE(r.stats.erd.plain_psnr > 0);
         REQUIRE(r.stats.erd.exact_psnr > 0);
-        CHECK(psnr_of(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
+        CHECK(own_psnr(im, r.model) == std::max(r.stats.erd.plain_psnr, r.stats.erd.exact_psnr));
     }
 }
 

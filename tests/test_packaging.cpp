@@ -1,6 +1,6 @@
 // Packaging: the thesis's seven command names (run through symlinks named as the thesis has
 // them, compared with the erd subcommands) and the public API (api/erd.h): validation, exit
-// modes, the kernel, threads. Installing it: test_install.cpp.
+// modes, the kernel (two calls on two threads: test_row_parallel.cpp). Installing it: test_install.cpp.
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <string>
 #include <sstream>
-#include <thread>
 #include <vector>
 
 #include "api/erd.h"
@@ -337,38 +336,3 @@ TEST_CASE("public API: triangulate() rebuilds the model's triangulation in the k
     CHECK(erd::api::triangulate(empty, &cdt).code == erd::Code::input);
 }
 
-TEST_CASE("public API: two meshes on two threads equal the same meshes made one after the other", "[packaging]") {
-    const erd::Image a = synth_image(96, 64, 8, 11);
-    const erd::Image b = synth_image(80, 72, 8, 12);
-    erd::api::Options opt;
-    opt.generate.density = 2.0;
-    opt.generate.density_given = true;
-    for (auto method : {erd::api::Method::erdgpi, erd::api::Method::erded, erd::api::Method::gpi, erd::api::Method::ed}) {
-        INFO(erd::api::method_name(method));
-        erd::Model seq_a, seq_b, par_a, par_b;
-        erd::Image seq_ra, seq_rb, par_ra, par_rb;
-        REQUIRE(erd::api::generate(method, erd::api::view_of(a), opt, &seq_a));
-        REQUIRE(erd::api::reconstruct(seq_a, true, &seq_ra));
-        REQUIRE(erd::api::generate(method, erd::api::view_of(b), opt, &seq_b));
-        REQUIRE(erd::api::reconstruct(seq_b, true, &seq_rb));
-
-        erd::Status st_a, st_b;
-        std::thread ta([&] {
-            st_a = erd::api::generate(method, erd::api::view_of(a), opt, &par_a);
-            if (st_a) st_a = erd::api::reconstruct(par_a, true, &par_ra);
-        });
-        std::thread tb([&] {
-            st_b = erd::api::generate(method, erd::api::view_of(b), opt, &par_b);
-            if (st_b) st_b = erd::api::reconstruct(par_b, true, &par_rb);
-        });
-        ta.join();
-        tb.join();
-        REQUIRE(st_a);
-        REQUIRE(st_b);
-        CHECK(same_model(seq_a, par_a));
-        CHECK(same_model(seq_b, par_b));
-        CHECK(seq_ra.samples == par_ra.samples);
-        CHECK(seq_rb.samples == par_rb.samples);
-        CHECK(!same_model(par_a, par_b));
-    }
-}

@@ -1,7 +1,9 @@
 // Threads of the image stages (kernel/row_parallel.h): the parts cover their range, and every
 // stage that uses them gives the same bytes at 1, 2 and 3 threads (MMSODD, the ED density, the
 // PSNR, both reconstructions, the four methods' models in gray and colour, `erd generate`,
-// `erd reconstruct` and `erd psnr` -j), on odd sizes down to 1 x N and N x 1.
+// `erd reconstruct` and `erd psnr` -j), on odd sizes down to 1 x N and N x 1; two API calls on two
+// threads equal the same calls made one after the other. `make tsan` builds this file alone with
+// ThreadSanitizer (build-tsan/erd_tsan_tests, a stage of make test).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,9 +11,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
+#include "api/erd.h"
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
@@ -240,6 +244,45 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
                 }
             }
         }
+    }
+}
+
+// Two calls of the public API at once (a program meshing on two threads): no state shared
+// between calls, so each equals the same call made alone. Under ThreadSanitizer (make tsan) this
+// also finds any write two calls would share.
+TEST_CASE("public API: two meshes on two threads equal the same meshes made one after the other", "[threads][api]") {
+    const erd::Image a = synth_image(96, 64, 8, 11);
+    const erd::Image b = synth_image(80, 72, 8, 12);
+    erd::api::Options opt;
+    opt.generate.density = 2.0;
+    opt.generate.density_given = true;
+    for (auto method : {erd::api::Method::erdgpi, erd::api::Method::erded, erd::api::Method::gpi, erd::api::Method::ed}) {
+        INFO(erd::api::method_name(method));
+        erd::Model seq_a, seq_b, par_a, par_b;
+        erd::Image seq_ra, seq_rb, par_ra, par_rb;
+        REQUIRE(erd::api::generate(method, erd::api::view_of(a), opt, &seq_a));
+        REQUIRE(erd::api::reconstruct(seq_a, true, &seq_ra));
+        REQUIRE(erd::api::generate(method, erd::api::view_of(b), opt, &seq_b));
+        REQUIRE(erd::api::reconstruct(seq_b, true, &seq_rb));
+
+        erd::Status st_a, st_b;
+        std::thread ta([&] {
+            st_a = erd::api::generate(method, erd::api::view_of(a), opt, &par_a);
+            if (st_a) st_a = erd::api::reconstruct(par_a, true, &par_ra);
+        });
+        std::thread tb([&] {
+            st_b = erd::api::generate(method, erd::api::view_of(b), opt, &par_b);
+            if (st_b) st_b = erd::api::reconstruct(par_b, true, &par_rb);
+        });
+        ta.join();
+        tb.join();
+        REQUIRE(st_a);
+        REQUIRE(st_b);
+        CHECK(model_text(seq_a) == model_text(par_a));
+        CHECK(model_text(seq_b) == model_text(par_b));
+        CHECK(seq_ra.samples == par_ra.samples);
+        CHECK(seq_rb.samples == par_rb.samples);
+        CHECK(model_text(par_a) != model_text(par_b));
     }
 }
 

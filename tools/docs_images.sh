@@ -11,7 +11,11 @@
 #   detail of the mesh over the reconstruction and its error map.
 #   Colour (issue 17, part "colour"): kodim03 (colour/) at 1%, ERDGPI beside GPI at the same point
 #   count: the reconstruction and the mesh over it, at half size.
-#   PARTS (default "bull hard quality colour") picks the parts.
+#   Anti-aliased graphics (issue 44, part "graphics"): flag-chevron and mixed-text of
+#   tools/graphics_svg.py rendered by rsvg-convert, ERDGPI (flag 1%, mixed-text 2%: a detail of its
+#   title and logo) before (--edges soft: what auto chose for them before per-edge kinds) and after
+#   (the default), mesh over the reconstruction (constrained edges red) and error map, the original.
+#   PARTS (default "bull hard quality colour graphics") picks the parts.
 # usage: tools/docs_images.sh ERD_BIN IMAGES_DIR [OUT_DIR]
 set -euo pipefail
 erd=${1:-build/erd}
@@ -25,7 +29,7 @@ if [ ! -x "$erd" ]; then echo "docs_images: no erd binary at $erd (run make firs
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-parts=${PARTS:-bull hard quality colour}
+parts=${PARTS:-bull hard quality colour graphics}
 
 if [[ " $parts " == *" colour "* ]]; then
     src="$images/color/kodim03.ppm"
@@ -55,6 +59,27 @@ if [[ " $parts " == *" quality "* ]]; then
             "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_mesh.png"
             "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_error.png"
         done
+    done
+fi
+
+if [[ " $parts " == *" graphics "* ]]; then
+    command -v rsvg-convert >/dev/null || { echo "docs_images: rsvg-convert missing (make graphics-deps)" >&2; exit 1; }
+    python3 "$(dirname "$0")/graphics_svg.py" "$tmp/svg" "$images" >/dev/null
+    # name density crop (the title and logo of mixed-text, at twice the size)
+    for c in "flag-chevron 1 -" "mixed-text 2 180,0,332,96"; do
+        read -r name d box <<<"$c"
+        view=(); [ "$box" = - ] || view=(--crop "$box" --scale 2)
+        rsvg-convert "$tmp/svg/$name.svg" -o "$tmp/$name.png"
+        for when in before after; do
+            flags=(); [ "$when" = before ] && flags=(--edges soft)
+            model="$tmp/${name}_$when.erd"
+            "$erd" generate -m erdgpi "${flags[@]}" -i "$tmp/$name.png" -d "$d" -x 1 -q -o "$model"
+            "$erd" reconstruct "$model" -q -o "$tmp/${name}_$when.png"
+            echo "docs_images: $name $d% ERDGPI $when: PSNR $("$erd" psnr "$tmp/$name.png" "$tmp/${name}_$when.png") dB" >&2
+            "$erd" render "$model" -q --over-reconstruction "${view[@]}" -o "$out/graphics_${name}_${when}_mesh.png"
+            "$erd" render "$model" -q --error "$tmp/$name.png" --no-edges "${view[@]}" -o "$out/graphics_${name}_${when}_error.png"
+        done
+        "$erd" render "$model" -q --over "$tmp/$name.png" --no-edges "${view[@]}" -o "$out/graphics_${name}_original.png"
     done
 fi
 

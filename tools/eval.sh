@@ -13,8 +13,8 @@
 # supersampled approximation) for the reproduction targets, and
 # "erd default" (our least-squares wedge refit, alpha in [0.75, 1], edge radius 1 pixel).
 # Variant names: METHOD (erd default) and METHOD+thesis. tools/eval_startup.sh (Table 3.4) and
-# tools/eval_hard.sh (hard-edged pictures, issue 15) and tools/eval_colour.sh (colour images,
-# issue 17) run last.
+# tools/eval_hard.sh (hard-edged pictures, issue 15), tools/eval_colour.sh (colour images,
+# issue 17) and tools/eval_graphics.sh (anti-aliased graphics and mixed pictures, issue 44) run last.
 set -u
 ERD=${1:-build/erd}
 IMAGES=${2:-../shared/images}
@@ -213,4 +213,6 @@ echo "eval: wrote $RESULTS"
 bash tools/eval_hard.sh "$ERD" "$IMAGES"
 # The colour table (issue 17): its own marked section too.
 bash tools/eval_colour.sh "$(dirname "$ERD")" "$IMAGES"
+# The anti-aliased graphics table (issue 44): its own marked section too.
+bash tools/eval_graphics.sh "$ERD" "$IMAGES"
 grep -E "^(## |Met|Median)" "$RESULTS"

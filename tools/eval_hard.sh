@@ -6,16 +6,8 @@
 # Writes its own marked section of docs/RESULTS.md (run by tools/eval.sh after the main tables).
 # Usage: tools/eval_hard.sh ERD_BINARY [IMAGES_DIR]   (the photos there: the kind auto picks)
 set -u
-ERD=${1:-build/erd}
-IMAGES=${2:-../shared/images}
-[[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
-JOBS=${JOBS:-2}
-[[ $ERD == */* && $ERD != /* ]] && ERD=$PWD/$ERD
-cd "$(dirname "$0")/.."
-OUT=out/eval/hard
-RESULTS=docs/RESULTS.md
-mkdir -p "$OUT" docs
-if [[ ! -x $ERD ]]; then echo "eval_hard: $ERD is not built (try: make)"; exit 1; fi
+source "$(dirname "$0")/results_section.sh"
+eval_setup eval_hard hard "${1:-build/erd}" "${2:-../shared/images}" || exit 1
 KINDS=${KINDS:-$("$ERD" synth --help | sed -n 's/.*hard-edged picture: \(.*\)$/\1/p' | tr -d ',')}
 DENS="0.5 1 2 3"
 

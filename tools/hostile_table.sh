@@ -274,6 +274,15 @@ case_ "parent is a file (synth)" 1 synth -W 4 -H 4 -o afile/s.pgm
 if [[ -e /dev/full ]]; then
     case_ "/dev/full (synth)" 1 synth -W 64 -H 64 -o /dev/full
 fi
+# Issue 49: every output's folder is checked before any work; the input here is not an image,
+# so a folder checked after reading it would show the input's error (exit 2) instead.
+printf 'not an image' > notimage.pgm
+CHECK='[[ ! -e missing ]]' case_ "-o in a missing folder: refused before the image is read" 1 generate -q -m erdgpi -i notimage.pgm -o missing/dir/x.erd -d 1
+case_ "-t in a missing folder: refused before the image is read" 1 generate -q -m gpi -i notimage.pgm -o o.model -t missing/x.tri -n 20
+case_ "batch: one missing folder, refused before any job" 1 generate -q -m gpi -i in.pgm -i notimage.pgm -o 'missing/{name}.model' -n 20
+CHECK='[[ ! -e out_in.model ]]' case_ "batch: the summary's folder missing, refused before any job" 1 generate -q -m gpi -i in.pgm -o 'out_{name}.model' --summary missing/s.csv -n 20
+case_ "edges into a missing folder" 1 edges notimage.pgm -o missing/e.pgm
+case_ "synth into a missing folder" 1 synth -W 4000 -H 4000 -o missing/s.pgm
 
 cat <<'EOF'
 
@@ -346,9 +355,10 @@ CHECK='no_temp' LIMIT_FSIZE=1 case_ "file-size limit (SIGXFSZ): an error, no tem
 
 cat <<'EOF'
 
-## Endless, special and crafted inputs (issue 19)
+## Endless, special and crafted inputs (issues 19, 49)
 A stream (pipe, device) is read only as far as its header says; here under a 64 MB memory
-limit (ulimit -v). Regular files are read whole.
+limit (ulimit -v). A file too (issue 49): its header's content and a 4 KiB look after it; a
+longer tail is never read (a warning gives its size; text stops at a NUL byte).
 
 | case | command | exit | message |
 | --- | --- | --- | --- |
@@ -368,6 +378,17 @@ LIMIT_KB=65536 IN=<(printf 'P5\n'; yes '# comment') case_ "P5 magic, then an end
 { printf '255\n20000000\n0'; head -c 40000000 /dev/zero | tr '\0' ' '; } > spaces.model
 LIMIT_KB=131072 case_ "a count held only by 40 MB of spaces" 2 reconstruct spaces.model -o r.pgm
 rm -f spaces.model
+# Issue 49: a small image (or model) followed by a gigabyte, a sparse file: no disk, no memory.
+printf 'P5\n64 64\n255\n' > tail.pgm; yes 'a sparse tail of 1 GiB' | head -c 4096 >> tail.pgm; truncate -s 1G tail.pgm
+LIMIT_KB=65536 case_ "a 64 x 64 PGM followed by 1 GiB (sparse): the image read" 0 info tail.pgm
+LIMIT_KB=65536 case_ "a 64 x 64 PGM followed by 1 GiB (sparse): meshed" 0 generate -q -m gpi -i tail.pgm -o o.model -n 20
+cp "$SRC/fuzz/corpus/fuzz_jpeg/progressive_1x7.jpg" tail.jpg; truncate -s 1G tail.jpg
+LIMIT_KB=65536 case_ "a progressive JPEG followed by 1 GiB (sparse)" 0 info tail.jpg
+cp good.model tail.model; truncate -s 1G tail.model
+LIMIT_KB=65536 case_ "a model followed by 1 GiB of zeros (sparse)" 2 reconstruct tail.model -o r.pgm
+"$BIN" convert good.model tail.erdz 2>/dev/null; truncate -s 1G tail.erdz
+LIMIT_KB=65536 case_ "an .erdz followed by 1 GiB (sparse)" 2 reconstruct tail.erdz -o r.pgm
+rm -f tail.pgm tail.jpg tail.model tail.erdz
 cp "$SRC/fuzz/corpus/fuzz_png/palette_beyond_plte" pal.png
 case_ "PNG palette index beyond PLTE" 2 info pal.png
 awk 'NR == 2 { n = $1; print n + 1; next } { print } NR == 2 + n { print "1 1 0" }' good.model > unused.model
@@ -449,6 +470,9 @@ case_ "JPEG without a quantisation table (stb multiplies by uninitialised memory
 case_ "JPEG progressive 1x7 (info)" 0 info progressive_1x7.jpg
 case_ "JPEG progressive 1x7 (generate)" 2 generate -q -m gpi -i progressive_1x7.jpg -o o.model -n 4
 case_ "JPEG start marker only" 2 info soi.jpg
+# Apple's CgBI "PNG" (issue 49): a CgBI chunk before IHDR, BGRA, raw deflate (2 x 2, stored).
+printf '\211PNG\015\012\032\012\000\000\000\004CgBIP\000 \006,\270wf\000\000\000\015IHDR\000\000\000\002\000\000\000\002\010\006\000\000\000r\266\015$\000\000\000\027IDAT\001\022\000\355\377\000\000\000\310\377\024\000\310\377\000\000(\310\377\024(\310\377m\331\325\031\000\000\000\000IEND\256B`\202' > apple.png
+case_ "Apple CgBI PNG (iPhone-optimised): refused by name" 2 generate -q -m erdgpi -i apple.png -o o.erd -n 4
 
 cat <<'EOF'
 

@@ -1,4 +1,4 @@
-# Sourced by the eval scripts: put_section MARK SECTION_FILE RESULTS_FILE replaces the block
+# Sourced by the eval scripts. put_section MARK SECTION_FILE RESULTS_FILE replaces the block
 # between "<!-- MARK..." and "<!-- /MARK -->" in RESULTS_FILE with SECTION_FILE (which holds both
 # marker lines), or appends it when the block is not there yet.
 put_section() {
@@ -11,4 +11,21 @@ put_section() {
     else
         { [[ -f $results ]] && echo; cat "$section"; } >>"$results"
     fi
+}
+
+# eval_setup NAME SUBDIR ERD IMAGES: the start of an eval script: ERD and IMAGES made absolute, JOBS
+# (default 2), the repository as the working directory, OUT=out/eval/SUBDIR and docs/ made,
+# RESULTS=docs/RESULTS.md; one line and status 1 when ERD is not built.
+eval_setup() {
+    local name=$1
+    ERD=$3
+    IMAGES=$4
+    JOBS=${JOBS:-2}
+    [[ $IMAGES != /* ]] && IMAGES=$PWD/$IMAGES
+    [[ $ERD == */* && $ERD != /* ]] && ERD=$PWD/$ERD
+    cd "$(dirname "${BASH_SOURCE[0]}")/.." || return 1
+    OUT=out/eval/$2
+    RESULTS=docs/RESULTS.md
+    mkdir -p "$OUT" docs
+    [[ -x $ERD ]] || { echo "$name: $ERD is not built (try: make)"; return 1; }
 }

@@ -46,8 +46,8 @@ struct Reader {
     }
 };
 
-// Version 1 had no flips section.
-int section_count(int version) { return version == 1 ? 3 : 4; }
+// Version 1 had no flips section, version 4 adds the kinds section.
+int section_count(int version) { return version == 1 ? 3 : version == 4 ? 5 : 4; }
 
 bool method_ok(const std::string& name) {
     if (name.size() > kMaxMethod) return false;
@@ -147,8 +147,8 @@ void split_points(const Model& m, const std::vector<EdgeKey>& edges, std::vector
 }
 
 void fill_info(int version, const std::string& method, double step, bool full, std::size_t header,
-               std::array<std::size_t, 4> sections, std::size_t total, const std::vector<LatticePoint>& free_points,
-               const std::vector<Chain>& chains, std::uint64_t flips, std::size_t values, ErdzInfo* info) {
+               std::array<std::size_t, 5> sections, std::size_t total, const std::vector<LatticePoint>& free_points,
+               const std::vector<Chain>& chains, std::uint64_t flips, std::size_t values, std::size_t kinds, ErdzInfo* info) {
     *info = ErdzInfo();
     info->version = version;
     info->method = method;
@@ -159,6 +159,8 @@ void fill_info(int version, const std::string& method, double step, bool full, s
     info->edge_bits = 8 * sections[1];
     info->flip_bits = 8 * sections[2];
     info->value_bits = 8 * sections[3];
+    info->kind_bits = 8 * sections[4];
+    info->other_kind_edges = kinds;
     info->total_bits = 8 * total;
     info->free_points = free_points.size();
     info->chains = chains.size();
@@ -318,10 +320,24 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     const std::string pos = codec::encode_positions(lat, free_points);
     const std::string edg = codec::encode_chains(chains);
     const std::string val = codec::encode_values(r.graph, m.channels, q);
+    std::string knd;
+    std::size_t kinds = 0;
+    if (m.kind == ModelKind::erd && !m.kind_exceptions.empty()) {
+        std::vector<EdgeKey> other;
+        for (const auto& e : m.kind_exceptions) {
+            if (e[0] >= m.vertices.size() || e[1] >= m.vertices.size()) return Status::bad_input("an edge kind names a vertex out of range");
+            other.push_back(edge_key(m.vertices[e[0]], m.vertices[e[1]]));
+        }
+        std::sort(other.begin(), other.end());
+        knd = codec::encode_kinds(r.cdt, r.corner_unit, m.channels, q, [&](VertInd a, VertInd b) {
+            return std::binary_search(other.begin(), other.end(), edge_key(r.cdt.point(a), r.cdt.point(b)));
+        }, &kinds);
+    }
+    const int version = knd.empty() ? codec::kErdzPlainVersion : kVersion;
 
     std::string& o = *out;
     o.assign(kMagic, 4);
-    o.push_back(char(kVersion));
+    o.push_back(char(version));
     put_varint(&o, std::uint64_t(m.width));
     put_varint(&o, std::uint64_t(m.height));
     put_varint(&o, m.maxval);
@@ -333,15 +349,16 @@ Status encode_erdz(const Model& m, const ErdzOptions& options, std::string* out,
     o.push_back(char(options.method.size()));
     o += options.method;
     std::size_t header = o.size();
-    for (const std::string* s : {&pos, &edg, static_cast<const std::string*>(&flp), &val}) {
+    for (const std::string* s : {&pos, &edg, static_cast<const std::string*>(&flp), &val, static_cast<const std::string*>(&knd)}) {
+        if (s == &knd && version < 4) break;
         const std::size_t before_len = o.size();
         put_varint(&o, s->size());
         header += o.size() - before_len;
         o += *s;
     }
     if (info)
-        fill_info(kVersion, options.method, step, lat.full, header, {pos.size(), edg.size(), flp.size(), val.size()},
-                  o.size(), free_points, chains, flips, q.size(), info);
+        fill_info(version, options.method, step, lat.full, header, {pos.size(), edg.size(), flp.size(), val.size(), knd.size()},
+                  o.size(), free_points, chains, flips, q.size(), kinds, info);
     return Status::success();
 }
 
@@ -379,8 +396,8 @@ Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology*
     rd.pos += mlen;
     if (!method_ok(method)) return bad("header: bad method name");
     std::size_t header = rd.pos;
-    std::array<std::pair<std::size_t, std::size_t>, 4> sec{};  // positions, edges, flips, values
-    static const char* const kSections[] = {"positions", "edges", "flips", "values"};
+    std::array<std::pair<std::size_t, std::size_t>, 5> sec{};  // positions, edges, flips, values, kinds
+    static const char* const kSections[] = {"positions", "edges", "flips", "values", "kinds"};
     for (int j = 0; j < nsec; ++j) {
         const int i = nsec == 3 && j == 2 ? 3 : j;  // version 1 has no flips section
         const std::size_t p0 = rd.pos;
@@ -415,6 +432,11 @@ Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology*
     if (!(st = codec::decode_values(data(3), sec[3].second, r.graph, C, version, &q))) return st;
     for (std::int64_t k : q)
         if (std::fabs(double(k) * step) > 1e9) return bad("values section: a value above 1e9 in magnitude");
+    std::vector<std::array<VertInd, 2>> other_kind;
+    if (version >= 4) {
+        if (!erd) return bad("kinds section: a basic model has no edge kinds");
+        if (!(st = codec::decode_kinds(data(4), sec[4].second, r.cdt, r.corner_unit, C, q, &other_kind))) return st;
+    }
 
     Model& m = *out;
     m = Model();
@@ -451,6 +473,11 @@ Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology*
         m.constraints.push_back({std::min(a, b), std::max(a, b)});
     }
     std::sort(m.constraints.begin(), m.constraints.end());
+    for (const auto& e : other_kind) {
+        const std::uint32_t a = r.rank[e[0]], b = r.rank[e[1]];
+        m.kind_exceptions.push_back({std::min(a, b), std::max(a, b)});
+    }
+    std::sort(m.kind_exceptions.begin(), m.kind_exceptions.end());
     static_assert(noEdge == kNoHalfEdge, "a border half-edge has the same mark in both");
     if (topo) {
         // Model half-edge 3f + k is the kernel's half-edge 3f + k (face f, from its vertex k), so
@@ -467,8 +494,8 @@ Status decode_erdz_topology(const std::string& bytes, Model* out, ModelTopology*
         for (std::size_t e = 0; e < 3 * nf; ++e) t.corners[fill[m.faces[e / 3][e % 3]]++] = std::uint32_t(e);
     }
     if (info)
-        fill_info(version, method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second, sec[3].second},
-                  bytes.size(), free_points, chains, flips, q.size(), info);
+        fill_info(version, method, step, lat.full, header, {sec[0].second, sec[1].second, sec[2].second, sec[3].second, sec[4].second},
+                  bytes.size(), free_points, chains, flips, q.size(), other_kind.size(), info);
     return Status::success();
 }
 

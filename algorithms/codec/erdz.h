@@ -2,14 +2,16 @@
 // self-describing container whose sections are range-coded (algorithms/codec/range_coder.h).
 //
 // Layout (integers are LEB128 varints unless said otherwise):
-//   magic      the 4 bytes "ERDZ", then the version byte (3; 2 and 1 are still read: version 1
-//              had no flips section, versions 1 and 2 adapted every BitModel by fixed steps of
-//              1/32 and coded positions and values under the plainer contexts said below)
+//   magic      the 4 bytes "ERDZ", then the version byte (3, or 4 for a model with edges of two
+//              kinds; 2 and 1 are still read: version 1 had no flips section, versions 1 and 2
+//              adapted every BitModel by fixed steps of 1/32 and coded positions and values under
+//              the plainer contexts said below)
 //   header     width, height, maxval, channels (1 or 3), kind (0 basic, 1 erd), edges (0 soft,
 //              1 hard), step (the value quantisation step in 1/256ths, >= 1), lattice (0: free
 //              vertices on the even lattice, 1: on the doubled lattice), the method's name
 //              (length byte + that many bytes of [a-z0-9_-], may be empty)
-//   sections   four, in this order, each its byte length (varint) then its range-coded bytes:
+//   sections   four (five in version 4), in this order, each its byte length (varint) then its
+//              range-coded bytes:
 //     positions  the vertices on no constrained edge, other than the four corners: occupancy of
 //                the lattice as a quadtree, one adaptive bit per child (context: level, how many
 //                children of the parent are occupied (not in 1, 2) and how many earlier siblings
@@ -24,7 +26,12 @@
 //                k minus a prediction from the vertex's already-coded neighbours in that wedge,
 //                and in channels 1 and 2 also the residual of channel 0, under a context of the
 //                neighbours' spread (and, not in 1, 2, whether there is only one)
-//   Nothing may follow the last section.
+//     kinds      (version 4 only) the discontinuity edges of the other kind than the header's
+//                edges (Model::kind_exceptions, algorithms/model/edge_kinds.h): one adaptive bit
+//                per edge across which the decoded values jump (erdz_kinds.cpp); an edge listed in
+//                the model whose values quantisation merged is no discontinuity and is not kept
+//   Nothing may follow the last section. Models with edges of one kind are written as version 3,
+//   byte for byte as before per-edge kinds, so every erd since version 3 reads them.
 //
 // Topology is not stored. The decoder rebuilds the constrained Delaunay triangulation of the
 // positions with the edges as constraints (kernel/cdt.h), the same as the encoder's (the same
@@ -65,12 +72,13 @@ struct ErdzInfo {
     double step = 0.0;
     bool full_lattice = false;          // free vertices on the doubled lattice
     std::size_t header_bits = 0;        // magic, version, header and the section length prefixes
-    std::size_t position_bits = 0, edge_bits = 0, flip_bits = 0, value_bits = 0;
+    std::size_t position_bits = 0, edge_bits = 0, flip_bits = 0, value_bits = 0, kind_bits = 0;
     std::size_t total_bits = 0;
     std::size_t free_points = 0;        // coded in the positions section
     std::size_t chains = 0, chain_steps = 0;
     std::size_t flips = 0;              // edges flipped after the rebuild
     std::size_t coded_values = 0;       // vertices (basic) or wedges (erd), times channels
+    std::size_t other_kind_edges = 0;   // edges of the other kind (version 4)
 };
 
 struct ErdzLimits {

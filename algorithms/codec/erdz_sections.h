@@ -1,4 +1,4 @@
-// The four coded sections of an .erdz file (algorithms/codec/erdz.h has the layout): each an
+// The coded sections of an .erdz file (algorithms/codec/erdz.h has the layout): each an
 // encoder that returns the section's bytes (the newest version, kErdzVersion) and a decoder
 // that checks everything it reads, for the file's version.
 #pragma once
@@ -16,8 +16,10 @@
 
 namespace erd::codec {
 
-// The newest .erdz version (the encoders write it); the decoders read 1 .. kErdzVersion.
-constexpr int kErdzVersion = 3;
+// The newest .erdz version; the decoders read 1 .. kErdzVersion. The encoder writes version 3
+// unless the model has edges of two kinds (version 4: version 3 and a kinds section).
+constexpr int kErdzVersion = 4;
+constexpr int kErdzPlainVersion = 3;
 inline Adaptation adaptation(int version) { return version <= 2 ? Adaptation::fixed : Adaptation::warm; }
 
 // The free vertices' lattice: cells (i, j) of a GW x GH grid, the point (2i, 2j) on the even
@@ -67,6 +69,18 @@ struct ValueGraph {
 std::string encode_values(const ValueGraph& g, int channels, const std::vector<std::int64_t>& q);
 Status decode_values(const unsigned char* data, std::size_t size, const ValueGraph& g, int channels, int version,
                      std::vector<std::int64_t>* q);
+
+// Kinds (version 4): the discontinuity edges of the other kind than the model's (erdz_kinds.cpp
+// has the visiting order). corner_unit and q are the rebuilt triangulation's coding units and
+// their quantised values (channels per unit). The encoder asks other_kind(a, b) for each
+// discontinuity a-b (vertices of cdt) and returns "" when it said no to every one; *coded (may be
+// null) gets the number of edges of the other kind. The decoder returns those edges (pairs of
+// vertices of cdt) and refuses a section that ends early, goes on, or lists none.
+using KindChoice = std::function<bool(VertInd a, VertInd b)>;
+std::string encode_kinds(const Cdt& cdt, const std::vector<std::uint32_t>& corner_unit, int channels,
+                         const std::vector<std::int64_t>& q, const KindChoice& other_kind, std::size_t* coded = nullptr);
+Status decode_kinds(const unsigned char* data, std::size_t size, const Cdt& cdt, const std::vector<std::uint32_t>& corner_unit,
+                    int channels, const std::vector<std::int64_t>& q, std::vector<std::array<VertInd, 2>>* out);
 
 // The largest |k| a value section holds (values up to 1e9 at the finest step).
 constexpr std::int64_t kMaxQuantised = std::int64_t(1) << 39;

@@ -22,6 +22,20 @@ void measure_line(int n, At at, int strong, EdgeKindStats* s) {
         const auto opposite = [&](int f) { return (f > 0) != (d > 0) && f != 0 && double(std::abs(f)) > lim; };
         if (same(f1) || same(f2)) ++s->soft;
         else if (!opposite(f1) && !opposite(f2)) ++s->hard;
+        ++s->steps;
+        // Clean: flat ground either side of a transition of one difference, or of two (the step
+        // and its larger same-sign flank).
+        const auto flat = [&](int f, double transition) { return double(std::abs(f)) <= kFlatRatio * transition; };
+        if (flat(f1, ad) && flat(f2, ad)) {
+            ++s->clean;
+        } else if (same(f1) || same(f2)) {
+            const bool before = same(f1) && (!same(f2) || std::abs(f1) >= std::abs(f2));
+            const int lo = before ? i - 1 : i, hi = before ? i + 1 : i + 2;  // the ramp at(lo) .. at(hi)
+            if (lo >= 1 && hi + 1 < n) {
+                const double total = std::abs(at(hi) - at(lo));
+                if (flat(at(lo) - at(lo - 1), total) && flat(at(hi + 1) - at(hi), total)) ++s->clean;
+            }
+        }
     }
 }
 

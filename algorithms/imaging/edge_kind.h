@@ -9,8 +9,20 @@
 //   soft  when a flanking difference of the same sign exceeds kFlankRatio * d: the step is
 //         spread over more pixels (blurred by a lens, a filter or anti-aliasing);
 //   neither (a ridge: a flank of the opposite sign, a line one pixel wide) otherwise.
-// The image is hard when hard / (hard + soft) >= kHardFraction (docs/DECISIONS.md "Hard edges"
+// The image is hard when hard / (hard + soft) >= kHardFraction (docs/DECISIONS.md "Edge kinds"
 // gives the measured fractions).
+//
+// Clean steps (issue 44: anti-aliased graphics). A strong step is also clean when the ground is
+// flat on both sides of it: the transition takes one difference (the step) or two (the step and
+// its larger same-sign flank: a coverage ramp one pixel wide, as anti-aliasing draws an edge), and
+// the differences just outside it are at most kFlatRatio of the transition. Rendered graphics
+// (flat colours, anti-aliased edges) have many; photos few, their ground is never that flat. An
+// image is stepped when clean / steps >= kSteppedFraction, steps counting every strong step that
+// is the largest along its line (hard, soft or neither), unless nearly all its strong steps are
+// hard (hard_fraction >= kPixelArtFraction: aliased drawings, pixel art, whose crack edges need
+// nothing else); the ERD methods then try soft detection, hard edges and no edges, and decide each
+// edge's kind by fit (algorithms/methods/scaffold.h run_erd_method). A stepped image may be hard
+// as well (a rendering whose straight edges fall on pixel boundaries: the flag of thirteen stripes).
 //
 // Cracks. A hard edge is traced on the half-pixel grid (doubled coordinates): the midpoint
 // (2x+1, 2y) between pixels (x, y) and (x+1, y) and (2x, 2y+1) between (x, y) and (x, y+1) are
@@ -30,13 +42,20 @@ namespace erd {
 constexpr double kStrongStep = 0.08;   // of maxval
 constexpr double kFlankRatio = 0.2;
 constexpr double kHardFraction = 0.6;
+constexpr double kFlatRatio = 0.05;
+constexpr double kSteppedFraction = 0.09;
+constexpr double kPixelArtFraction = 0.9;
 
 struct EdgeKindStats {
     std::size_t hard = 0;  // strong steps completed between two pixels
     std::size_t soft = 0;  // strong steps spread over more pixels
+    std::size_t steps = 0;  // every strong step that is the largest along its line
+    std::size_t clean = 0;  // ... of them with flat ground on both sides (a one- or two-pixel transition)
     double hard_fraction() const { return hard + soft ? double(hard) / double(hard + soft) : 0.0; }
+    double clean_fraction() const { return steps ? double(clean) / double(steps) : 0.0; }
     // No strong step at all (a smooth image) counts as soft: nothing to gain from hard edges.
     bool is_hard() const { return hard + soft > 0 && hard_fraction() >= kHardFraction; }
+    bool is_stepped() const { return hard_fraction() < kPixelArtFraction && clean_fraction() >= kSteppedFraction; }
 };
 
 EdgeKindStats measure_edge_kind(const Image& im);

@@ -33,7 +33,7 @@ struct EdgePolylineParams {
 // Doubled-coordinate units (half-pixel grid steps) per pixel of epsilon.
 constexpr double kEpsilonUnitsPerPixel = 2.0;
 // Douglas-Peucker tolerance on cracks, in multiples of the soft one: the side test is what binds
-// (docs/DECISIONS.md "Hard edges").
+// (docs/DECISIONS.md "Edge kinds").
 constexpr double kHardEpsilonScale = 2.0;
 
 // How a hard-edged chain simplifies its cracks: keeping every pixel on its side

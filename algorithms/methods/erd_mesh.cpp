@@ -72,7 +72,7 @@ public:
         if (progress_->cancelled()) return 0;
         const PolylineList* kept = &chain_.simplify(l, eps * eps_unit_, rule_);
         // Hard edges: the side-keeping curves when they fit the budget, else plain Douglas-Peucker
-        // on the same cracks (docs/DECISIONS.md "Hard edges").
+        // on the same cracks (docs/DECISIONS.md "Edge kinds").
         if (hard_ && fallback_ && double(distinct_points(*kept)) > budget_) {
             kept = &chain_.simplify(l, eps * eps_unit_, rule_, CrackRule::plain);
             fell_back_ = true;

@@ -60,8 +60,10 @@ std::size_t memory_bound(const MethodInfo& method, int width, int height, int ch
 
 ErdMemoryBasis erd_memory_basis(const Image& gray, const GenerateOptions& o, std::size_t target, bool erded) {
     ErdMemoryBasis b;
-    b.hard = o.edges == EdgeChoice::hard || (o.edges == EdgeChoice::automatic && measure_edge_kind(gray).is_hard());
-    if (b.hard) return b;
+    const EdgeKindStats ek = o.edges == EdgeChoice::automatic ? measure_edge_kind(gray) : EdgeKindStats();
+    b.hard = o.edges == EdgeChoice::hard || (o.edges == EdgeChoice::automatic && ek.is_hard());
+    b.stepped = o.edges == EdgeChoice::automatic && ek.is_stepped() && !gray.real();  // as begin_erd_method
+    if (b.hard && !b.stepped) return b;
     // The detections select_erd_params (erd_params.cpp) makes: the simple test at 0.055 unless
     // -S is given, then the table's beta (or 0.03 for a simple image, or -b), then smaller ones
     // that the first pass covers. The widest is the largest beta.
@@ -99,6 +101,23 @@ std::size_t memory_estimate(const MethodInfo& method, const Image& image, const 
         const ErdMemoryBasis b = erd_memory_basis(gray, options, std::size_t(n), erded);
         f = b.hard ? (erded ? &kErdedHard : &kErdgpiHard) : (erded ? &kErdedSoft : &kErdgpiSoft);
         kept = double(b.kept);
+        if (b.stepped) {
+            // A stepped image (edge_kind.h) runs the soft and the hard treatment one after the other
+            // (scaffold.h run_erd_method) and keeps the best model: the larger of their peaks (the
+            // hard fit has no colour terms, the soft fit's are taken), plus the model kept meanwhile
+            // (about 100 bytes a vertex and channel) and the two reconstructions and the mask of
+            // choose_edge_kinds (4 bytes a pixel and channel, and one). Within -11..+22% of the
+            // peaks of the 16 graphics of make eval x ERDGPI, ERDED x 0.5, 1, 2% (93 runs that reach
+            // N; docs/DECISIONS.md "Edge kinds").
+            const Fit& soft = erded ? kErdedSoft : kErdgpiSoft;
+            const Fit& hard = erded ? kErdedHard : kErdgpiHard;
+            const auto run_bytes = [&](const Fit& g, double kept_points) {
+                return g.fixed - kProcess + g.per_pixel * pixels + g.per_point * n + g.per_kept * kept_points +
+                       (c - 1.0) * (soft.per_pixel_channel * pixels + soft.per_point_channel * n);
+            };
+            const double bytes = std::max(run_bytes(soft, double(b.kept)), run_bytes(hard, 0.0)) + 100.0 * c * n + (4.0 * c + 1.0) * pixels;
+            return std::min(std::size_t(bytes), memory_bound(method, image.width, image.height, image.channels, options));
+        }
     }
     const double bytes = std::max(65536.0, f->fixed - kProcess + f->per_pixel * pixels + f->per_point * n + f->per_kept * kept +
                                                (c - 1.0) * (f->per_pixel_channel * pixels + f->per_point_channel * n));

@@ -32,6 +32,7 @@ std::size_t memory_estimate(const MethodInfo& method, const Image& image, const 
 // What memory_estimate bases an ERD estimate on, for tests and the bench.
 struct ErdMemoryBasis {
     bool hard = false;         // the crack detector (no kept points)
+    bool stepped = false;      // --edges auto on a stepped image: the soft and hard treatments both run
     double beta = 0, r = 0;    // the widest detection the parameter selection makes
     std::size_t kept = 0;      // points its pass is expected to keep
 };

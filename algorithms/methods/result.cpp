@@ -37,6 +37,18 @@ std::vector<std::string> result_lines(const RunStats& r) {
                       (s.edges_measured ? " (measured: " + std::to_string(s.hard_steps) + " hard and " + std::to_string(s.soft_steps) +
                                               " soft strong steps)"
                                         : " (asked for)"));
+        if (s.edges_measured)
+            out.push_back("clean steps: " + std::to_string(s.clean_steps) + " of " + std::to_string(s.all_steps) + " strong steps" +
+                          (s.stepped ? " (stepped)" : ""));
+        if (s.tried) {
+            static const char* const kTried[3] = {"soft detection", "hard edges", "no edges"};
+            std::string tried = "edge treatments tried (each edge's kind by fit):";
+            for (int k = 0; k < 3; ++k) tried += std::string(k ? ", " : " ") + kTried[k] + " " + real("%.4f", s.tried_psnr[k]) + " dB";
+            if (s.tried_choice >= 0) tried += std::string("; kept ") + kTried[s.tried_choice];
+            out.push_back(tried);
+        }
+        if (s.kind_exceptions > 0)
+            out.push_back("edges of the other kind: " + std::to_string(s.kind_exceptions) + " (" + (s.hard_edges ? "soft" : "hard") + ")");
         if (s.plain_psnr > 0 || s.exact_psnr > 0)
             out.push_back("hard curves: plain past the budget " + real("%.4f", s.plain_psnr) + " dB, side-keeping only " +
                           real("%.4f", s.exact_psnr) + " dB (the better kept)");

@@ -67,6 +67,16 @@ struct ErdStepStats {
     // plain_psnr holds the run's own PSNR when the flips' guard measured it (else 0).
     double plain_psnr = 0, exact_psnr = 0;
     bool plain_fallback = false;  // step 1's selection took the plain curves somewhere (InitialMesh)
+    // Stepped or hard images under --edges auto (edge_kind.h, issue 44): the clean steps measured,
+    // and the PSNRs of the three treatments tried (their own reconstructions, each edge's kind
+    // chosen by fit): soft detection, hard (crack) edges, no detected edges; the best is kept
+    // (scaffold.h run_erd_method).
+    std::size_t clean_steps = 0, all_steps = 0;
+    bool stepped = false;               // measured stepped (edge_kind.h EdgeKindStats::is_stepped)
+    bool tried = false;                 // the three treatments were tried
+    double tried_psnr[3] = {0, 0, 0};
+    int tried_choice = -1;              // 0, 1, 2: which of them was kept
+    std::size_t kind_exceptions = 0;    // edges of the other kind than the model's (Model::kind_exceptions)
 };
 
 // A real image (issue 47): its valid region and the max-error guarantee.

@@ -13,6 +13,7 @@
 #include "algorithms/imaging/valid_region.h"
 #include "algorithms/methods/greedy_models.h"
 #include "algorithms/methods/minimax_fit.h"
+#include "algorithms/model/edge_kinds.h"
 #include "algorithms/model/model_holes.h"
 #include "algorithms/methods/optimize.h"
 #include "algorithms/methods/wedge_fit.h"
@@ -226,7 +227,12 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         s.edges_measured = true;
         s.hard_steps = ek.hard;
         s.soft_steps = ek.soft;
+        s.clean_steps = ek.clean;
+        s.all_steps = ek.steps;
         s.hard_edges = ek.is_hard();
+        // A real model is point-evaluated everywhere (reconstruct.h): the kinds of its edges change
+        // nothing, so a real image tries no second treatment (try_edge_treatments).
+        s.stepped = ek.is_stepped() && !image.real();
     } else {
         s.hard_edges = options.edges == EdgeChoice::hard;
     }
@@ -401,10 +407,11 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
     measure_max_error(image, result->model, options, result);
 }
 
-Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
-    result->stats.erd.plain_psnr = 0;
-    Status st = run(image, options, true, result);
-    if (!st || result->model.edges != EdgeKind::hard) return st;
+namespace {
+
+// The second run of a hard-edged model (run_erd_method).
+Status hard_second_run(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
+    Status st;
     const auto point_psnr = [&](const Model& m, double* db) {
         Image rec;
         Status s = reconstruct(m, false, &rec, {}, options.threads);
@@ -426,6 +433,58 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
     result->stats.erd.plain_psnr = plain;
     result->stats.erd.exact_psnr = exact;
     return Status::success();
+}
+
+// An image measured stepped (edge_kind.h) after its first run in *result (soft or hard edges as
+// measured): the three treatments of its edges, soft detection, hard edges and no
+// detected edges, each model with its edges' kinds chosen by fit (edge_kinds.h); the one whose
+// own reconstruction has the highest PSNR is kept (the first tried on a tie; an exact one ends the
+// search), with the first run's measurement.
+Status try_edge_treatments(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
+    const ErdStepStats measured = result->stats.erd;
+    const int first = measured.hard_edges ? 1 : 0;
+    double tried[3] = {0, 0, 0}, best = 0;
+    if (Status st = choose_edge_kinds(image, &result->model, &tried[first], options.threads); !st) return st;
+    best = tried[first];
+    int choice = first;
+    for (int k = 0; k < 3; ++k) {
+        if (k == first || std::isinf(best)) continue;  // nothing beats an exact model
+        GenerateOptions o = options;
+        o.edges = k == 0 ? EdgeChoice::soft : EdgeChoice::hard;
+        o.detect = k < 2 && options.detect;
+        GenerateResult other;
+        if (Status st = run_erd_method(image, o, run, &other); !st) return st;
+        if (Status st = choose_edge_kinds(image, &other.model, &tried[k], options.threads); !st) return st;
+        if (tried[k] > best) {
+            best = tried[k];
+            choice = k;
+            *result = std::move(other);
+        }
+    }
+    ErdStepStats& s = result->stats.erd;
+    s.edges_measured = true;
+    s.hard_steps = measured.hard_steps;
+    s.soft_steps = measured.soft_steps;
+    s.clean_steps = measured.clean_steps;
+    s.all_steps = measured.all_steps;
+    s.stepped = measured.stepped;
+    s.tried = true;
+    for (int k = 0; k < 3; ++k) s.tried_psnr[k] = tried[k];
+    s.tried_choice = choice;
+    s.hard_edges = result->model.edges == EdgeKind::hard;
+    s.kind_exceptions = result->model.kind_exceptions.size();
+    return Status::success();
+}
+
+}  // namespace
+
+Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result) {
+    result->stats.erd.plain_psnr = 0;
+    Status st = run(image, options, true, result);
+    if (st && result->model.edges == EdgeKind::hard) st = hard_second_run(image, options, run, result);
+    const ErdStepStats& s = result->stats.erd;
+    if (st && s.edges_measured && s.stepped) st = try_edge_treatments(image, options, run, result);
+    return st;
 }
 
 }  // namespace erd

@@ -87,10 +87,15 @@ using ErdRun = Status (*)(const Image& image, const GenerateOptions& options, bo
 
 // ERDED or ERDGPI: run(hard_fallback = true); when the model's edges are hard, also run(false),
 // since each treatment of crack curves too long for the budget wins on some images
-// (docs/DECISIONS.md "Hard edges"), and keep the model whose point reconstruction has the higher
+// (docs/DECISIONS.md "Edge kinds"), and keep the model whose point reconstruction has the higher
 // PSNR (the first on a tie); both PSNRs go to result->stats.erd. run(false) is skipped when no
 // count of run(true) took the plain curves (stats.erd.plain_fallback false): it would repeat
 // run(true) exactly, so both PSNRs are run(true)'s.
+// Under --edges auto, an image measured stepped (algorithms/imaging/edge_kind.h) is then
+// also meshed with the other treatments of its edges (soft detection, hard edges, no detected
+// edges), each model's edge kinds chosen by fit (algorithms/model/edge_kinds.h), and the model
+// whose own reconstruction has the highest PSNR is kept (docs/DECISIONS.md "Edge kinds per
+// edge"); stats.erd.tried_psnr has the three PSNRs.
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result);
 
 // The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the

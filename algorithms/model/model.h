@@ -27,7 +27,9 @@ enum class ModelKind { basic, erd };
 //         per pixel (imgsyn_aa). Files without a header block are soft.
 //   hard  steps between two pixels (drawings, screenshots, aliased renderings): each pixel is
 //         the function at its centre (point evaluation), so a pixel lies wholly on one side.
-// Written to an .erd as the header line "edges hard" (algorithms/model/model_io.h).
+// Written to an .erd as the header line "edges hard" (algorithms/model/model_io.h). Per edge
+// (issue 44): Model::kind_exceptions lists the discontinuity edges of the other kind, which
+// decide the pixels near them (algorithms/model/edge_kinds.h).
 enum class EdgeKind { soft, hard };
 
 struct Model {
@@ -59,6 +61,9 @@ struct Model {
     std::vector<std::array<double, 3>> corner_values;  // erd only: wedge values at the corners of
                                                        // face f in channel c: [f*channels + c]
     std::vector<std::array<std::uint32_t, 2>> constraints;  // erd only: constrained edges (i < j)
+    // erd only: the discontinuity edges (i < j, sorted, no repeats) whose kind is the other one
+    // than `edges` (algorithms/model/edge_kinds.h); empty: every edge is of kind `edges`.
+    std::vector<std::array<std::uint32_t, 2>> kind_exceptions;
 
     std::size_t size() const { return vertices.size(); }
 };

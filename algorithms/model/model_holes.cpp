@@ -59,16 +59,19 @@ DroppedFaces drop_faces_over_nodata(const std::vector<std::uint8_t>& valid, Mode
         for (std::size_t i = 0; i + 1 < edges.size(); ++i)
             if (edges[i] == edges[i + 1]) shared.push_back(edges[i]);
     }
-    std::size_t c = 0;
-    for (const auto& e : m->constraints) {
-        if (index[e[0]] == 0xffffffffu || index[e[1]] == 0xffffffffu) continue;
-        std::uint32_t p = index[e[0]], q = index[e[1]];
-        if (p > q) std::swap(p, q);
-        if (!std::binary_search(shared.begin(), shared.end(), (std::uint64_t(p) << 32) | q)) continue;
-        m->constraints[c++] = {p, q};
+    // The same for the edges of the other kind (issue 44), which must stay discontinuities.
+    for (auto* edges : {&m->constraints, &m->kind_exceptions}) {
+        std::size_t c = 0;
+        for (const auto& e : *edges) {
+            if (index[e[0]] == 0xffffffffu || index[e[1]] == 0xffffffffu) continue;
+            std::uint32_t p = index[e[0]], q = index[e[1]];
+            if (p > q) std::swap(p, q);
+            if (!std::binary_search(shared.begin(), shared.end(), (std::uint64_t(p) << 32) | q)) continue;
+            (*edges)[c++] = {p, q};
+        }
+        edges->resize(c);
+        std::sort(edges->begin(), edges->end());
     }
-    m->constraints.resize(c);
-    std::sort(m->constraints.begin(), m->constraints.end());
     if (erd) {
         ModelTopology topo;
         if (build_topology(*m, &topo).ok())

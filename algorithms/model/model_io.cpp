@@ -166,7 +166,6 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
         listed[v] = 1;
         for (std::size_t c = 0; c < C; ++c) cv(h, c) = z[c];
     }
-    if (Status s = expect_end(tk, "wedge line"); !s) return s;
     std::vector<std::uint32_t> fan;
     for (std::uint32_t v = 0; v < nv; ++v) {
         const std::uint32_t b = topo.corner_begin[v], e = topo.corner_begin[v + 1];
@@ -248,13 +247,60 @@ Status apply_wedges(Tokens& tk, const ModelTopology& topo, Model* m) {
 
 }  // namespace
 
-// What the header block said beyond Model's own fields.
+// The n edge lines after the wedge lines ("i j": a discontinuity edge of the other kind than the
+// model's, hard-edges / soft-edges in the header) into m->kind_exceptions, sorted.
+Status read_edge_lines(Tokens& tk, const ModelTopology& topo, std::uint64_t n, Model* m) {
+    m->kind_exceptions.clear();
+    if (n == 0) return Status::success();
+    const std::uint64_t nv = m->vertices.size();
+    std::vector<std::pair<std::array<std::uint32_t, 2>, int>> lines;  // the pair and its line
+    reserve_arriving(&lines, n);
+    for (std::uint64_t i = 0; i < n; ++i) {
+        std::uint64_t v[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            if (Status s = tk.uint([&] { return std::string(k ? "second" : "first") + " vertex index of edge line " + std::to_string(i); }, 0,
+                                   std::uint64_t(1) << 40, &v[k]);
+                !s)
+                return s;
+            if (v[k] >= nv)
+                return Status::bad_input(tk.where() + "edge line " + std::to_string(i) + ": vertex index " + std::to_string(v[k]) +
+                                         " out of range (" + std::to_string(nv) + " vertices)");
+        }
+        lines.push_back({{std::uint32_t(std::min(v[0], v[1])), std::uint32_t(std::max(v[0], v[1]))}, tk.line()});
+    }
+    std::sort(lines.begin(), lines.end());
+    std::vector<std::array<std::uint32_t, 2>> disc;
+    for (std::uint32_t h = 0; h < topo.twin.size(); ++h)
+        if (topo.twin[h] != kNoHalfEdge && h < topo.twin[h] && is_discontinuity(*m, topo, h)) {
+            const std::uint32_t a = m->faces[h / 3][h % 3], b = m->faces[h / 3][(h + 1) % 3];
+            disc.push_back({std::min(a, b), std::max(a, b)});
+        }
+    std::sort(disc.begin(), disc.end());
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const auto& e = lines[i].first;
+        const std::string edge = "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]);
+        if (i > 0 && lines[i - 1].first == e)
+            return Status::bad_input("line " + std::to_string(lines[i].second) + ": " + edge + " is listed twice");
+        if (!std::binary_search(disc.begin(), disc.end(), e))
+            return Status::bad_input("line " + std::to_string(lines[i].second) + ": " + edge +
+                                     " is not a discontinuity of the model (no edge of a face, or equal values on both sides)");
+        m->kind_exceptions.push_back(e);
+    }
+    return Status::success();
+}
+
+// What the header block says beyond Model's fields: the lines of the "edges" key and of the
+// per-edge kind key (0 when absent), and that key's count of edge lines; a real model's keys.
 struct HeaderFacts {
-    int edges_line = 0;     // the line of the "edges" key (0 when absent)
+    int edges_line = 0;
+    int listed_line = 0;
+    EdgeKind listed_kind = EdgeKind::hard;  // "hard-edges N" or "soft-edges N"
+    std::uint64_t listed = 0;
     bool doubled = false;   // a basic model's coordinates are doubled ("doubled")
     bool range = false;     // "range" given: a real model
     bool holes = false;     // "holes W H" given
     bool type = false;
+    bool seen[11] = {};     // the raster keys given (raster_key)
 };
 
 namespace {
@@ -326,86 +372,118 @@ SampleType type_of(std::string_view t, bool* ok) {
     return SampleType::u8;
 }
 
+// The header keys of a real model, a model with holes and a raster's georeferencing (model_io.h):
+// true when t is one (its value read into *m and *facts, or *r the problem).
+constexpr const char* kRasterKeys = "type, range, nodata, holes, doubled, geo-pixel-scale, geo-tiepoints, geo-transform, geo-keys, geo-doubles, geo-ascii";
+
+bool raster_key(Tokens& tk, std::string_view t, Model* m, HeaderFacts* hf, Status* r) {
+    static const char* const kKeys[] = {"type", "range", "nodata", "holes", "doubled", "geo-pixel-scale",
+                                        "geo-tiepoints", "geo-transform", "geo-keys", "geo-doubles", "geo-ascii"};
+    std::size_t k = 0;
+    while (k < sizeof kKeys / sizeof kKeys[0] && t != kKeys[k]) ++k;
+    if (k == sizeof kKeys / sizeof kKeys[0]) return false;
+    const std::string key = kKeys[k];
+    if (hf->seen[k]) {
+        *r = Status::bad_input(tk.where() + "header key '" + key + "' given twice");
+        return true;
+    }
+    hf->seen[k] = true;
+    Status& s = *r;
+    if (key == "type") {
+        if (!tk.next(&t)) return s = Status::bad_input("file ends early: expected the value of 'type'"), true;
+        bool ok = false;
+        m->meta.type = type_of(t, &ok);
+        if (!ok)
+            s = Status::bad_input(tk.where() + "type must be uint8, uint16, uint32, int16, int32, float32 or float64, found '" + show(t) + "'");
+        hf->type = true;
+    } else if (key == "range") {
+        if ((s = header_number(tk, "range low", false, &m->lo)) && (s = header_number(tk, "range high", false, &m->hi)) && m->lo > m->hi)
+            s = Status::bad_input(tk.where() + "range low is above range high");
+        m->real = true;
+        hf->range = true;
+    } else if (key == "nodata") {
+        s = header_number(tk, "nodata", true, &m->meta.nodata);
+        m->meta.has_nodata = true;
+    } else if (key == "holes") {
+        std::uint64_t w = 0, h = 0;
+        if ((s = tk.uint("holes width", 2, kMaxImageSide, &w)) && (s = tk.uint("holes height", 2, kMaxImageSide, &h)) &&
+            std::int64_t(w * h) > kMaxImagePixels)
+            s = Status::bad_input(tk.where() + "image " + std::to_string(w) + " x " + std::to_string(h) + " is larger than the limit");
+        m->width = int(w);
+        m->height = int(h);
+        m->holes = true;
+        hf->holes = true;
+    } else if (key == "doubled") {
+        hf->doubled = true;
+    } else if (key == "geo-pixel-scale") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.pixel_scale);
+    } else if (key == "geo-tiepoints") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.tiepoints);
+    } else if (key == "geo-transform") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.transform);
+    } else if (key == "geo-keys") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.keys);
+    } else if (key == "geo-doubles") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.doubles);
+    } else {  // geo-ascii
+        if (!tk.next(&t)) s = Status::bad_input("file ends early: expected the value of 'geo-ascii'");
+        else if (!percent_decode(t, &m->meta.geo.ascii)) s = Status::bad_input(tk.where() + "geo-ascii has a bad %XX escape");
+    }
+    return true;
+}
+
 }  // namespace
 
 // The header block (model_io.h): "erd-header 1", then key lines, then "end".
-Status read_header(Tokens& tk, Model* m, HeaderFacts* hf) {
+Status read_header(Tokens& tk, Model* m, HeaderFacts* facts) {
     std::string_view t;
     tk.next(&t);  // "erd-header"
     std::uint64_t version = 0;
     if (Status s = tk.uint("header version", 0, ~0ull >> 1, &version); !s) return s;
     if (version != 1)
         return Status::bad_input(tk.where() + "header version " + std::to_string(version) + " is not supported (this reader knows 1)");
-    static const char* const kKeys[] = {"edges", "channels", "type", "range", "nodata", "holes", "doubled", "geo-pixel-scale",
-                                        "geo-tiepoints", "geo-transform", "geo-keys", "geo-doubles", "geo-ascii"};
-    constexpr std::size_t kCount = sizeof kKeys / sizeof kKeys[0];
-    int seen[kCount] = {};
+    int* edges_line = &facts->edges_line;
+    int channels_line = 0;
     for (;;) {
         if (!tk.next(&t)) return Status::bad_input("file ends early: expected a header key or 'end'");
-        if (t == "end") return Status::success();
-        std::size_t k = 0;
-        while (k < kCount && t != kKeys[k]) ++k;
-        if (k == kCount)
-            return Status::bad_input(tk.where() + "unknown header key '" + show(t) +
-                                     "' (this reader knows: edges, channels, type, range, nodata, holes, doubled, geo-pixel-scale, "
-                                     "geo-tiepoints, geo-transform, geo-keys, geo-doubles, geo-ascii)");
-        if (seen[k]) return Status::bad_input(tk.where() + "header key '" + kKeys[k] + "' given twice");
-        seen[k] = tk.line();
-        const std::string key = kKeys[k];
-        Status s;
-        if (key == "edges") {
-            hf->edges_line = tk.line();
-            if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
-            if (t != "hard" && t != "soft")
-                return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
-            m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
-        } else if (key == "channels") {
+        if (t == "end") {
+            if (facts->listed_line && facts->listed_kind == m->edges)
+                return Status::bad_input("line " + std::to_string(facts->listed_line) + ": header key '" +
+                                         (m->edges == EdgeKind::hard ? "hard" : "soft") + "-edges' lists edges of the kind 'edges' gives them already (" +
+                                         (m->edges == EdgeKind::hard ? "hard" : "soft") + ")");
+            return Status::success();
+        }
+        if (t == "hard-edges" || t == "soft-edges") {
+            if (facts->listed_line) return Status::bad_input(tk.where() + "header keys 'hard-edges' and 'soft-edges': only one of them, once");
+            facts->listed_line = tk.line();
+            facts->listed_kind = t == "hard-edges" ? EdgeKind::hard : EdgeKind::soft;
+            if (Status s = count(tk, [&] { return "the count of '" + std::string(t) + "'"; }, 0, 4, &facts->listed); !s) return s;
+            continue;
+        }
+        if (t == "channels") {
+            if (channels_line) return Status::bad_input(tk.where() + "header key 'channels' given twice");
+            channels_line = tk.line();
             if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'channels' (1 or 3)");
             if (t != "1" && t != "3")
                 return Status::bad_input(tk.where() + "channels must be 1 (gray) or 3 (RGB), found '" + show(t) + "'");
             m->channels = t == "3" ? 3 : 1;
-        } else if (key == "type") {
-            if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'type'");
-            bool ok = false;
-            m->meta.type = type_of(t, &ok);
-            if (!ok)
-                return Status::bad_input(tk.where() + "type must be uint8, uint16, uint32, int16, int32, float32 or float64, found '" +
-                                         show(t) + "'");
-            hf->type = true;
-        } else if (key == "range") {
-            if (!(s = header_number(tk, "range low", false, &m->lo)) || !(s = header_number(tk, "range high", false, &m->hi))) return s;
-            if (m->lo > m->hi) return Status::bad_input(tk.where() + "range low is above range high");
-            m->real = true;
-            hf->range = true;
-        } else if (key == "nodata") {
-            if (!(s = header_number(tk, "nodata", true, &m->meta.nodata))) return s;
-            m->meta.has_nodata = true;
-        } else if (key == "holes") {
-            std::uint64_t w = 0, h = 0;
-            if (!(s = tk.uint("holes width", 2, kMaxImageSide, &w)) || !(s = tk.uint("holes height", 2, kMaxImageSide, &h))) return s;
-            if (std::int64_t(w * h) > kMaxImagePixels)
-                return Status::bad_input(tk.where() + "image " + std::to_string(w) + " x " + std::to_string(h) + " is larger than the limit");
-            m->width = int(w);
-            m->height = int(h);
-            m->holes = true;
-            hf->holes = true;
-        } else if (key == "doubled") {
-            hf->doubled = true;
-        } else if (key == "geo-pixel-scale") {
-            s = header_list(tk, kKeys[k], &m->meta.geo.pixel_scale);
-        } else if (key == "geo-tiepoints") {
-            s = header_list(tk, kKeys[k], &m->meta.geo.tiepoints);
-        } else if (key == "geo-transform") {
-            s = header_list(tk, kKeys[k], &m->meta.geo.transform);
-        } else if (key == "geo-keys") {
-            s = header_list(tk, kKeys[k], &m->meta.geo.keys);
-        } else if (key == "geo-doubles") {
-            s = header_list(tk, kKeys[k], &m->meta.geo.doubles);
-        } else {  // geo-ascii
-            if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'geo-ascii'");
-            if (!percent_decode(t, &m->meta.geo.ascii)) return Status::bad_input(tk.where() + "geo-ascii has a bad %XX escape");
+            continue;
         }
-        if (!s) return s;
+        if (t != "edges") {
+            Status r;
+            if (raster_key(tk, t, m, facts, &r)) {
+                if (!r) return r;
+                continue;
+            }
+            return Status::bad_input(tk.where() + "unknown header key '" + show(t) +
+                                     "' (this reader knows: edges, hard-edges, soft-edges, channels, " + kRasterKeys + ")");
+        }
+        if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
+        *edges_line = tk.line();
+        if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
+        if (t != "hard" && t != "soft")
+            return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
+        m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
     }
 }
 
@@ -442,15 +520,15 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     Tokens tk(text);
     if (tk.at_end()) return Status::bad_input("empty file");
     Model m;
-    HeaderFacts hf;
+    HeaderFacts header;
     if (tk.peek_is("erd-header"))
-        if (Status s = read_header(tk, &m, &hf); !s) return s;
-    const int edges_line = hf.edges_line;
+        if (Status s = read_header(tk, &m, &header); !s) return s;
+    const int edges_line = header.edges_line ? header.edges_line : header.listed_line;
     std::uint64_t maxval = 0, nv = 0;
     // A real model (header "range") has maxval 0 and values of any finite size.
-    if (Status s = hf.range ? tk.uint("maxval (0 for a real model)", 0, 0, &maxval) : tk.uint("maxval", 1, 65535, &maxval); !s) return s;
-    if (hf.range) tk.allow_any_finite();
-    if (hf.range && !hf.type) m.meta.type = SampleType::f64;  // a real model of unknown type keeps every digit
+    if (Status s = header.range ? tk.uint("maxval (0 for a real model)", 0, 0, &maxval) : tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    if (header.range) tk.allow_any_finite();
+    if (header.range && !header.type) m.meta.type = SampleType::f64;  // a real model of unknown type keeps every digit
     m.maxval = std::uint32_t(maxval);
     if (Status s = count(tk, "vertex count", 4, 4 + 2 * std::uint64_t(m.channels), &nv); !s) return s;
     const std::size_t C = std::size_t(m.channels);
@@ -474,10 +552,11 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
     if (kind == ModelFileKind::basic) {
         m.kind = ModelKind::basic;
         if (edges_line)
-            return Status::bad_input("line " + std::to_string(edges_line) + ": header key 'edges' is for .erd files only");
+            return Status::bad_input("line " + std::to_string(edges_line) + ": header key '" + (header.edges_line ? "edges" : header.listed_kind == EdgeKind::hard ? "hard-edges" : "soft-edges") +
+                                     "' is for .erd files only");
         if (Status s = expect_end(tk, "face"); !s) return s;
         // Pixel coordinates in the file, doubled in the model (doubled already with "doubled").
-        for (std::size_t i = 0; i < nv && !hf.doubled; ++i) {
+        for (std::size_t i = 0; i < nv && !header.doubled; ++i) {
             LatticePoint& p = m.vertices[i];
             if (p.x > kMaxImageSide - 1 || p.y > kMaxImageSide - 1)
                 return Status::bad_input("line " + std::to_string(vlines[i]) + ": " + vname(i) + " (" + std::to_string(p.x) +
@@ -489,11 +568,11 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         m.kind = ModelKind::erd;
     }
     const bool erd = m.kind == ModelKind::erd;
-    const int unit = erd || hf.doubled ? 1 : 2;
-    if (hf.holes) {
+    const int unit = erd || header.doubled ? 1 : 2;
+    if (header.holes) {
         // The size is the header's; the vertices need only lie in it, the corners need not be there.
         if (Status s = check_inside(m.vertices, vlines, unit, m.width, m.height); !s) return s;
-    } else if (Status s = check_vertices(m.vertices, vlines, erd || hf.doubled, unit, &m.width, &m.height); !s) {
+    } else if (Status s = check_vertices(m.vertices, vlines, erd || header.doubled, unit, &m.width, &m.height); !s) {
         return s;
     }
     // Faces sharing a directed edge: the same triangle twice, or overlapping faces.
@@ -511,8 +590,11 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         return Status::bad_input("not a triangulation of the image domain: " + s.message);
     }
     if (Status s = check_all_used(m.vertices, m.faces, vlines, unit); !s) return s;
-    if (m.kind == ModelKind::erd)
+    if (m.kind == ModelKind::erd) {
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
+        if (Status s = read_edge_lines(tk, topo, header.listed, &m); !s) return s;
+        if (Status s = expect_end(tk, header.listed ? "edge line" : "wedge line"); !s) return s;
+    }
     *out = std::move(m);
     if (topo_out) *topo_out = std::move(topo);
     return Status::success();

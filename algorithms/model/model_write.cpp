@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/model/edge_kinds.h"
 #include "algorithms/model/float_chars.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
@@ -247,11 +248,19 @@ Status write_model(const Model& m, std::string* out) {
     o.reserve(m.vertices.size() * (20 + 8 * C) + m.faces.size() * 18);
     Lines line(&o);
     const bool hard = erd && m.edges == EdgeKind::hard;
+    const bool listed = erd && !m.kind_exceptions.empty();
+    if (listed) {  // a file the reader refuses is never written
+        ModelTopology topo;
+        Status st = build_topology(m, &topo);
+        if (st) st = check_kind_exceptions(m, topo);
+        if (!st) return Status::failure(st.message);
+    }
     const bool raster = m.real || m.holes || m.meta.has_nodata || !m.meta.geo.empty();
-    if (hard || C > 1 || raster) {
+    if (hard || listed || C > 1 || raster) {
         o += "erd-header 1\n";
         if (C > 1) o += "channels " + std::to_string(C) + "\n";
-        if (hard) o += "edges hard\n";
+        if (hard || listed) o += hard ? "edges hard\n" : "edges soft\n";
+        if (listed) o += std::string(hard ? "soft" : "hard") + "-edges " + std::to_string(m.kind_exceptions.size()) + "\n";
         put_raster_keys(m, doubled, &o);
         o += "end\n";
     }
@@ -281,6 +290,8 @@ Status write_model(const Model& m, std::string* out) {
     }
     put_faces(mm->faces, &line);
     if (erd) put_wedge_lines(*mm, &o);
+    if (listed)
+        for (const auto& e : m.kind_exceptions) line.num(e[0]).num(e[1]).end();
     *out = std::move(o);
     return Status::success();
 }

@@ -12,6 +12,7 @@
 
 #include "algorithms/imaging/real_image.h"
 #include "algorithms/model/discontinuity_mean.h"
+#include "algorithms/model/edge_kinds.h"
 #include "algorithms/model/prepared_model.h"
 #include "algorithms/model/supersampling.h"
 #include "kernel/raster.h"
@@ -152,6 +153,17 @@ Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersa
     im.meta = m.meta;  // georeferencing and nodata travel to the image (its samples are not touched)
     if (supersample) supersampling(m, p, &im, progress, threads);
     else point_evaluation(m, p, &im, progress, threads);
+    // Per-edge kinds (edge_kinds.h): the pixels the exceptions govern as their kind says.
+    if (m.kind == ModelKind::erd && !m.kind_exceptions.empty() && (exception_kind(m) == EdgeKind::soft) != supersample) {
+        Image other(m.width, m.height, m.maxval, m.channels);
+        if (supersample) point_evaluation(m, p, &other, {}, threads);
+        else supersampling(m, p, &other, {}, threads);
+        const std::vector<std::uint8_t> governed = exception_pixels(m);
+        const std::size_t C = std::size_t(m.channels);
+        for (std::size_t i = 0; i < governed.size(); ++i)
+            if (governed[i])
+                for (std::size_t c = 0; c < C; ++c) im.samples[i * C + c] = other.samples[i * C + c];
+    }
     progress("reconstruct", 1.0);
     *out = std::move(im);
     return Status::success();

@@ -178,7 +178,13 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     // writing corners 0, 2, 1 restores counter-clockwise (normals up).
     // A hard-edged model says so (its pixels are the surface at their centres, not 4x4 means);
     // soft-edged and basic exports stay as they were.
+    // Per-edge kinds (edge_kinds.h) say how many edges are of the other kind.
+    const std::string listed = std::to_string(m.kind_exceptions.size());
     const std::string kind = std::string(erd && m.edges == EdgeKind::hard ? "; edges hard: a pixel is the surface at its centre" : "") +
+                             (erd && !m.kind_exceptions.empty()
+                                  ? (m.edges == EdgeKind::hard ? " (" + listed + " soft edges: the pixels along them are 4x4 means)"
+                                                               : "; " + listed + " hard edges: the pixels along them are the surface at their centres")
+                                  : "") +
                              (C > 1 ? "; colour: z from BT.601 luma, the vertex colours are the RGB values" : "");
     const std::string frame = world ? "x, y in world units (GeoTIFF)" : "x, y in pixels (y up)";
     // A colour value in [0, 1]: over maxval, or a real model's range.

@@ -1,5 +1,6 @@
 #include "algorithms/output/render.h"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +19,9 @@ constexpr Colour kConstrained{235, 25, 25};
 constexpr Colour kVertex{20, 20, 20};
 constexpr const char* kEdgeHex = "#0078ff";
 constexpr const char* kConstrainedHex = "#eb1919";
+// Edges of the other kind than the model's (Model::kind_exceptions, issue 44).
+constexpr Colour kOtherKind{255, 170, 0};
+constexpr const char* kOtherKindHex = "#ffaa00";
 constexpr const char* kVertexHex = "#141414";
 
 // Output position of a lattice coordinate (doubled) along one axis.
@@ -71,6 +75,11 @@ void draw_dot(RgbImage* im, double cx, double cy, double r, Colour c) {
             double cov = std::clamp(r + 0.5 - d, 0.0, 1.0);
             if (cov > 0) blend(im, x, y, c, cov);
         }
+}
+
+// Whether e is listed in m.kind_exceptions (an edge of the other kind).
+bool other_kind(const Model& m, const ModelEdge& e) {
+    return e.constrained && std::binary_search(m.kind_exceptions.begin(), m.kind_exceptions.end(), std::array<std::uint32_t, 2>{e.a, e.b});
 }
 
 // The edges to draw (none when options.edges is off); fails on a face list that is not a mesh.
@@ -211,7 +220,7 @@ Status render_raster(const Model& m, const RgbImage* background, const RenderOpt
             if (e.constrained != (pass == 1)) continue;
             LatticePoint a = m.vertices[e.a], b = m.vertices[e.b];
             draw_segment(out, px(a), py(a), px(b), py(b), e.constrained ? o.constrained_width : o.edge_width,
-                         e.constrained ? kConstrained : kEdge);
+                         !e.constrained ? kEdge : other_kind(m, e) ? kOtherKind : kConstrained);
         }
     if (o.vertices)
         for (LatticePoint p : m.vertices) draw_dot(out, px(p), py(p), o.vertex_radius, kVertex);
@@ -248,13 +257,15 @@ Status render_svg(const Model& m, const std::string& background_href, const Rend
         double ax = px(a), bx = px(b), ay = py(a), by = py(b);
         return (ax < 0 && bx < 0) || (ay < 0 && by < 0) || (ax > w && bx > w) || (ay > h && by > h);
     };
-    for (int pass = 0; pass < 2; ++pass) {
-        bool cons = pass == 1;
-        t += cons ? "<g id=\"constrained\" stroke=\"" + std::string(kConstrainedHex) + "\" stroke-width=\"" + num(o.constrained_width)
-                  : "<g id=\"edges\" stroke=\"" + std::string(kEdgeHex) + "\" stroke-width=\"" + num(o.edge_width);
+    // Edges, constrained edges of the model's kind, and (when it lists some) those of the other kind.
+    for (int pass = 0; pass < (m.kind_exceptions.empty() ? 2 : 3); ++pass) {
+        bool cons = pass >= 1;
+        t += pass == 2 ? "<g id=\"other-kind\" stroke=\"" + std::string(kOtherKindHex) + "\" stroke-width=\"" + num(o.constrained_width)
+             : cons    ? "<g id=\"constrained\" stroke=\"" + std::string(kConstrainedHex) + "\" stroke-width=\"" + num(o.constrained_width)
+                       : "<g id=\"edges\" stroke=\"" + std::string(kEdgeHex) + "\" stroke-width=\"" + num(o.edge_width);
         t += "\" stroke-linecap=\"round\" fill=\"none\">\n";
         for (const ModelEdge& e : edges) {
-            if (e.constrained != cons) continue;
+            if (e.constrained != cons || (cons && other_kind(m, e) != (pass == 2))) continue;
             LatticePoint a = m.vertices[e.a], b = m.vertices[e.b];
             if (outside(a, b)) continue;
             t += "<line x1=\"" + num(px(a)) + "\" y1=\"" + num(py(a)) + "\" x2=\"" + num(px(b)) + "\" y2=\"" + num(py(b)) + "\"/>\n";

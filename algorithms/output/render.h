@@ -5,8 +5,9 @@
 // and a background image lines up pixel for pixel. A crop window (in pixels) selects a part.
 //
 // Edges come from algorithms/model/model_topology.h: constrained edges (the model's list, or where
-// the corner values of an ERD model differ across an edge) are drawn thick and red, the others thin
-// and blue, vertices as dark dots. The library draws; cli/ encodes PNG and writes files.
+// the corner values of an ERD model differ across an edge) are drawn thick and red (orange: those
+// of the other kind than the model's, Model::kind_exceptions), the others thin and blue, vertices
+// as dark dots. The library draws; cli/ encodes PNG and writes files.
 #pragma once
 #include <cstdint>
 #include <string>

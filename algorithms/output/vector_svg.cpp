@@ -1,5 +1,6 @@
 #include "algorithms/output/vector_svg.h"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -177,6 +178,25 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
         for (int c = 0; c < 3; ++c) t += ramp_template(kTemplate[c + 1], c, o.ramp);
     }
 
+    // Faces along a hard jump (edge_kinds.h: an edge of kind hard) are left out of the
+    // anti-aliased layer, so the pixels at that jump are painted whole by one side (the crisp
+    // layer), as erd reconstruct evaluates them. The anti-aliased <use> is hidden and every other
+    // face says visibility="visible" (which beats the inherited hidden); those faces inherit it.
+    // Models without hard jumps are written as before.
+    std::vector<std::uint8_t> crisp_face(m.faces.size(), 0);
+    bool any_crisp = false;
+    if (m.kind == ModelKind::erd && o.seams == SeamFix::layered && (m.edges == EdgeKind::hard || !m.kind_exceptions.empty())) {
+        ModelTopology topo;
+        if (Status st = build_topology(m, &topo); !st) return st;
+        for (std::uint32_t h = 0; h < topo.twin.size(); ++h) {
+            if (topo.twin[h] == kNoHalfEdge || !is_discontinuity(m, topo, h)) continue;
+            const std::uint32_t a = m.faces[h / 3][h % 3], b = m.faces[h / 3][(h + 1) % 3];
+            const std::array<std::uint32_t, 2> e{std::min(a, b), std::max(a, b)};
+            const bool listed = std::binary_search(m.kind_exceptions.begin(), m.kind_exceptions.end(), e);
+            if ((m.edges == EdgeKind::hard) != listed) crisp_face[h / 3] = 1, any_crisp = true;
+        }
+    }
+
     std::unordered_map<std::string, std::string> gradients;  // template and end points -> id
     // One layer per channel (gray: one). Colour layers after the first are screened over the ones
     // below: screen(a, b) = a + b - ab per component, which adds layers that are black in each
@@ -185,7 +205,8 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
         const int channel = C == 1 ? -1 : c;
         const std::string group = C == 1 ? "_m" : "_m" + std::to_string(c);
         if (c > 0) t += "<g style=\"mix-blend-mode:screen\">\n";
-        // Layered: the faces once in a group that is drawn twice, without and then with anti-aliasing.
+        // Layered: the faces once in a group that is drawn twice, without and then with anti-aliasing
+        // (the faces along hard jumps only in the first).
         if (o.seams == SeamFix::layered) t += "<defs><g id=\"" + group + "\">\n";
         for (std::size_t f = 0; f < m.faces.size(); ++f) {
             const auto& fc = m.faces[f];
@@ -202,11 +223,15 @@ Status render_vector_svg(const Model& m, const VectorSvgOptions& o, std::string*
 
             const std::string paint = plane_paint(p, z, channel, &gradients, &t);
             t += "<path fill=\"" + paint + "\"";
+            if (any_crisp && !crisp_face[f]) t += " visibility=\"visible\"";
             t += " d=\"M";
             for (int k = 0; k < 3; ++k) t += (k ? " " : "") + short_num(q[k].u, 1) + " " + short_num(q[k].v, 1);
             t += "z\"/>\n";
         }
-        if (o.seams == SeamFix::layered)
+        if (o.seams == SeamFix::layered && any_crisp)
+            t += "</g></defs>\n<use xlink:href=\"#" + group + "\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group +
+                 "\" visibility=\"hidden\"/>\n";
+        else if (o.seams == SeamFix::layered)
             t += "</g></defs>\n<use xlink:href=\"#" + group + "\" shape-rendering=\"crispEdges\"/>\n<use xlink:href=\"#" + group +
                  "\"/>\n";
         if (c > 0) t += "</g>\n";

@@ -51,6 +51,7 @@ pyb::dict mesh_stats(const Mesh& mesh) {
     d["constrained_vertices"] = s.constrained_vertices;
     d["constrained_edges"] = s.constrained_edges;
     d["dropped_constraints"] = s.dropped_constraints;
+    if (s.erd) d["other_kind_edges"] = s.other_kind_edges;
     d["parameters"] = s.has_params ? pyb::object(pyb::dict(pyb::arg("beta") = s.beta, pyb::arg("r") = s.r, pyb::arg("l") = s.l,
                                                            pyb::arg("epsilon") = s.epsilon, pyb::arg("simple") = s.simple,
                                                            pyb::arg("edges") = s.hard_edges ? "hard" : "soft"))
@@ -70,12 +71,21 @@ std::string path_text(pyb::handle path) {
 }
 
 pyb::array reconstruct(const Mesh& m, pyb::object supersample) {
-    const bool aa = supersample.is_none() ? m.model.kind == ModelKind::erd : supersample.cast<bool>();
+    // None: the model's own evaluation (its kind, and its edges of the other kind), as `erd
+    // reconstruct` does; True or False: that evaluation at every pixel.
+    const bool own = supersample.is_none();
+    const bool aa = own ? supersampled(m.model) : supersample.cast<bool>();
     Image out;
     Status st;
     {
         pyb::gil_scoped_release unlocked;
-        st = api::reconstruct(m.model, aa, &out);
+        if (own || m.model.kind_exceptions.empty()) {
+            st = api::reconstruct(m.model, aa, &out);
+        } else {
+            Model every = m.model;
+            every.kind_exceptions.clear();
+            st = api::reconstruct(every, aa, &out);
+        }
     }
     if (!st) raise_status(st);
     return image_array(out);
@@ -155,8 +165,8 @@ void bind_mesh(pyb::module_& m) {
             return s.stats.attr("copy")();
         },
                                "The `erd generate --stats` fields as a dict: method, model, image, points, vertices, faces,\n"
-                               "constrained_vertices, constrained_edges, dropped_constraints, parameters (ERD: beta, r, l,\n"
-                               "epsilon, simple, edges), stop (greedy methods), stages (name, seconds).")
+                               "constrained_vertices, constrained_edges, dropped_constraints, other_kind_edges (ERD),\n"
+                               "parameters (ERD: beta, r, l, epsilon, simple, edges), stop (greedy methods), stages (name, seconds).")
         .def_property_readonly("vertices", [](const Mesh& s) {
             return table<double>(s.model.vertices.size(), 2, [&](std::size_t i, std::size_t j) {
                 const LatticePoint p = s.model.vertices[i];
@@ -189,8 +199,17 @@ void bind_mesh(pyb::module_& m) {
         .def("reconstruct", &reconstruct, pyb::arg("supersample") = pyb::none(),
              "reconstruct(supersample=None) -> numpy.ndarray\n\n"
              "The image the mesh stands for, H x W (H x W x 3 for colour), uint8 when maxval <= 255 else uint16. supersample=True\n"
-             "takes the mean of 4x4 sub-samples per pixel, False evaluates at the pixel centres; None does\n"
-             "what `erd reconstruct` does (4x4 for an ERD model, point evaluation for a basic one).")
+             "takes the mean of 4x4 sub-samples at every pixel, False evaluates every pixel at its centre; None does\n"
+             "what `erd reconstruct` does: 4x4 for a soft-edged ERD model, point evaluation for a hard-edged\n"
+             "or basic one, and the pixels along edges_of_other_kind as their kind says.")
+        .def_property_readonly("edge_kind", [](const Mesh& s) {
+            return s.model.kind != ModelKind::erd ? pyb::object(pyb::none()) : pyb::object(pyb::str(s.model.edges == EdgeKind::hard ? "hard" : "soft"));
+        }, "ERD model: 'soft' (pixels are 4x4 means) or 'hard' (pixels are the function at their centres), the kind of\n"
+           "every edge but edges_of_other_kind; None for a basic model.")
+        .def_property_readonly("edges_of_other_kind", [](const Mesh& s) {
+            return table<std::int64_t>(s.model.kind_exceptions.size(), 2, [&](std::size_t i, std::size_t j) { return std::int64_t(s.model.kind_exceptions[i][j]); });
+        }, "K x 2 int64: vertex pairs (i < j) of the edges whose kind is the other one than edge_kind (issue 44: each\n"
+           "edge's kind chosen by fit); the pixels along them are evaluated as that kind says.")
         .def("save", &save, pyb::arg("path"),
              "save(path)\n\nWrites the mesh as `erd generate -o` does: a .model for a basic mesh, an .erd for an ERD one\n"
              "(byte-identical files), atomically. OSError when the file cannot be written.")
