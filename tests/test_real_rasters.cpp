@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/imaging/real_image.h"
@@ -31,6 +32,14 @@ using erd::Image;
 using erd::SampleType;
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// v as a sample of type T: an integer type through int64 (a negative value wraps around in an
+// unsigned type, as defined; a double straight to an unsigned type would be undefined there).
+template <class T>
+T sample_cast(double v) {
+    if constexpr (std::is_integral_v<T>) return T(std::int64_t(v));
+    else return T(v);
+}
 
 // A TIFF written by libtiff (not by erd) of w x h pixels of C channels: value(x, y, c) as type t,
 // in strips of `rows` rows or tiles of 16 x 16, contiguous or planar, with `compression`.
@@ -60,7 +69,7 @@ std::string libtiff_file(const erd_test::TempDir& dir, int w, int h, int C, std:
                         for (int x = 0; x < 16; ++x)
                             for (int c = 0; c < per; ++c)
                                 tile[std::size_t((y * 16 + x) * per + c)] =
-                                    T(tx + x < w && ty + y < h ? value(tx + x, ty + y, planar ? p : c) : 0);
+                                    sample_cast<T>(tx + x < w && ty + y < h ? value(tx + x, ty + y, planar ? p : c) : 0);
                     REQUIRE(TIFFWriteTile(t, tile.data(), std::uint32_t(tx), std::uint32_t(ty), 0, tsample_t(p)) >= 0);
                 }
     } else {
@@ -69,7 +78,7 @@ std::string libtiff_file(const erd_test::TempDir& dir, int w, int h, int C, std:
         for (int p = 0; p < planes; ++p)
             for (int y = 0; y < h; ++y) {
                 for (int x = 0; x < w; ++x)
-                    for (int c = 0; c < per; ++c) row[std::size_t(x * per + c)] = T(value(x, y, planar ? p : c));
+                    for (int c = 0; c < per; ++c) row[std::size_t(x * per + c)] = sample_cast<T>(value(x, y, planar ? p : c));
                 REQUIRE(TIFFWriteScanline(t, row.data(), std::uint32_t(y), tsample_t(p)) >= 0);
             }
     }
@@ -104,7 +113,7 @@ void check_type(SampleType type, std::uint16_t fmt) {
                     for (int y = 0; y < h; ++y)
                         for (int x = 0; x < w; ++x)
                             for (int c = 0; c < C; ++c)
-                                REQUIRE(erd::sample_value(im, std::size_t((y * w + x) * C + c)) == double(T(ramp(x, y, c))));
+                                REQUIRE(erd::sample_value(im, std::size_t((y * w + x) * C + c)) == double(sample_cast<T>(ramp(x, y, c))));
                     // A window is the same part of the whole.
                     erd::imageio::TiffReader r;
                     REQUIRE(r.open(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()).ok());
@@ -114,7 +123,7 @@ void check_type(SampleType type, std::uint16_t fmt) {
                     CHECK(part.height == 15);
                     for (int y = 0; y < 15; ++y)
                         for (int x = 0; x < 25; ++x)
-                            REQUIRE(erd::sample_value(part, std::size_t((y * 25 + x) * C)) == double(T(ramp(x + 5, y + 4, 0))));
+                            REQUIRE(erd::sample_value(part, std::size_t((y * 25 + x) * C)) == double(sample_cast<T>(ramp(x + 5, y + 4, 0))));
                 }
 }
 
