@@ -19,6 +19,14 @@ inline void check(bool ok) {
     if (!ok) std::abort();
 }
 
+// The image limits the decoder targets run under: small enough that every allocation stays cheap.
+inline erd::imageio::ImageLimits image_limits() {
+    erd::imageio::ImageLimits limits;
+    limits.max_side = 2048;
+    limits.max_pixels = std::int64_t(1) << 18;
+    return limits;
+}
+
 // A refusal: Code::input with one non-empty line.
 inline void check_refusal(const erd::Status& s) {
     check(s.code == erd::Code::input && !s.message.empty() && s.message.find('\n') == std::string::npos);

@@ -29,12 +29,25 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     // the threshold search finds N - 4.
     Grid<std::uint8_t> corners(w, h, 0);
     corners(0, 0) = corners(w - 1, 0) = corners(w - 1, h - 1) = corners(0, h - 1) = 1;
+    // Nodata (a real image's holes): never chosen, no density; the outline of the valid region is
+    // a constraint of the mesh, and its points count towards N.
+    Cdt cdt;
+    st = cdt.reset(2 * (w - 1), 2 * (h - 1));
+    if (!st) return st;
+    if (!(st = insert_valid_outline(image, &cdt, &result->stats, std::size_t(n)))) return st;
+    if (image.has_holes())
+        for (std::size_t i = 0; i < corners.size(); ++i)
+            if (!image.valid[i]) {
+                corners.data[i] = 1;
+                sigma.data[i] = 0.0;
+            }
     DiffusionParams params;
     params.startup = Startup::none;
     params.forbidden = &corners;
     params.threads = options.threads;
     DiffusionResult chosen;
-    const std::size_t want = std::size_t(n - 4);
+    const std::size_t have = cdt.vertex_count();
+    const std::size_t want = std::size_t(n) - have;
     st = select_points(sigma, want, params, &chosen);
     if (!st) return st;
     std::size_t adjusted = 0;
@@ -47,10 +60,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     if (options.progress.report_cancelled("triangulation", 0.0)) return Status::failure(kCancelled);
 
     // Step 4: the Delaunay triangulation of the corners and the chosen points.
-    Cdt cdt;
-    st = cdt.reset(2 * (w - 1), 2 * (h - 1));
-    if (!st) return st;
-    cdt.reserve(chosen.points.size() + 4);
+    cdt.reserve(chosen.points.size() + have);
     std::vector<VertInd> ids;
     st = cdt.insert_points(chosen.points, &ids);
     if (!st) return st;

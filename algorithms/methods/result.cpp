@@ -66,6 +66,15 @@ std::vector<std::string> result_lines(const RunStats& r) {
         out.push_back("max abs error: " + real("%.4g", r.greedy.max_error));
         out.push_back("psnr (point evaluation): " + real("%.4f", r.greedy.psnr));
     }
+    if (r.has_raster) {
+        const RasterStats& s = r.raster;
+        if (s.outline_points || s.dropped_faces)
+            out.push_back("nodata: outline of " + std::to_string(s.outline_points) + " points, " + std::to_string(s.dropped_faces) +
+                          " faces and " + std::to_string(s.dropped_vertices) + " vertices over nodata dropped");
+        if (s.max_error >= 0)
+            out.push_back("max error over valid pixels: " + real("%.6g", s.max_error) + " (after " +
+                          std::to_string(s.fixup_insertions) + " insertions of the last greedy pass)");
+    }
     return out;
 }
 

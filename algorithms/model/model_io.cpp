@@ -5,7 +5,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -103,6 +105,23 @@ Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<in
     if (std::int64_t(*w) * *h > kMaxImagePixels)
         return Status::bad_input("image " + std::to_string(*w) + " x " + std::to_string(*h) + " is larger than the limit of " +
                                  std::to_string(kMaxImagePixels) + " pixels");
+    return Status::success();
+}
+
+// A model with holes (header "holes W H"): distinct vertices inside [0, 2W-2] x [0, 2H-2].
+Status check_inside(const std::vector<LatticePoint>& pts, const std::vector<int>& lines, int unit, int w, int h) {
+    std::vector<std::uint64_t> keys(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const LatticePoint p = pts[i];
+        if (p.x > 2 * w - 2 || p.y > 2 * h - 2)
+            return Status::bad_input("line " + std::to_string(lines[i]) + ": " + vname(i) + " (" + std::to_string(p.x / unit) + ", " +
+                                     std::to_string(p.y / unit) + ") lies outside the " + std::to_string(w) + " x " + std::to_string(h) +
+                                     " image of the header");
+        keys[i] = (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+        if (keys[i] == keys[i - 1]) return Status::bad_input("two vertices coincide at (" + std::to_string(std::uint32_t(keys[i]) / std::uint32_t(unit)) + ", " + std::to_string(std::uint32_t(keys[i] >> 32) / std::uint32_t(unit)) + ")");
     return Status::success();
 }
 
@@ -271,13 +290,149 @@ Status read_edge_lines(Tokens& tk, const ModelTopology& topo, std::uint64_t n, M
 }
 
 // What the header block says beyond Model's fields: the lines of the "edges" key and of the
-// per-edge kind key (0 when absent), and that key's count of edge lines.
+// per-edge kind key (0 when absent), and that key's count of edge lines; a real model's keys.
 struct HeaderFacts {
     int edges_line = 0;
     int listed_line = 0;
     EdgeKind listed_kind = EdgeKind::hard;  // "hard-edges N" or "soft-edges N"
     std::uint64_t listed = 0;
+    bool doubled = false;   // a basic model's coordinates are doubled ("doubled")
+    bool range = false;     // "range" given: a real model
+    bool holes = false;     // "holes W H" given
+    bool type = false;
+    bool seen[11] = {};     // the raster keys given (raster_key)
 };
+
+namespace {
+
+// A double of any finite size, or nan (the header's values: "nodata nan").
+Status header_number(Tokens& tk, const char* what, bool nan_ok, double* v) {
+    std::string_view t;
+    if (!tk.next(&t)) return Status::bad_input(std::string("file ends early: expected ") + what);
+    if (nan_ok && (t == "nan" || t == "NaN")) {
+        *v = std::numeric_limits<double>::quiet_NaN();
+        return Status::success();
+    }
+    double x = 0;
+    const char* b = t.data();
+    if (!t.empty() && t[0] == '+') ++b;
+    const auto r = read_double(b, t.data() + t.size(), &x);
+    if (t.empty() || r.ptr != t.data() + t.size() || r.ec != std::errc() || !std::isfinite(x))
+        return Status::bad_input(tk.where() + what + " '" + show(t) + "' is not a finite number");
+    *v = x;
+    return Status::success();
+}
+
+// "geo-... N v1 .. vN": a count and that many numbers.
+template <class T>
+Status header_list(Tokens& tk, const char* key, std::vector<T>* out) {
+    std::uint64_t n = 0;
+    if (Status s = tk.uint([&] { return std::string("the count of ") + key; }, 1, 65536, &n); !s) return s;
+    out->clear();
+    for (std::uint64_t i = 0; i < n; ++i) {
+        if constexpr (std::is_same_v<T, double>) {
+            double v = 0;
+            if (Status s = header_number(tk, key, false, &v); !s) return s;
+            out->push_back(v);
+        } else {
+            std::uint64_t v = 0;
+            if (Status s = tk.uint(key, 0, 65535, &v); !s) return s;
+            out->push_back(T(v));
+        }
+    }
+    return Status::success();
+}
+
+bool percent_decode(std::string_view t, std::string* out) {
+    out->clear();
+    const auto val = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10 : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1; };
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] != '%') {
+            *out += t[i];
+            continue;
+        }
+        if (i + 2 >= t.size()) return false;
+        const int a = val(t[i + 1]), b = val(t[i + 2]);
+        if (a < 0 || b < 0) return false;
+        *out += char(a * 16 + b);
+        i += 2;
+    }
+    return true;
+}
+
+SampleType type_of(std::string_view t, bool* ok) {
+    static const SampleType kAll[] = {SampleType::u8, SampleType::u16, SampleType::u32, SampleType::i16,
+                                      SampleType::i32, SampleType::f32, SampleType::f64};
+    for (SampleType k : kAll)
+        if (t == sample_type_name(k)) {
+            *ok = true;
+            return k;
+        }
+    *ok = false;
+    return SampleType::u8;
+}
+
+// The header keys of a real model, a model with holes and a raster's georeferencing (model_io.h):
+// true when t is one (its value read into *m and *facts, or *r the problem).
+constexpr const char* kRasterKeys = "type, range, nodata, holes, doubled, geo-pixel-scale, geo-tiepoints, geo-transform, geo-keys, geo-doubles, geo-ascii";
+
+bool raster_key(Tokens& tk, std::string_view t, Model* m, HeaderFacts* hf, Status* r) {
+    static const char* const kKeys[] = {"type", "range", "nodata", "holes", "doubled", "geo-pixel-scale",
+                                        "geo-tiepoints", "geo-transform", "geo-keys", "geo-doubles", "geo-ascii"};
+    std::size_t k = 0;
+    while (k < sizeof kKeys / sizeof kKeys[0] && t != kKeys[k]) ++k;
+    if (k == sizeof kKeys / sizeof kKeys[0]) return false;
+    const std::string key = kKeys[k];
+    if (hf->seen[k]) {
+        *r = Status::bad_input(tk.where() + "header key '" + key + "' given twice");
+        return true;
+    }
+    hf->seen[k] = true;
+    Status& s = *r;
+    if (key == "type") {
+        if (!tk.next(&t)) return s = Status::bad_input("file ends early: expected the value of 'type'"), true;
+        bool ok = false;
+        m->meta.type = type_of(t, &ok);
+        if (!ok)
+            s = Status::bad_input(tk.where() + "type must be uint8, uint16, uint32, int16, int32, float32 or float64, found '" + show(t) + "'");
+        hf->type = true;
+    } else if (key == "range") {
+        if ((s = header_number(tk, "range low", false, &m->lo)) && (s = header_number(tk, "range high", false, &m->hi)) && m->lo > m->hi)
+            s = Status::bad_input(tk.where() + "range low is above range high");
+        m->real = true;
+        hf->range = true;
+    } else if (key == "nodata") {
+        s = header_number(tk, "nodata", true, &m->meta.nodata);
+        m->meta.has_nodata = true;
+    } else if (key == "holes") {
+        std::uint64_t w = 0, h = 0;
+        if ((s = tk.uint("holes width", 2, kMaxImageSide, &w)) && (s = tk.uint("holes height", 2, kMaxImageSide, &h)) &&
+            std::int64_t(w * h) > kMaxImagePixels)
+            s = Status::bad_input(tk.where() + "image " + std::to_string(w) + " x " + std::to_string(h) + " is larger than the limit");
+        m->width = int(w);
+        m->height = int(h);
+        m->holes = true;
+        hf->holes = true;
+    } else if (key == "doubled") {
+        hf->doubled = true;
+    } else if (key == "geo-pixel-scale") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.pixel_scale);
+    } else if (key == "geo-tiepoints") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.tiepoints);
+    } else if (key == "geo-transform") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.transform);
+    } else if (key == "geo-keys") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.keys);
+    } else if (key == "geo-doubles") {
+        s = header_list(tk, kKeys[k], &m->meta.geo.doubles);
+    } else {  // geo-ascii
+        if (!tk.next(&t)) s = Status::bad_input("file ends early: expected the value of 'geo-ascii'");
+        else if (!percent_decode(t, &m->meta.geo.ascii)) s = Status::bad_input(tk.where() + "geo-ascii has a bad %XX escape");
+    }
+    return true;
+}
+
+}  // namespace
 
 // The header block (model_io.h): "erd-header 1", then key lines, then "end".
 Status read_header(Tokens& tk, Model* m, HeaderFacts* facts) {
@@ -314,8 +469,15 @@ Status read_header(Tokens& tk, Model* m, HeaderFacts* facts) {
             m->channels = t == "3" ? 3 : 1;
             continue;
         }
-        if (t != "edges")
-            return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges, hard-edges, soft-edges, channels)");
+        if (t != "edges") {
+            Status r;
+            if (raster_key(tk, t, m, facts, &r)) {
+                if (!r) return r;
+                continue;
+            }
+            return Status::bad_input(tk.where() + "unknown header key '" + show(t) +
+                                     "' (this reader knows: edges, hard-edges, soft-edges, channels, " + kRasterKeys + ")");
+        }
         if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
         *edges_line = tk.line();
         if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
@@ -323,6 +485,22 @@ Status read_header(Tokens& tk, Model* m, HeaderFacts* facts) {
             return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
         m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
     }
+}
+
+// GeoAsciiParams as one token: bytes outside '!'..'~', '%' and '#' as %XX.
+std::string percent_encode(const std::string& s) {
+    static const char hex[] = "0123456789ABCDEF";
+    std::string o;
+    for (unsigned char c : s) {
+        if (c > ' ' && c < 0x7f && c != '%' && c != '#') {
+            o += char(c);
+        } else {
+            o += '%';
+            o += hex[c >> 4];
+            o += hex[c & 15];
+        }
+    }
+    return o;
 }
 
 Status require_gray(const Model& m, const std::string& what) {
@@ -347,7 +525,10 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         if (Status s = read_header(tk, &m, &header); !s) return s;
     const int edges_line = header.edges_line ? header.edges_line : header.listed_line;
     std::uint64_t maxval = 0, nv = 0;
-    if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    // A real model (header "range") has maxval 0 and values of any finite size.
+    if (Status s = header.range ? tk.uint("maxval (0 for a real model)", 0, 0, &maxval) : tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    if (header.range) tk.allow_any_finite();
+    if (header.range && !header.type) m.meta.type = SampleType::f64;  // a real model of unknown type keeps every digit
     m.maxval = std::uint32_t(maxval);
     if (Status s = count(tk, "vertex count", 4, 4 + 2 * std::uint64_t(m.channels), &nv); !s) return s;
     const std::size_t C = std::size_t(m.channels);
@@ -374,8 +555,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
             return Status::bad_input("line " + std::to_string(edges_line) + ": header key '" + (header.edges_line ? "edges" : header.listed_kind == EdgeKind::hard ? "hard-edges" : "soft-edges") +
                                      "' is for .erd files only");
         if (Status s = expect_end(tk, "face"); !s) return s;
-        // Pixel coordinates in the file, doubled in the model.
-        for (std::size_t i = 0; i < nv; ++i) {
+        // Pixel coordinates in the file, doubled in the model (doubled already with "doubled").
+        for (std::size_t i = 0; i < nv && !header.doubled; ++i) {
             LatticePoint& p = m.vertices[i];
             if (p.x > kMaxImageSide - 1 || p.y > kMaxImageSide - 1)
                 return Status::bad_input("line " + std::to_string(vlines[i]) + ": " + vname(i) + " (" + std::to_string(p.x) +
@@ -387,7 +568,13 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         m.kind = ModelKind::erd;
     }
     const bool erd = m.kind == ModelKind::erd;
-    if (Status s = check_vertices(m.vertices, vlines, erd, erd ? 1 : 2, &m.width, &m.height); !s) return s;
+    const int unit = erd || header.doubled ? 1 : 2;
+    if (header.holes) {
+        // The size is the header's; the vertices need only lie in it, the corners need not be there.
+        if (Status s = check_inside(m.vertices, vlines, unit, m.width, m.height); !s) return s;
+    } else if (Status s = check_vertices(m.vertices, vlines, erd || header.doubled, unit, &m.width, &m.height); !s) {
+        return s;
+    }
     // Faces sharing a directed edge: the same triangle twice, or overlapping faces.
     ModelTopology topo;
     if (Status s = build_topology(m, &topo); !s) {
@@ -402,7 +589,7 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
             }
         return Status::bad_input("not a triangulation of the image domain: " + s.message);
     }
-    if (Status s = check_all_used(m.vertices, m.faces, vlines, erd ? 1 : 2); !s) return s;
+    if (Status s = check_all_used(m.vertices, m.faces, vlines, unit); !s) return s;
     if (m.kind == ModelKind::erd) {
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
         if (Status s = read_edge_lines(tk, topo, header.listed, &m); !s) return s;
