@@ -29,11 +29,13 @@
 #include <vector>
 
 #include "algorithms/codec/erdz.h"
+#include "algorithms/imaging/edge_kind.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/result.h"
 #include "algorithms/methods/options.h"
 #include "algorithms/methods/tiles.h"
 #include "algorithms/model/model.h"
+#include "algorithms/model/reconstruct.h"
 #include "algorithms/output/export.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
@@ -72,7 +74,7 @@ const CommandLine& tiles_command_line() {
             "Mesh a raster larger than memory in tiles of T pixels that meet exactly: the vertices of\n"
             "every shared border are chosen once from the border's own samples (the greedy rule in 1-D)\n"
             "and both tiles keep them, no other point on a tile's side; -d/-n and --triangles are split\n"
-            "between the tiles by their error (sum of |second difference|^(2/3)), --max-error and --psnr\n"
+            "between the tiles by their error (sum of |second difference|^(1/2)), --max-error and --psnr\n"
             "hold in every tile. The raster is read by windows (TIFF strips or tiles, PFM, raw PGM).\n"
             "Out: DIR/tile_J_I.model or .erd per tile (row J, column I), DIR/index.json (grid, bounds,\n"
             "counts, files, georeferencing) and with --merge one mesh of all tiles, written as it goes.\n"
@@ -90,6 +92,7 @@ const CommandLine& tiles_command_line() {
                 {0, "plan", nullptr, "only write DIR/plan.txt (the task list)"},
                 {0, "task", "K", "only run task K of DIR/plan.txt (0 .. tiles-1)"},
                 {0, "finish", nullptr, "only write DIR/index.json (and --merge) from the finished tasks"},
+                {0, "psnr-report", nullptr, "also reconstruct every tile and put the whole raster's PSNR in the index (each pixel once)"},
             },
             "no summary lines",
         };
@@ -178,11 +181,15 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     std::vector<double> weight(std::size_t(g.count()), 0.0);
     const std::size_t Wn = std::size_t(W);
     std::vector<double> r0(Wn), r1(Wn), r2(Wn);  // rows y-2, y-1, y
-    std::vector<double> pow23;  // h^(2/3) for the integer second differences
+    std::vector<double> pow23;  // h^(1/2) for the integer second differences
     std::vector<int> tile_of_x(Wn);
     for (int x = 0; x < W; ++x) tile_of_x[std::size_t(x)] = std::min(x / T, g.nx - 1);
     const int band = std::max(1, int((std::size_t(1) << 22) / std::size_t(W)));
     bool first = true, real = false;
+    // The ERD methods' kind of edge, measured once for the raster (the sum of the bands'
+    // counts) and given to every tile, unless --edges says.
+    const bool erd_method = method->model == ModelKind::erd;
+    EdgeKindStats kinds;
     double lo = INFINITY, hi = -INFINITY;
     std::uint32_t maxval = 0;
     Image im;
@@ -196,11 +203,15 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
             plan->geo = im.meta.geo;
             if (!real) {
                 pow23.resize(4 * std::size_t(maxval) + 1);
-                for (std::size_t h = 0; h < pow23.size(); ++h) pow23[h] = std::cbrt(double(h) * double(h));
+                for (std::size_t h = 0; h < pow23.size(); ++h) pow23[h] = std::sqrt(double(h));
             }
             first = false;
         }
         if (im.real() != real) return Status::bad_input(escape_name(in) + ": its windows differ in type");
+        if (erd_method) {
+            const EdgeKindStats k = measure_edge_kind(im);
+            kinds.hard += k.hard, kinds.soft += k.soft, kinds.steps += k.steps, kinds.clean += k.clean;
+        }
         if (im.has_holes())
             return Status::bad_input(escape_name(in) + ": a raster with nodata pixels is not tiled (the outline of the valid region would cross the tiles' sides)");
         for (int y = y0; y < y1; ++y) {
@@ -216,7 +227,7 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
             for (int i = 0; i <= g.nx; ++i) cols[std::size_t(i)][std::size_t(y)] = r2[std::size_t(g.column(i))];
             for (int j = 0; j <= g.ny; ++j)
                 if (g.row(j) == y) rows[std::size_t(j)] = r2;
-            // The weight of row y - 1: |second difference| (the larger of x and y) ^ (2/3).
+            // The weight of row y - 1: |second difference| (the larger of x and y) ^ (1/2).
             if (y >= 2) {
                 const int ym = y - 1;
                 double* wrow = &weight[std::size_t(std::min(ym / T, g.ny - 1)) * std::size_t(g.nx)];
@@ -225,10 +236,14 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
                     const double hx = std::fabs(r1[std::size_t(x) - 1] - 2 * c + r1[std::size_t(x) + 1]);
                     const double hy = std::fabs(r0[std::size_t(x)] - 2 * c + r2[std::size_t(x)]);
                     const double h = std::max(hx, hy);
-                    wrow[tile_of_x[std::size_t(x)]] += real ? std::cbrt(h * h) : pow23[std::size_t(h)];
+                    wrow[tile_of_x[std::size_t(x)]] += real ? std::sqrt(h) : pow23[std::size_t(h)];
                 }
             }
         }
+    }
+    if (erd_method && !a.has("edges") && !a.has("thesis")) {
+        plan->args.push_back("--edges");
+        plan->args.push_back(kinds.is_hard() ? "hard" : "soft");
     }
     plan->real = real;
     plan->maxval = maxval;
@@ -375,6 +390,10 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
     const std::string ext = model_ext(plan);
     std::string tiles = "[";
     long long faces = 0, copies = 0;
+    const bool want_psnr = a.has("psnr-report");
+    double sse = 0;
+    imageio::RasterWindow rw;
+    if (want_psnr && !(st = rw.open(plan.raster))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
     for (int k = 0; k < plan.grid.count(); ++k) {
         const std::string path = dir + "/" + plan.tile_name(k) + ext;
         Model m;
@@ -399,6 +418,22 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
                                      " instead of " + std::to_string(want.size()) + "): the seam would crack");
         faces += (long long)m.faces.size();
         copies += (long long)m.vertices.size();
+        if (want_psnr) {
+            // The tile's own pixels: its window less its right column and bottom row, which the
+            // next tile owns (the last column and row of the raster are the last tiles').
+            Image orig, rec;
+            if (!(st = rw.read(x0, y0, x1 + 1, y1 + 1, &orig))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
+            if (!(st = reconstruct(m, supersampled(m), &rec))) return st;
+            const int ex = x1 == plan.grid.width - 1 ? x1 - x0 + 1 : x1 - x0, ey = y1 == plan.grid.height - 1 ? y1 - y0 + 1 : y1 - y0;
+            const std::size_t w = std::size_t(x1 - x0 + 1);
+            for (int y = 0; y < ey; ++y)
+                for (int x = 0; x < ex; ++x) {
+                    const std::size_t i = std::size_t(y) * w + std::size_t(x);
+                    const double o = orig.real() ? orig.reals[i] : double(orig.samples[i]);
+                    const double r = rec.real() ? rec.reals[i] : double(rec.samples[i]);
+                    sse += (o - r) * (o - r);
+                }
+        }
         JsonObject t;
         t.integer("task", k).integer("row", k / plan.grid.nx).integer("column", k % plan.grid.nx);
         t.raw("bounds", "[" + std::to_string(x0) + "," + std::to_string(y0) + "," + std::to_string(x1) + "," + std::to_string(y1) + "]");
@@ -425,6 +460,15 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
     idx.integer("width", plan.grid.width).integer("height", plan.grid.height).integer("tile", plan.grid.tile);
     idx.raw("grid", "[" + std::to_string(plan.grid.nx) + "," + std::to_string(plan.grid.ny) + "]");
     idx.integer("vertices", copies - side_sum + border).integer("faces", faces).integer("border_vertices", border);
+    if (want_psnr) {
+        const double peak = plan.real ? plan.hi - plan.lo : double(plan.maxval);
+        const double mse = sse / (double(plan.grid.width) * double(plan.grid.height));
+        const double db = mse > 0 ? 10.0 * std::log10(peak * peak / mse) : INFINITY;
+        idx.num("psnr", db);
+        char line[80];
+        std::snprintf(line, sizeof line, "erd tiles: psnr: %.4f dB", db);
+        std::fprintf(stderr, "%s\n", line);
+    }
     if (!plan.geo.empty()) {
         JsonObject geo;
         if (!plan.geo.pixel_scale.empty()) geo.raw("pixel_scale", json_list(plan.geo.pixel_scale));
@@ -470,7 +514,7 @@ int run_tiles(const Args& a, const Reporter& rep) {
     if (a.has("task") || a.has("finish")) {
         for (const OptionSpec& o : tiles_command_line().options) {
             const std::string n = o.long_name;
-            if (a.has(o.long_name) && n != "output" && n != "task" && n != "finish" && n != "merge" && n != "zscale" && n != "quiet" &&
+            if (a.has(o.long_name) && n != "output" && n != "task" && n != "finish" && n != "merge" && n != "zscale" && n != "psnr-report" && n != "quiet" &&
                 n != "verbose")
                 return rep.usage("--" + n + ": a task and --finish take their options from " + plan_path(dir));
         }
