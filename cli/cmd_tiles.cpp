@@ -516,7 +516,7 @@ int run_tiles(const Args& a, const Reporter& rep) {
             const std::string n = o.long_name;
             if (a.has(o.long_name) && n != "output" && n != "task" && n != "finish" && n != "merge" && n != "zscale" && n != "psnr-report" && n != "quiet" &&
                 n != "verbose")
-                return rep.usage("--" + n + ": a task and --finish take their options from " + plan_path(dir));
+                return rep.fail(Status::bad_input("--" + n + ": a task and --finish take their options from " + plan_path(dir)));
         }
         TilesPlan plan;
         if (!(st = load_plan(dir, &plan))) return rep.fail(st);
