@@ -83,6 +83,8 @@ private:
     int fd_;
 };
 
+constexpr int kMaxRowSide = 1 << 20;
+
 // --kind dem: the elevation model (algorithms/imaging/synth_dem.h) row by row.
 int synth_dem(const Args& args, const Reporter& rep, int w, int h, std::uint64_t seed) {
     DemParams dp;
@@ -163,6 +165,9 @@ int synth_dem(const Args& args, const Reporter& rep, int w, int h, std::uint64_t
         if (!st || !(st = outputs.commit())) return rep.fail(st);
     } else {
         // PNG, PGM: the 16-bit proxy of the whole model (it must be in memory).
+        if (w > kMaxImageSide || h > kMaxImageSide || std::int64_t(w) * h > kMaxImagePixels)
+            return rep.usage("--kind dem larger than " + std::to_string(kMaxImageSide) + " a side or 2^28 pixels is written by rows: "
+                             "to .tif, .pfm or a raw .pgm with --solid");
         std::vector<double> all(std::size_t(w) * std::size_t(h));
         for (int y = 0; y < h; ++y) dem_row(dp, y, all.data() + std::size_t(y) * std::size_t(w));
         Image im;
@@ -182,8 +187,10 @@ static int run_synth(const Args& args, const Reporter& rep) {
 
     Status st;
     SynthParams p;
-    p.width = int(args.integer("width", 256, 1, kMaxImageSide, &st));
-    p.height = int(args.integer("height", 256, 1, kMaxImageSide, &st));
+    // The elevation model is made by rows: up to 2^20 a side where it is written by rows.
+    const int side = args.str("kind") == "dem" ? kMaxRowSide : kMaxImageSide;
+    p.width = int(args.integer("width", 256, 1, side, &st));
+    p.height = int(args.integer("height", 256, 1, side, &st));
     p.bits = int(args.integer("bits", 8, 1, 16, &st));
     p.seed = std::uint64_t(args.integer("seed", 1, 0, (long long)(~0ull >> 1), &st));
     p.noise = !args.has("no-noise");

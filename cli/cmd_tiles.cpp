@@ -84,7 +84,7 @@ const CommandLine& tiles_command_line() {
             {
                 {'m', "method", "NAME", "gpi or erdgpi"},
                 {'i', "input", "RASTER", "the raster: TIFF/GeoTIFF, PFM or raw PGM (gray, no nodata)"},
-                {0, "tile", "T", "tile size in pixels (tiles of T + 1 samples share their border lines)"},
+                {0, "tile", "T", "tile size in pixels, 2 to 16383 (tiles of T + 1 samples share their border lines)"},
                 {'o', "output", "DIR", "the folder of the plan, the tiles and the index (made if missing)"},
                 {0, "merge", "FILE", "also write all tiles as one mesh: .obj, .ply, .stl or .glb"},
                 {0, "zscale", "Z", "--merge: z = value * Z (default max(W, H) / (10 * range))"},
@@ -101,6 +101,15 @@ const CommandLine& tiles_command_line() {
         return c;
     }();
     return cl;
+}
+
+// A raster read by windows may be larger than an image read whole: 2^20 a side, 2^40 pixels (a
+// window, a tile, stays within the usual limits: --tile at most 16383).
+imageio::ImageLimits raster_limits() {
+    imageio::ImageLimits l;
+    l.max_side = 1 << 20;
+    l.max_pixels = std::int64_t(1) << 40;
+    return l;
 }
 
 std::string plan_path(const std::string& dir) { return dir + "/plan.txt"; }
@@ -145,7 +154,7 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     if (std::strcmp(method->name, "gpi") != 0 && std::strcmp(method->name, "erdgpi") != 0)
         return Status::bad_input(std::string("method ") + method->name +
                                  " cannot keep a tile's sides fixed (its error diffusion places points anywhere); use gpi or erdgpi");
-    const int T = int(a.integer("tile", 0, 2, 1 << 20, &st));
+    const int T = int(a.integer("tile", 0, 2, 16383, &st));
     if (!st) return st;
     plan->method = method->name;
     if (a.has("format")) {
@@ -168,7 +177,7 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     const std::string in = a.str("input");
     if (in.find('\n') != std::string::npos) return Status::bad_input(escape_name(in) + ": a name with a line break");
     imageio::RasterWindow rw;
-    if (!(st = rw.open(in))) return Status::bad_input(escape_name(in) + ": " + st.message);
+    if (!(st = rw.open(in, raster_limits()))) return Status::bad_input(escape_name(in) + ": " + st.message);
     if (rw.channels() != 1) return Status::bad_input(escape_name(in) + ": tiles take gray rasters (one channel)");
     const int W = rw.width(), H = rw.height();
     if (W < 2 || H < 2) return Status::bad_input(escape_name(in) + ": too small (" + std::to_string(W) + " x " + std::to_string(H) + ")");
@@ -344,7 +353,7 @@ Status run_task(const TilesPlan& plan, const std::string& dir, int k, const Repo
     int x0, y0, x1, y1;
     plan.window(k, &x0, &y0, &x1, &y1);
     imageio::RasterWindow rw;
-    if (!(st = rw.open(plan.raster))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
+    if (!(st = rw.open(plan.raster, raster_limits()))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
     if (rw.width() != plan.grid.width || rw.height() != plan.grid.height)
         return Status::bad_input(escape_name(plan.raster) + ": not the raster of the plan (its size changed)");
     Image image;
@@ -393,7 +402,7 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
     const bool want_psnr = a.has("psnr-report");
     double sse = 0;
     imageio::RasterWindow rw;
-    if (want_psnr && !(st = rw.open(plan.raster))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
+    if (want_psnr && !(st = rw.open(plan.raster, raster_limits()))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
     for (int k = 0; k < plan.grid.count(); ++k) {
         const std::string path = dir + "/" + plan.tile_name(k) + ext;
         Model m;
