@@ -1,8 +1,9 @@
 // The plan file of `erd tiles` (tiles_plan.h): written and read.
 #include "cli/tiles_plan.h"
 
+#include <cerrno>
 #include <cstdio>
-#include <sstream>
+#include <cstdlib>
 
 namespace erd::cli {
 
@@ -82,14 +83,59 @@ std::string plan_text(const TilesPlan& p) {
     return s;
 }
 
+namespace {
+
+// The words of a line after its key, read one at a time (no streams: C stdio's parsers).
+class Words {
+public:
+    explicit Words(const std::string& s) : s_(s) {}
+    bool ok() const { return ok_; }
+    std::string word() {
+        while (at_ < s_.size() && s_[at_] == ' ') ++at_;
+        const std::size_t b = at_;
+        while (at_ < s_.size() && s_[at_] != ' ') ++at_;
+        if (b == at_) ok_ = false;
+        return s_.substr(b, at_ - b);
+    }
+    long long integer() {
+        const std::string w = word();
+        char* end = nullptr;
+        errno = 0;
+        const long long v = std::strtoll(w.c_str(), &end, 10);
+        if (w.empty() || *end || errno) ok_ = false;
+        return v;
+    }
+    double real() {
+        const std::string w = word();
+        char* end = nullptr;
+        const double v = std::strtod(w.c_str(), &end);
+        if (w.empty() || *end) ok_ = false;
+        return v;
+    }
+    bool more() {
+        while (at_ < s_.size() && s_[at_] == ' ') ++at_;
+        return at_ < s_.size();
+    }
+
+private:
+    const std::string& s_;
+    std::size_t at_ = 0;
+    bool ok_ = true;
+};
+
+}  // namespace
+
 Status parse_plan(const std::string& text, TilesPlan* p) {
     *p = TilesPlan();
-    std::istringstream in(text);
-    std::string line;
     int n = 0;
     bool ended = false, sized = false;
     auto bad = [&](const std::string& why) { return Status::bad_input("line " + std::to_string(n) + ": " + why); };
-    while (std::getline(in, line)) {
+    std::size_t pos = 0;
+    while (pos < text.size() && !ended) {
+        std::size_t eol = text.find('\n', pos);
+        if (eol == std::string::npos) eol = text.size();
+        const std::string line = text.substr(pos, eol - pos);
+        pos = eol + 1;
         ++n;
         if (n == 1) {
             if (line != "erd-tiles-plan 1") return bad("not an erd tiles plan (erd-tiles-plan 1)");
@@ -97,17 +143,17 @@ Status parse_plan(const std::string& text, TilesPlan* p) {
         }
         const std::size_t sp = line.find(' ');
         const std::string key = line.substr(0, sp), rest = sp == std::string::npos ? "" : line.substr(sp + 1);
-        std::istringstream f(rest);
+        Words f(rest);
         auto doubles = [&](std::vector<double>* v) {
-            double d;
-            while (f >> d) v->push_back(d);
+            while (f.more()) v->push_back(f.real());
         };
         if (key == "raster") p->raster = rest;
-        else if (key == "size") f >> p->grid.width >> p->grid.height;
-        else if (key == "tile") f >> p->grid.tile;
+        else if (key == "size") p->grid.width = int(f.integer()), p->grid.height = int(f.integer());
+        else if (key == "tile") p->grid.tile = int(f.integer());
         else if (key == "grid") {
-            f >> p->grid.nx >> p->grid.ny;
-            if (!f || p->grid.width < 2 || p->grid.height < 2 || p->grid.tile < 1) return bad("grid before size and tile");
+            p->grid.nx = int(f.integer());
+            p->grid.ny = int(f.integer());
+            if (!f.ok() || p->grid.width < 2 || p->grid.height < 2 || p->grid.tile < 2) return bad("grid before size and tile");
             const TileGrid g = make_tile_grid(p->grid.width, p->grid.height, p->grid.tile);
             if (g.nx != p->grid.nx || g.ny != p->grid.ny) return bad("the grid does not match the size and the tile");
             p->vborder.assign(std::size_t(g.nx + 1), std::vector<std::vector<int>>(std::size_t(g.ny)));
@@ -118,10 +164,9 @@ Status parse_plan(const std::string& text, TilesPlan* p) {
         } else if (key == "method") p->method = rest;
         else if (key == "format") p->format = rest == "-" ? "" : rest;
         else if (key == "values") {
-            std::string kind;
-            f >> kind;
-            if (kind == "int") f >> p->maxval;
-            else if (kind == "real") p->real = true, f >> p->lo >> p->hi;
+            const std::string kind = f.word();
+            if (kind == "int") p->maxval = std::uint32_t(f.integer());
+            else if (kind == "real") p->real = true, p->lo = f.real(), p->hi = f.real();
             else return bad("values int or real");
         } else if (key == "geo-scale") doubles(&p->geo.pixel_scale);
         else if (key == "geo-tie") doubles(&p->geo.tiepoints);
@@ -129,33 +174,32 @@ Status parse_plan(const std::string& text, TilesPlan* p) {
         else if (key == "arg") p->args.push_back(rest);
         else if (key == "vborder" || key == "hborder" || key == "task") {
             if (!sized) return bad(key + " before grid");
-            long long a = -1, b = -1, c = -1;
-            f >> a >> b >> c;
-            const bool v = key == "vborder";
+            const long long a = f.integer(), b = f.integer(), c = f.integer();
             if (key == "task") {
-                long long pts = -1, tri = -1;
-                f >> pts >> tri;
-                if (!f || a < 0 || a >= p->grid.count() || b != a % p->grid.nx || c != a / p->grid.nx || pts < 0 || tri < 0)
+                const long long pts = f.integer(), tri = f.integer();
+                if (!f.ok() || a < 0 || a >= p->grid.count() || b != a % p->grid.nx || c != a / p->grid.nx || pts < 0 || tri < 0)
                     return bad("bad task line");
                 p->points[std::size_t(a)] = pts;
                 p->triangles[std::size_t(a)] = tri;
                 continue;
             }
+            const bool v = key == "vborder";
             const long long lines = v ? p->grid.nx : p->grid.ny, cells = v ? p->grid.ny : p->grid.nx;
-            if (!f || a < 0 || a > lines || b < 0 || b >= cells || c < 2) return bad("bad " + key + " line");
+            if (!f.ok() || a < 0 || a > lines || b < 0 || b >= cells || c < 2) return bad("bad " + key + " line");
             const int len = v ? p->grid.row(int(b) + 1) - p->grid.row(int(b)) : p->grid.column(int(b) + 1) - p->grid.column(int(b));
+            if (c > len + 1) return bad("bad " + key + " line");
             std::vector<int>& out = v ? p->vborder[std::size_t(a)][std::size_t(b)] : p->hborder[std::size_t(a)][std::size_t(b)];
+            out.clear();
             for (long long k = 0; k < c; ++k) {
-                int o = -1;
-                f >> o;
-                if (!f || o < 0 || o > len || (!out.empty() && o <= out.back())) return bad("bad offset in " + key);
-                out.push_back(o);
+                const long long o = f.integer();
+                if (!f.ok() || o < 0 || o > len || (!out.empty() && o <= out.back())) return bad("bad offset in " + key);
+                out.push_back(int(o));
             }
             if (out.front() != 0 || out.back() != len) return bad(key + " must start and end at the tile corners");
         } else if (key == "end") {
             ended = true;
-            break;
         } else return bad("unknown key '" + key + "'");
+        if (!f.ok()) return bad("bad " + key + " line");
     }
     if (!ended) return Status::bad_input("the plan is cut short (no end line)");
     if (p->raster.empty() || p->method.empty() || !sized) return Status::bad_input("the plan lacks its raster, method or grid");
