@@ -75,7 +75,7 @@ const CommandLine& tiles_command_line() {
             "every shared border are chosen once from the border's own samples (the greedy rule in 1-D)\n"
             "and both tiles keep them, no other point on a tile's side; -d/-n and --triangles are split\n"
             "between the tiles by their error (sum of |second difference|^(1/2)), --max-error and --psnr\n"
-            "hold in every tile. The raster is read by windows (TIFF strips or tiles, PFM, raw PGM).\n"
+            "hold in every tile. The raster is read by windows (TIFF strips or tiles, PFM, raw PGM, PNG rows).\n"
             "Out: DIR/tile_J_I.model or .erd per tile (row J, column I), DIR/index.json (grid, bounds,\n"
             "counts, files, georeferencing) and with --merge one mesh of all tiles, written as it goes.\n"
             "On a cluster: --plan once, then --task K for K = 0 .. tiles-1 in any order on any machines\n"
@@ -83,7 +83,7 @@ const CommandLine& tiles_command_line() {
             "as one run. Methods gpi and erdgpi.",
             {
                 {'m', "method", "NAME", "gpi or erdgpi"},
-                {'i', "input", "RASTER", "the raster: TIFF/GeoTIFF, PFM or raw PGM (gray, no nodata)"},
+                {'i', "input", "RASTER", "the raster: TIFF/GeoTIFF, PFM, raw PGM or PNG (gray, no nodata)"},
                 {0, "tile", "T", "tile size in pixels, 2 to 16383 (tiles of T + 1 samples share their border lines)"},
                 {'o', "output", "DIR", "the folder of the plan, the tiles and the index (made if missing)"},
                 {0, "merge", "FILE", "also write all tiles as one mesh: .obj, .ply, .stl or .glb"},

@@ -2,13 +2,18 @@
 // with its sides fixed (GenerateOptions::lock_border): no vertex on a side but the given ones.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <cstdint>
 #include <vector>
 
 #include "algorithms/imaging/synth.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/tiles.h"
+#include "imageio/png.h"
+#include "imageio/raster_window.h"
 
 using namespace erd;
 
@@ -93,5 +98,52 @@ TEST_CASE("a method with its sides fixed adds no vertex on a side", "[tiles]") {
         std::size_t free_side = 0;
         for (LatticePoint p : r2.model.vertices) free_side += (p.x == 0 || p.y == 0 || p.x == mx || p.y == my);
         CHECK(free_side > 4);
+    }
+}
+
+TEST_CASE("PNG read by rows: any window equals the whole decode (gray 8 and 16 bits, RGB)", "[tiles][io]") {
+    for (int kind = 0; kind < 3; ++kind) {
+        SynthParams sp;
+        sp.width = 203;
+        sp.height = 117;
+        sp.bits = kind == 1 ? 16 : 8;
+        Image im;
+        REQUIRE(synth(sp, &im));
+        if (kind == 2) {  // RGB: three different planes
+            Image rgb(im.width, im.height, im.maxval, 3);
+            for (std::size_t i = 0; i < im.samples.size(); ++i) {
+                rgb.samples[3 * i] = im.samples[i];
+                rgb.samples[3 * i + 1] = std::uint16_t(im.maxval - im.samples[i]);
+                rgb.samples[3 * i + 2] = std::uint16_t((i * 7) % (im.maxval + 1));
+            }
+            im = rgb;
+        }
+        std::string bytes;
+        REQUIRE(imageio::encode_png(im, &bytes));
+        const std::string path = "build/test_png_rows.png";
+        std::FILE* f = std::fopen(path.c_str(), "wb");
+        REQUIRE(f);
+        REQUIRE(std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size());
+        std::fclose(f);
+        imageio::RasterWindow rw;
+        REQUIRE(rw.open(path));
+        CHECK(rw.width() == im.width);
+        CHECK(rw.channels() == im.channels);
+        // Forward, then back up (a restart), then the whole image.
+        const int windows[][4] = {{0, 0, 10, 5}, {50, 40, 203, 90}, {3, 10, 100, 30}, {0, 116, 203, 117}, {0, 0, 203, 117}};
+        for (const auto& w : windows) {
+            Image win;
+            REQUIRE(rw.read(w[0], w[1], w[2], w[3], &win));
+            REQUIRE(win.width == w[2] - w[0]);
+            bool same = true;
+            const std::size_t C = std::size_t(im.channels);
+            for (int y = w[1]; y < w[3]; ++y)
+                for (int x = w[0]; x < w[2]; ++x)
+                    for (std::size_t c = 0; c < C; ++c)
+                        same = same && win.samples[(std::size_t(y - w[1]) * std::size_t(win.width) + std::size_t(x - w[0])) * C + c] ==
+                                           im.samples[(std::size_t(y) * std::size_t(im.width) + std::size_t(x)) * C + c];
+            CHECK(same);
+        }
+        std::remove(path.c_str());
     }
 }

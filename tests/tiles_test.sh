@@ -8,6 +8,7 @@
 #   - the budget: the merged mesh has exactly N = D W H / 100 vertices;
 #   - the same bytes however the tasks run: one run; --plan, the tasks in reverse order, --finish;
 #     GNU parallel -j 2 when installed (else SKIP); the Dask run is python/tests/test_tiles.py's;
+#   - a 16-bit PNG read by rows gives the tiles of the PGM of the same samples;
 #   - the merged .glb through the Khronos validator (when tools/gltf has it installed);
 #   - refusals: a method that cannot fix the sides, a task out of range, a missing plan.
 #   tests/tiles_test.sh [ERD_BIN]
@@ -52,6 +53,13 @@ if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q GN
 else
     echo "SKIP: GNU parallel not installed"
 fi
+
+# A PNG read by rows: the same tiles as the PGM of the same samples.
+"$ERD" synth -q --kind dem -W 513 -H 513 -o "$d/p.png" && "$ERD" synth -q --kind dem -W 513 -H 513 -o "$d/p.pgm"
+"$ERD" tiles -q -m gpi -i "$d/p.png" --tile 128 -d 1 -o "$d/png" --merge "$d/png.ply"
+"$ERD" tiles -q -m gpi -i "$d/p.pgm" --tile 128 -d 1 -o "$d/pgm" --merge "$d/pgm.ply"
+rm -f "$d/png/plan.txt" "$d/pgm/plan.txt" "$d/png/index.json" "$d/pgm/index.json"  # they name the raster
+same "PNG by rows = PGM" "$d/png" "$d/pgm" "$d/png.ply" "$d/pgm.ply"
 
 # The merged mesh in every format; .obj checked like .ply; .glb by the Khronos validator.
 check "erdgpi merged .obj is a triangulation" bash -c "'$ERD' tiles -q -o '$d/erdgpi' --finish --merge '$d/m.obj' && $PY tests/tiles_check.py '$d/m.obj' 1025 1025"
