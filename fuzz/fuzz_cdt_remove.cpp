@@ -26,9 +26,10 @@
 
 #include "kernel/cdt.h"
 #include "fuzz/fuzz_checks.h"
+#include "tests/cdt_util.h"
 
 using fuzz_checks::check;
-using fuzz_checks::constraint_coords;
+using cdt_util::constraint_coords;
 
 namespace {
 

@@ -4,17 +4,12 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <algorithm>
-#include <array>
 #include <cstdlib>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/model.h"
 #include "imageio/image_format.h"
-#include "kernel/cdt.h"
 #include "kernel/predicates.h"
 #include "kernel/status.h"
 
@@ -31,21 +26,6 @@ struct ByteReader {
     bool more() const { return pos < size; }
     std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
 };
-
-// The constrained edges of a Cdt as sorted coordinate quadruples, each edge's ends in the
-// perturbation's order: comparable between two triangulations whatever their vertex numbering.
-inline std::vector<std::array<std::int32_t, 4>> constraint_coords(const erd::Cdt& cdt) {
-    std::vector<std::array<erd::VertInd, 2>> c;
-    cdt.export_constraints(&c);
-    std::vector<std::array<std::int32_t, 4>> out;
-    for (const auto& e : c) {
-        erd::LatticePoint a = cdt.point(e[0]), b = cdt.point(e[1]);
-        if (erd::perturb_before(b, a)) std::swap(a, b);
-        out.push_back({a.x, a.y, b.x, b.y});
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 // The image limits the decoder targets run under: small enough that every allocation stays cheap.
 inline erd::imageio::ImageLimits image_limits() {
