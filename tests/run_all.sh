@@ -155,29 +155,23 @@ stage_vector() {
 
 stage_web() { browser_stage web tests/web_test.sh "$IMAGES"; }
 
-# Real elevation data (issue 47): --max-error bounds measured by numpy, precision, TIFF round
-# trips, every .glb through the Khronos validator; each PASS line is a test.
-stage_raster() {
-    bash tests/raster_test.sh build/erd >"$log/raster" 2>&1
-    grep -E '^(FAIL|SKIP)' "$log/raster" | head -20
-    local p f s
-    p=$(grep -c '^PASS' "$log/raster"); f=$(grep -c '^FAIL' "$log/raster"); s=$(grep -c '^SKIP' "$log/raster")
-    echo "$p raster checks passed, $f failed"
+stage_lines() {  # NAME SCRIPT...: a script whose PASS, FAIL and SKIP lines are each a test
+    local name=$1 p f s
+    shift
+    bash "$@" >"$log/$name" 2>&1
+    grep -E '^(FAIL|SKIP)' "$log/$name" | head -20
+    p=$(grep -c '^PASS' "$log/$name"); f=$(grep -c '^FAIL' "$log/$name"); s=$(grep -c '^SKIP' "$log/$name")
+    echo "$p $name checks passed, $f failed"
     [[ $p -eq 0 && $f -eq 0 ]] && f=1  # the script ran nothing
     passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
 }
+# Real elevation data (issue 47): --max-error bounds measured by numpy, precision, TIFF round
+# trips, every .glb through the Khronos validator; each PASS line is a test.
+stage_raster() { stage_lines raster tests/raster_test.sh build/erd; }
 
 # Tiles (issue 48): seams of merged meshes checked by numpy, the same bytes however the tasks run,
 # the merged .glb validated, refusals; each PASS line is a test (the Dask run is pytest's).
-stage_tiles() {
-    bash tests/tiles_test.sh build/erd >"$log/tiles" 2>&1
-    grep -E '^(FAIL|SKIP)' "$log/tiles" | head -20
-    local p f s
-    p=$(grep -c '^PASS' "$log/tiles"); f=$(grep -c '^FAIL' "$log/tiles"); s=$(grep -c '^SKIP' "$log/tiles")
-    echo "$p tiles checks passed, $f failed"
-    [[ $p -eq 0 && $f -eq 0 ]] && f=1  # the script ran nothing
-    passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
-}
+stage_tiles() { stage_lines tiles tests/tiles_test.sh build/erd; }
 
 run_job() {
     local name=$1 fn=$2 t0=$SECONDS

@@ -18,11 +18,7 @@ ERD=$(realpath "${1:-build/erd}")
 PY=/usr/bin/python3
 d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
-check() {  # LABEL COMMAND...: PASS or FAIL with the command's last line
-    local label=$1 out
-    shift
-    if out=$("$@" 2>&1); then echo "PASS: $label: $(tail -1 <<<"$out")"; else echo "FAIL: $label: $(tail -3 <<<"$out" | tr '\n' ' ')"; fi
-}
+. tests/check_lines.sh  # check LABEL COMMAND...
 same() {  # LABEL DIR1 DIR2 [FILE...]: the folders' files (and the files) byte for byte
     local label=$1 a=$2 b=$3
     shift 3
