@@ -541,9 +541,9 @@ int run_tiles(const Args& a, const Reporter& rep) {
     if (!a.has("method")) return rep.usage("-m METHOD is required (gpi or erdgpi)");
     if (!a.has("input")) return rep.usage("-i RASTER is required");
     if (!a.has("tile")) return rep.usage("--tile T is required");
-    if (!(st = make_dir(dir))) return rep.fail(st);
     TilesPlan plan;
     if (!(st = make_plan(a, dir, &plan))) return rep.fail(st);
+    if (!(st = make_dir(dir))) return rep.fail(st);  // after the plan: a refused run leaves no folder
     if (!(st = write_file_atomic(plan_path(dir), plan_text(plan)))) return rep.fail(st);
     if (a.has("plan")) {
         rep.note(std::to_string(plan.grid.count()) + " tasks (" + std::to_string(plan.grid.nx) + " x " + std::to_string(plan.grid.ny) +
