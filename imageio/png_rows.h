@@ -45,7 +45,7 @@ private:
     z_stream z_{};
     bool z_open_ = false;
     std::uint32_t chunk_left_ = 0;  // bytes of the current IDAT not yet fed
-    std::uint32_t chunk_crc_ = 0, chunk_want_crc_ = 0;
+    std::uint32_t chunk_crc_ = 0;
     bool ended_ = false;  // IEND reached
     std::vector<unsigned char> in_, prev_, cur_;
     std::int64_t next_ = 0;  // the row next_row() makes
