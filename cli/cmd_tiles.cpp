@@ -92,7 +92,7 @@ const CommandLine& tiles_command_line() {
                 {0, "plan", nullptr, "only write DIR/plan.txt (the task list)"},
                 {0, "task", "K", "only run task K of DIR/plan.txt (0 .. tiles-1)"},
                 {0, "finish", nullptr, "only write DIR/index.json (and --merge) from the finished tasks"},
-                {0, "psnr-report", nullptr, "also reconstruct every tile and put the whole raster's PSNR in the index (each pixel once)"},
+                {0, "psnr-report", nullptr, "also reconstruct every tile: the whole raster's PSNR and largest error in the index (each pixel once)"},
             },
             "no summary lines",
         };
@@ -400,7 +400,7 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
     std::string tiles = "[";
     long long faces = 0, copies = 0;
     const bool want_psnr = a.has("psnr-report");
-    double sse = 0;
+    double sse = 0, worst = 0;
     imageio::RasterWindow rw;
     if (want_psnr && !(st = rw.open(plan.raster, raster_limits()))) return Status::bad_input(escape_name(plan.raster) + ": " + st.message);
     for (int k = 0; k < plan.grid.count(); ++k) {
@@ -441,6 +441,7 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
                     const double o = orig.real() ? orig.reals[i] : double(orig.samples[i]);
                     const double r = rec.real() ? rec.reals[i] : double(rec.samples[i]);
                     sse += (o - r) * (o - r);
+                    worst = std::max(worst, std::fabs(o - r));
                 }
         }
         JsonObject t;
@@ -473,9 +474,9 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
         const double peak = plan.real ? plan.hi - plan.lo : double(plan.maxval);
         const double mse = sse / (double(plan.grid.width) * double(plan.grid.height));
         const double db = mse > 0 ? 10.0 * std::log10(peak * peak / mse) : INFINITY;
-        idx.num("psnr", db);
-        char line[80];
-        std::snprintf(line, sizeof line, "erd tiles: psnr: %.4f dB", db);
+        idx.num("psnr", db).num("max_error", worst);
+        char line[120];
+        std::snprintf(line, sizeof line, "erd tiles: psnr: %.4f dB, largest error %.6g", db, worst);
         std::fprintf(stderr, "%s\n", line);
     }
     if (!plan.geo.empty()) {
