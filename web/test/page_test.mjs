@@ -103,6 +103,7 @@ try {
     browser = await chromium.launch({executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox']});
     const errors = [];
     const page = await browser.newPage({viewport: {width: 1280, height: 800}, acceptDownloads: true});
+    page.setDefaultTimeout(WAIT.timeout);  // every wait, not only the meshes': a loaded machine is slow
     page.on('pageerror', (e) => errors.push(e.message));
 
     // opening: no action but waiting.
