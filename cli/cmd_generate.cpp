@@ -78,6 +78,9 @@ const CommandLine kGenerate = {
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
+        {0, "oversample", "K", "GPRFS, ERDGPR: the start holds K*N points before removal (default: GPRFS 4, ERDGPR 2)"},
+        {0, "eager", nullptr, "GPR, GPRFS, ERDGPR: recompute stale significances at once (default: lazily)"},
+        {0, "bpr", "R", "any method: R rounds of bad-point replacement at the end (default 0)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
         {0, "flip-min-share", "F", "ERD: flips skip quadrilaterals whose error is below F of the mean of two faces (default 0.2)"},
         {0, "moves", "K", "ERD: vertex moves after the first K rounds of flips, followed by a refit (default 2)"},
@@ -190,6 +193,9 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
     if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
     if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
+    if (a.has("oversample")) o->oversample = a.real("oversample", 0.0, 1.0, 64.0, st);
+    if (a.has("eager")) o->removal_lazy = false;
+    if (a.has("bpr")) o->bpr = int(a.integer("bpr", 0, 0, 1000, st));
     if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
     if (a.has("optimize")) o->optimize = true;
     if (a.has("flips")) o->flips = int(a.integer("flips", 0, 0, 64, st));

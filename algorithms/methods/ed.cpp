@@ -1,9 +1,6 @@
 #include "algorithms/methods/ed.h"
 
-#include "algorithms/imaging/colour.h"
-#include "algorithms/imaging/error_diffusion.h"
-#include "algorithms/imaging/mmsodd.h"
-#include "algorithms/methods/exact_count.h"
+#include "algorithms/methods/ed_select.h"
 #include "algorithms/methods/scaffold.h"
 #include "kernel/cdt.h"
 
@@ -13,32 +10,23 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     Status st = begin_method(image, options, result);
     if (!st) return st;
     const std::int64_t n = std::int64_t(result->requested);
-    const int w = image.width, h = image.height;
 
     // Step 1: sigma = (d / d_max)^1 with d the MMSODD after 3rd-order binomial smoothing,
     // zero extension at the borders (thesis 3.2.1).
     StageTimer timer(result);
     if (options.progress.report_cancelled("sample selection", 0.0)) return Status::failure(kCancelled);
     // Colour: the channels' MMSODDs combined (ColourChoices::density).
-    Grid<double> sigma = ed_density(colour_mmsodd(image, 3, options.colour.density, options.threads), 1.0, options.threads);
+    Grid<double> sigma = ed_sigma(image, options);
     timer.lap("mmsodd density");
     if (options.progress.report_cancelled("sample selection", 0.2)) return Status::failure(kCancelled);
 
     // Steps 2-3: error diffusion chooses the N - 4 non-corner points; the corners are forbidden
     // to it (their density still diffuses) and always added, so the total is N exactly whenever
     // the threshold search finds N - 4.
-    Grid<std::uint8_t> corners(w, h, 0);
-    corners(0, 0) = corners(w - 1, 0) = corners(w - 1, h - 1) = corners(0, h - 1) = 1;
-    DiffusionParams params;
-    params.startup = Startup::none;
-    params.forbidden = &corners;
-    params.threads = options.threads;
     DiffusionResult chosen;
-    const std::size_t want = std::size_t(n - 4);
-    st = select_points(sigma, want, params, &chosen);
-    if (!st) return st;
     std::size_t adjusted = 0;
-    if (chosen.points.size() != want) adjusted = lower_threshold_to_exact(sigma, want, params, &chosen);
+    st = ed_choose(sigma, std::size_t(n - 4), options, &chosen, &adjusted);
+    if (!st) return st;
     result->stats.has_diffusion = true;
     result->stats.diffusion.rho = chosen.rho;
     result->stats.diffusion.passes = chosen.passes;
@@ -48,7 +36,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
 
     // Step 4: the Delaunay triangulation of the corners and the chosen points.
     Cdt cdt;
-    st = cdt.reset(2 * (w - 1), 2 * (h - 1));
+    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
     if (!st) return st;
     cdt.reserve(chosen.points.size() + 4);
     std::vector<VertInd> ids;

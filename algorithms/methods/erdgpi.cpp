@@ -5,6 +5,7 @@
 
 #include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/erd_mesh.h"
+#include "algorithms/methods/erd_removal.h"
 #include "algorithms/methods/scaffold.h"
 
 namespace erd {
@@ -21,9 +22,9 @@ namespace {
 // ERDGPI on a colour image, from the initial mesh (step 1, on the luma plane): the greedy loop
 // on all channels' errors (ColourErdGreedyModel), or for comparison on the luma plane's gray
 // model (ColourChoices::greedy_on_luma) with the colour values assigned to the final mesh.
-Status erdgpi_colour(const Image& image, const GenerateOptions& options, Cdt* cdt, InitialMesh* mesh,
-                     StageTimer* timer, GenerateResult* result) {
-    const std::size_t n = result->requested;
+Status erdgpi_colour(const Image& image, const GenerateOptions& options, std::size_t start, Cdt* cdt,
+                     InitialMesh* mesh, StageTimer* timer, GenerateResult* result) {
+    const std::size_t n = start;
     const WedgeValueOptions wo = wedge_options(options);
     GreedyOptions go = greedy_options(options, n);
     go.round_values = false;  // as in gray
@@ -43,21 +44,38 @@ Status erdgpi_colour(const Image& image, const GenerateOptions& options, Cdt* cd
         if (cdt->vertex_count() < n && !(st = greedy_refine(*cdt, image, greedy, go, &result->stats.greedy))) return st;
     }
     timer->lap("greedy insertion");
+    if (cdt->vertex_count() > result->requested) {
+        ErdChannelsRemovalModel rm(model);
+        result->stats.has_removal = true;
+        st = erd_remove_to(cdt, image, rm, result->requested, options.removal_lazy, options.progress,
+                           &result->stats.removal);
+        if (!st) return st;
+        // A fresh model of the compact mesh: its wedge values as insertion assigns them.
+        ErdChannels compact(image, wo, options.colour.shared_wedge_position, options.colour.density);
+        compact.assign_all(*cdt);
+        timer->lap("point removal");
+        finish_erd_method(*cdt, image, options, mesh, &compact, timer, result);
+        return Status::success();
+    }
     finish_erd_method(*cdt, image, options, mesh, &model, timer, result);
     return Status::success();
 }
 
-Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
+// ERDGPI to `oversample` * N vertices (1: N, plain ERDGPI), then removal to N (erd_removal.h).
+Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_fallback, double oversample,
+                  GenerateResult* result) {
     Cdt cdt;
     InitialMesh mesh;
     Status st = begin_erd_method(image, options, ErdMethod::erdgpi, &cdt, &mesh, result, hard_fallback);
     if (!st) return st;
     mesh.edges = Grid<std::uint8_t>();  // only ERDED reads the edge map again
-    const std::int64_t n = std::int64_t(result->requested);
+    const std::size_t start =
+        std::max(result->requested, std::min(image.pixels(), std::size_t(double(result->requested) * oversample + 0.5)));
+    const std::int64_t n = std::int64_t(start);
     StageTimer timer(result);
 
     if (options.progress.report_cancelled("wedge values", 0.0)) return Status::failure(kCancelled);
-    if (image.channels > 1) return erdgpi_colour(image, options, &cdt, &mesh, &timer, result);
+    if (image.channels > 1) return erdgpi_colour(image, options, start, &cdt, &mesh, &timer, result);
     ErdModel model(image, wedge_options(options));
     model.assign_all(cdt);
     timer.lap("wedge values");
@@ -94,15 +112,42 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
     timer.lap("greedy insertion");
     for (std::size_t i = line_search.size(); staged && i < model.entry_count(); ++i)
         line_search.push_back(model.entry_value(i));
+    if (cdt.vertex_count() > result->requested) {
+        ErdRemovalModel rm(model);
+        result->stats.has_removal = true;
+        st = erd_remove_to(&cdt, image, rm, result->requested, options.removal_lazy, options.progress,
+                           &result->stats.removal);
+        if (!st) return st;
+        // A fresh model of the compact mesh: its wedge values as insertion assigns them (the
+        // line-search ones, so the refit is drawn towards them).
+        ErdModel compact(image, wedge_options(options));
+        compact.assign_all(cdt);
+        timer.lap("point removal");
+        finish_erd_method(cdt, image, options, &mesh, &compact, &timer, result);
+        return Status::success();
+    }
 
     finish_erd_method(cdt, image, options, &mesh, &model, &timer, result, staged ? &line_search : nullptr);
     return Status::success();
+}
+
+Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
+    return erdgpi_run(image, options, hard_fallback, 1.0, result);
+}
+
+Status erdgpr_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
+    return erdgpi_run(image, options, hard_fallback, options.oversample > 0 ? options.oversample : kErdgprOversample,
+                      result);
 }
 
 }  // namespace
 
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result) {
     return run_erd_method(image, options, erdgpi_once, result);
+}
+
+Status generate_erdgpr(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    return run_erd_method(image, options, erdgpr_once, result);
 }
 
 }  // namespace erd

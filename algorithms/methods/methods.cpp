@@ -4,6 +4,7 @@
 #include "algorithms/methods/erded.h"
 #include "algorithms/methods/erdgpi.h"
 #include "algorithms/methods/gpi.h"
+#include "algorithms/methods/gpr.h"
 
 namespace erd {
 
@@ -20,10 +21,16 @@ const MethodInfo kMethods[] = {
      generate_ed},
     {"gpi", "greedy point insertion (thesis 3.2.2, gpi), basic model", ModelKind::basic, "gpi", "idnotpx", 3, 210,
      generate_gpi},
+    {"gpr", "greedy point removal from all pixels (Adams; Demaret-Iske thinning), basic model", ModelKind::basic,
+     nullptr, nullptr, 400, 210, generate_gpr},
+    {"gprfs", "GPRFS-ED: ED start at K*N points, then greedy point removal (Adams), basic model", ModelKind::basic,
+     nullptr, nullptr, 60, 900, generate_gprfs},
     {"erded", "ERD model, error-diffusion refinement (thesis 3.4.2, erd_ed)", ModelKind::erd, "erd_ed",
      "idnotpxlbrefwsBS", 96, 960, generate_erded},
     {"erdgpi", "ERD model, greedy point insertion (thesis 3.4.3, erd_gpi)", ModelKind::erd, "erd_gpi",
      "idnotpxlbrewsS", 96, 960, generate_erdgpi},
+    {"erdgpr", "ERD model, ERDGPI to K*N points then greedy point removal to N (ours, issue 45)", ModelKind::erd,
+     nullptr, nullptr, 96, 1900, generate_erdgpr},
 };
 
 }  // namespace

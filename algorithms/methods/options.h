@@ -81,6 +81,11 @@ struct GenerateOptions {
     double flip_min_share = 0.2;  // quadrilaterals below this share of the mean error are not tried
     int flips = 2;               // ERD (ours): rounds of data-dependent flips + refit after the refit
     bool optimize = false;       // ED, GPI (--optimize, ours): least-squares vertex values
+    // Point removal (issue 45; algorithms/methods/removal.h).
+    double oversample = 0.0;     // --oversample K: GPRFS's ED start and ERDGPR's ERDGPI start hold
+                                 // K*N points (0: the method's default, docs/DECISIONS.md "Point removal")
+    bool removal_lazy = true;    // --eager: recompute stale significances at once instead of lazily
+    int bpr = 0;                 // --bpr R: rounds of bad-point replacement after the method (bpr.h)
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
     EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft

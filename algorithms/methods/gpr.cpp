@@ -1,0 +1,85 @@
+#include "algorithms/methods/gpr.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "algorithms/methods/ed_select.h"
+#include "algorithms/methods/removal.h"
+#include "algorithms/methods/scaffold.h"
+
+namespace erd {
+
+namespace {
+
+// Removal from the points in *cdt to N, then the compact mesh and the basic model.
+Status remove_to_n(Cdt* cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
+                   GenerateResult* result) {
+    SampleRemovalModel model(image);
+    PointRemover remover(*cdt, image, model, options.round_values);
+    remover.lazy = options.removal_lazy;
+    remover.start();
+    Status st = remover.run_to(result->requested, options.progress);
+    if (!st) return st;
+    result->stats.has_removal = true;
+    result->stats.removal.start = remover.stats().removed + cdt->live_vertex_count();
+    result->stats.removal.removed = remover.stats().removed;
+    result->stats.removal.evaluations = remover.stats().evaluations;
+    timer->lap("point removal");
+    Cdt compact;
+    st = compact_cdt(*cdt, &compact);
+    if (!st) return st;
+    *cdt = std::move(compact);
+    finish_basic_method(*cdt, image, options, timer, result);
+    return Status::success();
+}
+
+}  // namespace
+
+Status generate_gpr(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    Status st = begin_method(image, options, result);
+    if (!st) return st;
+    StageTimer timer(result);
+    Cdt cdt;
+    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
+    if (!st) return st;
+    std::vector<LatticePoint> all;
+    all.reserve(image.pixels());
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) all.push_back(LatticePoint{2 * x, 2 * y});
+    cdt.reserve(all.size());
+    std::vector<VertInd> ids;
+    st = cdt.insert_points(all, &ids, false);
+    if (!st) return st;
+    timer.lap("triangulate all pixels");
+    return remove_to_n(&cdt, image, options, &timer, result);
+}
+
+Status generate_gprfs(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    Status st = begin_method(image, options, result);
+    if (!st) return st;
+    StageTimer timer(result);
+    const double k = options.oversample > 0 ? options.oversample : kGprfsOversample;
+    const std::size_t start = std::min(image.pixels(), std::size_t(double(result->requested) * k + 0.5));
+    Cdt cdt;
+    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
+    if (!st) return st;
+    std::vector<LatticePoint> pts;
+    if (start >= image.pixels()) {
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) pts.push_back(LatticePoint{2 * x, 2 * y});
+    } else {
+        DiffusionResult chosen;
+        std::size_t adjusted = 0;
+        st = ed_choose(ed_sigma(image, options), start - 4, options, &chosen, &adjusted);
+        if (!st) return st;
+        pts = std::move(chosen.points);
+    }
+    timer.lap("error diffusion");
+    cdt.reserve(pts.size() + 4);
+    std::vector<VertInd> ids;
+    st = cdt.insert_points(pts, &ids, false);
+    if (!st) return st;
+    return remove_to_n(&cdt, image, options, &timer, result);
+}
+
+}  // namespace erd

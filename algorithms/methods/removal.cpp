@@ -1,0 +1,294 @@
+// Greedy point removal (removal.h): face errors, the hole's triangulation, the lazy heap.
+#include "algorithms/methods/removal.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "kernel/predicates.h"
+#include "kernel/raster_rows.h"
+
+namespace erd {
+
+PointRemover::PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bool round_values)
+    : cdt_(cdt), image_(image), model_(model), round_(round_values), channels_(image.channels) {
+    domain_ = RasterDomain{cdt.max_x(), cdt.max_y()};
+    face_err_.assign(cdt.face_count(), 0.0);
+    for (FaceInd f = 0; f < cdt.face_count(); ++f)
+        if (cdt.face_live(f)) face_err_[f] = face_error_now(f);
+}
+
+double PointRemover::triangle_error(const LatticePoint* p, const double* z) const {
+    const double maxval = double(image_.maxval);
+    const std::size_t width = std::size_t(image_.width), nc = std::size_t(channels_);
+    const std::uint16_t* samples = image_.samples.data();
+    double total = 0.0;
+    for (int c = 0; c < channels_; ++c) {
+        const double z0 = z[c], z1 = z[channels_ + c], z2 = z[2 * channels_ + c];
+        // Integer values (the basic model's samples) round exactly, as reconstruction does, so
+        // a face's error does not depend on the order of its corners.
+        RoundedPlane exact;
+        const bool is_exact = round_ && z0 == std::floor(z0) && z1 == std::floor(z1) && z2 == std::floor(z2) &&
+                              exact.set(p[0], std::int64_t(z0), p[1], std::int64_t(z1), p[2], std::int64_t(z2),
+                                        std::int64_t(image_.maxval));
+        SpanPlane plane;
+        if (!is_exact) plane.set(p[0], z0, p[1], z1, p[2], z2);
+        const double dv = 2.0 * plane.gx;
+        double sum = 0.0;
+        for_each_owned_row(Lattice::pixels(), domain_, p[0], p[1], p[2], [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            const std::uint16_t* row = samples + std::size_t(j) * width * nc + std::size_t(c);
+            if (is_exact) {
+                exact.pieces(lo, hi, j, [&](std::int32_t first, std::int32_t last, double v) {
+                    for (std::int32_t x = first; x <= last; ++x, v += exact.dp) {
+                        const double e = double(row[std::size_t(x) * nc]) - double(std::int32_t(v));
+                        sum += e * e;
+                    }
+                });
+                return;
+            }
+            double v = plane.at(double(2 * lo), double(2 * j));
+            for (std::int32_t x = lo; x <= hi; ++x, v += dv) {
+                double a = v;
+                if (round_) {
+                    const double cl = v < maxval ? v : maxval;
+                    const std::int32_t r = std::int32_t(cl + 0.5);
+                    a = r < 0 ? 0.0 : double(r);
+                }
+                const double e = double(row[std::size_t(x) * nc]) - a;
+                sum += e * e;
+            }
+        });
+        total += sum;
+    }
+    return total;
+}
+
+double PointRemover::face_error_now(FaceInd f) const {
+    LatticePoint p[3];
+    double z[3 * 3];
+    for (int i = 0; i < 3; ++i) {
+        const EdgeInd e = 3 * f + EdgeInd(i);
+        p[i] = cdt_.point(cdt_.org(e));
+        for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = model_.corner_value(cdt_, e, c);
+    }
+    return triangle_error(p, z);
+}
+
+double PointRemover::total_error() const {
+    double t = 0.0;
+    for (FaceInd f = 0; f < cdt_.face_count(); ++f)
+        if (cdt_.face_live(f)) t += face_err_[f];
+    return t;
+}
+
+bool PointRemover::gather(VertInd v) {
+    if (!cdt_.can_remove(v)) return false;
+    cdt_.corners_around(v, &corners_);
+    poly_.clear();
+    polyz_.clear();
+    star_.clear();
+    // Corner e = v -> q_i stands for face (v, q_i, q_i+1); next(e) leaves q_i inside that face.
+    for (EdgeInd e : corners_) {
+        star_.push_back(face_of(e));
+        const EdgeInd at_q = next_edge(e);
+        poly_.push_back(cdt_.org(at_q));
+        for (int c = 0; c < channels_; ++c) polyz_.push_back(model_.corner_value(cdt_, at_q, c));
+    }
+    if (cdt_.on_boundary(v)) {  // open fan: the last neighbour closes it
+        const EdgeInd at_q = prev_edge(corners_.back());
+        poly_.push_back(cdt_.org(at_q));
+        for (int c = 0; c < channels_; ++c) polyz_.push_back(model_.corner_value(cdt_, at_q, c));
+    }
+    return true;
+}
+
+// The apex scan (kernel/cdt_remove.cpp): sub-polygon q_i .. q_j with base q_j -> q_i and the rest
+// on its left; the apex is the vertex strictly left of the base whose circle with it holds no
+// other such vertex, found in one pass of the kernel's perturbed in-circle test.
+void PointRemover::triangulate_hole() {
+    tris_.clear();
+    stack_.clear();
+    const std::uint32_t m = std::uint32_t(poly_.size());
+    stack_.push_back(0);
+    stack_.push_back(m - 1);
+    while (!stack_.empty()) {
+        const std::uint32_t j = stack_.back();
+        stack_.pop_back();
+        const std::uint32_t i = stack_.back();
+        stack_.pop_back();
+        if (j < i + 2) continue;
+        const LatticePoint a = cdt_.point(poly_[j]), b = cdt_.point(poly_[i]);
+        std::uint32_t k = noVertex;
+        for (std::uint32_t l = i + 1; l < j; ++l) {
+            const LatticePoint d = cdt_.point(poly_[l]);
+            if (orient2d(a, b, d) <= 0) continue;
+            if (k == noVertex || incircle_perturbed(a, b, cdt_.point(poly_[k]), d) > 0) k = l;
+        }
+        if (k == noVertex) continue;  // cannot happen for a star polygon
+        tris_.push_back(j);
+        tris_.push_back(i);
+        tris_.push_back(k);
+        stack_.push_back(i);
+        stack_.push_back(k);
+        stack_.push_back(k);
+        stack_.push_back(j);
+    }
+}
+
+void PointRemover::hole(VertInd v, std::vector<std::array<VertInd, 3>>* out) {
+    out->clear();
+    if (!gather(v)) return;
+    triangulate_hole();
+    for (std::size_t t = 0; t < tris_.size(); t += 3) out->push_back({poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]});
+}
+
+double PointRemover::significance(VertInd v) {
+    if (!gather(v)) return 0.0;
+    ++stats_.evaluations;
+    double before = 0.0;
+    for (FaceInd f : star_) before += face_err_[f];
+    triangulate_hole();
+    double after = 0.0;
+    LatticePoint p[3];
+    double z[3 * 3];
+    for (std::size_t t = 0; t < tris_.size(); t += 3) {
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t q = tris_[t + std::size_t(i)];
+            p[i] = cdt_.point(poly_[q]);
+            for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = polyz_[q * std::size_t(channels_) + std::size_t(c)];
+        }
+        after += triangle_error(p, z);
+    }
+    return after - before;
+}
+
+void PointRemover::update(VertInd v) {
+    if (v >= stale_.size()) stale_.resize(cdt_.vertex_count(), 0);
+    stale_[v] = 0;
+    if (!cdt_.vertex_live(v) || !cdt_.can_remove(v)) {
+        heap_.remove(v);
+        return;
+    }
+    heap_.set(v, -significance(v), tie_of(cdt_.point(v)));
+}
+
+void PointRemover::start() {
+    stale_.assign(cdt_.vertex_count(), 0);
+    heap_.reserve(cdt_.vertex_count());
+    for (VertInd v = 0; v < cdt_.vertex_count(); ++v)
+        if (cdt_.vertex_live(v) && cdt_.can_remove(v)) heap_.set(v, -significance(v), tie_of(cdt_.point(v)));
+}
+
+void PointRemover::rescan_created() {
+    if (face_err_.size() < cdt_.face_count()) face_err_.resize(cdt_.face_count(), 0.0);
+    for (FaceInd f : cdt_.changes().created) face_err_[f] = face_error_now(f);
+}
+
+void PointRemover::touch_neighbours(const std::vector<VertInd>& around) {
+    if (stale_.size() < cdt_.vertex_count()) stale_.resize(cdt_.vertex_count(), 0);
+    for (VertInd q : around) {
+        if (!lazy) update(q);
+        else if (heap_.contains(q) || cdt_.can_remove(q)) {
+            stale_[q] = 1;
+            if (!heap_.contains(q)) update(q);
+        }
+    }
+}
+
+Status PointRemover::remove(VertInd v) {
+    if (!gather(v)) return Status::failure("point removal: vertex not removable");
+    around_ = poly_;
+    Status st = cdt_.remove_vertex(v);
+    if (!st) return st;
+    heap_.remove(v);
+    rescan_created();
+    ++stats_.removed;
+    touch_neighbours(around_);
+    return Status::success();
+}
+
+Status PointRemover::insert(LatticePoint p, VertInd* v) {
+    const Location loc = cdt_.locate(p);
+    Status st = cdt_.insert_point(p, v, loc.face);
+    if (!st) return st;
+    model_.on_vertex_inserted(cdt_, *v);
+    rescan_created();
+    around_.clear();
+    for (FaceInd f : cdt_.changes().created)
+        for (int i = 0; i < 3; ++i) around_.push_back(cdt_.face_vertex(f, i));
+    std::sort(around_.begin(), around_.end());
+    around_.erase(std::unique(around_.begin(), around_.end()), around_.end());
+    touch_neighbours(around_);
+    return Status::success();
+}
+
+Status PointRemover::run_to(std::size_t target, const ProgressHook& progress) {
+    const std::size_t first = cdt_.live_vertex_count();
+    std::size_t next_report = 0;
+    while (cdt_.live_vertex_count() > target && !heap_.empty()) {
+        const VertInd v = heap_.top();
+        if (v < stale_.size() && stale_[v]) {
+            ++stats_.stale_pops;
+            update(v);
+            continue;
+        }
+        Status st = remove(v);
+        if (!st) return st;
+        if (progress && stats_.removed >= next_report) {
+            const double done = first > target ? double(first - cdt_.live_vertex_count()) / double(first - target) : 1.0;
+            if (progress.report_cancelled("point removal", done)) return Status::failure(kCancelled);
+            next_report = stats_.removed + std::max<std::size_t>(1, (first - target) / 100);
+        }
+    }
+    return Status::success();
+}
+
+void PointRemover::least_significant(std::size_t count, std::vector<VertInd>* out) {
+    out->clear();
+    std::vector<std::pair<VertInd, double>> taken;
+    while (out->size() < count && !heap_.empty()) {
+        const VertInd v = heap_.top();
+        if (v < stale_.size() && stale_[v]) {
+            ++stats_.stale_pops;
+            update(v);
+            continue;
+        }
+        taken.push_back({v, heap_.top_key()});
+        out->push_back(v);
+        heap_.remove(v);
+    }
+    for (const auto& t : taken) heap_.set(t.first, t.second, tie_of(cdt_.point(t.first)));
+}
+
+std::vector<LatticePoint> live_points(const Cdt& cdt) {
+    std::vector<LatticePoint> pts;
+    for (VertInd v = 4; v < cdt.vertex_count(); ++v)
+        if (cdt.vertex_live(v)) pts.push_back(cdt.point(v));
+    return pts;
+}
+
+Status compact_cdt(const Cdt& cdt, Cdt* out) {
+    Status st = out->reset(cdt.max_x(), cdt.max_y());
+    if (!st) return st;
+    const std::vector<LatticePoint> pts = live_points(cdt);
+    out->reserve(pts.size() + 4);
+    std::vector<VertInd> ids;
+    st = out->insert_points(pts, &ids, false);
+    if (!st) return st;
+    // Old vertex -> new vertex, for the constrained edges.
+    std::vector<VertInd> to(cdt.vertex_count(), noVertex);
+    for (VertInd v = 0; v < 4; ++v) to[v] = v;
+    std::size_t k = 0;
+    for (VertInd v = 4; v < cdt.vertex_count(); ++v)
+        if (cdt.vertex_live(v)) to[v] = ids[k++];
+    std::vector<std::array<VertInd, 2>> cons;
+    cdt.export_constraints(&cons);
+    for (const auto& c : cons) {
+        st = out->insert_constraint(to[c[0]], to[c[1]]);
+        if (!st) return st;
+    }
+    return Status::success();
+}
+
+}  // namespace erd

@@ -1,0 +1,134 @@
+// Greedy point removal (algorithms/methods/removal.h): the significance it predicts is the change
+// of the whole-image error that the kernel's removal then makes (so its hole triangulation is the
+// kernel's), the loop stops at exactly N, and gpr / gprfs / erdgpr on small generated images.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "algorithms/methods/methods.h"
+#include "algorithms/methods/removal.h"
+#include "algorithms/methods/result.h"
+#include "kernel/cdt.h"
+#include "tests/synth_util.h"
+
+using namespace erd;
+
+namespace {
+
+void all_pixels(const Image& im, Cdt* cdt) {
+    REQUIRE(cdt->reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
+    std::vector<LatticePoint> pts;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) pts.push_back(LatticePoint{2 * x, 2 * y});
+    std::vector<VertInd> ids;
+    REQUIRE(cdt->insert_points(pts, &ids).ok());
+}
+
+// The error of the mesh scanned from scratch (a fresh remover's face sums).
+double fresh_error(Cdt& cdt, const Image& im, RemovalModel& model, bool round) {
+    PointRemover r(cdt, im, model, round);
+    return r.total_error();
+}
+
+}  // namespace
+
+TEST_CASE("removal: significance is the error change of the kernel's removal", "[removal]") {
+    const bool round = GENERATE(true, false);
+    const int channels = GENERATE(1, 3);
+    Image im = erd_test::synth_image(23, 17, 8, 3);
+    if (channels == 3) {  // three different planes from three seeds
+        Image b = erd_test::synth_image(23, 17, 8, 5), c = erd_test::synth_image(23, 17, 8, 7);
+        Image rgb(23, 17, 255, 3);
+        for (int y = 0; y < 17; ++y)
+            for (int x = 0; x < 23; ++x) {
+                rgb.at(x, y, 0) = im.at(x, y);
+                rgb.at(x, y, 1) = b.at(x, y);
+                rgb.at(x, y, 2) = c.at(x, y);
+            }
+        im = rgb;
+    }
+    Cdt cdt;
+    all_pixels(im, &cdt);
+    SampleRemovalModel model(im);
+    PointRemover remover(cdt, im, model, round);
+    remover.start();
+    // Remove down to 40 vertices, checking every 7th step's prediction against a fresh scan.
+    std::size_t step = 0;
+    while (cdt.live_vertex_count() > 40) {
+        std::vector<VertInd> least;
+        remover.least_significant(1, &least);
+        REQUIRE(least.size() == 1);
+        const VertInd v = least[0];
+        if (step++ % 7 == 0) {
+            const double before = fresh_error(cdt, im, model, round);
+            INFO("step " << step << " v " << v << " at " << cdt.point(v).x << "," << cdt.point(v).y << " round " << round
+                 << " channels " << channels << " cached " << remover.total_error() << " boundary " << cdt.on_boundary(v));
+            const double sig = remover.significance(v);
+            std::vector<std::array<VertInd, 3>> predicted, made;
+            remover.hole(v, &predicted);
+            REQUIRE(remover.remove(v).ok());
+            for (FaceInd f : cdt.changes().created)
+                made.push_back({cdt.face_vertex(f, 0), cdt.face_vertex(f, 1), cdt.face_vertex(f, 2)});
+            // Same triangles, each rotated to start at its smallest vertex.
+            auto canon = [](std::vector<std::array<VertInd, 3>>* t) {
+                for (auto& a : *t)
+                    while (a[0] > a[1] || a[0] > a[2]) a = {a[1], a[2], a[0]};
+                std::sort(t->begin(), t->end());
+            };
+            canon(&predicted);
+            canon(&made);
+            REQUIRE(predicted == made);
+            std::string why;
+            REQUIRE(cdt.verify(&why));
+            const double after = fresh_error(cdt, im, model, round);
+            REQUIRE(after - before == Approx(sig).margin(1e-6 * (1 + before)));
+            REQUIRE(remover.total_error() == Approx(after).margin(1e-6 * (1 + after)));
+        } else {
+            REQUIRE(remover.remove(v).ok());
+        }
+    }
+    CHECK(cdt.live_vertex_count() == 40);
+}
+
+TEST_CASE("removal: lazy and eager both stop at exactly N and lower the error monotonically in N", "[removal]") {
+    const Image im = erd_test::synth_image(40, 30, 8, 2);
+    for (bool lazy : {true, false}) {
+        Cdt cdt;
+        all_pixels(im, &cdt);
+        SampleRemovalModel model(im);
+        PointRemover remover(cdt, im, model, true);
+        remover.lazy = lazy;
+        remover.start();
+        REQUIRE(remover.run_to(300, {}).ok());
+        CHECK(cdt.live_vertex_count() == 300);
+        const double e300 = remover.total_error();
+        REQUIRE(remover.run_to(100, {}).ok());
+        CHECK(cdt.live_vertex_count() == 100);
+        CHECK(remover.total_error() >= e300);
+        Cdt compact;
+        REQUIRE(compact_cdt(cdt, &compact).ok());
+        CHECK(compact.vertex_count() == 100);
+        std::string why;
+        CHECK(compact.verify(&why));
+    }
+}
+
+TEST_CASE("removal methods: exact N, deterministic, on small generated images", "[removal][methods]") {
+    const char* name = GENERATE("gpr", "gprfs", "erdgpr");
+    const int w = GENERATE(9, 48);
+    const Image im = erd_test::synth_image(w, 37, 8, 4);
+    const MethodInfo* m = find_method(name);
+    REQUIRE(m != nullptr);
+    GenerateOptions o;
+    o.points = w * 37 / 20;
+    GenerateResult a, b;
+    REQUIRE(m->run(im, o, &a).ok());
+    CHECK(a.achieved == std::size_t(o.points));
+    CHECK(a.model.vertices.size() == std::size_t(o.points));
+    REQUIRE(m->run(im, o, &b).ok());
+    CHECK(a.model.vertices == b.model.vertices);
+    CHECK(a.model.faces == b.model.faces);
+}
