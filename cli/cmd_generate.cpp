@@ -79,7 +79,10 @@ const CommandLine kGenerate = {
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
         {0, "oversample", "K", "GPRFS, ERDGPR: the start holds K*N points before removal (default: GPRFS 4, ERDGPR 2)"},
-        {0, "eager", nullptr, "GPR, GPRFS, ERDGPR: recompute stale significances at once (default: lazily)"},
+        {0, "removal-refit", "0|1", "ERDGPR: refit the wedge values before each removal stage (default 1)"},
+        {0, "removal-cycles", "C", "ERDGPR: C more cycles of insertion to K*N and removal to N (default 0)"},
+        {0, "removal-stages", "S", "ERDGPR: removal in S stages, each from a refitted compact mesh (default 1)"},
+        {0, "lazy", nullptr, "GPR, GPRFS, ERDGPR: recompute stale significances only at the heap's top (cheaper, worse; default: at once)"},
         {0, "bpr", "R", "any method: R rounds of bad-point replacement at the end (default 0)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
         {0, "flip-min-share", "F", "ERD: flips skip quadrilaterals whose error is below F of the mean of two faces (default 0.2)"},
@@ -194,7 +197,10 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
     if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
     if (a.has("oversample")) o->oversample = a.real("oversample", 0.0, 1.0, 64.0, st);
-    if (a.has("eager")) o->removal_lazy = false;
+    if (a.has("lazy")) o->removal_lazy = true;
+    if (a.has("removal-refit")) o->removal_refit = int(a.integer("removal-refit", 1, 0, 1, st));
+    if (a.has("removal-cycles")) o->removal_cycles = int(a.integer("removal-cycles", 0, 0, 16, st));
+    if (a.has("removal-stages")) o->removal_stages = int(a.integer("removal-stages", 1, 1, 16, st));
     if (a.has("bpr")) o->bpr = int(a.integer("bpr", 0, 0, 1000, st));
     if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
     if (a.has("optimize")) o->optimize = true;

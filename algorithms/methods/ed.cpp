@@ -43,8 +43,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     st = cdt.insert_points(chosen.points, &ids);
     if (!st) return st;
     timer.lap("triangulate");
-    finish_basic_method(cdt, image, options, &timer, result);
-    return Status::success();
+    return finish_basic_method(cdt, image, options, &timer, result);
 }
 
 }  // namespace erd

@@ -9,7 +9,7 @@ Status erd_remove_to(Cdt* cdt, const Image& image, RemovalModel& model, std::siz
     {
         PointRemover remover(*cdt, image, model, false);
         remover.lazy = lazy;
-        stats->start = cdt->live_vertex_count();
+        if (stats->start == 0) stats->start = cdt->live_vertex_count();
         remover.start();
         Status st = remover.run_to(n, progress);
         if (!st) return st;

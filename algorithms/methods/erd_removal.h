@@ -4,6 +4,7 @@
 // wedge values assigned again as insertion assigns them, for the refit that ends every ERD method.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "algorithms/methods/erd_channels.h"
 #include "algorithms/methods/removal.h"
@@ -20,6 +21,12 @@ public:
     explicit ErdRemovalModel(ErdModel& model) : model_(model) {}
     double corner_value(const Cdt& cdt, EdgeInd e, int) const override { return model_.corner_value(cdt, e); }
     void on_vertex_inserted(const Cdt& cdt, VertInd v) override { model_.assign_vertex(cdt, v); }
+    void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const override {
+        out->assign(1, model_.corner_value(cdt, cdt.out_edge(v)));
+    }
+    void restore_values(const Cdt& cdt, VertInd v, const std::vector<double>& values) override {
+        model_.set_entry_value(model_.corner_entry(cdt, cdt.out_edge(v)), values[0]);
+    }
 
 private:
     ErdModel& model_;
@@ -31,6 +38,16 @@ public:
     explicit ErdChannelsRemovalModel(ErdChannels& model) : model_(model) {}
     double corner_value(const Cdt& cdt, EdgeInd e, int c) const override { return model_.channel(c).corner_value(cdt, e); }
     void on_vertex_inserted(const Cdt& cdt, VertInd v) override { model_.assign_vertex(cdt, v); }
+    void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const override {
+        out->clear();
+        for (int c = 0; c < model_.channels(); ++c) out->push_back(model_.channel(c).corner_value(cdt, cdt.out_edge(v)));
+    }
+    void restore_values(const Cdt& cdt, VertInd v, const std::vector<double>& values) override {
+        for (int c = 0; c < model_.channels(); ++c) {
+            ErdModel& m = model_.channel(c);
+            m.set_entry_value(m.corner_entry(cdt, cdt.out_edge(v)), values[std::size_t(c)]);
+        }
+    }
 
 private:
     ErdChannels& model_;

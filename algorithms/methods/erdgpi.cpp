@@ -1,6 +1,8 @@
 #include "algorithms/methods/erdgpi.h"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <vector>
 
 #include "algorithms/methods/erd_channels.h"
@@ -54,11 +56,9 @@ Status erdgpi_colour(const Image& image, const GenerateOptions& options, std::si
         ErdChannels compact(image, wo, options.colour.shared_wedge_position, options.colour.density);
         compact.assign_all(*cdt);
         timer->lap("point removal");
-        finish_erd_method(*cdt, image, options, mesh, &compact, timer, result);
-        return Status::success();
+        return finish_erd_method(*cdt, image, options, mesh, &compact, timer, result);
     }
-    finish_erd_method(*cdt, image, options, mesh, &model, timer, result);
-    return Status::success();
+    return finish_erd_method(*cdt, image, options, mesh, &model, timer, result);
 }
 
 // ERDGPI to `oversample` * N vertices (1: N, plain ERDGPI), then removal to N (erd_removal.h).
@@ -113,22 +113,48 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
     for (std::size_t i = line_search.size(); staged && i < model.entry_count(); ++i)
         line_search.push_back(model.entry_value(i));
     if (cdt.vertex_count() > result->requested) {
-        ErdRemovalModel rm(model);
+        // Removal to N in options.removal_stages stages of equal size ratio; before each the
+        // wedge values are refitted (options.removal_refit), drawn towards the line-search ones,
+        // so that the significances see values like the final ones. Each stage ends with the
+        // compact mesh and a fresh model (its values the line-search ones again).
+        std::unique_ptr<ErdModel> current;
+        ErdModel* m = &model;
+        const std::size_t from = cdt.vertex_count();
+        const int stages = std::max(1, options.removal_stages);
         result->stats.has_removal = true;
-        st = erd_remove_to(&cdt, image, rm, result->requested, options.removal_lazy, options.progress,
-                           &result->stats.removal);
-        if (!st) return st;
-        // A fresh model of the compact mesh: its wedge values as insertion assigns them (the
-        // line-search ones, so the refit is drawn towards them).
-        ErdModel compact(image, wedge_options(options));
-        compact.assign_all(cdt);
+        const auto refit = [&](bool first) {
+            if (options.removal_refit <= 0 || options.wedge_fit <= 0) return;
+            std::vector<double> ls;
+            for (std::size_t i = 0; i < m->entry_count(); ++i) ls.push_back(m->entry_value(i));
+            fit_wedge_values(cdt, image, wedge_fit_options(options), m, nullptr, staged && first ? &line_search : &ls);
+        };
+        for (int cycle = 0; cycle <= options.removal_cycles; ++cycle) {
+            if (cycle > 0) {  // insertion again to the start size, against the refitted values
+                refit(false);
+                ErdGreedyModel again(*m);
+                go.target_vertices = from;
+                st = greedy_refine(cdt, image, again, go, &result->stats.greedy);
+                if (!st) return st;
+            }
+            const std::size_t top = cdt.vertex_count();
+            for (int k = 1; k <= stages; ++k) {
+                const std::size_t to =
+                    k == stages ? result->requested
+                                : std::size_t(double(top) * std::pow(double(result->requested) / double(top),
+                                                                     double(k) / double(stages)) + 0.5);
+                refit(cycle == 0 && k == 1);
+                ErdRemovalModel rm(*m);
+                st = erd_remove_to(&cdt, image, rm, to, options.removal_lazy, options.progress, &result->stats.removal);
+                if (!st) return st;
+                current = std::make_unique<ErdModel>(image, wedge_options(options));
+                current->assign_all(cdt);
+                m = current.get();
+            }
+        }
         timer.lap("point removal");
-        finish_erd_method(cdt, image, options, &mesh, &compact, &timer, result);
-        return Status::success();
+        return finish_erd_method(cdt, image, options, &mesh, m, &timer, result);
     }
-
-    finish_erd_method(cdt, image, options, &mesh, &model, &timer, result, staged ? &line_search : nullptr);
-    return Status::success();
+    return finish_erd_method(cdt, image, options, &mesh, &model, &timer, result, staged ? &line_search : nullptr);
 }
 
 Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
@@ -136,8 +162,15 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
 }
 
 Status erdgpr_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
-    return erdgpi_run(image, options, hard_fallback, options.oversample > 0 ? options.oversample : kErdgprOversample,
-                      result);
+    Status st = erdgpi_run(image, options, hard_fallback, options.oversample > 0 ? options.oversample : kErdgprOversample,
+                           result);
+    // Vertices that insertion put on constrained edges cannot be removed: when they alone exceed
+    // N (tiny N on an edge-rich image), plain ERDGPI makes the mesh instead.
+    if (st && result->achieved > result->requested) {
+        *result = GenerateResult();
+        st = erdgpi_run(image, options, hard_fallback, 1.0, result);
+    }
+    return st;
 }
 
 }  // namespace

@@ -29,8 +29,7 @@ Status remove_to_n(Cdt* cdt, const Image& image, const GenerateOptions& options,
     st = compact_cdt(*cdt, &compact);
     if (!st) return st;
     *cdt = std::move(compact);
-    finish_basic_method(*cdt, image, options, timer, result);
-    return Status::success();
+    return finish_basic_method(*cdt, image, options, timer, result);
 }
 
 }  // namespace

@@ -84,7 +84,11 @@ struct GenerateOptions {
     // Point removal (issue 45; algorithms/methods/removal.h).
     double oversample = 0.0;     // --oversample K: GPRFS's ED start and ERDGPR's ERDGPI start hold
                                  // K*N points (0: the method's default, docs/DECISIONS.md "Point removal")
-    bool removal_lazy = true;    // --eager: recompute stale significances at once instead of lazily
+    int removal_refit = 1;       // ERDGPR: refit the wedge values before each removal stage (0: off)
+    int removal_cycles = 0;      // ERDGPR: insertion to K*N and removal to N again this many times
+    int removal_stages = 1;      // ERDGPR: removal stages (each ends with a compact mesh)
+    bool removal_lazy = false;   // --lazy: recompute stale significances when they reach the top
+                                 // instead of at once (cheaper, worse: docs/DECISIONS.md "Point removal")
     int bpr = 0;                 // --bpr R: rounds of bad-point replacement after the method (bpr.h)
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)

@@ -16,7 +16,51 @@ PointRemover::PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bo
     domain_ = RasterDomain{cdt.max_x(), cdt.max_y()};
     face_err_.assign(cdt.face_count(), 0.0);
     for (FaceInd f = 0; f < cdt.face_count(); ++f)
-        if (cdt.face_live(f)) face_err_[f] = face_error_now(f);
+        if (cdt.face_live(f)) total_ += face_err_[f] = face_error_now(f);
+}
+
+void PointRemover::track_faces() {
+    track_ = true;
+    by_face_.reserve(cdt_.face_count());
+    for (FaceInd f = 0; f < cdt_.face_count(); ++f)
+        if (cdt_.face_live(f)) by_face_.set(f, face_err_[f], f);
+    occupied_.assign(image_.pixels(), 0);
+    for (VertInd v = 0; v < cdt_.vertex_count(); ++v) {
+        const LatticePoint p = cdt_.point(v);
+        if (cdt_.vertex_live(v) && !(p.x & 1) && !(p.y & 1)) occupied_[pixel_index(p)] = 1;
+    }
+}
+
+bool PointRemover::worst_pixel(LatticePoint* out) {
+    if (by_face_.empty()) return false;
+    const FaceInd f = by_face_.top();
+    LatticePoint p[3];
+    double z[3 * 3];
+    for (int i = 0; i < 3; ++i) {
+        const EdgeInd e = 3 * f + EdgeInd(i);
+        p[i] = cdt_.point(cdt_.org(e));
+        for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = model_.corner_value(cdt_, e, c);
+    }
+    SpanPlane planes[3];
+    for (int c = 0; c < channels_; ++c) planes[c].set(p[0], z[c], p[1], z[channels_ + c], p[2], z[2 * channels_ + c]);
+    const std::size_t width = std::size_t(image_.width), nc = std::size_t(channels_);
+    double best = -1.0;
+    for_each_owned_row(Lattice::pixels(), domain_, p[0], p[1], p[2], [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+        for (std::int32_t x = lo; x <= hi; ++x) {
+            if (occupied_[std::size_t(j) * width + std::size_t(x)]) continue;
+            double e2 = 0.0;
+            for (int c = 0; c < channels_; ++c) {
+                const double e = double(image_.samples[(std::size_t(j) * width + std::size_t(x)) * nc + std::size_t(c)]) -
+                                 planes[c].at(double(2 * x), double(2 * j));
+                e2 += e * e;
+            }
+            if (e2 > best) {
+                best = e2;
+                *out = LatticePoint{2 * x, 2 * j};
+            }
+        }
+    });
+    return best > 0.0;
 }
 
 double PointRemover::triangle_error(const LatticePoint* p, const double* z) const {
@@ -73,13 +117,6 @@ double PointRemover::face_error_now(FaceInd f) const {
         for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = model_.corner_value(cdt_, e, c);
     }
     return triangle_error(p, z);
-}
-
-double PointRemover::total_error() const {
-    double t = 0.0;
-    for (FaceInd f = 0; f < cdt_.face_count(); ++f)
-        if (cdt_.face_live(f)) t += face_err_[f];
-    return t;
 }
 
 bool PointRemover::gather(VertInd v) {
@@ -182,7 +219,15 @@ void PointRemover::start() {
 
 void PointRemover::rescan_created() {
     if (face_err_.size() < cdt_.face_count()) face_err_.resize(cdt_.face_count(), 0.0);
-    for (FaceInd f : cdt_.changes().created) face_err_[f] = face_error_now(f);
+    for (FaceInd f : cdt_.changes().destroyed) {
+        total_ -= face_err_[f];
+        face_err_[f] = 0.0;
+        if (track_) by_face_.remove(f);
+    }
+    for (FaceInd f : cdt_.changes().created) {
+        total_ += face_err_[f] = face_error_now(f);
+        if (track_) by_face_.set(f, face_err_[f], f);
+    }
 }
 
 void PointRemover::touch_neighbours(const std::vector<VertInd>& around) {
@@ -199,8 +244,10 @@ void PointRemover::touch_neighbours(const std::vector<VertInd>& around) {
 Status PointRemover::remove(VertInd v) {
     if (!gather(v)) return Status::failure("point removal: vertex not removable");
     around_ = poly_;
+    const LatticePoint pv = cdt_.point(v);
     Status st = cdt_.remove_vertex(v);
     if (!st) return st;
+    if (track_ && !(pv.x & 1) && !(pv.y & 1)) occupied_[pixel_index(pv)] = 0;
     heap_.remove(v);
     rescan_created();
     ++stats_.removed;
@@ -208,11 +255,13 @@ Status PointRemover::remove(VertInd v) {
     return Status::success();
 }
 
-Status PointRemover::insert(LatticePoint p, VertInd* v) {
+Status PointRemover::insert(LatticePoint p, VertInd* v, const std::vector<double>* values) {
     const Location loc = cdt_.locate(p);
     Status st = cdt_.insert_point(p, v, loc.face);
     if (!st) return st;
     model_.on_vertex_inserted(cdt_, *v);
+    if (values) model_.restore_values(cdt_, *v, *values);
+    if (track_) occupied_[pixel_index(p)] = 1;
     rescan_created();
     around_.clear();
     for (FaceInd f : cdt_.changes().created)
@@ -268,7 +317,7 @@ std::vector<LatticePoint> live_points(const Cdt& cdt) {
     return pts;
 }
 
-Status compact_cdt(const Cdt& cdt, Cdt* out) {
+Status compact_cdt(const Cdt& cdt, Cdt* out, std::vector<VertInd>* to_out) {
     Status st = out->reset(cdt.max_x(), cdt.max_y());
     if (!st) return st;
     const std::vector<LatticePoint> pts = live_points(cdt);
@@ -288,6 +337,7 @@ Status compact_cdt(const Cdt& cdt, Cdt* out) {
         st = out->insert_constraint(to[c[0]], to[c[1]]);
         if (!st) return st;
     }
+    if (to_out) *to_out = std::move(to);
     return Status::success();
 }
 

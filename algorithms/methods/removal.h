@@ -43,6 +43,19 @@ public:
         (void)cdt;
         (void)v;
     }
+    // The values of a removable vertex v (one wedge), one per channel, and setting them again on a
+    // vertex inserted at its place (bad-point replacement's undo). The basic model's values are
+    // the samples: nothing to keep.
+    virtual void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const {
+        (void)cdt;
+        (void)v;
+        out->clear();
+    }
+    virtual void restore_values(const Cdt& cdt, VertInd v, const std::vector<double>& values) {
+        (void)cdt;
+        (void)v;
+        (void)values;
+    }
 };
 
 // The basic model: a vertex's value is the image sample at its pixel (vertices must be pixels).
@@ -83,13 +96,23 @@ public:
     // is removable. Cancelled through progress: kCancelled.
     Status run_to(std::size_t target, const ProgressHook& progress);
     // Inserts pixel point p (not a vertex) and updates face errors and the significances of the
-    // vertices whose stars changed (bad-point replacement). *v receives the vertex.
-    Status insert(LatticePoint p, VertInd* v);
+    // vertices whose stars changed (bad-point replacement). *v receives the vertex; `values`
+    // (optional) are set on it (RemovalModel::restore_values) before its faces are scanned.
+    Status insert(LatticePoint p, VertInd* v, const std::vector<double>* values = nullptr);
+
+    // Bad-point replacement's bookkeeping (bpr.h): faces in a heap by squared error, and which
+    // pixels are vertices. Call before start().
+    void track_faces();
+    // The pixel (even doubled coordinates) of largest absolute error that is not a vertex, in the
+    // face of largest squared error; false when there is none.
+    bool worst_pixel(LatticePoint* p);
+    // Marks pixel p as not a candidate of worst_pixel.
+    void ban(LatticePoint p) { occupied_[pixel_index(p)] = 1; }
 
     bool lazy = true;
     const RemovalStats& stats() const { return stats_; }
     // Whole-image squared error (sum over the channels) of the current mesh.
-    double total_error() const;
+    double total_error() const { return total_; }
     // Squared error of live face f (cached).
     double face_error(FaceInd f) const { return face_err_[f]; }
     // The least significant removable vertices first: the heap's current order is not kept, so
@@ -117,7 +140,14 @@ private:
     bool round_ = true;
     int channels_ = 1;
     RasterDomain domain_;
+    std::size_t pixel_index(LatticePoint p) const {
+        return std::size_t(p.y / 2) * std::size_t(image_.width) + std::size_t(p.x / 2);
+    }
     std::vector<double> face_err_;
+    double total_ = 0.0;
+    bool track_ = false;
+    IndexedMaxHeap by_face_;              // track_: faces keyed on squared error
+    std::vector<std::uint8_t> occupied_;  // track_: per pixel, a vertex (or banned)
     std::vector<std::uint8_t> stale_;
     IndexedMaxHeap heap_;  // removable vertices keyed on -significance
     RemovalStats stats_;
@@ -135,6 +165,7 @@ std::vector<LatticePoint> live_points(const Cdt& cdt);
 
 // A fresh CDT of the live vertices and constrained edges of cdt: the same triangulation (the CDT
 // is unique) with vertex indices and face slots compact again, as the model writers need.
-Status compact_cdt(const Cdt& cdt, Cdt* out);
+// *to (optional): old vertex -> new vertex, noVertex for the dead.
+Status compact_cdt(const Cdt& cdt, Cdt* out, std::vector<VertInd>* to = nullptr);
 
 }  // namespace erd

@@ -2,11 +2,14 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "algorithms/imaging/colour.h"
+#include "algorithms/methods/bpr.h"
+#include "algorithms/methods/erd_removal.h"
 #include "algorithms/imaging/edge_kind.h"
 #include "algorithms/model/edge_kinds.h"
 #include "algorithms/methods/optimize.h"
@@ -91,8 +94,19 @@ Model basic_model(const Cdt& cdt, const Image& image) {
     return m;
 }
 
-void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
+Status finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
                          GenerateResult* result) {
+    if (options.bpr > 0) {
+        SampleRemovalModel samples(image);
+        result->stats.has_removal = true;
+        Status st = bad_point_replacement(&cdt, image, samples, options.round_values, options.bpr, options.progress,
+                                          &result->stats.removal);
+        if (!st) return st;
+        Cdt compact;
+        if (!(st = compact_cdt(cdt, &compact))) return st;
+        cdt = std::move(compact);
+        timer->lap("bad-point replacement");
+    }
     result->model = basic_model(cdt, image);
     result->achieved = result->model.size();
     timer->lap("model");
@@ -101,6 +115,7 @@ void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         result->stats.has_wedge_fit = true;
         timer->lap("optimize");
     }
+    return Status::success();
 }
 
 GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
@@ -216,9 +231,25 @@ WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
     return f;
 }
 
-void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result,
                        const std::vector<double>* line_search_values) {
+    std::unique_ptr<ErdModel> fresh;
+    if (options.bpr > 0) {
+        ErdRemovalModel values(*model);
+        result->stats.has_removal = true;
+        Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress,
+                                          &result->stats.removal);
+        if (!st) return st;
+        Cdt compact;
+        if (!(st = compact_cdt(cdt, &compact))) return st;
+        cdt = std::move(compact);
+        fresh = std::make_unique<ErdModel>(image, wedge_options(options));
+        fresh->assign_all(cdt);
+        model = fresh.get();
+        line_search_values = nullptr;
+        timer->lap("bad-point replacement");
+    }
     if (options.wedge_fit > 0) {
         std::vector<double> kept;  // the line-search values, for the refit after the flips
         if (options.flips && !line_search_values) {
@@ -249,10 +280,27 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
     if (!(options.wedge_fit > 0 && options.flips))
         model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     finish_erd_stats(mesh, model, timer, result);
+    return Status::success();
 }
 
-void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
+    std::unique_ptr<ErdChannels> fresh;
+    if (options.bpr > 0) {
+        ErdChannelsRemovalModel values(*model);
+        result->stats.has_removal = true;
+        Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress,
+                                          &result->stats.removal);
+        if (!st) return st;
+        Cdt compact;
+        if (!(st = compact_cdt(cdt, &compact))) return st;
+        cdt = std::move(compact);
+        fresh = std::make_unique<ErdChannels>(image, wedge_options(options), options.colour.shared_wedge_position,
+                                              options.colour.density);
+        fresh->assign_all(cdt);
+        model = fresh.get();
+        timer->lap("bad-point replacement");
+    }
     if (options.wedge_fit > 0) {
         // As gray's refit (prior and support bounds per channel), then its flips.
         std::vector<std::vector<double>> line_search;
@@ -276,6 +324,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
     if (!(options.wedge_fit > 0 && options.flips))
         model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     finish_erd_stats(mesh, &model->channel(0), timer, result);
+    return Status::success();
 }
 
 namespace {

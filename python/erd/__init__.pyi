@@ -7,7 +7,7 @@ import numpy.typing as npt
 
 PathLike = Union[str, bytes, os.PathLike]
 ImageArray = Union[npt.NDArray[np.uint8], npt.NDArray[np.uint16]]
-MethodName = Literal["ed", "gpi", "erded", "erdgpi"]
+MethodName = Literal["ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "erdgpr"]
 
 METHODS: Tuple[str, ...]
 __version__: str
@@ -89,6 +89,12 @@ def generate(
     alpha_max: float = ...,
     edge_zero_radius: int = ...,
     flips: int = ...,
+    oversample: float = ...,
+    lazy: int = ...,
+    bpr: int = ...,
+    removal_refit: int = ...,
+    removal_stages: int = ...,
+    removal_cycles: int = ...,
     moves: int = ...,
     aa_errors: int = ...,
     triangles: int = ...,
