@@ -65,12 +65,12 @@ struct ImageView {
 ImageView view_of(const Image& image);
 
 // The four methods of the thesis: ED and GPI make a basic model, ERDED and ERDGPI an ERD model;
-// then the removal methods of issue 45: GPR and GPRFS (basic), ERDGPR (ERD).
+// then the removal methods of issue 45: GPR, GPRFS and ID (basic), ERDGPR (ERD).
 // The values are the rows of the method registry (algorithms/methods/methods.h), in its order;
 // the names, model kinds and memory factors are read from there.
-enum class Method { ed, gpi, erded, erdgpi, gpr, gprfs, erdgpr };
+enum class Method { ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr };
 
-// "ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "erdgpr".
+// "ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr".
 const char* method_name(Method m);
 // The method of that name; Code::input for any other name.
 Status method_from_name(const std::string& name, Method* out);

@@ -82,6 +82,8 @@ const CommandLine kGenerate = {
         {0, "removal-refit", "0|1", "ERDGPR: refit the wedge values before each removal stage (default 1)"},
         {0, "removal-cycles", "C", "ERDGPR: C more cycles of insertion to K*N and removal to N (default 0)"},
         {0, "removal-stages", "S", "ERDGPR: removal in S stages, each from a refitted compact mesh (default 1)"},
+        {0, "id-cycles", "C", "ID: insertion/removal cycles after growing to N (default 4; the quality-for-time knob)"},
+        {0, "id-share", "A", "ID: each cycle inserts and then removes A*N points (default 1)"},
         {0, "lazy", nullptr, "GPR, GPRFS, ERDGPR: recompute stale significances only at the heap's top (cheaper, worse; default: at once)"},
         {0, "bpr", "R", "any method: R rounds of bad-point replacement at the end (default 0)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
@@ -197,6 +199,8 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
     if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
     if (a.has("oversample")) o->oversample = a.real("oversample", 0.0, 1.0, 64.0, st);
+    if (a.has("id-cycles")) o->id_cycles = int(a.integer("id-cycles", 4, 0, 1000, st));
+    if (a.has("id-share")) o->id_share = a.real("id-share", 1.0, 0.0, 4.0, st);
     if (a.has("lazy")) o->removal_lazy = true;
     if (a.has("removal-refit")) o->removal_refit = int(a.integer("removal-refit", 1, 0, 1, st));
     if (a.has("removal-cycles")) o->removal_cycles = int(a.integer("removal-cycles", 0, 0, 16, st));

@@ -117,7 +117,7 @@ TEST_CASE("removal: lazy and eager both stop at exactly N and lower the error mo
 }
 
 TEST_CASE("removal methods: exact N, deterministic, on small generated images", "[removal][methods]") {
-    const char* name = GENERATE("gpr", "gprfs", "erdgpr");
+    const char* name = GENERATE("gpr", "gprfs", "id", "erdgpr");
     const int w = GENERATE(9, 48);
     const Image im = erd_test::synth_image(w, 37, 8, 4);
     const MethodInfo* m = find_method(name);

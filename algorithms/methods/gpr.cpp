@@ -81,4 +81,46 @@ Status generate_gprfs(const Image& image, const GenerateOptions& options, Genera
     return remove_to_n(&cdt, image, options, &timer, result);
 }
 
+Status generate_id(const Image& image, const GenerateOptions& options, GenerateResult* result) {
+    Status st = begin_method(image, options, result);
+    if (!st) return st;
+    StageTimer timer(result);
+    const std::size_t n = result->requested;
+    Cdt cdt;
+    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
+    if (!st) return st;
+    SampleRemovalModel model(image);
+    PointRemover r(cdt, image, model, options.round_values);
+    r.lazy = options.removal_lazy;
+    r.track_faces();
+    const auto grow = [&](std::size_t to) -> Status {
+        LatticePoint p;
+        VertInd v;
+        while (cdt.live_vertex_count() < to && r.worst_pixel(&p)) {
+            Status s = r.insert(p, &v);
+            if (!s) return s;
+            if (options.progress && options.progress.report_cancelled("incremental/decremental", 0.0))
+                return Status::failure(kCancelled);
+        }
+        return Status::success();
+    };
+    if (!(st = grow(n))) return st;
+    timer.lap("greedy insertion");
+    r.start();
+    const std::size_t extra = std::max<std::size_t>(1, std::size_t(double(n) * options.id_share + 0.5));
+    result->stats.has_removal = true;
+    for (int c = 0; c < options.id_cycles; ++c) {
+        if (!(st = grow(std::min(image.pixels(), n + extra)))) return st;
+        if (!(st = r.run_to(n, options.progress))) return st;
+    }
+    result->stats.removal.start = n + extra;
+    result->stats.removal.removed = r.stats().removed;
+    result->stats.removal.evaluations = r.stats().evaluations;
+    timer.lap("incremental/decremental cycles");
+    Cdt compact;
+    if (!(st = compact_cdt(cdt, &compact))) return st;
+    cdt = std::move(compact);
+    return finish_basic_method(cdt, image, options, &timer, result);
+}
+
 }  // namespace erd

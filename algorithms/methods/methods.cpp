@@ -32,6 +32,8 @@ const MethodInfo kMethods[] = {
      nullptr, nullptr, 400, 210, generate_gpr},
     {"gprfs", "GPRFS-ED: ED start at K*N points, then greedy point removal (Adams), basic model", ModelKind::basic,
      nullptr, nullptr, 60, 900, generate_gprfs},
+    {"id", "incremental/decremental cycles: GPI's growth, then insert and remove A*N points C times (Adams), basic model",
+     ModelKind::basic, nullptr, nullptr, 12, 900, generate_id},
     {"erdgpr", "ERD model, ERDGPI to K*N points then greedy point removal to N (ours, issue 45)", ModelKind::erd,
      nullptr, nullptr, 96, 1900, generate_erdgpr},
 };

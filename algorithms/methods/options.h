@@ -89,6 +89,8 @@ struct GenerateOptions {
     int removal_stages = 1;      // ERDGPR: removal stages (each ends with a compact mesh)
     bool removal_lazy = false;   // --lazy: recompute stale significances when they reach the top
                                  // instead of at once (cheaper, worse: docs/DECISIONS.md "Point removal")
+    int id_cycles = 4;           // ID: insertion/removal cycles after the growth to N (--id-cycles)
+    double id_share = 1.0;       // ID: each cycle inserts and removes this share of N (--id-share)
     int bpr = 0;                 // --bpr R: rounds of bad-point replacement after the method (bpr.h)
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)

@@ -211,6 +211,7 @@ void PointRemover::update(VertInd v) {
 }
 
 void PointRemover::start() {
+    started_ = true;
     stale_.assign(cdt_.vertex_count(), 0);
     heap_.reserve(cdt_.vertex_count());
     for (VertInd v = 0; v < cdt_.vertex_count(); ++v)
@@ -231,6 +232,7 @@ void PointRemover::rescan_created() {
 }
 
 void PointRemover::touch_neighbours(const std::vector<VertInd>& around) {
+    if (!started_) return;  // no significances yet (growth before start())
     if (stale_.size() < cdt_.vertex_count()) stale_.resize(cdt_.vertex_count(), 0);
     for (VertInd q : around) {
         if (!lazy) update(q);

@@ -84,6 +84,7 @@ public:
     PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bool round_values);
 
     // Computes the significance of every removable vertex (in vertex order) and fills the heap.
+    // Before it, insert() keeps only the face errors (growth by worst_pixel, as GPI grows).
     void start();
     // The significance of removable vertex v in the current mesh (not cached).
     double significance(VertInd v);
@@ -146,6 +147,7 @@ private:
     std::vector<double> face_err_;
     double total_ = 0.0;
     bool track_ = false;
+    bool started_ = false;  // start() ran: significances are kept
     IndexedMaxHeap by_face_;              // track_: faces keyed on squared error
     std::vector<std::uint8_t> occupied_;  // track_: per pixel, a vertex (or banned)
     std::vector<std::uint8_t> stale_;

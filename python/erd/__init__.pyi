@@ -7,7 +7,7 @@ import numpy.typing as npt
 
 PathLike = Union[str, bytes, os.PathLike]
 ImageArray = Union[npt.NDArray[np.uint8], npt.NDArray[np.uint16]]
-MethodName = Literal["ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "erdgpr"]
+MethodName = Literal["ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr"]
 
 METHODS: Tuple[str, ...]
 __version__: str
@@ -92,6 +92,8 @@ def generate(
     oversample: float = ...,
     lazy: int = ...,
     bpr: int = ...,
+    id_cycles: int = ...,
+    id_share: float = ...,
     removal_refit: int = ...,
     removal_stages: int = ...,
     removal_cycles: int = ...,

@@ -51,6 +51,8 @@ const std::vector<Spec>& specs() {
         {"oversample", Kind::real, 1, 64, [](GenerateArgs* a, double v) { a->options.generate.oversample = v; }},
         {"lazy", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.removal_lazy = v == 1; }},
         {"bpr", Kind::integer, 0, 1000, [](GenerateArgs* a, double v) { a->options.generate.bpr = int(v); }},
+        {"id_cycles", Kind::integer, 0, 1000, [](GenerateArgs* a, double v) { a->options.generate.id_cycles = int(v); }},
+        {"id_share", Kind::real, 0, 4, [](GenerateArgs* a, double v) { a->options.generate.id_share = v; }},
         {"removal_refit", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.removal_refit = int(v); }},
         {"removal_stages", Kind::integer, 1, 16, [](GenerateArgs* a, double v) { a->options.generate.removal_stages = int(v); }},
         {"removal_cycles", Kind::integer, 0, 16, [](GenerateArgs* a, double v) { a->options.generate.removal_cycles = int(v); }},
