@@ -47,6 +47,9 @@ Status erdgpi_colour(const Image& image, const GenerateOptions& options, std::si
     }
     timer->lap("greedy insertion");
     if (cdt->vertex_count() > result->requested) {
+        // As gray: the values refitted first (each channel drawn towards its line-search values).
+        WedgeFitStats unused;
+        if (options.removal_refit > 0 && options.wedge_fit > 0) model.fit(*cdt, wedge_fit_options(options), &unused);
         ErdChannelsRemovalModel rm(model);
         result->stats.has_removal = true;
         st = erd_remove_to(cdt, image, rm, result->requested, options.removal_lazy, options.progress,

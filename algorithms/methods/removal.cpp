@@ -180,6 +180,37 @@ void PointRemover::hole(VertInd v, std::vector<std::array<VertInd, 3>>* out) {
     for (std::size_t t = 0; t < tris_.size(); t += 3) out->push_back({poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]});
 }
 
+double PointRemover::hole_triangle_error(std::size_t t) {
+    VertInd v[3] = {poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]};
+    int r = v[1] < v[0] ? (v[2] < v[1] ? 2 : 1) : (v[2] < v[0] ? 2 : 0);  // rotate the smallest first
+    const VertInd a = v[r], b = v[(r + 1) % 3], c = v[(r + 2) % 3];
+    if (cache_.empty()) cache_.resize(std::size_t(1) << 16);
+    const std::size_t mask = cache_.size() - 1;
+    std::uint64_t h = (std::uint64_t(a) * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(b) * 0xC2B2AE3D27D4EB4Full) ^
+                      (std::uint64_t(c) * 0x165667B19E3779F9ull);
+    std::size_t i = std::size_t(h >> 20) & mask;
+    for (; cache_[i].a != noVertex; i = (i + 1) & mask)
+        if (cache_[i].a == a && cache_[i].b == b && cache_[i].c == c) return cache_[i].error;
+    LatticePoint p[3];
+    double z[3 * 3];
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t q = tris_[t + std::size_t(k)];
+        p[k] = cdt_.point(poly_[q]);
+        for (int c2 = 0; c2 < channels_; ++c2)
+            z[k * channels_ + c2] = polyz_[q * std::size_t(channels_) + std::size_t(c2)];
+    }
+    const double e = triangle_error(p, z);
+    if (2 * (cache_used_ + 1) > cache_.size()) {  // half full: start again, twice the size up to 2^22
+        const std::size_t size = std::min<std::size_t>(cache_.size() * 2, std::size_t(1) << 22);
+        cache_.assign(size, CacheSlot());
+        cache_used_ = 0;
+        return e;
+    }
+    cache_[i] = CacheSlot{a, b, c, e};
+    ++cache_used_;
+    return e;
+}
+
 double PointRemover::significance(VertInd v) {
     if (!gather(v)) return 0.0;
     ++stats_.evaluations;
@@ -187,16 +218,7 @@ double PointRemover::significance(VertInd v) {
     for (FaceInd f : star_) before += face_err_[f];
     triangulate_hole();
     double after = 0.0;
-    LatticePoint p[3];
-    double z[3 * 3];
-    for (std::size_t t = 0; t < tris_.size(); t += 3) {
-        for (int i = 0; i < 3; ++i) {
-            const std::uint32_t q = tris_[t + std::size_t(i)];
-            p[i] = cdt_.point(poly_[q]);
-            for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = polyz_[q * std::size_t(channels_) + std::size_t(c)];
-        }
-        after += triangle_error(p, z);
-    }
+    for (std::size_t t = 0; t < tris_.size(); t += 3) after += hole_triangle_error(t);
     return after - before;
 }
 

@@ -122,6 +122,12 @@ public:
 
 private:
     double triangle_error(const LatticePoint* p, const double* z) const;  // z: 3 x channels_
+    // The error of hole triangle t (tris_ indices into poly_), from the cache when it was scanned
+    // before. A triangle's pixels and values depend only on its three vertices (their values never
+    // change while they live, and a wedge of a polygon vertex is fixed by the triangle), and
+    // vertex indices are never reused, so the cache is keyed by the vertex triple; the stars of
+    // neighbouring vertices share most of their hole triangles.
+    double hole_triangle_error(std::size_t t);
     double face_error_now(FaceInd f) const;
     void rescan_created();
     void update(VertInd v);  // recompute v's significance into the heap (or drop it)
@@ -160,6 +166,12 @@ private:
     std::vector<std::uint32_t> stack_;
     std::vector<EdgeInd> corners_;
     std::vector<VertInd> around_;
+    struct CacheSlot {
+        VertInd a = noVertex, b = noVertex, c = noVertex;
+        double error = 0.0;
+    };
+    std::vector<CacheSlot> cache_;  // open addressing, linear probing; emptied when half full
+    std::size_t cache_used_ = 0;
 };
 
 // Live points of cdt other than the four corners, in vertex order.
