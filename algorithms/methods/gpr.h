@@ -20,7 +20,7 @@
 
 namespace erd {
 
-constexpr double kGprfsOversample = 4.0;
+constexpr double kGprfsOversample = 8.0;
 
 // Registry entries "gpr" and "gprfs" (algorithms/methods/methods.h contract).
 Status generate_gpr(const Image& image, const GenerateOptions& options, GenerateResult* result);
