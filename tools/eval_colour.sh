@@ -101,7 +101,7 @@ section=$OUT/colour_section.md
         echo "of the 21 cases, and its gain over ERDGPI (531d603's default, byte-identical)."
         echo
         cols="gpi ed $METHODS45 erded erdgpi"
-        printf '| image | density % |'; for v in $cols; do printf ' %s |' "$v"; done; printf '\n|---|---:|'
+        printf '%s' '| image | density % |'; for v in $cols; do printf ' %s |' "$v"; done; printf '\n|---|---:|'
         for v in $cols; do printf -- '---:|'; done; echo
         awk -v cols="$cols" '{ p[$1 " " $2 " " $3] = $4; k[$2 " " $3] = 1 }
              END { n = split(cols, c, " "); for (x in k) { split(x, f, " "); line = "| " f[1] " | " f[2] " |"
@@ -109,7 +109,7 @@ section=$OUT/colour_section.md
                    print line } }' "$OUT/colour_raw.txt" | sort -t'|' -k2,2 -k3,3g
         echo
         for v in $cols; do
-            m=$(awk -v v="$v" '$1 == v && $4 ~ /^[0-9.]+$/ {print $4}' "$OUT/colour_raw.txt" | median)
+            m=$(awk -v v="$v" '$1 == v && $4 ~ /^[0-9.]+$/ {print $4}' "$OUT/colour_raw.txt" | median | tr -d +)
             g=$(awk -v v="$v" '{ p[$1 " " $2 " " $3] = $4 } END { for (c in p) { split(c, f, " "); if (f[1] == v && ("erdgpi " f[2] " " f[3]) in p) print p[c] - p["erdgpi " f[2] " " f[3]] } }' "$OUT/colour_raw.txt" | median)
             echo "- $v: median $m dB, $g dB over ERDGPI"
         done
