@@ -1,7 +1,7 @@
 # erd: build, test, fuzz, bench, eval.  `make help` lists the targets.
 #
 # Layout: kernel/ + algorithms/*/ + api/ -> build/liberd.a (standard library only);
-#         imageio/ + third_party/stb glue -> build/liberd_imageio.a (image files; stb, zlib);
+#         imageio/ + third_party/stb glue -> build/liberd_imageio.a (image files; stb, zlib, libtiff);
 #         cli/ -> build/erd; tests/ -> build/erd_tests.
 # Every source directory is globbed, so adding a file needs no Makefile edit.
 
@@ -40,6 +40,13 @@ TEST_OBJ  := $(BUILD)/third_party/catch_main.o $(TEST_SRC:%.cpp=$(BUILD)/%.o)
 CATCH_HDR := /usr/include/catch2/catch.hpp
 STB_HDR   := /usr/include/stb/stb_image.h
 ZLIB_HDR  := /usr/include/zlib.h
+# libtiff (issue 47): TIFF and GeoTIFF in imageio/. build/erd links it statically with the codecs
+# it was built with, as pkg-config lists them (docs/DECISIONS.md "Rasters"); the tests, the
+# sanitizer build and the Python module link the shared library.
+TIFF_HDR  := /usr/include/$(shell $(CXX) -print-multiarch 2>/dev/null)/tiffio.h
+TIFF_STATIC_LIBS = $(shell pkg-config --static --libs libtiff-4 2>/dev/null || echo -ltiff -lwebp -lLerc -ljbig -lzstd -llzma -ljpeg -ldeflate -lz -lm)
+# The real elevation models the tests write as GeoTIFF and PFM (Debian's python-matplotlib-data).
+MPL_DEM   := /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
 .PHONY: all deps test unit run bench eval fuzz fuzz-campaign asan tsan clean help docs-images regenerate codec-bench
@@ -69,7 +76,7 @@ help:
 	@echo "make web        erd as WebAssembly for the page in web/ (installs emscripten)"
 	@echo "make serve      serve the page in web/ on 127.0.0.1:8000"
 	@echo "make web-shots  the browser test (tests/web_test.sh), keeping its screenshots -> docs/img/web-1280.png, web-390.png"
-	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev when their headers are missing"
+	@echo "make deps       apt-get install catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data when missing"
 	@echo "make python     the Python package for /usr/bin/python3 (python/erd; docs/python.md)"
 	@echo "make python-deps  apt-get install what make python needs (pybind11, numpy, pytest)"
 	@echo "make python-test  the Python package's pytest suite"
@@ -82,11 +89,11 @@ help:
 	@echo "make clean-embedded  remove build-embedded only"
 	@echo "make help       this list"
 
-deps: $(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR)
-$(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR):
-	@echo "installing Debian packages catch2 libstb-dev zlib1g-dev" >&2
-	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev >/dev/null 2>&1 || \
-	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev >/dev/null; }
+deps: $(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR) $(TIFF_HDR) $(MPL_DEM)
+$(CATCH_HDR) $(STB_HDR) $(ZLIB_HDR) $(TIFF_HDR) $(MPL_DEM):
+	@echo "installing Debian packages catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data" >&2
+	@DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data >/dev/null 2>&1 || \
+	 { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q catch2 libstb-dev zlib1g-dev libtiff-dev python-matplotlib-data >/dev/null; }
 	@touch -c $@
 
 $(BUILD)/liberd.a: $(LIB_OBJ)
@@ -104,11 +111,12 @@ $(BUILD)/liberd_imageio.a: $(IMAGEIO_OBJ)
 	ar rcs $@ $^
 
 $(BUILD)/erd: $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a
-	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) -lz -lpthread
+	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a $(LDFLAGS) $(ERD_LINK) \
+	  $(if $(filter -static,$(ERD_LINK)),$(TIFF_STATIC_LIBS),-ltiff) -lz -lpthread
 
 # Tests link the CLI objects too (all but main) so readers and writers are tested in process.
 $(BUILD)/erd_tests: $(TEST_OBJ) $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(BUILD)/liberd_imageio.a $(BUILD)/liberd.a
-	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lz -lpthread
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -ltiff -lz -lpthread
 
 $(BUILD)/third_party/stb_glue.o: $(STB_HDR)
 # CGAL (issue 49): Debian's libcgal-dev, for the differential tests, fuzz/fuzz_cgal_diff.cpp and the
@@ -134,6 +142,7 @@ $(BUILD)/cgal_tests: $(BUILD)/third_party/catch_main.o $(BUILD)/tests/cgal/test_
 cgal-test: deps $(BUILD)/cgal_tests
 	$(BUILD)/cgal_tests
 $(BUILD)/imageio/png.o: $(ZLIB_HDR)
+$(BUILD)/imageio/tiff.o $(BUILD)/imageio/tiff_stream.o $(BUILD)/imageio/tiff_write.o: $(TIFF_HDR)
 $(BUILD)/third_party/catch_main.o: $(CATCH_HDR)
 $(TEST_OBJ): $(CATCH_HDR)
 # The tests' own objects carry no debug information (a failing test names its file and line
@@ -252,7 +261,8 @@ ERD_PC_VERSION ?= 0.1.0
 # The public headers: api/erd.h and every header it includes, directly or not, as the compiler
 # finds them (so the list follows api/erd.h). `make public-headers` prints it.
 # The image-I/O library's headers (imageio/, for build/liberd_imageio.a) and theirs are public too.
-IMAGEIO_PUBLIC := imageio/image_file.h imageio/image_format.h imageio/jpeg.h imageio/pam.h imageio/png.h imageio/pnm.h
+IMAGEIO_PUBLIC := imageio/image_file.h imageio/image_format.h imageio/jpeg.h imageio/pam.h imageio/png.h imageio/pnm.h \
+                  imageio/tiff.h imageio/pfm.h imageio/raster_window.h imageio/row_writer.h
 PUBLIC_HDR = $(sort $(filter %.h,$(shell $(CXX) -std=c++17 -I. -MM api/erd.h $(IMAGEIO_PUBLIC))))
 
 .PHONY: install install-aliases uninstall public-headers embedded

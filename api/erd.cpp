@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <utility>
 #include <unordered_set>
 #include <vector>
 
+#include "algorithms/imaging/real_image.h"
 #include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/metrics.h"
@@ -18,6 +20,25 @@ namespace erd::api {
 
 namespace {
 
+// A real view (ImageView::reals): its values, NaN where nodata, into a real Image.
+Status copy_real_view(const ImageView& v, Image* out) {
+    if (v.channels != 1 && v.channels != 3)
+        return Status::bad_input("image view has " + std::to_string(v.channels) + " channels (1 gray or 3 RGB)");
+    const std::size_t C = std::size_t(v.channels), row = std::size_t(v.width) * C, stride = v.stride ? v.stride : row;
+    if (stride < row) return Status::bad_input("image view stride is smaller than its width times its channels");
+    std::vector<double> values(row * std::size_t(v.height));
+    for (std::size_t y = 0; y < std::size_t(v.height); ++y)
+        for (std::size_t i = 0; i < row; ++i) {
+            const double x = v.reals[y * stride + i];
+            values[y * row + i] = v.has_nodata && x == v.nodata ? std::numeric_limits<double>::quiet_NaN() : x;
+        }
+    RasterMeta meta;
+    meta.type = v.type;
+    meta.has_nodata = v.has_nodata;
+    meta.nodata = v.nodata;
+    return make_real_image(v.width, v.height, v.channels, std::move(values), meta, out);
+}
+
 // Validates a caller's view and copies it into an Image. Every sample is checked against
 // maxval, because the methods index tables by sample value.
 Status copy_view(const ImageView& v, Image* out) {
@@ -26,6 +47,7 @@ Status copy_view(const ImageView& v, Image* out) {
                                  " outside 1.." + std::to_string(kMaxImageSide));
     if (std::int64_t(v.width) * v.height > kMaxImagePixels)
         return Status::bad_input("image has more than " + std::to_string(kMaxImagePixels) + " pixels");
+    if (v.reals) return copy_real_view(v, out);
     if (v.maxval < 1 || v.maxval > 65535) return Status::bad_input("maxval " + std::to_string(v.maxval) + " outside 1..65535");
     if (!v.samples) return Status::bad_input("image view has no samples");
     if (v.channels != 1 && v.channels != 3)
@@ -59,8 +81,14 @@ ImageView view_of(const Image& image) {
     v.samples = image.samples.data();
     v.stride = std::size_t(image.width) * std::size_t(image.channels);
     v.channels = image.channels;
+    if (image.real()) {
+        v.reals = image.reals.data();
+        v.type = image.meta.type;
+    }
     return v;
 }
+
+Status image_of(const ImageView& view, Image* out) { return copy_view(view, out); }
 
 namespace {
 

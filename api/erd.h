@@ -59,10 +59,22 @@ struct ImageView {
     const std::uint16_t* samples = nullptr;
     std::size_t stride = 0;
     int channels = 1;  // 1 or 3
+    // A real-valued image instead (issue 47: float, signed, 32-bit rasters): `reals` in place of
+    // samples and maxval, the same layout (rows `stride` values apart), every value finite or NaN.
+    // NaN, and `nodata` when has_nodata, mark the pixels without data (nodata: neither meshed nor
+    // measured; the mesh covers the rest). `type` is the raster's sample type, kept for the outputs.
+    const double* reals = nullptr;
+    bool has_nodata = false;
+    double nodata = 0.0;
+    SampleType type = SampleType::f64;
 };
 
-// A view of an erd::Image (valid while the image lives and is not resized).
+// A view of an erd::Image (valid while the image lives and is not resized). A real image's view
+// points at its real plane, so it has no nodata (Image::valid): pass such an image itself.
 ImageView view_of(const Image& image);
+
+// The Image a view stands for (checked as generate() checks it): what the methods take.
+Status image_of(const ImageView& view, Image* out);
 
 // The four methods of the thesis: ED and GPI make a basic model, ERDED and ERDGPI an ERD model;
 // then the removal methods of issue 45: GPR, GPRFS and ID (basic), ERDGPR (ERD).

@@ -8,7 +8,7 @@
 #
 # The tables users read are rewritten in place in docs/RESULTS.md, each in its own marked section
 # (tools/results_section.sh; the rest of the file is left alone): "speed" (the scale block, beside
-# hmm), "memory", "colour-cost", and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
+# hmm), "memory", "colour-cost", "terrain" (issue 47), and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
 # not run leaves its section as it was. RESULTS=FILE writes them elsewhere, RESULTS=none nowhere.
 set -u
 ERD=${1:-build/erd}
@@ -516,6 +516,77 @@ if [[ -d $COLOUR_DIR && -f $(dirname "$ERD")/liberd.a ]] &&
     fi
 else
     echo "colour: $COLOUR_DIR or tools/eval_colour.cpp (against $(dirname "$ERD")/liberd.a) missing; skipped"
+fi
+# ---------------------------------------------------------------------------------------------
+# terrain (issue 47): real elevation data to a bound in metres, beside hmm. Debian's two real DEMs
+# (python-matplotlib-data, written by tests/dem_data.py as float32 GeoTIFF and 16-bit PNG) and a
+# TERRAIN_SIZE^2 (default 8192) `erd synth --kind dem` model (float32 with nodata lakes; its PNG
+# has the holes filled with the nearest height), each meshed to E = TERRAIN_FRACTION (default
+# 0.005) of its range: erd's ERD method (`erdgpi --max-error E`) and GPI on the float GeoTIFF, hmm
+# (`hmm -z 1 -e E/range`) on the 16-bit PNG, its only input. One line per program: triangles, CPU
+# seconds and peak memory (medians of TERRAIN_RUNS, default 3; 1 for the large model), and erd's
+# largest error over the valid pixels measured by numpy on its reconstruction (tests/raster_check.py;
+# hmm's is its own bound on the 16-bit data). Targets: erdgpi has fewer triangles and less CPU time
+# than hmm. TERRAIN_SIZE=0 leaves the large model out. Writes the "terrain" section.
+TERRAIN_SIZE=${TERRAIN_SIZE:-8192}
+TERRAIN_FRACTION=${TERRAIN_FRACTION:-0.005}
+TERRAIN_RUNS=${TERRAIN_RUNS:-3}
+if mkdir -p "$OUT/dem" && /usr/bin/python3 tests/dem_data.py "$OUT/dem" >"$OUT/dem/ranges"; then
+    terrain_rows=$OUT/terrain.rows
+    : >"$terrain_rows"
+    dems="jacksboro topobathy"
+    if [[ $TERRAIN_SIZE -gt 0 ]]; then
+        "$ERD" synth -q --kind dem -W "$TERRAIN_SIZE" -H "$TERRAIN_SIZE" -o "$OUT/dem/synth.tif" &&
+            "$ERD" synth -q --kind dem -W "$TERRAIN_SIZE" -H "$TERRAIN_SIZE" -o "$OUT/dem/synth.pfm" &&
+            "$ERD" synth -q --kind dem -W "$TERRAIN_SIZE" -H "$TERRAIN_SIZE" -o "$OUT/dem/synth.png" &&
+            "$ERD" info --json "$OUT/dem/synth.tif" | /usr/bin/python3 -c "import json, sys; d = json.load(sys.stdin); print('synth', d['width'], d['height'], d['min'], d['max'])" >>"$OUT/dem/ranges" &&
+            dems="$dems synth"
+    fi
+    for dem in $dems; do
+        read -r _ w h lo hi < <(awk -v n=$dem '$1 == n' "$OUT/dem/ranges")
+        E=$(awk -v a="$lo" -v b="$hi" -v f="$TERRAIN_FRACTION" 'BEGIN { printf "%.6g", (b - a) * f }')
+        e=$(awk -v a="$lo" -v b="$hi" -v E="$E" 'BEGIN { printf "%.9g", E / (b - a) }')
+        runs=$TERRAIN_RUNS; [[ $dem == synth ]] && runs=1
+        orig=$OUT/dem/$dem.npy; [[ $dem == synth ]] && orig=$OUT/dem/synth.pfm
+        label="$dem $w x $h, E $E m"
+        if [[ -n $HMM ]]; then
+            read -r _ cpu rss < <("$TIMEIT" "$runs" "$HMM" -z 1 -e "$e" -q "$OUT/dem/$dem.png" "$OUT/dem/hmm.stl" || echo "- - -")
+            tri=$("$HMM" -z 1 -e "$e" "$OUT/dem/$dem.png" "$OUT/dem/hmm.stl" 2>&1 | awk '/triangles =/ { print $3 }')
+            echo "$label|hmm|$tri|$cpu|$rss|<= $E (its bound on the 16-bit PNG)" | tee -a "$terrain_rows"
+        fi
+        for m in erdgpi gpi; do
+            ext=model; [[ $m == erd* ]] && ext=erd
+            # N a cap only: every pixel for the small models, 5% of the large one (which needs 0.04%).
+            dens=100; [[ $dem == synth ]] && dens=5
+            args=(generate -m $m -i "$OUT/dem/$dem.tif" -d $dens -x 2 --max-error "$E" --max-memory 0 -q -o "$OUT/dem/t.$ext")
+            read -r _ cpu rss < <("$TIMEIT" "$runs" "$ERD" "${args[@]}" || echo "- - -")
+            "$ERD" "${args[@]}" --stats "$OUT/dem/t.json" && "$ERD" reconstruct -q "$OUT/dem/t.$ext" -o "$OUT/dem/t.pfm" || continue
+            tri=$(/usr/bin/python3 -c "import json; print(json.load(open('$OUT/dem/t.json'))['faces'])")
+            err=$(/usr/bin/python3 tests/raster_check.py maxerr "$orig" "$OUT/dem/t.pfm" "$E" | awk '/^max error/ { print $3; exit }')
+            echo "$label|erd $m|$tri|$cpu|$rss|$err" | tee -a "$terrain_rows"
+        done
+        rm -f "$OUT"/dem/t.* "$OUT/dem/hmm.stl"
+    done
+    if [[ -s $terrain_rows ]]; then
+        {
+            echo "Each model meshed to a largest error E of $TERRAIN_FRACTION of its range (metres): erd on the float32 GeoTIFF"
+            echo "(\`erd generate -m erdgpi|gpi -d 100 -x 2 --max-error E\`; -d 5 for synth: N only a cap), hmm on the same model quantised to a 16-bit PNG"
+            echo "(\`hmm -z 1 -e E/range\`; the synthetic model's nodata filled with the nearest height there). jacksboro and"
+            echo "topobathy: Debian's python-matplotlib-data DEMs (tests/dem_data.py); synth: \`erd synth --kind dem\`"
+            echo "(faults, a mesa, nodata lakes and corner). CPU seconds and peak memory of the whole process, medians of"
+            echo "$TERRAIN_RUNS runs (1 for synth). erd's largest error is numpy's, over the valid pixels of its"
+            echo "reconstruction (float32 rounding aside). ${hmm_note:-}"
+            echo
+            echo "| DEM | program | triangles | CPU s | peak MB | largest error |"
+            echo "|---|---|---:|---:|---:|---|"
+            awk -F'|' '{ printf "| %s | %s | %s | %.2f | %.0f | %s |\n", $1, $2, $3, $4 / 1000, $5 / 1024, $6 }' "$terrain_rows"
+            echo
+            echo "Targets (issue 47): erdgpi within E everywhere, with fewer triangles and less CPU time than hmm."
+        } | results_section terrain "Terrain beside hmm (issue 47; make bench, terrain block)"
+    fi
+    rm -rf "$OUT/dem"
+else
+    echo "terrain: tests/dem_data.py failed (python3-numpy, python-matplotlib-data?); skipped"
 fi
 # ---------------------------------------------------------------------------------------------
 # threads (issue 18, "Two cores"): the image stages (MMSODD, density, reconstruction, PSNR;

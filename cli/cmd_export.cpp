@@ -15,14 +15,18 @@ namespace erd::cli {
 
 const CommandLine kExport = {
     "export",
-    "erd export MODEL -o OUT.obj|OUT.ply|OUT.stl [--zscale Z] [--base H]",
+    "erd export MODEL -o OUT.obj|OUT.ply|OUT.stl|OUT.glb [--zscale Z] [--base H]",
     "Writes a .model or .erd mesh as a surface: x, y in pixels with y up (y = H-1 - row), z = value * Z,\n"
     "faces counter-clockwise seen from above. For an ERD model every wedge becomes its own vertex copy,\n"
-    "so the surface is cut open along the constrained edges (the model's discontinuities).",
+    "so the surface is cut open along the constrained edges (the model's discontinuities).\n"
+    "A model of a GeoTIFF is written in its world coordinates (x, y of the pixel centres; Z 1 by\n"
+    "default in a projected CRS), and a model with nodata leaves its holes open. .glb is glTF 2.0\n"
+    "binary (y up, for three.js, Cesium, Blender, Unity, Unreal); STL and glTF hold world coordinates\n"
+    "from the mesh's centre (named in the STL header, the glTF node's translation).",
     {
-        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront), FILE.ply (ASCII PLY) or FILE.stl (binary STL); \"-\" = stdout with --format"},
-        {0, "format", "obj|ply|stl", "output format when the file name does not say (default: from the name)"},
-        {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side)"},
+        {'o', "output", "FILE", "output mesh: FILE.obj (Wavefront), FILE.ply (ASCII PLY), FILE.stl (binary STL) or FILE.glb (glTF 2.0); \"-\" = stdout with --format"},
+        {0, "format", "obj|ply|stl|glb", "output format when the file name does not say (default: from the name)"},
+        {'z', "zscale", "Z", "height per sample unit (default max(W,H) / (10 maxval): the value range is a tenth of the larger side; 1 for a projected GeoTIFF)"},
         {'b', "base", "H", "STL: a solid with walls and a bottom, the surface lifted by H (basic models)"},
         kProgressOption,
     },
@@ -30,15 +34,17 @@ const CommandLine kExport = {
 };
 
 static int run_export(const Args& args, const Reporter& rep) {
-    if (!args.has("output")) return rep.usage("-o OUT.obj or OUT.ply is required");
+    if (!args.has("output")) return rep.usage("-o OUT.obj, OUT.ply, OUT.stl or OUT.glb is required");
     const std::string in = args.positional()[0], out = args.str("output");
 
     ExportOptions opt;
     std::string format;
     Status st;
     const bool stl = args.str("format") == "stl" || (args.str("format").empty() && has_extension(out, ".stl"));
+    const bool glb = args.str("format") == "glb" || (args.str("format").empty() && has_extension(out, ".glb"));
     if (stl) opt.format = MeshFormat::stl;
-    else if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message + " (or .stl)");
+    else if (glb) opt.format = MeshFormat::glb;
+    else if (!(st = output_format(args.str("format"), out, "obj", "ply", &format))) return rep.usage(st.message + " (or .stl, .glb)");
     else opt.format = format == "obj" ? MeshFormat::obj : MeshFormat::ply;
     opt.zscale = args.real("zscale", 0, 0, 1e12, &st);
     if (!st) return rep.usage(st.message);

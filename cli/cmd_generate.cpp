@@ -52,7 +52,7 @@ const CommandLine kGenerate = {
     "Each image is meshed on its own; one that fails is reported and the others go on (exit 1).",
     {
         {'m', "method", "NAME", "mesh-generation method (see the list below)"},
-        {'i', "input", "FILE", "input image, PGM, PPM, PAM, PNG or JPEG (default and - : stdin); repeat it or name a folder for many"},
+        {'i', "input", "FILE", "input image, PGM, PPM, PAM, PNG, JPEG, TIFF/GeoTIFF or PFM (default and - : stdin); repeat it or name a folder for many"},
         {0, "gray", nullptr, "colour input: mesh its BT.601 luma (0.299 R + 0.587 G + 0.114 B) instead of the colour image"},
         {'d', "density", "D", "sampling density in percent of W*H (default 3; wins over -n)"},
         {'n', "points", "N", "number of sample points, corners included"},
@@ -60,7 +60,10 @@ const CommandLine kGenerate = {
         {'t', "triangulation", "FILE", "also write the triangulation (erd-triangulation 1)"},
         {'p', "polylines", "FILE", "also write the polylines (erd-polylines 1; none for ed, gpi)"},
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
-        {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E"},
+        {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E (a real-valued image: every method, a bound on the model given)"},
+        {0, "max-slack", "S", "ERD, real image, --max-error E: the greedy stops at S*E before the minimax fit (default 1.6)"},
+        {0, "minimax", "K", "ERD, real image, --max-error: rounds of the minimax fit of the values (default 2; 0: none)"},
+        {0, "min-step", "F", "ERD, real image, --max-error E: keep detected edges whose step across is F*E or more (default 4; 0: all)"},
         {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
         {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
@@ -221,6 +224,9 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("edge-zero-radius"))
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
     if (a.has("aa-errors")) o->supersampled_errors = a.integer("aa-errors", 0, 0, 1, st) == 1;
+    if (a.has("max-slack")) o->max_slack = a.real("max-slack", o->max_slack, 1.0, 16.0, st);
+    if (a.has("minimax")) o->minimax_rounds = int(a.integer("minimax", o->minimax_rounds, 0, 64, st));
+    if (a.has("min-step")) o->min_step_factor = a.real("min-step", o->min_step_factor, 0.0, 1e6, st);
 }
 
 }  // namespace
@@ -276,6 +282,14 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     // (issue 17), so it passes through; --gray meshes its luma instead.
     st = read_input_image(in, a.has("gray") ? ColourInput::luma_asked : ColourInput::keep, rep, &image);
     if (!st) return rep.fail(st);
+    // A real image (float, signed, 32-bit or with nodata: issue 47).
+    if (image.real()) {
+        if (erdz_name(out) || codec.choose_density)
+            return rep.fail(Status::bad_input(escape_name(out) + ": .erdz holds models of 8- and 16-bit images; a real-valued "
+                                              "image's model is written as .erd or .model (its values exactly)"));
+        if (opt.optimize && opt.max_error >= 0)
+            return rep.usage("--optimize and --max-error on a real-valued image: the least-squares values would break the bound; use one");
+    }
     if (!constraints_in.empty()) {
         std::string text;
         // A stream stops at its first definite error: /dev/zero, `yes |` read 4 KiB, not 1 GiB.
@@ -330,6 +344,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
         rep.detail(buf);
     }
     for (const std::string& s : result_lines(res.stats)) rep.detail(s);
+    if (res.stats.has_raster && opt.max_error >= 0 && res.stats.raster.max_error > opt.max_error)
+        rep.warn(escape_name(in) + ": the largest error is " + real_text(res.stats.raster.max_error) + ", above --max-error " +
+                 real_text(opt.max_error) + ": N points were reached first (raise -d or -n)");
 
     std::string exact_warning;
     st = check_exact_count(res.requested, res.achieved, ExactMode(exit_mode), &exact_warning);
@@ -452,7 +469,7 @@ static int run_generate(const Args& a, const Reporter& rep) {
     if (!(st = parse_parallelism(a.has("jobs"), a.str("jobs"), batch, &par))) return rep.usage(st.message);
     if (!batch) return generate_one(a, rep, p, par.threads, nullptr);
     std::vector<BatchItem> items;
-    st = expand_inputs(inputs, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg"}, &items);
+    st = expand_inputs(inputs, {".pgm", ".pnm", ".png", ".ppm", ".pam", ".jpg", ".jpeg", ".tif", ".tiff", ".pfm"}, &items);
     if (st && !(st = check_patterns(items, {p.out, p.tri, p.poly, p.stats}))) return rep.usage(st.message);
     if (!st) return rep.fail(st);
     const BatchJob job = [&](const BatchItem& it, BatchRecord* rec) {

@@ -2,11 +2,15 @@
 // .erdz, .tri), what it holds and what its file costs, and for an .erdz the size of each section.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "algorithms/imaging/georef.h"
+#include "algorithms/imaging/real_image.h"
+#include "algorithms/model/model_io.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/image_io.h"
@@ -25,6 +29,8 @@ static const char* format_key(ImageFormat f) {
         case ImageFormat::pam: return "pam";
         case ImageFormat::png: return "png";
         case ImageFormat::jpeg: return "jpeg";
+        case ImageFormat::tiff: return "tiff";
+        case ImageFormat::pfm: return "pfm";
         case ImageFormat::unknown: break;
     }
     return "unknown";
@@ -34,8 +40,10 @@ const CommandLine kInfo = {
     "info",
     "erd info IMAGE|MODEL [--json]",
     "Prints the size, channels, maxval, bits per sample, format and sample range of a PGM\n"
-    "(P2, P5), PPM (P3, P6), PAM (P7), PNG or JPEG file (\"-\" reads stdin). The format is recognised\n"
-    "from the content, not the name; a colour file whose channels are all equal is gray.\n"
+    "(P2, P5), PPM (P3, P6), PAM (P7), PNG, JPEG, TIFF or PFM file (\"-\" reads stdin). The format is\n"
+    "recognised from the content, not the name; a colour file whose channels are all equal is gray.\n"
+    "A TIFF or PFM also shows its sample type, the range of its valid samples, its nodata value and\n"
+    "count, and its georeferencing (GeoTIFF).\n"
     "For a model (.model, .erd, .erdz, or a -t triangulation .tri; by name or content): its kind,\n"
     "size, vertices, faces, constrained edges and their kinds, channels, the file's size and bits\n"
     "per pixel; for an .erdz also the size of each section.",
@@ -141,6 +149,61 @@ static int erdz_info(const std::string& path, const Model& m, const ErdzInfo& in
     return 0;
 }
 
+// A TIFF or PFM (or any real image): the type, the valid samples' range and mean, nodata, georeferencing.
+static int raster_info(const std::string& path, const Image& im, ImageFormat fmt, const Args& args) {
+    const std::size_t n = im.pixels(), C = std::size_t(im.channels);
+    double lo = 0, hi = 0, sum = 0;
+    std::size_t valid = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!pixel_valid(im, i)) continue;
+        for (std::size_t c = 0; c < C; ++c) {
+            const double v = sample_value(im, i * C + c);
+            lo = valid == 0 && c == 0 ? v : std::min(lo, v);
+            hi = valid == 0 && c == 0 ? v : std::max(hi, v);
+            sum += v;
+        }
+        ++valid;
+    }
+    const double mean = valid ? sum / double(valid * C) : 0.0;
+    const std::size_t nodata = n - valid;
+    const RasterMeta& meta = im.meta;
+    const std::string type = sample_type_name(meta.type);
+    const std::string nd = meta.has_nodata ? (std::isnan(meta.nodata) ? std::string("nan") : format_value(meta.nodata)) : std::string();
+    PixelToWorld w;
+    const bool geo = pixel_to_world(meta.geo, &w);
+    if (args.has("json")) {
+        JsonObject j;
+        j.str("file", path).str("format", format_key(fmt)).integer("width", im.width).integer("height", im.height);
+        j.integer("channels", im.channels).str("type", type).boolean("real", im.real());
+        j.num("min", lo).num("max", hi).num("mean", mean);
+        if (meta.has_nodata && !std::isnan(meta.nodata)) j.num("nodata", meta.nodata);
+        else if (meta.has_nodata) j.str("nodata", "nan");
+        else j.null("nodata");
+        j.integer("nodata_pixels", std::int64_t(nodata));
+        j.boolean("georeferenced", !meta.geo.empty());
+        if (geo)
+            j.raw("pixel_to_world", "[" + format_value(w.a) + "," + format_value(w.b) + "," + format_value(w.c) + "," + format_value(w.d) +
+                                        "," + format_value(w.e) + "," + format_value(w.f) + "]");
+        const int epsg = geo_epsg(meta.geo);
+        if (epsg) j.integer("epsg", epsg);
+        else j.null("epsg");
+        std::printf("%s\n", j.text().c_str());
+        return 0;
+    }
+    std::printf("file:    %s\nformat:  %s\nsize:    %d x %d (%zu pixels)\n", escape_name(path).c_str(), format_name(fmt), im.width,
+                im.height, n);
+    if (C == 3) std::printf("channels: 3 (RGB, colour)\n");
+    std::printf("type:    %s (%s)\n", type.c_str(), im.real() ? "real values: meshed without quantisation" : "integer samples");
+    std::printf("samples: min %.10g, max %.10g, mean %.10g (over the valid pixels)\n", lo, hi, mean);
+    if (meta.has_nodata || nodata)
+        std::printf("nodata:  %s, %zu pixels (%.4g%%)\n", meta.has_nodata ? nd.c_str() : "NaN samples", nodata,
+                    100.0 * double(nodata) / double(n));
+    else
+        std::printf("nodata:  none\n");
+    std::printf("georef:  %s\n", describe_georef(meta.geo).c_str());
+    return 0;
+}
+
 // A text model (.model, .erd) or triangulation (.tri): what it holds and what its file costs.
 static int text_model_info(const std::string& path, const Model& m, const ModelFileFacts& file, const Args& args) {
     const bool tri = file.kind == ModelFileKind::triangulation;
@@ -159,6 +222,11 @@ static int text_model_info(const std::string& path, const Model& m, const ModelF
         j.integer("constraints", std::int64_t(m.constraints.size()));
         if (tri) j.null("edge_kinds");
         else j.object("edge_kinds", edge_kinds_json(m));
+        if (m.real || m.holes || !m.meta.geo.empty()) {  // a raster's model: its type, range, holes, georeferencing
+            j.str("type", sample_type_name(m.meta.type)).boolean("real", m.real);
+            if (m.real) j.raw("range", "[" + format_value(m.lo) + "," + format_value(m.hi) + "]");
+            j.boolean("holes", m.holes).boolean("georeferenced", !m.meta.geo.empty());
+        }
         j.integer("bytes", std::int64_t(file.bytes)).num("bpp", bpp);
         std::printf("%s\n", j.text().c_str());
         return 0;
@@ -172,6 +240,9 @@ static int text_model_info(const std::string& path, const Model& m, const ModelF
                     m.width, m.height, px, m.maxval, m.channels, m.channels == 1 ? "" : "s");
     }
     std::printf("mesh:      %zu vertices, %zu faces, %s\n", m.vertices.size(), m.faces.size(), constraints_text(m, tri).c_str());
+    if (m.real) std::printf("values:    real (%s), range %.10g .. %.10g\n", sample_type_name(m.meta.type), m.lo, m.hi);
+    if (m.holes) std::printf("holes:     the faces over nodata are dropped (holes in the mesh)\n");
+    if (!m.meta.geo.empty()) std::printf("georef:    %s\n", describe_georef(m.meta.geo).c_str());
     std::printf("file size: %zu bytes, %.5f bpp\n", file.bytes, bpp);
     return 0;
 }
@@ -195,6 +266,7 @@ static int run_info(const Args& args, const Reporter& rep) {
     ImageFormat fmt = ImageFormat::unknown;
     Status st = read_input_image(path, ColourInput::keep, rep, &im, &fmt);
     if (!st) return rep.fail(st);
+    if (fmt == ImageFormat::tiff || fmt == ImageFormat::pfm || im.real()) return raster_info(path, im, fmt, args);
 
     unsigned lo = 65535, hi = 0;
     double sum = 0;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "algorithms/model/model.h"
+#include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
 #include "cli/command_line.h"
 #include "cli/batch.h"
@@ -24,10 +25,13 @@ const CommandLine kReconstruct = {
     "along edges a file lists as \"hard-edges\" or \"soft-edges\" as that kind says); read from\n"
     "stdin when omitted or \"-\" (the kind is then told from the content). The image has the model's maxval and size (W = max x + 1, H = max y + 1\n"
     "over the vertices), and its channels: a colour model (header \"channels 3\") gives an RGB image.\n"
+    "A model of a real-valued raster (header \"range\") is point-evaluated, each pixel on the face\n"
+    "that owns it, and written in its own sample type as TIFF (.tif, georeferenced as its raster,\n"
+    "nodata where no face is) or PFM (.pfm); PNG and PGM get 16 bits of its range.\n"
     "Many models (several, or a folder): -o names each image by a pattern with {name}, the\n"
     "model's name without its extension (erd reconstruct out/ -o rec/{name}.png -j 4).",
     {
-        {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), else PGM (PPM for colour)"},
+        {'o', "output", "OUT", "image to write (default stdout); .png gives PNG (maxval < 256), .tif TIFF, .pfm PFM, else PGM (PPM for colour)"},
         {0, "no-aa", nullptr, "point evaluation at every pixel also for a soft-edged .erd or soft edges (default there: 4x4 supersampling)"},
         {0, "plain", nullptr, "write plain PGM (P2; P3 for colour), as the thesis's imgsyn did"},
         kProgressOption,
@@ -52,6 +56,9 @@ static int reconstruct_one(const Args& args, const Reporter& rep, const std::str
     if (!st) return rep.fail(Status::error(st.code, in + ": " + st.message));
     WriteOptions wo;
     wo.plain = args.has("plain");
+    if (im.real() && !keeps_real_values(out))
+        rep.warn(escape_name(out) + ": a real-valued model's image is written as 16-bit (its range " + format_value(im.lo) + " .. " +
+                 format_value(im.hi) + " onto 0 .. 65535); .tif and .pfm keep the values");
     if (!(st = write_image(out, im, wo))) return rep.fail(st);
     if (record) {
         record->method = model.kind == ModelKind::erd ? "erd" : "basic";

@@ -8,6 +8,7 @@
 
 #include "algorithms/codec/erdz.h"
 #include "algorithms/model/model_io.h"
+#include "imageio/pfm.h"
 
 namespace erd::cli {
 
@@ -38,6 +39,9 @@ struct ImageFrame {
         if (n >= 1 && d[0] == 0x89) return png(d, n, total);
         if (n >= 3 && d[0] == 0xff && d[1] == 0xd8 && d[2] == 0xff) return jpeg(d, n, total);
         if (n >= 2 && d[0] == 'P' && d[1] == '7') return pam(d, n, total);
+        // TIFF: its directories may lie anywhere in it, so to the end (as JPEG).
+        if (n >= 2 && ((d[0] == 'I' && d[1] == 'I') || (d[0] == 'M' && d[1] == 'M'))) return Status::success();
+        if (n >= 2 && d[0] == 'P' && (d[1] == 'f' || d[1] == 'F')) return pfm(d, n, total);
         if (!header_done) {
             if (n >= 2 && (d[0] != 'P' || (d[1] != '2' && d[1] != '3' && d[1] != '5' && d[1] != '6'))) {
                 *total = n;  // not an image: the decoder says what it is
@@ -98,6 +102,20 @@ struct ImageFrame {
             *total = n;  // bad already
         } else if (n >= kMaxStreamHeader) {
             return Status::bad_input("no complete PAM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
+        }
+        return Status::success();
+    }
+
+    // PFM: the header, then its declared raster.
+    Status pfm(const unsigned char* d, std::size_t n, std::uint64_t* total) {
+        imageio::PfmHeader h;
+        Status s = imageio::pfm_header(d, n, limits, &h);
+        if (s) {
+            *total = h.raster + std::uint64_t(h.width) * std::uint64_t(h.height) * std::uint64_t(h.channels) * 4;
+        } else if (s.message.compare(0, 11, "end of file") != 0) {
+            *total = n;  // bad already
+        } else if (n >= kMaxStreamHeader) {
+            return Status::bad_input("no complete PFM header in the first " + std::to_string(kMaxStreamHeader) + " bytes");
         }
         return Status::success();
     }

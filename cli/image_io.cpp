@@ -1,16 +1,50 @@
 #include "cli/image_io.h"
 
 #include <cstdint>
+#include <cstdio>
 
 #include "algorithms/imaging/luma.h"
 #include "cli/fileio.h"
 #include "cli/framing.h"
 #include "cli/report.h"
+#include "imageio/raster_window.h"
 
 namespace erd::cli {
 
+namespace {
+
+// A regular file that is a TIFF or a PFM: read by imageio's windows, so the file's bytes are not
+// held beside the decoded raster (a float raster of 16384^2 is 1 GiB on disk). False (nothing
+// read) for anything else.
+bool read_by_window(const std::string& path, Image* out, std::string* w, ImageFormat* format, const ImageLimits& limits, Status* st) {
+    if (path == "-") return false;
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    unsigned char head[4] = {0, 0, 0, 0};
+    const std::size_t n = std::fread(head, 1, 4, f);
+    const bool seekable = std::fseek(f, 0, SEEK_END) == 0 && std::ftell(f) > 0;
+    std::fclose(f);
+    const ImageFormat fmt = imageio::detect_format(head, n);
+    if (!seekable || (fmt != ImageFormat::tiff && fmt != ImageFormat::pfm)) return false;
+    if (format) *format = fmt;
+    imageio::RasterWindow win;
+    *st = win.open(path, limits);
+    if (*st) *st = win.read(0, 0, win.width(), win.height(), out, w);
+    return true;
+}
+
+}  // namespace
+
 Status read_image(const std::string& path, Image* out, std::string* warning, ImageFormat* format, const ImageLimits& limits) {
     if (warning) warning->clear();
+    std::string w0;
+    Status ws;
+    if (read_by_window(path, out, &w0, format, limits, &ws)) {
+        const std::string name = escape_name(path);
+        if (!ws) return Status::bad_input(name + ": " + ws.message);
+        if (warning && !w0.empty()) *warning = name + ": " + w0;
+        return Status::success();
+    }
     std::string bytes;
     bool more = false;
     std::uint64_t unread = 0;
@@ -53,6 +87,11 @@ Status read_input_image(const std::string& path, ColourInput colour, const Repor
     if (colour != ColourInput::keep) to_gray(path, out, colour == ColourInput::luma_asked, &warning);
     rep.warn(warning);
     return Status::success();
+}
+
+bool keeps_real_values(const std::string& path) {
+    const ImageFormat f = imageio::format_for_name(path);
+    return f == ImageFormat::tiff || f == ImageFormat::pfm;
 }
 
 Status encode_image(const std::string& path, const Image& im, const WriteOptions& options, std::string* bytes) {

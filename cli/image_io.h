@@ -52,6 +52,9 @@ enum class ColourInput { keep, luma_asked, luma_warn };
 Status read_input_image(const std::string& path, ColourInput colour, const Reporter& rep, Image* out,
                         ImageFormat* format = nullptr);
 
+// True when the name asks for a format that keeps a real image's values (.tif, .tiff, .pfm).
+bool keeps_real_values(const std::string& path);
+
 struct WriteOptions {
     bool plain = false;  // PGM/PPM: write P2/P3 (the thesis's programs write plain PNM) instead of P5/P6
 };
@@ -61,8 +64,8 @@ struct WriteOptions {
 Status encode_image(const std::string& path, const Image& im, const WriteOptions& options, std::string* bytes);
 
 // Writes atomically (cli/fileio.h). A path ending in ".png" (any case) gets PNG (8-bit for
-// maxval <= 255, else 16-bit); anything else, "-" included, gets PGM for gray and PPM for colour
-// (P5/P6, or P2/P3 with options.plain).
+// maxval <= 255, else 16-bit), ".tif"/".tiff" TIFF (imageio/tiff.h), ".pfm" PFM; anything else,
+// "-" included, gets PGM for gray and PPM for colour (P5/P6, or P2/P3 with options.plain).
 Status write_image(const std::string& path, const Image& im, const WriteOptions& options = WriteOptions());
 
 }  // namespace erd::cli

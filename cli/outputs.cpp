@@ -59,7 +59,18 @@ Status Outputs::folders(const std::vector<std::string>& outputs) {
 }
 
 Status Outputs::stage(const std::string& path, const std::string& bytes) {
+    return stage_file(path, &bytes, nullptr);
+}
+
+Status Outputs::stage_stream(const std::string& path, const std::function<Status(int fd)>& write) {
+    return stage_file(path, nullptr, &write);
+}
+
+Status Outputs::stage_file(const std::string& path, const std::string* bytes_given, const std::function<Status(int fd)>* write) {
+    static const std::string kNone;
+    const std::string& bytes = bytes_given ? *bytes_given : kNone;
     if (path.empty()) return Status::bad_input("empty output file name");
+    if (write && path == "-") return Status::bad_input("-: this output is written as it is made and needs a file, not stdout");
     Staged s;
     s.path = path;
     if (path == "-") {
@@ -75,6 +86,7 @@ Status Outputs::stage(const std::string& path, const std::string& bytes) {
     if (s.existed && S_ISDIR(st.st_mode)) return Status::failure(escape_name(path) + ": is a directory");
     if (Status r = refuse_read_only(path, s.target); !r) return r;
     if (s.existed && !S_ISREG(st.st_mode)) {
+        if (write) return Status::bad_input(escape_name(path) + ": this output is written as it is made and needs a regular file");
         s.special = true;
         s.bytes = bytes;
         staged_.push_back(std::move(s));
@@ -100,7 +112,7 @@ Status Outputs::stage(const std::string& path, const std::string& bytes) {
     // ERD_NO_TMPFILE=1 takes the named path as on a file system without O_TMPFILE (tests).
     const char* no_tmpfile = std::getenv("ERD_NO_TMPFILE");
     const bool forced = no_tmpfile && std::strcmp(no_tmpfile, "1") == 0;
-    if (!forced) t.fd = ::openat(t.dirfd, ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (!forced) t.fd = ::openat(t.dirfd, ".", O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
     const bool unsupported = forced || (t.fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL));
 #else
     const bool unsupported = true;
@@ -112,7 +124,7 @@ Status Outputs::stage(const std::string& path, const std::string& bytes) {
             t.tmp = temp_name();
             t.slot = claim_slot(t.dirfd, t.tmp);
             if (t.slot < 0) { errno = EMFILE; break; }
-            t.fd = ::openat(t.dirfd, t.tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            t.fd = ::openat(t.dirfd, t.tmp.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
             if (t.fd < 0) {
                 int err = errno;
                 release_slot(&t.slot);
@@ -127,7 +139,17 @@ Status Outputs::stage(const std::string& path, const std::string& bytes) {
         }
     }
     int err = 0;
-    bool ok = write_all(t.fd, bytes, &err);
+    bool ok = true;
+    if (write) {
+        // The caller writes (and may seek in) the temporary; its message is kept as it is.
+        const Status w = (*write)(t.fd);
+        if (!w) {
+            give_up(0);
+            return w;
+        }
+    } else {
+        ok = write_all(t.fd, bytes, &err);
+    }
     // An old file keeps its permissions (and, for root, its owner).
     if (ok && t.existed && ::fchmod(t.fd, st.st_mode & 07777) != 0) { err = errno; ok = false; }
     if (ok && t.existed && ::geteuid() == 0) (void)::fchown(t.fd, st.st_uid, st.st_gid);

@@ -33,6 +33,7 @@
 // the old files' second names. ERD_TEST_COMMIT_PAUSE_MS=N (tests only, 1..10000) pauses N ms
 // before each move so that a test's kill can land inside the commit (tests/test_kill.cpp).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,12 @@ public:
     // for commit() when the target is special. Failures (Code::runtime) name the path.
     Status stage(const std::string& path, const std::string& bytes);
 
+    // The same for an output written as it is made (a raster larger than memory, by rows): `write`
+    // gets the temporary's descriptor (read-write, at offset 0) and may seek in it. Needs a
+    // regular file (or a new name): "-" and special files are refused. Its failure is returned
+    // as it is, the temporary removed.
+    Status stage_stream(const std::string& path, const std::function<Status(int fd)>& write);
+
     // Writes the special outputs in place, then moves every temporary onto its target. A failed
     // special output leaves every regular target untouched. Signals are held until it is done.
     Status commit();
@@ -76,6 +83,7 @@ public:
     void discard();
 
 private:
+    Status stage_file(const std::string& path, const std::string* bytes, const std::function<Status(int fd)>* write);
     struct Staged {
         std::string path;    // as given, for messages
         std::string target;  // the file to replace (symbolic links resolved)

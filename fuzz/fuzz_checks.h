@@ -19,6 +19,22 @@ inline void check(bool ok) {
     if (!ok) std::abort();
 }
 
+// The kernel targets' input: bytes taken one at a time, zeros past the end.
+struct ByteReader {
+    const std::uint8_t* data;
+    std::size_t size, pos = 0;
+    bool more() const { return pos < size; }
+    std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
+};
+
+// The image limits the decoder targets run under: small enough that every allocation stays cheap.
+inline erd::imageio::ImageLimits image_limits() {
+    erd::imageio::ImageLimits limits;
+    limits.max_side = 2048;
+    limits.max_pixels = std::int64_t(1) << 18;
+    return limits;
+}
+
 // A refusal: Code::input with one non-empty line.
 inline void check_refusal(const erd::Status& s) {
     check(s.code == erd::Code::input && !s.message.empty() && s.message.find('\n') == std::string::npos);

@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Writes the small seed corpora of fuzz_pgm and fuzz_png (committed; rerun to regenerate).
+"""Writes the small seed corpora of fuzz_pgm, fuzz_png and fuzz_tiff (committed; rerun to regenerate).
+The TIFF seeds are also the hostile TIFFs of tools/hostile_table.sh and tests/test_rasters.cpp.
 
 Usage: python3 fuzz/make_image_seeds.py   (from the repository root)
 """
 import os
 import struct
+import sys
 import zlib
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
@@ -72,6 +74,52 @@ def png_seeds():
         + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
+def tiff_seeds():
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+    from tiff_bytes import DOUBLE, SHORT, geo_tags, tiff
+
+    def le(fmt, values):
+        return struct.pack("<" + fmt * len(values), *values)
+
+    f32 = le("f", [x * 0.5 - 1.0 for x in range(12)])
+    put("fuzz_tiff", "f32_strips", tiff(4, 3, [f32[:16], f32[16:32], f32[32:]], rows_per_strip=1))
+    put("fuzz_tiff", "f64_geo_nodata", tiff(3, 2, [le("d", [1.5, -2.0, -9999.0, 4.0, 5.25, 6.0])], bits=64,
+                                            extra=geo_tags(500000.0, 5200000.0, 10.0, 10.0, 32633, nodata=-9999.0)))
+    put("fuzz_tiff", "f32_nan", tiff(2, 2, [le("f", [1.0, float("nan"), 3.0, 4.0])]))
+    put("fuzz_tiff", "i16", tiff(3, 2, [le("h", [-5, 0, 7, 300, -32768, 12])], bits=16, fmt=2,
+                                 extra=[(42113, 2, "-32768")]))
+    put("fuzz_tiff", "i32_be", tiff(2, 2, [struct.pack(">4i", -70000, 1, 2, 70000)], bits=32, fmt=2, big_endian=True))
+    put("fuzz_tiff", "u32", tiff(2, 1, [le("I", [4000000000, 3])], bits=32, fmt=1))
+    put("fuzz_tiff", "u16_rgb", tiff(2, 2, [le("H", [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12])], spp=3, bits=16, fmt=1, photometric=2))
+    put("fuzz_tiff", "u8_planar_rgb", tiff(2, 2, [bytes([1, 2, 3, 4]), bytes([5, 6, 7, 8]), bytes([9, 10, 11, 12])], spp=3, bits=8,
+                                           fmt=1, photometric=2, planar=2))
+    put("fuzz_tiff", "u8_minwhite", tiff(2, 2, [bytes([0, 50, 200, 255])], bits=8, fmt=1, photometric=0))
+    put("fuzz_tiff", "f32_tiles", tiff(20, 18, [le("f", [float(i) for i in range(256)])] * 4, tile=(16, 16)))
+    put("fuzz_tiff", "f32_deflate_pred3", tiff(2, 1, [zlib.compress(bytes([0x3f, 0x80, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00][::1]))],
+                                               compression=8, predictor=3))
+    put("fuzz_tiff", "u8_palette", tiff(2, 1, [bytes([0, 1])], bits=8, fmt=1, photometric=3,
+                                        colormap=[i * 256 for i in range(256)] * 3))
+    put("fuzz_tiff", "u8_gray_alpha", tiff(2, 1, [bytes([10, 255, 20, 128])], spp=2, bits=8, fmt=1))
+    # Hostile: each gets one clear line (docs/HOSTILE.md).
+    whole = tiff(4, 3, [f32[:16], f32[16:32], f32[32:]], rows_per_strip=1)
+    put("fuzz_tiff", "truncated", whole[:40])
+    put("fuzz_tiff", "lying_offsets", tiff(4, 3, [f32], offsets=[1 << 30], counts=[48]))
+    put("fuzz_tiff", "lying_counts", tiff(4, 3, [f32], counts=[1 << 30]))
+    put("fuzz_tiff", "huge_30000", tiff(30000, 30000, [f32]))
+    put("fuzz_tiff", "huge_side", tiff(100000, 2, [f32]))
+    put("fuzz_tiff", "planar_5_samples", tiff(2, 2, [bytes(16)] * 5, spp=5, bits=32, fmt=3, planar=2))
+    put("fuzz_tiff", "palette_1bit_float", tiff(8, 1, [bytes([0x5a])], bits=1, fmt=3, photometric=3,
+                                                colormap=[0, 65535] * 3))
+    put("fuzz_tiff", "i8", tiff(2, 1, [bytes([0x80, 0x7f])], bits=8, fmt=2))
+    put("fuzz_tiff", "cmyk", tiff(1, 1, [bytes(4)], spp=4, bits=8, fmt=1, photometric=5))
+    put("fuzz_tiff", "unknown_compression", tiff(2, 1, [bytes(8)], compression=50123))
+    put("fuzz_tiff", "all_nodata", tiff(2, 1, [le("f", [-1.0, -1.0])], extra=[(42113, 2, "-1")]))
+    put("fuzz_tiff", "infinity", tiff(2, 1, [le("f", [1.0, float("inf")])]))
+    put("fuzz_tiff", "nodata_text", tiff(2, 1, [le("f", [1.0, 2.0])], extra=[(42113, 2, "none")]))
+    put("fuzz_tiff", "no_width", b"II*\x00" + struct.pack("<IH", 8, 1) + struct.pack("<HHII", 257, 4, 1, 1) + struct.pack("<I", 0))
+
+
 if __name__ == "__main__":
     pgm_seeds()
     png_seeds()
+    tiff_seeds()

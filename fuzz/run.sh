@@ -22,7 +22,7 @@ cli_objs=$(ls cli/*.cpp | grep -v main.cpp | sed "s|^|$B/|; s|\.cpp$|.o|" | tr '
 if ! nm $B/liberd.a 2>/dev/null | grep -q __sanitizer_cov_8bit_counters_init; then
     echo "FAIL build: $B/liberd.a has no coverage hooks (made before make asan had them: rm -rf $B and run again)"; exit 1
 fi
-objs="$cli_objs $B/liberd_imageio.a $B/liberd.a -lz"
+objs="$cli_objs $B/liberd_imageio.a $B/liberd.a -ltiff -lz"
 status=0
 if [[ $# -gt 0 ]]; then targets=$(printf 'fuzz/%s.cpp ' "$@"); else targets=$(ls fuzz/fuzz_*.cpp); fi
 for src in $targets; do

@@ -16,10 +16,10 @@
 
 namespace erd::imageio {
 
-enum class ImageFormat { unknown, pgm_plain, pgm_raw, ppm_plain, ppm_raw, pam, png, jpeg };
+enum class ImageFormat { unknown, pgm_plain, pgm_raw, ppm_plain, ppm_raw, pam, png, jpeg, tiff, pfm };
 
 // "PGM (P2, plain)", "PGM (P5, raw)", "PPM (P3, plain)", "PPM (P6, raw)", "PAM (P7)", "PNG", "JPEG",
-// "unknown".
+// "TIFF", "PFM", "unknown".
 const char* format_name(ImageFormat f);
 
 // Size limits, checked before any allocation. Defaults are those of algorithms/imaging/image.h
@@ -29,7 +29,8 @@ struct ImageLimits {
     std::int64_t max_pixels = kMaxImagePixels;
 };
 
-// Detects the format from the magic bytes (P2, P3, P5, P6, P7, the PNG signature, FF D8 FF).
+// Detects the format from the magic bytes (P2, P3, P5, P6, P7, the PNG signature, FF D8 FF, II*0
+// and MM0* (TIFF; + for BigTIFF), Pf and PF followed by whitespace).
 ImageFormat detect_format(const unsigned char* data, std::size_t size);
 
 // Detects the format and decodes. Colour stays colour (channels 3, interleaved); a colour image
@@ -39,12 +40,15 @@ ImageFormat detect_format(const unsigned char* data, std::size_t size);
 Status decode_image(const unsigned char* data, std::size_t size, Image* out, std::string* warning,
                     ImageFormat* format = nullptr, const ImageLimits& limits = ImageLimits());
 
-// The format a file name asks for: PNG for a name ending in ".png" (any case), else PGM/PPM (raw,
-// or plain with `plain`), the netpbm type following the image's channels.
+// The format a file name asks for: PNG for a name ending in ".png" (any case), TIFF for ".tif" and
+// ".tiff", PFM for ".pfm", else PGM/PPM (raw, or plain with `plain`), the netpbm type following the
+// image's channels. A real image (algorithms/imaging/real_image.h) keeps its values in TIFF (its
+// own sample type) and PFM (float32); PNG and PGM/PPM get its 16-bit proxy (lo..hi onto 0..65535).
 ImageFormat format_for_name(const std::string& name, bool plain = false);
 
 // Encodes an image as `format` (pgm_* and ppm_* are the same choice: the channels decide; JPEG
-// and PAM are not written). The image must be valid: checked, Code::failure when not.
+// and PAM are not written; TIFF and PFM: imageio/tiff.h, imageio/pfm.h). The image must be valid:
+// checked, Code::failure when not.
 Status encode_image(const Image& im, ImageFormat format, std::string* bytes);
 
 }  // namespace erd::imageio

@@ -61,7 +61,7 @@ ext = Pybind11Extension(
     include_dirs=[ROOT],
     depends=headers,
     define_macros=[("ERD_CLI_NO_MAIN", "1")],
-    libraries=["z"],
+    libraries=["tiff", "z"],
     extra_compile_args=["-O2", "-g0", "-fno-math-errno", "-fno-trapping-math", "-fno-wrapv", "-MMD"],
     cxx_std=17,
 )

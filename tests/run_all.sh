@@ -155,6 +155,18 @@ stage_vector() {
 
 stage_web() { browser_stage web tests/web_test.sh "$IMAGES"; }
 
+# Real elevation data (issue 47): --max-error bounds measured by numpy, precision, TIFF round
+# trips, every .glb through the Khronos validator; each PASS line is a test.
+stage_raster() {
+    bash tests/raster_test.sh build/erd >"$log/raster" 2>&1
+    grep -E '^(FAIL|SKIP)' "$log/raster" | head -20
+    local p f s
+    p=$(grep -c '^PASS' "$log/raster"); f=$(grep -c '^FAIL' "$log/raster"); s=$(grep -c '^SKIP' "$log/raster")
+    echo "$p raster checks passed, $f failed"
+    [[ $p -eq 0 && $f -eq 0 ]] && f=1  # the script ran nothing
+    passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
+}
+
 run_job() {
     local name=$1 fn=$2 t0=$SECONDS
     ( passed=0; failed=0; skipped=0; $fn; echo "$passed $failed $skipped $(( SECONDS - t0 ))" >"$log/$name.count" ) >"$log/$name.out" 2>&1
@@ -213,6 +225,7 @@ stage
 run_job tsan stage_tsan
 run_job web stage_web
 run_job vector stage_vector
+run_job raster stage_raster
 wait "$chain_pid"
 show_job asan "unit tests under ASan+UBSan: result"
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
@@ -220,6 +233,7 @@ show_job python "python package (make python, pytest python/tests: each test cou
 show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: every -j stage, two API calls on two threads)"
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
 show_job web "web page (web/, WebAssembly) in chromium via playwright-core: opens meshed, slider, cancel, drop, file, paste, bad file; each mesh the native erd's"
+show_job raster "rasters (tests/raster_test.sh): real DEMs' --max-error bounds checked by numpy, precision, TIFF round trips, glTF validator (each check counts)"
 
 stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"

@@ -254,7 +254,7 @@ TEST_CASE("edges header: written for hard edges only, read back, thesis files un
 
 TEST_CASE("edges header: malformed blocks get one message naming the problem", "[hardedges][model_io]") {
     const std::string b = kBody;
-    CHECK(read_error("erd-header 1\ncolour rgb\nend\n" + b) == "line 2: unknown header key 'colour' (this reader knows: edges, hard-edges, soft-edges, channels)");
+    CHECK(read_error("erd-header 1\ncolour rgb\nend\n" + b) == "line 2: unknown header key 'colour' (this reader knows: edges, hard-edges, soft-edges, channels, type, range, nodata, holes, doubled, geo-pixel-scale, geo-tiepoints, geo-transform, geo-keys, geo-doubles, geo-ascii)");
     CHECK(read_error("erd-header 2\nend\n" + b) == "line 1: header version 2 is not supported (this reader knows 1)");
     CHECK(read_error("erd-header 1\nedges blurry\nend\n" + b) == "line 2: edges must be hard or soft, found 'blurry'");
     CHECK(read_error("erd-header 1\nedges hard\nedges hard\nend\n" + b) == "line 3: header key 'edges' given twice");

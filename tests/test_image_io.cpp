@@ -39,7 +39,7 @@ std::vector<Bad> bad_pgms() {
     return {
         {"1 empty", "", "empty file"},
         {"1 one byte", "P", "file too short (1 byte)"},
-        {"2 P1", "P1\n1 1\n1\n", "a PBM bitmap (P1, plain): erd reads PGM (P2, P5), PPM (P3, P6), PAM (P7), PNG and JPEG"},
+        {"2 P1", "P1\n1 1\n1\n", "a PBM bitmap (P1, plain): erd reads PGM (P2, P5), PPM (P3, P6), PAM (P7), PNG, JPEG, TIFF and PFM"},
         {"2 P4", "P4\n8 1\n\x01", "a PBM bitmap (P4, raw): erd reads PGM"},
         {"2 P6 truncated", "P6\n2 1 255\nabc", "raster truncated: expected 6 bytes (2 x 1 x 3 x 1), found 3"},
         {"2 P3 too few", "P3\n1 1 255\n1 2\n", "only 2 of 3 samples before the end of the file (plain PPM)"},

@@ -476,6 +476,45 @@ case_ "Apple CgBI PNG (iPhone-optimised): refused by name" 2 generate -q -m erdg
 
 cat <<'EOF'
 
+## Rasters: TIFF, GeoTIFF and PFM (issue 47)
+The TIFFs are fuzz_tiff's seeds (fuzz/make_image_seeds.py writes them byte by byte); the elevation
+model is `erd synth --kind dem` (float32 GeoTIFF with nodata lakes).
+| case | command | exit | message |
+| --- | --- | --- | --- |
+EOF
+T=$SRC/fuzz/corpus/fuzz_tiff
+for f in truncated lying_offsets huge_30000 huge_side planar_5_samples palette_1bit_float i8 cmyk unknown_compression all_nodata infinity nodata_text no_width; do
+    cp "$T/$f" "$f.tif"
+done
+case_ "TIFF truncated (40 of 158 bytes)" 2 info truncated.tif
+case_ "TIFF lying: its strip at 1 GiB in a 200-byte file" 2 info lying_offsets.tif
+case_ "TIFF lying: 30000 x 30000 in 250 bytes" 2 info huge_30000.tif
+case_ "TIFF huge: 100000 pixels wide" 2 info huge_side.tif
+case_ "TIFF planar, 5 samples a pixel" 2 info planar_5_samples.tif
+case_ "TIFF palette of 1-bit float samples" 2 info palette_1bit_float.tif
+case_ "TIFF 8-bit signed samples" 2 info i8.tif
+case_ "TIFF CMYK" 2 info cmyk.tif
+case_ "TIFF compression libtiff does not know" 2 info unknown_compression.tif
+case_ "TIFF whose every pixel is GDAL_NODATA" 2 generate -q -m erdgpi -i all_nodata.tif -o o.erd -n 4
+case_ "TIFF with an infinite sample" 2 generate -q -m gpi -i infinity.tif -o o.model -n 4
+case_ "TIFF GDAL_NODATA not a number" 2 info nodata_text.tif
+case_ "TIFF without the strips' offsets" 2 info no_width.tif
+printf 'Pf\n4 4\n-1.0\n' > short.pfm
+printf 'Pf\n2 1\n0\n\0\0\0\0\0\0\0\0' > scale0.pfm
+case_ "PFM truncated" 2 info short.pfm
+case_ "PFM scale 0" 2 info scale0.pfm
+"$BIN" synth -q --kind dem -W 96 -H 64 -o dem.tif
+case_ "float GeoTIFF with nodata: its valid region meshed" 0 generate -q --psnr-report -m erdgpi -i dem.tif -o dem.erd -d 5
+case_ "a real-valued image's model as .erdz" 2 generate -q -m gpi -i dem.tif -o o.erdz -n 300
+case_ "--optimize and --max-error on a real-valued image" 2 generate -q -m gpi -i dem.tif -o o.model -n 300 --optimize --max-error 5
+case_ "N below the outline of the valid region" 2 generate -q -m gpi -i dem.tif -o o.model -n 20
+case_ "--max-error that N cannot reach: a warning" 0 generate -q -m gpi -i dem.tif -o o.model -d 5 --max-error 0.01
+case_ "a real model reconstructed as PNG: a warning (16 bits of its range)" 0 reconstruct dem.erd -o dem.png
+case_ "synth --kind dem --type int8" 2 synth --kind dem -W 32 -H 32 --type int8 -o o.tif
+IN=dem.tif case_ "a GeoTIFF on stdin" 0 info -
+
+cat <<'EOF'
+
 ## Many files in one call (issues 19, 20)
 Every job's files are checked against every other job's, and the summary, before any job runs.
 | case | command | exit | message |

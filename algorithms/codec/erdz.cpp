@@ -72,6 +72,8 @@ Status check_model(const Model& m) {
         return Status::bad_input("the model's image size " + std::to_string(m.width) + " x " + std::to_string(m.height) +
                                  " is out of range");
     if (m.channels != 1 && m.channels != 3) return Status::bad_input("a model has 1 or 3 channels");
+    if (m.real || m.holes)
+        return Status::bad_input("a model of a real-valued image (or one with nodata) is not held by .erdz: write .erd or .model");
     if (m.maxval < 1 || m.maxval > 65535) return Status::bad_input("maxval out of range");
     const std::size_t C = std::size_t(m.channels);
     if (m.values.size() != m.vertices.size() * C) return Status::bad_input("the model has the wrong number of values");

@@ -1,6 +1,7 @@
 #include "algorithms/imaging/bilinear.h"
 
 #include <cmath>
+#include <cstddef>
 
 namespace erd {
 
@@ -43,6 +44,10 @@ double bilinear(const Grid<double>& im, double x, double y) {
 }
 
 double bilinear(const Image& im, double x, double y) {
+    if (im.real()) {
+        const std::size_t w = std::size_t(im.width);
+        return bilinear_of(im.width, im.height, [&im, w](int u, int v) { return im.reals[std::size_t(v) * w + std::size_t(u)]; }, x, y);
+    }
     return bilinear_of(im.width, im.height, [&im](int u, int v) { return double(im.at(u, v)); }, x, y);
 }
 
@@ -51,6 +56,10 @@ double bilinear_doubled(const Grid<double>& im, int X, int Y) {
 }
 
 double bilinear_doubled(const Image& im, int X, int Y) {
+    if (im.real()) {
+        const std::size_t w = std::size_t(im.width);
+        return bilinear_doubled_of([&im, w](int u, int v) { return im.reals[std::size_t(v) * w + std::size_t(u)]; }, X, Y);
+    }
     return bilinear_doubled_of([&im](int u, int v) { return double(im.at(u, v)); }, X, Y);
 }
 

@@ -10,7 +10,7 @@ namespace erd {
 // value. At integer coordinates the result equals the sample exactly. An empty grid gives 0.
 double bilinear(const Grid<double>& im, double x, double y);
 // The same on the integer samples (converted exactly, so the result is bit for bit that of the
-// Grid<double> copy of the image, without making the copy).
+// Grid<double> copy of the image, without making the copy); on a real image, on its real plane.
 double bilinear(const Image& im, double x, double y);
 
 // phi_bar at the lattice point (X, Y) in doubled coordinates (X = 2x), computed without rounding

@@ -3,11 +3,13 @@
 #include <algorithm>
 
 #include "algorithms/imaging/mmsodd.h"
+#include "algorithms/imaging/real_image.h"
 
 namespace erd {
 
 Image luma_of(const Image& im) {
     if (im.channels != 3) return im;
+    if (im.real()) return real_luma(im);
     Image g(im.width, im.height, im.maxval);
     for (std::size_t i = 0; i < g.samples.size(); ++i) {
         const std::uint16_t* s = &im.samples[3 * i];

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/imaging/real_image.h"
 
 namespace erd {
 
@@ -13,6 +14,7 @@ namespace erd {
 // returned unchanged.
 inline Image luma(const Image& im) {
     if (im.channels != 3) return im;
+    if (im.real()) return real_luma(im);
     Image g(im.width, im.height, im.maxval);
     const std::uint16_t* p = im.samples.data();
     for (std::size_t i = 0; i < g.samples.size(); ++i, p += 3)

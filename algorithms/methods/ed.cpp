@@ -10,6 +10,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     Status st = begin_method(image, options, result);
     if (!st) return st;
     const std::int64_t n = std::int64_t(result->requested);
+    const int w = image.width, h = image.height;
 
     // Step 1: sigma = (d / d_max)^1 with d the MMSODD after 3rd-order binomial smoothing,
     // zero extension at the borders (thesis 3.2.1).
@@ -23,9 +24,23 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     // Steps 2-3: error diffusion chooses the N - 4 non-corner points; the corners are forbidden
     // to it (their density still diffuses) and always added, so the total is N exactly whenever
     // the threshold search finds N - 4.
+    Grid<std::uint8_t> corners = ed_corners(w, h);
+    // Nodata (a real image's holes): never chosen, no density; the outline of the valid region is
+    // a constraint of the mesh, and its points count towards N.
+    Cdt cdt;
+    st = cdt.reset(2 * (w - 1), 2 * (h - 1));
+    if (!st) return st;
+    if (!(st = insert_valid_outline(image, &cdt, &result->stats, std::size_t(n)))) return st;
+    if (image.has_holes())
+        for (std::size_t i = 0; i < corners.size(); ++i)
+            if (!image.valid[i]) {
+                corners.data[i] = 1;
+                sigma.data[i] = 0.0;
+            }
     DiffusionResult chosen;
+    const std::size_t have = cdt.vertex_count();
     std::size_t adjusted = 0;
-    st = ed_choose(sigma, std::size_t(n - 4), options, &chosen, &adjusted);
+    st = ed_choose(sigma, std::size_t(n) - have, options, corners, &chosen, &adjusted);
     if (!st) return st;
     result->stats.has_diffusion = true;
     result->stats.diffusion.rho = chosen.rho;
@@ -35,10 +50,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     if (options.progress.report_cancelled("triangulation", 0.0)) return Status::failure(kCancelled);
 
     // Step 4: the Delaunay triangulation of the corners and the chosen points.
-    Cdt cdt;
-    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
-    if (!st) return st;
-    cdt.reserve(chosen.points.size() + 4);
+    cdt.reserve(chosen.points.size() + have);
     std::vector<VertInd> ids;
     st = cdt.insert_points(chosen.points, &ids);
     if (!st) return st;

@@ -16,9 +16,12 @@ namespace erd {
 // Step 1: the density (colour: the channels' MMSODDs combined as options.colour.density says).
 Grid<double> ed_sigma(const Image& image, const GenerateOptions& options);
 
-// Steps 2-3: `count` points into *chosen; *adjusted = the points the threshold adjustment moved
-// (0 when the search hit count).
-Status ed_choose(const Grid<double>& sigma, std::size_t count, const GenerateOptions& options, DiffusionResult* chosen,
-                 std::size_t* adjusted);
+// The pixels the diffusion must not choose: the four corners (1), the rest 0.
+Grid<std::uint8_t> ed_corners(int width, int height);
+
+// Steps 2-3: `count` points into *chosen, none where `forbidden` is nonzero; *adjusted = the
+// points the threshold adjustment moved (0 when the search hit count).
+Status ed_choose(const Grid<double>& sigma, std::size_t count, const GenerateOptions& options,
+                 const Grid<std::uint8_t>& forbidden, DiffusionResult* chosen, std::size_t* adjusted);
 
 }  // namespace erd

@@ -24,6 +24,10 @@ void ErdChannels::assign_all(const Cdt& cdt) {
     for (auto& m : models_) m->assign_all(cdt);
 }
 
+void ErdChannels::pin_pixel_vertices(const Cdt& cdt) {
+    for (auto& m : models_) m->pin_pixel_vertices(cdt);
+}
+
 void ErdChannels::fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats,
                       const ProgressHook& progress, const std::vector<std::vector<double>>* priors) {
     std::vector<const Image*> planes;

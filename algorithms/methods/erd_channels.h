@@ -34,6 +34,8 @@ public:
 
     void assign_vertex(const Cdt& cdt, VertInd v);
     void assign_all(const Cdt& cdt);
+    // ErdModel::pin_pixel_vertices for every channel (a real image).
+    void pin_pixel_vertices(const Cdt& cdt);
     // fit_wedge_values on every channel with options, each channel drawn towards and bounded
     // around its current (line-search) values; the stats add the channels' squared errors.
     // priors: channel c's values to draw towards and bound around instead of its current ones

@@ -1,12 +1,15 @@
 #include "algorithms/methods/erd_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <string>
 #include <unordered_set>
 
+#include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/edge_polylines.h"
+#include "algorithms/imaging/valid_region.h"
 
 namespace erd {
 
@@ -109,6 +112,36 @@ private:
 };
 
 std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
+
+// The polylines whose step across (InitialMeshOptions::min_step) is at least min_step: at the
+// midpoint of each segment, phi_bar at 1.5 and 3.5 pixels to either side of it, and the jump
+// between the two sides less what their slopes explain (a ramp has none, a cliff its height); the
+// median over the segments.
+constexpr double kCliffRatio = 3.0;  // slope across / slope beside
+
+std::vector<Polyline> strong_polylines(const std::vector<Polyline>& lines, const Image& image, double min_step) {
+    std::vector<Polyline> out;
+    std::vector<double> steps;
+    for (const Polyline& pl : lines) {
+        steps.clear();
+        for (std::size_t i = 0; i + 1 < pl.size(); ++i) {
+            const double ax = 0.5 * pl[i].x, ay = 0.5 * pl[i].y, bx = 0.5 * pl[i + 1].x, by = 0.5 * pl[i + 1].y;
+            const double dx = bx - ax, dy = by - ay, len = std::sqrt(dx * dx + dy * dy);
+            if (len <= 0) continue;
+            const double nx = -dy / len, ny = dx / len, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
+            const auto at = [&](double t) { return bilinear(image, mx + t * nx, my + t * ny); };
+            const double l1 = at(-1.5), l2 = at(-3.5), r1 = at(1.5), r2 = at(3.5);
+            const double slopes = 0.75 * ((r2 - r1) + (l1 - l2));  // 3 pixels at the sides' mean slope
+            // A cliff is also much steeper than its sides: a ramp's or a ridge's is not.
+            const double side = std::max(std::fabs(r2 - r1), std::fabs(l1 - l2)) / 2.0, across = std::fabs(r1 - l1) / 3.0;
+            steps.push_back(across >= kCliffRatio * side ? std::fabs((r1 - l1) - slopes) : 0.0);
+        }
+        if (steps.empty()) continue;
+        std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+        if (steps[steps.size() / 2] >= min_step) out.push_back(pl);
+    }
+    return out;
+}
 
 }  // namespace
 
@@ -218,12 +251,17 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     Status st = check_constraints(user, image.width, image.height);
     if (!st.ok()) return st;
     const std::size_t budget = options.target > 4 ? options.target - 4 : 0;
-    // The user's points, which every mesh keeps.
+    // The user's points and the valid region's outline, which every mesh keeps.
     std::unordered_set<std::uint64_t> seen;
     for (const Polyline& pl : user)
         for (LatticePoint p : pl) seen.insert(key_of(p));
+    static const std::vector<Polyline> kNoOutline;
+    const std::vector<Polyline>& outline = options.outline ? *options.outline : kNoOutline;
+    for (const Polyline& pl : outline)
+        for (LatticePoint p : pl) seen.insert(key_of(p));
     if (seen.size() > budget)
-        return Status::bad_input("constraints: " + std::to_string(seen.size()) + " distinct points, more than the " +
+        return Status::bad_input(std::string(outline.empty() ? "constraints" : "the outline of the valid region (nodata)") + ": " +
+                                 std::to_string(seen.size()) + " distinct points, more than the " +
                                  std::to_string(budget) + " the mesh of N = " + std::to_string(options.target) +
                                  " points has beside its corners");
 
@@ -238,6 +276,8 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
         if (progress.cancelled()) return Status::failure(kCancelled);
         out->edges = counter.edges();
         out->polylines = counter.kept().to_vector();
+        if (options.near_nodata) out->polylines = clip_polylines(out->polylines, *options.near_nodata, image.width);
+        if (options.min_step > 0) out->polylines = strong_polylines(out->polylines, image, options.min_step);
         out->plain_fallback = counter.fell_back();
         out->constraint_points = out->params.constrained_points;
     } else {
@@ -246,7 +286,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
         out->polylines.clear();
         out->constraint_points = 0;
     }
-    if (!user.empty()) {
+    if (!user.empty() || !outline.empty()) {
         for (const Polyline& pl : out->polylines)
             for (LatticePoint p : pl) seen.insert(key_of(p));
         out->constraint_points = seen.size();
@@ -264,6 +304,8 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
         std::vector<Polyline> kept;
         seen.clear();
         for (const Polyline& pl : user)
+            for (LatticePoint p : pl) seen.insert(key_of(p));
+        for (const Polyline& pl : outline)
             for (LatticePoint p : pl) seen.insert(key_of(p));
         std::vector<std::uint64_t> fresh;
         for (std::size_t i : order) {
@@ -285,6 +327,11 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     if (!st.ok()) return st;
     cdt->reserve(options.target + 4);
     out->dropped_crossing = 0;
+    if (!outline.empty()) {
+        // The outline first: nothing crosses it (a user segment across it is dropped there).
+        std::size_t none = 0;
+        if (!(st = insert_polylines(outline, cdt, &none, nullptr, true)).ok()) return st;
+    }
     if (!user.empty()) {
         // User segments first: a detected piece crossing one is the one dropped.
         // A crossing has no lattice point to split at, and keeping either segment would depend on

@@ -41,6 +41,15 @@ struct InitialMeshOptions {
     // User constraints (GenerateOptions::constraints; may be null) and whether to detect edges.
     const std::vector<Polyline>* constraints = nullptr;
     bool detect = true;
+    // An image with nodata (issue 47): the outline of its valid region, inserted first (before the
+    // user's constraints), and the pixels near nodata (algorithms/imaging/valid_region.h), where
+    // detected polylines are cut. Neither is in out->polylines. May be null.
+    const std::vector<Polyline>* outline = nullptr;
+    const std::vector<std::uint8_t>* near_nodata = nullptr;
+    // A real image meshed to --max-error E: detected polylines whose step (the median over their
+    // segments of the difference of the image 1.5 pixels to either side) is below this are left
+    // out, so that only cliffs that pay for their points become constraints. 0: all kept.
+    double min_step = 0.0;
     // Colour (issue 17): the colour image whose gradient soft-edge detection reads instead of the
     // image given (its luma), combined as colour_gradient says; null: the image given.
     const Image* colour = nullptr;

@@ -100,7 +100,9 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
 
     if (options.progress.report_cancelled("sample selection", 0.0)) return Status::failure(kCancelled);
     const std::size_t k = cdt.vertex_count() < std::size_t(n) ? std::size_t(n) - cdt.vertex_count() : 0;
-    const Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
+    Grid<std::uint8_t> occupied = occupied_pixels(cdt, image.width, image.height);
+    if (image.has_holes())  // nodata pixels are never chosen
+        for (std::size_t i = 0; i < occupied.size(); ++i) occupied.data[i] |= std::uint8_t(image.valid[i] == 0);
     std::vector<LatticePoint> pts;
     const WedgeValueOptions wo = wedge_options(options);
     if (k > 0 && options.ed_select == 0) {

@@ -12,13 +12,6 @@
 
 namespace erd {
 
-Status ErdGreedyModel::on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>*) {
-    // Every face around v is new, and no other vertex's wedges changed (a split keeps the wedge
-    // ids of the edge's end points), so nothing else is dirty.
-    model_.assign_vertex(cdt, v);
-    return Status::success();
-}
-
 namespace {
 
 // ERDGPI on a colour image, from the initial mesh (step 1, on the luma plane): the greedy loop
@@ -85,6 +78,9 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
 
     ErdGreedyModel greedy(model);
     GreedyOptions go = greedy_options(options, std::size_t(n));
+    // A real image with --max-error: a looser bound first, the minimax fit and the last
+    // insertions reach E (finish_erd_method).
+    if (image.real() && options.max_error >= 0 && options.minimax_rounds > 0) go.max_error = options.max_error * options.max_slack;
     // Real-valued errors: the ERD model is judged by its supersampled reconstruction, which
     // rounding the point evaluation does not model (DECISIONS.md: +0.85 dB on bull at 0.125%).
     go.round_values = false;
@@ -165,6 +161,7 @@ Status erdgpi_once(const Image& image, const GenerateOptions& options, bool hard
 }
 
 Status erdgpr_once(const Image& image, const GenerateOptions& options, bool hard_fallback, GenerateResult* result) {
+    if (Status st = removal_accepts(image, "erdgpr"); !st) return st;
     Status st = erdgpi_run(image, options, hard_fallback, options.oversample > 0 ? options.oversample : kErdgprOversample,
                            result);
     // Vertices that insertion put on constrained edges cannot be removed: when they alone exceed

@@ -8,24 +8,12 @@
 // keeps the per-face sums additive. A candidate on a constrained edge splits it (kernel) and the
 // new vertex's two wedges get values by the line search; other vertices keep theirs.
 #pragma once
-#include "algorithms/model/erd_model.h"
-#include "algorithms/methods/greedy.h"
+#include "algorithms/methods/greedy_models.h"
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/options.h"
 #include "kernel/status.h"
 
 namespace erd {
-
-// The ERD model as seen by the greedy loop.
-class ErdGreedyModel : public GreedyModel {
-public:
-    explicit ErdGreedyModel(ErdModel& model) : model_(model) {}
-    SpanPlane face_plane(const Cdt& cdt, FaceInd f) const override { return model_.face_plane(cdt, f); }
-    Status on_vertex_inserted(const Cdt& cdt, VertInd v, std::vector<FaceInd>* dirty) override;
-
-private:
-    ErdModel& model_;
-};
 
 // Registry entry "erdgpi" (algorithms/methods/methods.h contract). Stops at N vertices, or earlier by
 // --max-error / --psnr, or when no pixel has nonzero error.

@@ -26,7 +26,9 @@ public:
 
     double operator()(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2,
                       const double* z2, double base = 0.0, double stop = std::numeric_limits<double>::infinity()) const {
-        return planes_.size() == 1 ? walk<1>(p0, z0, p1, z1, p2, z2, base, stop) : walk<3>(p0, z0, p1, z1, p2, z2, base, stop);
+        if (planes_[0]->real())
+            return planes_.size() == 1 ? walk<1, true>(p0, z0, p1, z1, p2, z2, base, stop) : walk<3, true>(p0, z0, p1, z1, p2, z2, base, stop);
+        return planes_.size() == 1 ? walk<1, false>(p0, z0, p1, z1, p2, z2, base, stop) : walk<3, false>(p0, z0, p1, z1, p2, z2, base, stop);
     }
     double operator()(LatticePoint p0, double z0, LatticePoint p1, double z1, LatticePoint p2, double z2) const {
         return (*this)(p0, &z0, p1, &z1, p2, &z2);
@@ -36,8 +38,9 @@ private:
     // The rows walked once for all C channels (1 or 3: the planes a model has), each channel's sum in its
     // own pixel order, added as (c0 + c1) + c2; a sum stopped early (after the first row where
     // base + sum >= stop) stops the walk too. A stopped sum is at least `stop`, as the whole one
-    // is; an accepted flip has whole sums.
-    template <std::size_t C>
+    // is; an accepted flip has whole sums. Real: the planes' real values, the pixels without data
+    // left out (issue 47).
+    template <std::size_t C, bool Real>
     double walk(LatticePoint p0, const double* z0, LatticePoint p1, const double* z1, LatticePoint p2, const double* z2,
                 double base, double stop) const {
         SpanPlane plane[C];
@@ -54,11 +57,20 @@ private:
         };
         for_each_owned_row(Lattice::pixels(), domain_, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
             for (std::size_t c = 0; c < C; ++c) {
-                const std::uint16_t* px = planes_[c]->samples.data() + std::size_t(j) * width;
                 double v = plane[c].at(double(2 * lo), double(2 * j)), e = sse[c];
-                for (std::int32_t i = lo; i <= hi; ++i, v += dv[c]) {
-                    const double d = v - double(px[i]);
-                    e += d * d;
+                if constexpr (Real) {
+                    const double* px = planes_[c]->reals.data() + std::size_t(j) * width;
+                    const std::uint8_t* ok = planes_[c]->valid.empty() ? nullptr : planes_[c]->valid.data() + std::size_t(j) * width;
+                    for (std::int32_t i = lo; i <= hi; ++i, v += dv[c]) {
+                        const double d = v - px[i];
+                        if (!ok || ok[i]) e += d * d;
+                    }
+                } else {
+                    const std::uint16_t* px = planes_[c]->samples.data() + std::size_t(j) * width;
+                    for (std::int32_t i = lo; i <= hi; ++i, v += dv[c]) {
+                        const double d = v - double(px[i]);
+                        e += d * d;
+                    }
                 }
                 sse[c] = e;
             }

@@ -37,6 +37,7 @@ Status remove_to_n(Cdt* cdt, const Image& image, const GenerateOptions& options,
 Status generate_gpr(const Image& image, const GenerateOptions& options, GenerateResult* result) {
     Status st = begin_method(image, options, result);
     if (!st) return st;
+    if (!(st = removal_accepts(image, "gpr"))) return st;
     StageTimer timer(result);
     Cdt cdt;
     st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
@@ -56,6 +57,7 @@ Status generate_gpr(const Image& image, const GenerateOptions& options, Generate
 Status generate_gprfs(const Image& image, const GenerateOptions& options, GenerateResult* result) {
     Status st = begin_method(image, options, result);
     if (!st) return st;
+    if (!(st = removal_accepts(image, "gprfs"))) return st;
     StageTimer timer(result);
     const double k = options.oversample > 0 ? options.oversample : kGprfsOversample;
     const std::size_t start = std::min(image.pixels(), std::size_t(double(result->requested) * k + 0.5));
@@ -69,7 +71,8 @@ Status generate_gprfs(const Image& image, const GenerateOptions& options, Genera
     } else {
         DiffusionResult chosen;
         std::size_t adjusted = 0;
-        st = ed_choose(ed_sigma(image, options), start - 4, options, &chosen, &adjusted);
+        st = ed_choose(ed_sigma(image, options), start - 4, options, ed_corners(image.width, image.height), &chosen,
+                       &adjusted);
         if (!st) return st;
         pts = std::move(chosen.points);
     }
@@ -84,6 +87,7 @@ Status generate_gprfs(const Image& image, const GenerateOptions& options, Genera
 Status generate_id(const Image& image, const GenerateOptions& options, GenerateResult* result) {
     Status st = begin_method(image, options, result);
     if (!st) return st;
+    if (!(st = removal_accepts(image, "id"))) return st;
     StageTimer timer(result);
     const std::size_t n = result->requested;
     Cdt cdt;

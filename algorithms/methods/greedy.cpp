@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "algorithms/imaging/real_image.h"
 #include "algorithms/methods/greedy_refiner.h"
 
 namespace erd {
@@ -26,10 +27,21 @@ GreedyRefiner::GreedyRefiner(Cdt& cdt, const Image& image, GreedyModel& model, c
     : cdt_(cdt), image_(image), model_(model), options_(options),
       banned_(std::size_t(image.width) * std::size_t(image.height), 0),
       domain_{cdt.max_x(), cdt.max_y()}, channels_(image.channels) {
-    peak_ = std::pow(2.0, image.bits()) - 1.0;
-    if (!options.round_values)
+    if (image.real()) {
+        // The data's units: the PSNR peak is the valid range, every pixel without data is banned
+        // (never a candidate) and left out of every sum (rescan_real).
+        real_ = true;
+        peak_ = image.hi > image.lo ? image.hi - image.lo : 1.0;
+        pixels_ = double(valid_pixels(image));
+        for (std::size_t i = 0; i < image.valid.size(); ++i) banned_[i] = image.valid[i] ? 0 : 1;
+    } else {
+        peak_ = std::pow(2.0, image.bits()) - 1.0;
+        pixels_ = double(image.width) * double(image.height);
+    }
+    if (!options.round_values && !image.real())
         for (std::uint32_t s = 0; s <= image.maxval; ++s) as_double_.push_back(double(s));
     track_max_ = options.max_error >= 0.0;
+    max_first_ = track_max_ && options.max_error_first;
     if (options.supersampled) {
         const std::size_t w = std::size_t(image.width), h = std::size_t(image.height);
         sub_.assign(16 * w * h, 0.0f);
@@ -54,7 +66,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         touched_.clear();
     }
-    for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) rescan(f);
+    for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
 
     GreedyStop stop;
     std::vector<FaceInd> dirty;
@@ -71,12 +83,12 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (options_.max_triangles && cdt_.face_count() >= options_.max_triangles) { stop = GreedyStop::triangles; break; }
         if (by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
 
-        const FaceInd f = by_sum_.top();
+        const FaceInd f = max_first_ ? by_max_.top() : by_sum_.top();
         const LatticePoint p = faces_[f].cand;
         if (!model_.admissible(cdt_, p)) {
             ban(p);
             ++stats->banned;
-            rescan(f);
+            scan(f);
             continue;
         }
         const std::size_t before = cdt_.vertex_count();
@@ -85,7 +97,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (!st) return st;
         ban(p);
         if (cdt_.vertex_count() == before) {  // already a vertex: cannot happen with p banned
-            rescan(f);
+            scan(f);
             continue;
         }
         ++stats->insertions;
@@ -97,17 +109,17 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (options_.supersampled) {
             touched_.clear();
             for (FaceInd c : cdt_.changes().created) paint(c);
-            for (FaceInd c : cdt_.changes().created) rescan(c);
+            for (FaceInd c : cdt_.changes().created) scan(c);
             for (const Span& t : touched_)
                 for (std::int32_t x = t.x_begin; x <= t.x_end; ++x) {
                     const FaceInd o = owner_[std::size_t(t.y) * std::size_t(image_.width) + std::size_t(x)];
-                    if (stamp_[o] != generation_) rescan(o);
+                    if (stamp_[o] != generation_) scan(o);
                 }
         } else {
-            for (FaceInd c : cdt_.changes().created) rescan(c);
+            for (FaceInd c : cdt_.changes().created) scan(c);
         }
         for (FaceInd d : dirty)
-            if (d < faces_.size() && stamp_[d] != generation_) rescan(d);
+            if (d < faces_.size() && stamp_[d] != generation_) scan(d);
     }
     stats->stop = stop;
     stats->total_squared_error = total_;
@@ -124,13 +136,17 @@ Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const Gre
         return Status::failure("greedy_refine: triangulation and image sizes differ");
     if (model.channels() != image.channels || (image.channels != 1 && image.channels != GreedyRefiner::kMaxChannels))
         return Status::failure("greedy_refine: the model's and the image's channel counts differ");
-    if (image.channels == 1) {
+    if (image.channels == 1 && !image.real()) {
         GreedyRefiner r(cdt, image, model, options);
         return r.run(stats);
     }
-    GreedyOptions colour = options;
-    colour.supersampled = false;  // the colour scan evaluates points
-    GreedyRefiner r(cdt, image, model, colour);
+    GreedyOptions other = options;
+    other.supersampled = false;  // the colour and the real scans evaluate points
+    if (image.real()) {
+        other.round_values = false;  // a real image's values are not rounded
+        other.max_error_first = true;
+    }
+    GreedyRefiner r(cdt, image, model, other);
     return r.run(stats);
 }
 

@@ -120,6 +120,10 @@ struct GreedyOptions {
     // Colour images: the candidate is the pixel with the largest single channel error instead
     // of the largest sum of squared channel errors (ColourChoices::max_channel_error).
     bool max_channel_error = false;
+    // With max_error: each step takes the face of the largest error (the candidate's), not of the
+    // largest sum (the rule of hmm and Garland-Heckbert's max-error greedy): fewer points for the
+    // same bound. The methods set it for real images (docs/DECISIONS.md "Rasters").
+    bool max_error_first = false;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
 };

@@ -62,7 +62,7 @@ ErdMemoryBasis erd_memory_basis(const Image& gray, const GenerateOptions& o, std
     ErdMemoryBasis b;
     const EdgeKindStats ek = o.edges == EdgeChoice::automatic ? measure_edge_kind(gray) : EdgeKindStats();
     b.hard = o.edges == EdgeChoice::hard || (o.edges == EdgeChoice::automatic && ek.is_hard());
-    b.stepped = o.edges == EdgeChoice::automatic && ek.is_stepped();
+    b.stepped = o.edges == EdgeChoice::automatic && ek.is_stepped() && !gray.real();  // as begin_erd_method
     if (b.hard && !b.stepped) return b;
     // The detections select_erd_params (erd_params.cpp) makes: the simple test at 0.055 unless
     // -S is given, then the table's beta (or 0.03 for a simple image, or -b), then smaller ones
@@ -125,7 +125,17 @@ std::size_t memory_estimate(const MethodInfo& method, const Image& image, const 
     }
     const double bytes = std::max(65536.0, f->fixed - kProcess + f->per_pixel * pixels + f->per_point * n + f->per_kept * kept +
                                                (c - 1.0) * (f->per_pixel_channel * pixels + f->per_point_channel * n));
-    return std::min(std::size_t(bytes), memory_bound(method, image.width, image.height, image.channels, options));
+    const std::size_t fitted = std::min(std::size_t(bytes), memory_bound(method, image.width, image.height, image.channels, options));
+    // A real image (issue 47; not in the fits): its plane of doubles beside the proxy (the image
+    // itself is the caller's), a channel plane's copy of it for colour ERD, and for --max-error
+    // the reconstruction that measures the model (doubles, mask, proxy).
+    double real = 0;
+    if (image.real()) {
+        if (method.model == ModelKind::erd && image.channels > 1) real += pixels * c * 10.0;
+        if (options.max_error >= 0) real += pixels * (c * 10.0 + 1.0);
+        if (image.has_holes()) real += pixels * 2.0;  // the outline's and the ERD clip's masks
+    }
+    return fitted + std::size_t(real);
 }
 
 }  // namespace erd

@@ -81,7 +81,12 @@ void optimize_basic_model(Cdt* cdt, const Image& image, const GenerateOptions& g
         fit_wedge_values(*cdt, image, wedge_fit_options(options), &erd, stats, &samples, {}, &systems);
     if (options.flips) optimize_by_flips(cdt, image, options, &erd, &samples, stats, &systems);
     *model = basic_model(*cdt, image);
-    for (VertInd v = 0; v < model->vertices.size(); ++v) model->values[v] = erd.vertex_value(v);
+    for (VertInd v = 0; v < model->vertices.size(); ++v) {
+        // The outline of a real image's valid region is constrained, so its points have a wedge
+        // over nodata too: they keep their basic values (lattice_value).
+        const LatticePoint p = model->vertices[v];
+        if (!image.has_holes() || (p.x % 2 == 0 && p.y % 2 == 0)) model->values[v] = erd.vertex_value(v);
+    }
 }
 
 }  // namespace erd

@@ -49,6 +49,14 @@ struct GenerateOptions {
 
     // Extra stop rules of the greedy methods (GPI, ERDGPI); whichever holds first.
     double max_error = -1.0;     // --max-error: largest abs error <= E; negative: off
+    // Real images with --max-error (issue 47, ERD methods): the greedy stops at max_slack * E, the
+    // values are fitted towards the smallest largest error (minimax_fit.h, this many rounds), and
+    // insertion goes on to E. 0 rounds: the greedy goes to E and no such fit.
+    double max_slack = 1.6;
+    int minimax_rounds = 2;
+    // ... and step 1 keeps the detected polylines whose step across is at least this many E
+    // (erd_mesh.h InitialMeshOptions::min_step).
+    double min_step_factor = 4.0;
     double psnr = 0.0;           // --psnr: whole-image PSNR >= P dB; <= 0: off
     std::int64_t triangles = 0;  // --triangles: the mesh has >= T triangles; 0: off
     bool round_values = true;    // greedy: errors against the rounded approximation (DECISIONS.md)

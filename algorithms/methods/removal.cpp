@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "kernel/predicates.h"
@@ -332,6 +333,11 @@ void PointRemover::least_significant(std::size_t count, std::vector<VertInd>* ou
         heap_.remove(v);
     }
     for (const auto& t : taken) heap_.set(t.first, t.second, tie_of(cdt_.point(t.first)));
+}
+
+Status removal_accepts(const Image& image, const char* method) {
+    if (!image.real()) return Status::success();
+    return Status::bad_input(std::string(method) + ": real-valued rasters are not supported by the removal methods (use gpi or erdgpi)");
 }
 
 std::vector<LatticePoint> live_points(const Cdt& cdt) {

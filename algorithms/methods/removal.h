@@ -174,6 +174,10 @@ private:
     std::size_t cache_used_ = 0;
 };
 
+// The removal methods (GPR, GPRFS, ID, ERDGPR) work on integer samples: a real-valued raster
+// (issue 47) is refused with Code::input naming the method and the ones that take it.
+Status removal_accepts(const Image& image, const char* method);
+
 // Live points of cdt other than the four corners, in vertex order.
 std::vector<LatticePoint> live_points(const Cdt& cdt);
 

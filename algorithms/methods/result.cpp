@@ -74,6 +74,15 @@ std::vector<std::string> result_lines(const RunStats& r) {
                           std::to_string(r.removal.bpr_moves) + " of " + std::to_string(r.removal.bpr_tried) +
                           " exchanges kept");
     }
+    if (r.has_raster) {
+        const RasterStats& s = r.raster;
+        if (s.outline_points || s.dropped_faces)
+            out.push_back("nodata: outline of " + std::to_string(s.outline_points) + " points, " + std::to_string(s.dropped_faces) +
+                          " faces and " + std::to_string(s.dropped_vertices) + " vertices over nodata dropped");
+        if (s.max_error >= 0)
+            out.push_back("max error over valid pixels: " + real("%.6g", s.max_error) + " (after " +
+                          std::to_string(s.fixup_insertions) + " insertions of the last greedy pass)");
+    }
     return out;
 }
 

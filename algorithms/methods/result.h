@@ -89,6 +89,16 @@ struct RemovalRunStats {
     std::size_t bpr_tried = 0;    // exchanges tried
 };
 
+// A real image (issue 47): its valid region and the max-error guarantee.
+struct RasterStats {
+    std::size_t outline_points = 0;  // vertices of the valid region's outline (nodata images)
+    std::size_t dropped_faces = 0;   // faces over nodata dropped from the model
+    std::size_t dropped_vertices = 0;  // vertices only those faces had (corners in nodata)
+    std::size_t fixup_insertions = 0;  // --max-error: points the last greedy pass inserted
+    double max_error = -1.0;           // --max-error: the model's largest error over the valid
+                                       // pixels, measured on its reconstruction (< 0: not measured)
+};
+
 // Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.
 struct StageTime {
     std::string name;
@@ -107,13 +117,16 @@ struct RunStats {
     WedgeFitStats wedge_fit;
     bool has_removal = false;  // GPR, GPRFS, ERDGPR, --bpr
     RemovalRunStats removal;
+    bool has_raster = false;  // a real image
+    RasterStats raster;
 };
 
 struct GenerateResult {
     Model model;                                          // the mesh (basic or erd)
     std::vector<std::vector<LatticePoint>> polylines;     // ERD step 1 output, for -p (empty for ED/GPI)
     std::size_t requested = 0;                            // N asked for
-    std::size_t achieved = 0;                             // vertices in the model
+    std::size_t achieved = 0;                             // vertices in the model (with nodata: in the
+                                                          // mesh before the faces over it were dropped)
     std::vector<StageTime> stages;                        // in order
     RunStats stats;
 };

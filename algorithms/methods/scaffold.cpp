@@ -1,5 +1,6 @@
 #include "algorithms/methods/scaffold.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -11,7 +12,12 @@
 #include "algorithms/methods/bpr.h"
 #include "algorithms/methods/erd_removal.h"
 #include "algorithms/imaging/edge_kind.h"
+#include "algorithms/imaging/real_image.h"
+#include "algorithms/imaging/valid_region.h"
+#include "algorithms/methods/greedy_models.h"
+#include "algorithms/methods/minimax_fit.h"
 #include "algorithms/model/edge_kinds.h"
+#include "algorithms/model/model_holes.h"
 #include "algorithms/methods/optimize.h"
 #include "algorithms/methods/wedge_fit.h"
 #include "algorithms/model/metrics.h"
@@ -87,16 +93,86 @@ Model basic_model(const Cdt& cdt, const Image& image) {
     m.vertices = cdt.points();
     m.values.reserve(m.vertices.size() * std::size_t(image.channels));
     for (LatticePoint p : m.vertices)
-        for (int c = 0; c < image.channels; ++c) m.values.push_back(double(image.at(p.x / 2, p.y / 2, c)));
+        for (int c = 0; c < image.channels; ++c)
+            m.values.push_back(image.real() ? lattice_value(image, p, c) : double(image.at(p.x / 2, p.y / 2, c)));
     std::vector<std::array<VertInd, 3>> faces;
     cdt.export_faces(&faces);
     m.faces.assign(faces.begin(), faces.end());
     return m;
 }
 
+namespace {
+
+std::size_t distinct_points_of(const std::vector<Polyline>& lines) {
+    std::vector<std::uint64_t> keys;
+    for (const Polyline& pl : lines)
+        for (LatticePoint p : pl) keys.push_back((std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x));
+    std::sort(keys.begin(), keys.end());
+    return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+}  // namespace
+
+Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats, std::size_t target) {
+    if (!image.has_holes()) return Status::success();
+    const std::vector<Polyline> outline = valid_outline(image.valid, image.width, image.height);
+    std::size_t dropped = 0;
+    if (Status st = insert_polylines(outline, cdt, &dropped, true); !st) return st;
+    stats->has_raster = true;
+    stats->raster.outline_points = cdt->vertex_count() - 4;
+    if (target < cdt->vertex_count())
+        return Status::bad_input("target of " + std::to_string(target) + " points is below the " + std::to_string(cdt->vertex_count()) +
+                                 " of the corners and the outline of the valid region (nodata)");
+    return Status::success();
+}
+
+void finish_raster_model(const Image& image, Model* m, RunStats* stats) {
+    m->meta = image.meta;
+    if (!image.real()) return;
+    m->real = true;
+    m->holes = image.has_holes();
+    m->maxval = 0;
+    m->lo = image.lo;
+    m->hi = image.hi;
+    const DroppedFaces d = drop_faces_over_nodata(image.valid, m);
+    if (stats) {
+        stats->has_raster = true;
+        stats->raster.dropped_faces = d.faces;
+        stats->raster.dropped_vertices = d.vertices;
+    }
+}
+
+namespace {
+
+// --max-error on a real image is a bound on the model given back: after the method's own stages
+// (which may move values: a refit, flips, --optimize's fit) greedy insertion goes on, on the
+// model's current values, until the largest error over the valid pixels is at most E. N caps it
+// for the greedy methods (as their other stop rules); ED and ERDED choose N points first, and the
+// bound then wins over N (the exact-count rule, -x, reports the points beyond).
+Status max_error_fixup(Cdt& cdt, const Image& image, const GenerateOptions& options, GreedyModel& model,
+                       GenerateResult* result) {
+    if (!image.real() || options.max_error < 0) return Status::success();
+    GreedyStats gs;
+    const std::size_t cap = result->stats.has_greedy ? result->requested : image.pixels() + cdt.vertex_count();
+    const Status st = greedy_refine(cdt, image, model, greedy_options(options, cap), &gs);
+    result->stats.has_raster = true;
+    result->stats.raster.fixup_insertions = gs.insertions;
+    return st;
+}
+
+// The largest error over the valid pixels of model m of the real image (its reconstruction).
+void measure_max_error(const Image& image, const Model& m, const GenerateOptions& options, GenerateResult* result) {
+    if (!image.real() || options.max_error < 0) return;
+    Image rec;
+    double e = -1.0;
+    if (reconstruct(m, false, &rec, {}, options.threads) && max_abs_error(image, rec, &e)) result->stats.raster.max_error = e;
+}
+
+}  // namespace
+
 Status finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
-                         GenerateResult* result) {
-    if (options.bpr > 0) {
+                           GenerateResult* result) {
+    if (options.bpr > 0 && !image.real()) {  // --bpr: not on real images (issue 47)
         SampleRemovalModel samples(image);
         result->stats.has_removal = true;
         Status st = bad_point_replacement(&cdt, image, samples, options.round_values, options.bpr, options.progress,
@@ -107,14 +183,21 @@ Status finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& 
         cdt = std::move(compact);
         timer->lap("bad-point replacement");
     }
+    if (image.real() && options.max_error >= 0 && !options.optimize) {
+        BasicGreedyModel greedy(image);
+        if (Status st = max_error_fixup(cdt, image, options, greedy, result); !st) result->stats.raster.fixup_insertions = 0;
+    }
     result->model = basic_model(cdt, image);
     result->achieved = result->model.size();
+    finish_raster_model(image, &result->model, &result->stats);
     timer->lap("model");
     if (options.optimize) {
         optimize_basic_model(&cdt, image, options, &result->model, &result->stats.wedge_fit);
+        finish_raster_model(image, &result->model, nullptr);
         result->stats.has_wedge_fit = true;
         timer->lap("optimize");
     }
+    measure_max_error(image, result->model, options, result);
     return Status::success();
 }
 
@@ -162,7 +245,9 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         s.clean_steps = ek.clean;
         s.all_steps = ek.steps;
         s.hard_edges = ek.is_hard();
-        s.stepped = ek.is_stepped();
+        // A real model is point-evaluated everywhere (reconstruct.h): the kinds of its edges change
+        // nothing, so a real image tries no second treatment (try_edge_treatments).
+        s.stepped = ek.is_stepped() && !image.real();
     } else {
         s.hard_edges = options.edges == EdgeChoice::hard;
     }
@@ -177,6 +262,16 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.hard_fallback = hard_fallback;
     mo.constraints = &options.constraints;
     mo.detect = options.detect;
+    // Nodata: the valid region's outline first, detected edges kept two pixels away from the holes.
+    std::vector<Polyline> outline;
+    std::vector<std::uint8_t> near;
+    if (image.has_holes()) {
+        outline = valid_outline(image.valid, image.width, image.height);
+        near = near_nodata(image.valid, image.width, image.height, 2);
+        mo.outline = &outline;
+        mo.near_nodata = &near;
+    }
+    if (image.real() && options.max_error >= 0) mo.min_step = options.min_step_factor * options.max_error;
     if (image.channels > 1 && options.colour.edges != ColourGradient::luma) {
         mo.colour = &image;
         mo.colour_gradient = options.colour.edges;
@@ -184,6 +279,10 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.progress = options.progress;
     st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
+    if (image.has_holes()) {
+        result->stats.has_raster = true;
+        result->stats.raster.outline_points = distinct_points_of(outline);
+    }
     s.plain_fallback = mesh->plain_fallback;
     timer.lap("initial mesh");
     return Status::success();
@@ -218,6 +317,8 @@ void finish_erd_stats(InitialMesh* mesh, const ErdModel* model, StageTimer* time
     s.alpha_first = model->stats().alpha_first;
     s.alpha_last = model->stats().alpha_last;
     result->polylines = std::move(mesh->polylines);
+    // Vertices over nodata dropped from the model still count: N is the mesh's before the drop.
+    result->achieved += result->stats.raster.dropped_vertices;
     timer->lap("model");
 }
 
@@ -235,7 +336,7 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
                        ErdModel* model, StageTimer* timer, GenerateResult* result,
                        const std::vector<double>* line_search_values) {
     std::unique_ptr<ErdModel> fresh;
-    if (options.bpr > 0) {
+    if (options.bpr > 0 && !image.real()) {
         ErdRemovalModel values(*model);
         result->stats.has_removal = true;
         Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress,
@@ -250,6 +351,9 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         line_search_values = nullptr;
         timer->lap("bad-point replacement");
     }
+    // A real image: the values pinned to the vertices' pixels after each change (ErdModel::
+    // pin_pixel_vertices), no guard (its models are not rounded), then the max-error pass.
+    const bool real = image.real();
     if (options.wedge_fit > 0) {
         std::vector<double> kept;  // the line-search values, for the refit after the flips
         if (options.flips && !line_search_values) {
@@ -259,34 +363,50 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         MeshSystems systems;  // the flips and the refits after them start from the first refit's
         fit_wedge_values(cdt, image, wedge_fit_options(options), model, &result->stats.wedge_fit,
                          line_search_values, options.progress, options.flips ? &systems : nullptr);
+        model->pin_pixel_vertices(cdt);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
         if (options.flips) {
             // Hard edges are reconstructed by rounded point evaluation, and near-lossless
             // pictures (above 65 dB) can lose by flips that lower the real-valued error: keep
             // the flipped model only when its reconstruction is at least as good.
-            const bool guard = result->model.edges == EdgeKind::hard;
+            const bool guard = result->model.edges == EdgeKind::hard && !real;
             Model before;
             if (guard) {
                 before = result->model;  // keeps the fields to_model leaves alone (edges)
                 model->to_model(cdt, image.width, image.height, image.maxval, &before);
             }
             optimize_by_flips(&cdt, image, options, model, line_search_values, &result->stats.wedge_fit, &systems);
-            model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+            model->pin_pixel_vertices(cdt);
+            if (!real) model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
             if (guard) result->stats.erd.plain_psnr = keep_better(image, &before, &result->model, options.threads);
             timer->lap("flips");
         }
     }
-    if (!(options.wedge_fit > 0 && options.flips))
+    if (real) {
+        if (options.max_error >= 0) {
+            // The values towards the smallest largest error; the vertices' own pixels kept
+            // within the bound (the refits moved them too), the rest of the bound enforced by the
+            // insertions below.
+            if (options.minimax_rounds > 0) fit_minimax(cdt, image, model, options.minimax_rounds, options.progress);
+            model->pin_pixel_vertices(cdt, options.max_error);
+            timer->lap("minimax fit");
+        }
+        ErdGreedyModel greedy(*model);
+        if (Status st = max_error_fixup(cdt, image, options, greedy, result); !st) result->stats.raster.fixup_insertions = 0;
+    }
+    if (!(options.wedge_fit > 0 && options.flips) || real)
         model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    finish_raster_model(image, &result->model, &result->stats);
     finish_erd_stats(mesh, model, timer, result);
+    measure_max_error(image, result->model, options, result);
     return Status::success();
 }
 
 Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
     std::unique_ptr<ErdChannels> fresh;
-    if (options.bpr > 0) {
+    if (options.bpr > 0 && !image.real()) {
         ErdChannelsRemovalModel values(*model);
         result->stats.has_removal = true;
         Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress,
@@ -301,29 +421,38 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         model = fresh.get();
         timer->lap("bad-point replacement");
     }
+    const bool real = image.real();  // as gray's
     if (options.wedge_fit > 0) {
         // As gray's refit (prior and support bounds per channel), then its flips.
         std::vector<std::vector<double>> line_search;
         if (options.flips) line_search = model->values();
         model->fit(cdt, wedge_fit_options(options), &result->stats.wedge_fit, options.progress);
+        model->pin_pixel_vertices(cdt);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
         if (options.flips) {
-            const bool guard = result->model.edges == EdgeKind::hard;  // as gray's
+            const bool guard = result->model.edges == EdgeKind::hard && !real;  // as gray's
             Model before;
             if (guard) {
                 before = result->model;
                 model->to_model(cdt, image.width, image.height, image.maxval, &before);
             }
             optimize_by_flips(&cdt, options, model, &line_search, &result->stats.wedge_fit);
-            model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+            model->pin_pixel_vertices(cdt);
+            if (!real) model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
             if (guard) result->stats.erd.plain_psnr = keep_better(image, &before, &result->model, options.threads);
             timer->lap("flips");
         }
     }
-    if (!(options.wedge_fit > 0 && options.flips))
+    if (real) {
+        ColourErdGreedyModel greedy(*model);
+        if (Status st = max_error_fixup(cdt, image, options, greedy, result); !st) result->stats.raster.fixup_insertions = 0;
+    }
+    if (!(options.wedge_fit > 0 && options.flips) || real)
         model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
+    finish_raster_model(image, &result->model, &result->stats);
     finish_erd_stats(mesh, &model->channel(0), timer, result);
+    measure_max_error(image, result->model, options, result);
     return Status::success();
 }
 

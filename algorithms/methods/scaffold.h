@@ -40,11 +40,26 @@ private:
 // and N (check_target) and records N in result->requested.
 Status begin_method(const Image& image, const GenerateOptions& options, GenerateResult* result);
 
-// The basic model of a triangulation whose vertices are pixels: vertex values are the samples.
+// The basic model of a triangulation whose vertices are pixels: vertex values are the samples (a
+// real image's: lattice_value, also at the outline's half-pixel points).
 Model basic_model(const Cdt& cdt, const Image& image);
+
+// An image with nodata (issue 47): the outline of its valid region (algorithms/imaging/
+// valid_region.h) inserted into cdt (just reset) as constraints, before anything else, so that no
+// face crosses it; counted in stats->raster. Does nothing for an image without nodata. Fails
+// (Code::input) when the corners and the outline are more than `target` points.
+Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats, std::size_t target);
+
+// Gives *m (a model of image made on the whole rectangle) the image's raster facts: its meta
+// (type, nodata, georeferencing) and, for a real image, real values with the image's range and
+// no maxval, the faces over nodata dropped (counted in stats->raster when stats is given).
+void finish_raster_model(const Image& image, Model* m, RunStats* stats);
 
 // The end of ED and GPI: the basic model of cdt into result (model, achieved), timed as "model";
 // with options.optimize, then the least-squares values and flips (optimize.h), timed as "optimize".
+// A real image with --max-error: greedy insertion first goes on until the largest error over the
+// valid pixels is at most E (the bound holds for the model given back; not with --optimize, which
+// the CLI refuses there), and the model's largest error is measured into stats.raster.
 // With options.bpr, bad-point replacement (bpr.h) on cdt first, timed as "bad-point replacement";
 // its failure (cancel, kernel) is returned.
 Status finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
@@ -81,8 +96,8 @@ using ErdRun = Status (*)(const Image& image, const GenerateOptions& options, bo
 // Under --edges auto, an image measured stepped (algorithms/imaging/edge_kind.h) is then
 // also meshed with the other treatments of its edges (soft detection, hard edges, no detected
 // edges), each model's edge kinds chosen by fit (algorithms/model/edge_kinds.h), and the model
-// whose own reconstruction has the highest PSNR is kept (docs/DECISIONS.md "Edge kinds per
-// edge"); stats.erd.tried_psnr has the three PSNRs.
+// whose own reconstruction has the highest PSNR is kept (docs/DECISIONS.md "Edge kinds");
+// stats.erd.tried_psnr has the three PSNRs.
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result);
 
 // The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the

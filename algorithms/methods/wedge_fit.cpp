@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,8 +16,9 @@ namespace {
 // The systems of the triangle (p0, p1, p2) for each of the N images (one, or the channel planes
 // of a colour image: the Gram matrix is the same, made once), over the pixels the triangle owns.
 // The rows are the triangle's owned rows, top to bottom, walked directly (kernel/raster_rows.h):
-// the rows and columns scan_triangle's spans hold, without the list in between.
-template <int N>
+// the rows and columns scan_triangle's spans hold, without the list in between. Real: the images'
+// real planes, the pixels without data left out (issue 47).
+template <int N, bool Real>
 void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
                 FaceSystem* out) {
     SpanPlane l0, l1;  // the weights of corners 0 and 1 as planes
@@ -29,17 +31,28 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
     const double gx0 = l0.gx, gx1 = l1.gx;
     double g00 = 0, g01 = 0, g02 = 0, g11 = 0, g12 = 0, g22 = 0, h0[N] = {}, h1[N] = {}, h2[N] = {};
     std::uint64_t bb[N] = {};  // sum b^2 in integers: exact, and what the double sum gave while exact
+    double rbb[N] = {}, rlo[N], rhi[N];  // a real image's sum b^2 and range
     std::uint16_t lo[N], hi[N];
-    for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0;
+    for (int k = 0; k < N; ++k) lo[k] = 0xffff, hi[k] = 0, rlo[k] = HUGE_VAL, rhi[k] = -HUGE_VAL;
+    const std::uint8_t* ok = Real && !images[0]->valid.empty() ? images[0]->valid.data() : nullptr;
     bool owns = false;
     for_each_owned_row(Lattice::pixels(), domain, p0, p1, p2, [&](std::int32_t j, std::int32_t first, std::int32_t last) {
-        owns = true;
         const double Y = double(2 * j);
         const double t0 = l0.gy * (Y - l0.y0), t1 = l1.gy * (Y - l1.y0);
+        const std::size_t row = std::size_t(j) * std::size_t(images[0]->width);
         const std::uint16_t* px[N];
-        for (int k = 0; k < N; ++k) px[k] = &images[k]->samples[std::size_t(j) * std::size_t(images[k]->width)];
+        const double* rx[N];
+        for (int k = 0; k < N; ++k) {
+            if constexpr (Real) rx[k] = &images[k]->reals[row];
+            else px[k] = &images[k]->samples[row];
+        }
+        if constexpr (!Real) owns = true;
         double a = double(2 * first) - l0.x0;
         for (std::int32_t i = first; i <= last; ++i, a += 2.0) {
+            if constexpr (Real) {
+                if (ok && !ok[row + std::size_t(i)]) continue;
+                owns = true;
+            }
             const double w0 = (1.0 + gx0 * a) + t0, w1 = gx1 * a + t1;
             const double w2 = 1.0 - w0 - w1;
             g00 += w0 * w0;
@@ -49,14 +62,24 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
             g12 += w1 * w2;
             g22 += w2 * w2;
             for (int k = 0; k < N; ++k) {
-                const std::uint16_t v = px[k][i];
-                const double b = double(v);
-                h0[k] += b * w0;
-                h1[k] += b * w1;
-                h2[k] += b * w2;
-                bb[k] += std::uint64_t(v) * v;
-                lo[k] = v < lo[k] ? v : lo[k];
-                hi[k] = v > hi[k] ? v : hi[k];
+                if constexpr (Real) {
+                    const double b = rx[k][i];
+                    h0[k] += b * w0;
+                    h1[k] += b * w1;
+                    h2[k] += b * w2;
+                    rbb[k] += b * b;
+                    rlo[k] = b < rlo[k] ? b : rlo[k];
+                    rhi[k] = b > rhi[k] ? b : rhi[k];
+                } else {
+                    const std::uint16_t v = px[k][i];
+                    const double b = double(v);
+                    h0[k] += b * w0;
+                    h1[k] += b * w1;
+                    h2[k] += b * w2;
+                    bb[k] += std::uint64_t(v) * v;
+                    lo[k] = v < lo[k] ? v : lo[k];
+                    hi[k] = v > hi[k] ? v : hi[k];
+                }
             }
         }
     });
@@ -68,11 +91,25 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
         fs.h[0] = h0[k];
         fs.h[1] = h1[k];
         fs.h[2] = h2[k];
-        fs.bb = double(bb[k]);
-        fs.lo = lo[k];
-        fs.hi = hi[k];
+        if constexpr (Real) {
+            // The range as floats rounded outwards: it only bounds the refit's values.
+            fs.bb = rbb[k];
+            fs.lo = std::nextafter(float(rlo[k]), -HUGE_VALF);
+            fs.hi = std::nextafter(float(rhi[k]), HUGE_VALF);
+        } else {
+            fs.bb = double(bb[k]);
+            fs.lo = lo[k];
+            fs.hi = hi[k];
+        }
         fs.owns = true;
     }
+}
+
+template <int N>
+void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
+                FaceSystem* out) {
+    if (images[0]->real()) accumulate<N, true>(images, domain, p0, p1, p2, out);
+    else accumulate<N, false>(images, domain, p0, p1, p2, out);
 }
 
 // A face system's terms of one more channel of a colour image: those that depend on the samples
@@ -80,7 +117,7 @@ void accumulate(const Image* const* images, RasterDomain domain, LatticePoint p0
 struct ChannelTerms {
     double h[3];
     double bb;
-    std::uint16_t lo, hi;
+    float lo, hi;
 };
 
 // Assembles the face systems of every face that owns at least one pixel, for each of the N
@@ -111,8 +148,8 @@ struct Systems {
     const std::vector<ChannelTerms>* terms = nullptr;
     const double* h(std::size_t i) const { return terms ? (*terms)[i].h : faces[i].h; }
     double bb(std::size_t i) const { return terms ? (*terms)[i].bb : faces[i].bb; }
-    std::uint16_t lo(std::size_t i) const { return terms ? (*terms)[i].lo : faces[i].lo; }
-    std::uint16_t hi(std::size_t i) const { return terms ? (*terms)[i].hi : faces[i].hi; }
+    float lo(std::size_t i) const { return terms ? (*terms)[i].lo : faces[i].lo; }
+    float hi(std::size_t i) const { return terms ? (*terms)[i].hi : faces[i].hi; }
     // FaceSystem::sse with face i's Gram matrix and these terms.
     double sse(std::size_t i, double a, double b, double c) const {
         double gv[3];
@@ -196,9 +233,10 @@ void solve(const Systems& sys, const Image& image, const WedgeFitOptions& option
         gamma = g2;
         for (std::size_t i = 0; i < n; ++i) p[i] = s[i] + beta * p[i];
     }
-    // Bounds: [0, maxval], and with support_bounds the range of the samples the value reaches
-    // (every pixel of the faces it is a corner of) widened to take in its line-search value.
-    std::vector<double> lo(n, 0.0), hi(n, double(image.maxval));
+    // Bounds: [0, maxval] (a real image: its range lo..hi), and with support_bounds the range of
+    // the samples the value reaches (every pixel of the faces it is a corner of) widened to take in
+    // its line-search value.
+    std::vector<double> lo(n, image.real() ? image.lo : 0.0), hi(n, image.real() ? image.hi : double(image.maxval));
     if (options.support_bounds >= 0) {
         std::vector<double> a(n), b(n);
         for (std::size_t i = 0; i < n; ++i) a[i] = b[i] = x0[i];

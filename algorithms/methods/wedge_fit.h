@@ -7,7 +7,8 @@
 // through a 3x3 Gram matrix and a 3-vector, so one pass over the pixels assembles them and the
 // iterations cost O(faces). Each pixel is evaluated with the plane of the face that owns it
 // (kernel/raster.h ownership), as during ERDGPI refinement.
-// A value no pixel depends on keeps its thesis value. Results are clamped to [0, maxval].
+// A value no pixel depends on keeps its thesis value. Results are clamped to [0, maxval] (a real
+// image: to its range; its pixels without data take no part).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -31,7 +32,8 @@ struct FaceSystem {
     double g[6] = {0, 0, 0, 0, 0, 0};
     double h[3] = {0, 0, 0};
     double bb = 0;
-    std::uint16_t lo = 0xffff, hi = 0;  // smallest and largest sample among the face's pixels
+    float lo = 65535, hi = 0;  // smallest and largest sample among the face's pixels (a real image's
+                               // rounded outwards)
     bool owns = false;                  // false: the face owns no pixel (the rest is zero)
 
     // (G v)_i for the face's values v = (a, b, c).

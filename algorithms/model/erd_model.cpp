@@ -126,6 +126,41 @@ void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {
     cdt.wedges(v, &scratch_);
     for (const Wedge& w : scratch_) entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
     count_[v] = std::uint32_t(scratch_.size());
+    if (phi_.real()) pin_pixel(cdt, v);
+}
+
+void ErdModel::pin_pixel(const Cdt& cdt, VertInd v, double bound) {
+    const LatticePoint p = cdt.point(v);
+    if ((p.x & 1) || (p.y & 1) || v >= count_.size() || count_[v] == 0) return;
+    const std::size_t px = std::size_t(p.y / 2) * std::size_t(phi_.width) + std::size_t(p.x / 2);
+    if (!phi_.valid.empty() && !phi_.valid[px]) return;
+    const double z = phi_.reals[px];
+    if (count_[v] == 1) {
+        if (bound < 0 || std::fabs(entries_[first_[v]].value - z) > bound) entries_[first_[v]].value = z;
+        return;
+    }
+    // The wedge of the face that owns the vertex's pixel (kernel/raster.h).
+    const RasterDomain dom{cdt.max_x(), cdt.max_y()};
+    cdt.corners_around(v, &star_);
+    for (const EdgeInd e : star_) {
+        const EdgeInd k = 3 * face_of(e);
+        if (!triangle_owns(Lattice::pixels(), dom, cdt.point(cdt.org(k)), cdt.point(cdt.org(k + 1)), cdt.point(cdt.org(k + 2)),
+                           p.x / 2, p.y / 2))
+            continue;
+        const std::uint32_t i = multi_wedge_entry(cdt, v, e);
+        if (i != kNoEntry && (bound < 0 || std::fabs(entries_[i].value - z) > bound)) entries_[i].value = z;
+        return;
+    }
+}
+
+void ErdModel::pin_pixel_vertices(const Cdt& cdt) {
+    if (!phi_.real()) return;
+    for (VertInd v = 0; v < count_.size(); ++v) pin_pixel(cdt, v);
+}
+
+void ErdModel::pin_pixel_vertices(const Cdt& cdt, double bound) {
+    if (!phi_.real()) return;
+    for (VertInd v = 0; v < count_.size(); ++v) pin_pixel(cdt, v, bound);
 }
 
 void ErdModel::assign_all(const Cdt& cdt) {

@@ -65,6 +65,16 @@ public:
     // assign_vertex for every vertex.
     void assign_all(const Cdt& cdt);
 
+    // A real image (issue 47): a real model is evaluated at each pixel on the face that owns it,
+    // so at a vertex on a pixel the wedge of the owning face takes the pixel's value (its other
+    // wedges keep theirs), and the vertex's own pixel has no error. assign_vertex does this for
+    // every vertex it assigns; this does it again for all (after a refit moved the values). Does
+    // nothing for an integer image.
+    void pin_pixel_vertices(const Cdt& cdt);
+    // The same for the vertices whose own pixel is more than `bound` off (the others keep their
+    // fitted values; fit_minimax moves them off the samples on purpose).
+    void pin_pixel_vertices(const Cdt& cdt, double bound);
+
     // Number of stored wedges of v (0 when never assigned).
     std::uint32_t wedge_count(VertInd v) const { return v < count_.size() ? count_[v] : 0; }
     // The value of the wedge with id `id` of v, or of its only wedge. NaN when v has no such wedge.
@@ -116,6 +126,7 @@ private:
     // the one wedge_value(v, cdt.wedge_id(e)) finds, without wedge_id's count and gcd.
     std::uint32_t multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) const;
     double multi_wedge_value(const Cdt& cdt, VertInd v, const Wedge& w);
+    void pin_pixel(const Cdt& cdt, VertInd v, double bound = -1.0);
     double mmsodd_near(double x, double y);  // MMSODD at the pixel nearest (x, y), grid or local
 
     const Image& phi_;
@@ -134,6 +145,7 @@ private:
     std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
     std::vector<Entry> entries_;
     std::vector<Wedge> scratch_;
+    std::vector<EdgeInd> star_;
     Stats stats_;
 };
 

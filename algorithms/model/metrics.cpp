@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/imaging/real_image.h"
 #include "kernel/row_parallel.h"
 
 namespace erd {
@@ -64,7 +65,75 @@ static void squared_error_sums(const Image& a, const Image& b, int threads, std:
         for (std::size_t j = 0; j < 3; ++j) sum[j] += part_sums[k * 3 + j];
 }
 
+// Real images (issue 47): the sums of squared differences per channel over the pixels the original
+// has data at, each row summed in order and the rows added in order (so every thread count gives
+// the same doubles), and the largest absolute difference. An approximation without data at such a
+// pixel is refused.
+static Status real_sums(const Image& a, const Image& b, int threads, double sum[3], double* max_abs) {
+    const std::size_t C = std::size_t(a.channels), W = std::size_t(a.width), H = std::size_t(a.height);
+    std::vector<double> rows(H * 3, 0.0), maxes(H, 0.0);
+    std::vector<std::uint8_t> missing(H, 0);
+    const RowParts parts(0, H, threads, rows_for(std::size_t(1) << 19, W * C));
+    run_parts(parts, [&](std::size_t, std::size_t y0, std::size_t y1) {
+        for (std::size_t y = y0; y < y1; ++y) {
+            double s[3] = {0, 0, 0}, m = 0;
+            for (std::size_t x = 0; x < W; ++x) {
+                const std::size_t i = y * W + x;
+                if (!a.valid.empty() && !a.valid[i]) continue;
+                if (!b.valid.empty() && !b.valid[i]) {
+                    missing[y] = 1;
+                    continue;
+                }
+                for (std::size_t c = 0; c < C; ++c) {
+                    const double d = sample_value(a, i * C + c) - sample_value(b, i * C + c);
+                    s[c] += d * d;
+                    m = std::fabs(d) > m ? std::fabs(d) : m;
+                }
+            }
+            for (std::size_t c = 0; c < 3; ++c) rows[y * 3 + c] = s[c];
+            maxes[y] = m;
+        }
+    });
+    sum[0] = sum[1] = sum[2] = 0;
+    *max_abs = 0;
+    for (std::size_t y = 0; y < H; ++y) {
+        if (missing[y])
+            return Status::bad_input("the approximation has no data at a pixel of row " + std::to_string(y) +
+                                     " where the original has");
+        for (std::size_t c = 0; c < 3; ++c) sum[c] += rows[y * 3 + c];
+        *max_abs = maxes[y] > *max_abs ? maxes[y] : *max_abs;
+    }
+    return Status::success();
+}
+
+static Status check_real_pair(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        return Status::bad_input("sizes differ: " + std::to_string(a.width) + " x " + std::to_string(a.height) + " and " +
+                                 std::to_string(b.width) + " x " + std::to_string(b.height));
+    if (a.channels != b.channels) return Status::bad_input("one image is colour and the other gray");
+    if (a.pixels() == 0) return Status::bad_input("the original image is empty");
+    return Status::success();
+}
+
+double psnr_peak(const Image& orig) {
+    if (!orig.real()) return psnr_peak(orig.maxval);
+    return orig.hi > orig.lo ? orig.hi - orig.lo : 1.0;
+}
+
+Status max_abs_error(const Image& orig, const Image& approx, double* out, int threads) {
+    if (Status s = check_real_pair(orig, approx); !s) return s;
+    double sum[3];
+    return real_sums(orig, approx, threads, sum, out);
+}
+
 Status mse(const Image& orig, const Image& approx, double* out, int threads) {
+    if (orig.real() || approx.real()) {
+        if (Status s = check_real_pair(orig, approx); !s) return s;
+        double sum[3], m = 0;
+        if (Status s = real_sums(orig, approx, threads, sum, &m); !s) return s;
+        *out = (sum[0] + sum[1] + sum[2]) / double(valid_pixels(orig) * std::size_t(orig.channels));
+        return Status::success();
+    }
     Status s = check_pair(orig, approx);
     if (!s) return s;
     std::uint64_t sum[3];
@@ -74,6 +143,13 @@ Status mse(const Image& orig, const Image& approx, double* out, int threads) {
 }
 
 Status channel_mse(const Image& orig, const Image& approx, double out[3], int threads) {
+    if (orig.real() || approx.real()) {
+        if (Status s = check_real_pair(orig, approx); !s) return s;
+        double sum[3], m = 0;
+        if (Status s = real_sums(orig, approx, threads, sum, &m); !s) return s;
+        for (std::size_t k = 0; k < std::size_t(orig.channels); ++k) out[k] = sum[k] / double(valid_pixels(orig));
+        return Status::success();
+    }
     Status s = check_pair(orig, approx);
     if (!s) return s;
     std::uint64_t sum[3];
@@ -92,6 +168,11 @@ Status psnr(const Image& orig, const Image& approx, double* out, int threads) {
     double e = 0;
     Status s = mse(orig, approx, &e, threads);
     if (!s) return s;
+    if (orig.real() || approx.real()) {
+        const double peak = psnr_peak(orig);
+        *out = e == 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(peak * peak / e);
+        return Status::success();
+    }
     *out = psnr_of_mse(e, orig.maxval);
     return Status::success();
 }

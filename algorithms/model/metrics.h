@@ -13,6 +13,16 @@ namespace erd {
 // Peak value for PSNR of an image with this maxval: 2^bits - 1.
 double psnr_peak(std::uint32_t maxval);
 
+// Real images (issue 47): errors in the data's units over the pixels the original has data at;
+// the peak is the original's valid range hi - lo (1 when it is one value). When either image is
+// real the functions below compare Image::reals (an integer image's samples as they are); sums of
+// doubles then, each row in order and the rows in order, the same for every thread count.
+double psnr_peak(const Image& orig);
+
+// The largest absolute difference over the original's valid pixels and all channels. Fails as
+// mse, and when the approximation has no data where the original has.
+Status max_abs_error(const Image& orig, const Image& approx, double* out, int threads = 1);
+
 // Mean squared error over all samples (every channel of every pixel). Fails (Code::input) when
 // sizes or channel counts differ, when the images are empty, or when the maxvals differ
 // (comparing 8-bit to 16-bit samples is meaningless). threads: bands of rows side by side

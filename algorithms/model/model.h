@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithms/imaging/image.h"
 #include "kernel/lattice.h"
 
 namespace erd {
@@ -40,6 +41,18 @@ struct Model {
 
     int channels = 1;  // 1 (gray) or 3 (RGB): values per vertex and per corner
 
+    // A model of a real-valued image (issue 47): values in the data's units, maxval 0 (unused),
+    // lo..hi the range of the image's valid samples (the PSNR peak is hi - lo). Always point
+    // evaluated, soft edges or not, so its pixel values are those its method measured.
+    bool real = false;
+    double lo = 0.0, hi = 0.0;
+    // The raster's sample type, nodata value and georeferencing (algorithms/imaging/image.h).
+    RasterMeta meta;
+    // The faces cover only the image's valid region (an image with nodata: those over it were
+    // dropped), so the four corners need not be vertices and reconstruction leaves the pixels no
+    // face owns as nodata.
+    bool holes = false;
+
     std::vector<LatticePoint> vertices;
     std::vector<double> values;                        // per vertex and channel, values[v*channels + c]
                                                        // (for erd: its single-wedge value, or the
@@ -55,7 +68,10 @@ struct Model {
     std::size_t size() const { return vertices.size(); }
 };
 
-// True when m is reconstructed by 4x4 supersampling: an ERD model with soft edges.
-inline bool supersampled(const Model& m) { return m.kind == ModelKind::erd && m.edges == EdgeKind::soft; }
+// True when m is reconstructed by 4x4 supersampling: an ERD model with soft edges of an integer image.
+inline bool supersampled(const Model& m) { return m.kind == ModelKind::erd && m.edges == EdgeKind::soft && !m.real; }
+
+// The faces may leave holes: the model of an image with nodata.
+inline bool has_holes(const Model& m) { return m.holes; }
 
 }  // namespace erd

@@ -5,11 +5,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/model/model_header.h"
 #include "algorithms/model/model_tokens.h"
 #include "algorithms/model/model_topology.h"
 #include "kernel/file_name.h"
@@ -103,6 +106,23 @@ Status check_vertices(const std::vector<LatticePoint>& pts, const std::vector<in
     if (std::int64_t(*w) * *h > kMaxImagePixels)
         return Status::bad_input("image " + std::to_string(*w) + " x " + std::to_string(*h) + " is larger than the limit of " +
                                  std::to_string(kMaxImagePixels) + " pixels");
+    return Status::success();
+}
+
+// A model with holes (header "holes W H"): distinct vertices inside [0, 2W-2] x [0, 2H-2].
+Status check_inside(const std::vector<LatticePoint>& pts, const std::vector<int>& lines, int unit, int w, int h) {
+    std::vector<std::uint64_t> keys(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const LatticePoint p = pts[i];
+        if (p.x > 2 * w - 2 || p.y > 2 * h - 2)
+            return Status::bad_input("line " + std::to_string(lines[i]) + ": " + vname(i) + " (" + std::to_string(p.x / unit) + ", " +
+                                     std::to_string(p.y / unit) + ") lies outside the " + std::to_string(w) + " x " + std::to_string(h) +
+                                     " image of the header");
+        keys[i] = (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+        if (keys[i] == keys[i - 1]) return Status::bad_input("two vertices coincide at (" + std::to_string(std::uint32_t(keys[i]) / std::uint32_t(unit)) + ", " + std::to_string(std::uint32_t(keys[i] >> 32) / std::uint32_t(unit)) + ")");
     return Status::success();
 }
 
@@ -270,61 +290,6 @@ Status read_edge_lines(Tokens& tk, const ModelTopology& topo, std::uint64_t n, M
     return Status::success();
 }
 
-// What the header block says beyond Model's fields: the lines of the "edges" key and of the
-// per-edge kind key (0 when absent), and that key's count of edge lines.
-struct HeaderFacts {
-    int edges_line = 0;
-    int listed_line = 0;
-    EdgeKind listed_kind = EdgeKind::hard;  // "hard-edges N" or "soft-edges N"
-    std::uint64_t listed = 0;
-};
-
-// The header block (model_io.h): "erd-header 1", then key lines, then "end".
-Status read_header(Tokens& tk, Model* m, HeaderFacts* facts) {
-    std::string_view t;
-    tk.next(&t);  // "erd-header"
-    std::uint64_t version = 0;
-    if (Status s = tk.uint("header version", 0, ~0ull >> 1, &version); !s) return s;
-    if (version != 1)
-        return Status::bad_input(tk.where() + "header version " + std::to_string(version) + " is not supported (this reader knows 1)");
-    int* edges_line = &facts->edges_line;
-    int channels_line = 0;
-    for (;;) {
-        if (!tk.next(&t)) return Status::bad_input("file ends early: expected a header key or 'end'");
-        if (t == "end") {
-            if (facts->listed_line && facts->listed_kind == m->edges)
-                return Status::bad_input("line " + std::to_string(facts->listed_line) + ": header key '" +
-                                         (m->edges == EdgeKind::hard ? "hard" : "soft") + "-edges' lists edges of the kind 'edges' gives them already (" +
-                                         (m->edges == EdgeKind::hard ? "hard" : "soft") + ")");
-            return Status::success();
-        }
-        if (t == "hard-edges" || t == "soft-edges") {
-            if (facts->listed_line) return Status::bad_input(tk.where() + "header keys 'hard-edges' and 'soft-edges': only one of them, once");
-            facts->listed_line = tk.line();
-            facts->listed_kind = t == "hard-edges" ? EdgeKind::hard : EdgeKind::soft;
-            if (Status s = count(tk, [&] { return "the count of '" + std::string(t) + "'"; }, 0, 4, &facts->listed); !s) return s;
-            continue;
-        }
-        if (t == "channels") {
-            if (channels_line) return Status::bad_input(tk.where() + "header key 'channels' given twice");
-            channels_line = tk.line();
-            if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'channels' (1 or 3)");
-            if (t != "1" && t != "3")
-                return Status::bad_input(tk.where() + "channels must be 1 (gray) or 3 (RGB), found '" + show(t) + "'");
-            m->channels = t == "3" ? 3 : 1;
-            continue;
-        }
-        if (t != "edges")
-            return Status::bad_input(tk.where() + "unknown header key '" + show(t) + "' (this reader knows: edges, hard-edges, soft-edges, channels)");
-        if (*edges_line) return Status::bad_input(tk.where() + "header key 'edges' given twice");
-        *edges_line = tk.line();
-        if (!tk.next(&t)) return Status::bad_input("file ends early: expected the value of 'edges' (hard or soft)");
-        if (t != "hard" && t != "soft")
-            return Status::bad_input(tk.where() + "edges must be hard or soft, found '" + show(t) + "'");
-        m->edges = t == "hard" ? EdgeKind::hard : EdgeKind::soft;
-    }
-}
-
 Status require_gray(const Model& m, const std::string& what) {
     if (m.channels == 1) return Status::success();
     return Status::bad_input("a colour model (channels " + std::to_string(m.channels) + "): " + what + " handles gray models only");
@@ -347,7 +312,10 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         if (Status s = read_header(tk, &m, &header); !s) return s;
     const int edges_line = header.edges_line ? header.edges_line : header.listed_line;
     std::uint64_t maxval = 0, nv = 0;
-    if (Status s = tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    // A real model (header "range") has maxval 0 and values of any finite size.
+    if (Status s = header.range ? tk.uint("maxval (0 for a real model)", 0, 0, &maxval) : tk.uint("maxval", 1, 65535, &maxval); !s) return s;
+    if (header.range) tk.allow_any_finite();
+    if (header.range && !header.type) m.meta.type = SampleType::f64;  // a real model of unknown type keeps every digit
     m.maxval = std::uint32_t(maxval);
     if (Status s = count(tk, "vertex count", 4, 4 + 2 * std::uint64_t(m.channels), &nv); !s) return s;
     const std::size_t C = std::size_t(m.channels);
@@ -374,8 +342,8 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
             return Status::bad_input("line " + std::to_string(edges_line) + ": header key '" + (header.edges_line ? "edges" : header.listed_kind == EdgeKind::hard ? "hard-edges" : "soft-edges") +
                                      "' is for .erd files only");
         if (Status s = expect_end(tk, "face"); !s) return s;
-        // Pixel coordinates in the file, doubled in the model.
-        for (std::size_t i = 0; i < nv; ++i) {
+        // Pixel coordinates in the file, doubled in the model (doubled already with "doubled").
+        for (std::size_t i = 0; i < nv && !header.doubled; ++i) {
             LatticePoint& p = m.vertices[i];
             if (p.x > kMaxImageSide - 1 || p.y > kMaxImageSide - 1)
                 return Status::bad_input("line " + std::to_string(vlines[i]) + ": " + vname(i) + " (" + std::to_string(p.x) +
@@ -387,7 +355,13 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
         m.kind = ModelKind::erd;
     }
     const bool erd = m.kind == ModelKind::erd;
-    if (Status s = check_vertices(m.vertices, vlines, erd, erd ? 1 : 2, &m.width, &m.height); !s) return s;
+    const int unit = erd || header.doubled ? 1 : 2;
+    if (header.holes) {
+        // The size is the header's; the vertices need only lie in it, the corners need not be there.
+        if (Status s = check_inside(m.vertices, vlines, unit, m.width, m.height); !s) return s;
+    } else if (Status s = check_vertices(m.vertices, vlines, erd || header.doubled, unit, &m.width, &m.height); !s) {
+        return s;
+    }
     // Faces sharing a directed edge: the same triangle twice, or overlapping faces.
     ModelTopology topo;
     if (Status s = build_topology(m, &topo); !s) {
@@ -402,7 +376,7 @@ Status read_model(const std::string& text, ModelFileKind kind, Model* out, Model
             }
         return Status::bad_input("not a triangulation of the image domain: " + s.message);
     }
-    if (Status s = check_all_used(m.vertices, m.faces, vlines, erd ? 1 : 2); !s) return s;
+    if (Status s = check_all_used(m.vertices, m.faces, vlines, unit); !s) return s;
     if (m.kind == ModelKind::erd) {
         if (Status s = apply_wedges(tk, topo, &m); !s) return s;
         if (Status s = read_edge_lines(tk, topo, header.listed, &m); !s) return s;

@@ -108,4 +108,7 @@ Status require_gray(const Model& m, const std::string& what);
 // reads back to the same double.
 std::string format_value(double v);
 
+// The header's GeoAsciiParams as one token: bytes outside '!'..'~', '%' and '#' as %XX.
+std::string percent_encode(const std::string& s);
+
 }  // namespace erd

@@ -83,6 +83,8 @@ public:
     }
     int line() const { return line_; }
     std::string where() const { return "line " + std::to_string(line_) + ": "; }
+    // Values of any finite size (a real-valued model, whose values are in the data's units).
+    void allow_any_finite() { max_abs_ = 1.7976931348623157e308; }
 
     // Plain decimal digits, at most max_len of them (the common case, parsed without from_chars).
     static bool digits(std::string_view t, std::size_t max_len, std::uint64_t* x) {
@@ -126,7 +128,7 @@ public:
             return Status::bad_input(where() + "expected " + str(what) + ", found '" + show(t) + "'");
         if (r.ec == std::errc::result_out_of_range || !std::isfinite(x))
             return Status::bad_input(where() + str(what) + " '" + show(t) + "' is not a finite number");
-        if (std::fabs(x) > kMaxAbsValue)
+        if (std::fabs(x) > max_abs_)
             return Status::bad_input(where() + str(what) + " " + show(t) + " out of range (|value| <= 1e9)");
         *v = x;
         return Status::success();
@@ -180,6 +182,7 @@ private:
     std::size_t pos_ = 0;
     int cur_line_ = 1;
     int line_ = 1;
+    double max_abs_ = kMaxAbsValue;
 };
 
 // A count of records of at least min_bytes bytes each (separator included) must fit in the rest

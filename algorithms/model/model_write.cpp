@@ -205,13 +205,45 @@ std::string format_value(double v) {
     return std::string(buf, put_value(buf, v));
 }
 
+// The header keys of a real model, a model with holes and a raster's meta (model_io.h), in their
+// order; nothing for a model of a PGM, PPM, PNG or JPEG image.
+void put_raster_keys(const Model& m, bool doubled, std::string* o) {
+    const auto num = [](double v) { return format_value(v); };
+    if (m.real) {
+        *o += std::string("type ") + sample_type_name(m.meta.type) + "\n";
+        *o += "range " + num(m.lo) + " " + num(m.hi) + "\n";
+    }
+    if (m.meta.has_nodata) *o += "nodata " + (std::isnan(m.meta.nodata) ? std::string("nan") : num(m.meta.nodata)) + "\n";
+    if (m.holes) *o += "holes " + std::to_string(m.width) + " " + std::to_string(m.height) + "\n";
+    if (doubled) *o += "doubled\n";
+    const GeoTags& g = m.meta.geo;
+    const auto list = [&](const char* key, const auto& v) {
+        if (v.empty()) return;
+        *o += std::string(key) + " " + std::to_string(v.size());
+        for (const auto x : v) *o += " " + num(double(x));
+        *o += "\n";
+    };
+    list("geo-pixel-scale", g.pixel_scale);
+    list("geo-tiepoints", g.tiepoints);
+    list("geo-transform", g.transform);
+    list("geo-keys", g.keys);
+    list("geo-doubles", g.doubles);
+    if (!g.ascii.empty()) *o += "geo-ascii " + percent_encode(g.ascii) + "\n";
+}
+
 Status write_model(const Model& m, std::string* out) {
     if (Status s = check_for_writing(m, true); !s) return s;
     const bool erd = m.kind == ModelKind::erd;
     const std::size_t C = std::size_t(m.channels);
+    // A basic model's vertices are pixels, but the outline of a valid region (a model with holes)
+    // runs between them: such a file gives doubled coordinates (header "doubled").
+    bool doubled = false;
     if (!erd)
         for (const LatticePoint& p : m.vertices)
-            if (p.x % 2 != 0 || p.y % 2 != 0) return Status::failure("a basic model has a vertex off the pixel lattice");
+            if (p.x % 2 != 0 || p.y % 2 != 0) {
+                if (!m.holes) return Status::failure("a basic model has a vertex off the pixel lattice");
+                doubled = true;
+            }
     std::string o;
     o.reserve(m.vertices.size() * (20 + 8 * C) + m.faces.size() * 18);
     Lines line(&o);
@@ -223,18 +255,21 @@ Status write_model(const Model& m, std::string* out) {
         if (st) st = check_kind_exceptions(m, topo);
         if (!st) return Status::failure(st.message);
     }
-    if (hard || listed || C > 1) {
+    const bool raster = m.real || m.holes || m.meta.has_nodata || !m.meta.geo.empty();
+    if (hard || listed || C > 1 || raster) {
         o += "erd-header 1\n";
         if (C > 1) o += "channels " + std::to_string(C) + "\n";
         if (hard || listed) o += hard ? "edges hard\n" : "edges soft\n";
         if (listed) o += std::string(hard ? "soft" : "hard") + "-edges " + std::to_string(m.kind_exceptions.size()) + "\n";
+        put_raster_keys(m, doubled, &o);
         o += "end\n";
     }
-    line.num(m.maxval).end();
+    line.num(m.real ? 0 : m.maxval).end();
     line.num(m.vertices.size()).end();
+    const bool pixels = !erd && !doubled;
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {
         const LatticePoint p = m.vertices[i];
-        line.sint(erd ? p.x : p.x / 2).sint(erd ? p.y : p.y / 2);
+        line.sint(pixels ? p.x / 2 : p.x).sint(pixels ? p.y / 2 : p.y);
         for (std::size_t c = 0; c < C; ++c) line.value(m.values[i * C + c]);
         line.end();
     }

@@ -27,7 +27,11 @@ Status prepare_model(const Model& m, bool count_pixels, const ModelTopology* giv
     if (std::int64_t(m.width) * m.height > kMaxImagePixels)
         return Status::bad_input("image " + std::to_string(m.width) + " x " + std::to_string(m.height) + " is larger than the limit of " +
                                  std::to_string(kMaxImagePixels) + " pixels");
-    if (m.maxval < 1 || m.maxval > 65535) return Status::bad_input("maxval " + std::to_string(m.maxval) + " out of range (1..65535)");
+    if (m.real) {
+        if (!std::isfinite(m.lo) || !std::isfinite(m.hi) || m.lo > m.hi) return Status::bad_input("model's value range is not a finite lo <= hi");
+    } else if (m.maxval < 1 || m.maxval > 65535) {
+        return Status::bad_input("maxval " + std::to_string(m.maxval) + " out of range (1..65535)");
+    }
     if (m.channels != 1 && m.channels != 3)
         return Status::bad_input("model has " + std::to_string(m.channels) + " channels (1 or 3)");
     const std::size_t nv = m.vertices.size(), nf = m.faces.size(), C = std::size_t(m.channels);
@@ -68,13 +72,16 @@ Status prepare_model(const Model& m, bool count_pixels, const ModelTopology* giv
         area += o;
         if (area > target) return not_triangulation("the faces overlap (their areas add up to more than the rectangle)");
     }
-    if (area != target) return not_triangulation("the faces leave holes (their areas add up to less than the rectangle)");
+    // A model with nodata leaves holes where the image has no data (model.h has_holes); its faces
+    // must still not overlap, which the paired edges below and the pixel count check locally.
+    const bool holes = has_holes(m);
+    if (area != target && !holes) return not_triangulation("the faces leave holes (their areas add up to less than the rectangle)");
     const auto on_border_line = [&](LatticePoint a, LatticePoint b) {
         return (a.x == 0 && b.x == 0) || (a.y == 0 && b.y == 0) || (a.x == dom.max_x && b.x == dom.max_x) ||
                (a.y == dom.max_y && b.y == dom.max_y);
     };
     for (std::uint32_t h = 0; h < topo.twin.size(); ++h) {
-        if (topo.twin[h] != kNoHalfEdge) continue;
+        if (topo.twin[h] != kNoHalfEdge || holes) continue;
         const std::uint32_t u = m.faces[h / 3][h % 3], w = m.faces[h / 3][(h + 1) % 3];
         if (!on_border_line(m.vertices[u], m.vertices[w]))
             return not_triangulation("edge " + std::to_string(u) + "-" + std::to_string(w) + " of face " + std::to_string(h / 3) +
@@ -94,7 +101,7 @@ Status prepare_model(const Model& m, bool count_pixels, const ModelTopology* giv
             }
         }
         for (std::size_t i = 0; i < owned.size(); ++i)
-            if (owned[i] != 1)
+            if (owned[i] != 1 && !(holes && owned[i] == 0))
                 return not_triangulation("pixel (" + std::to_string(i % std::size_t(m.width)) + ", " +
                                          std::to_string(i / std::size_t(m.width)) + ") is owned by " +
                                          (owned[i] == 0 ? "no face" : "several faces"));

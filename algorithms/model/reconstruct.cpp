@@ -3,12 +3,14 @@
 #include "algorithms/model/reconstruct.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "algorithms/imaging/real_image.h"
 #include "algorithms/model/discontinuity_mean.h"
 #include "algorithms/model/edge_kinds.h"
 #include "algorithms/model/prepared_model.h"
@@ -93,10 +95,51 @@ void point_evaluation(const Model& m, const PreparedModel& p, Image* out, Progre
     }
 }
 
+// A real model (issue 47): every pixel is the plane of the face that owns it, in doubles, no rounding
+// and no means on discontinuities or at vertices (the values its method measured); pixels no face
+// owns (over nodata) are nodata. The image is real: its range that of the values written.
+Status real_point_evaluation(const Model& m, const PreparedModel& p, Image* out, ProgressHook progress, int threads) {
+    const std::size_t W = std::size_t(m.width), C = std::size_t(m.channels), n = W * std::size_t(m.height);
+    std::vector<double> values(n * C, 0.0);
+    std::vector<std::uint8_t> owned(n, 0);
+    const Lattice l = Lattice::pixels();
+    const RowParts parts(0, m.faces.size(), threads, 1024);
+    run_parts(parts, [&](std::size_t part, std::size_t f0, std::size_t f1) {
+        std::vector<Span> spans;
+        const std::size_t every = (f1 - f0) / 100 + 1;
+        for (std::size_t f = f0; f < f1; ++f) {
+            if (part == 0 && progress && (f - f0) % every == 0) progress("reconstruct", double(f - f0) / double(f1 - f0));
+            const auto& fc = m.faces[f];
+            scan_triangle(l, p.dom, m.vertices[fc[0]], m.vertices[fc[1]], m.vertices[fc[2]], &spans);
+            for (std::size_t c = 0; c < C; ++c) {
+                const SpanPlane& pl = p.planes[f * C + c];
+                const double dv = pl.step_x(l);
+                for (const Span& s : spans) {
+                    double v = pl.at(l, s.x_begin, s.y);
+                    double* row = values.data() + std::size_t(s.y) * W * C + c;
+                    for (std::int32_t x = s.x_begin; x <= s.x_end; ++x, v += dv) row[std::size_t(x) * C] = v;
+                }
+            }
+            for (const Span& s : spans)
+                for (std::int32_t x = s.x_begin; x <= s.x_end; ++x) owned[std::size_t(s.y) * W + std::size_t(x)] = 1;
+        }
+    });
+    RasterMeta meta = m.meta;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!owned[i])
+            for (std::size_t c = 0; c < C; ++c) values[i * C + c] = std::numeric_limits<double>::quiet_NaN();
+    return make_real_image(m.width, m.height, m.channels, std::move(values), meta, out);
+}
+
 Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersample, Image* out, ProgressHook progress,
                         int threads) {
     PreparedModel p;
     if (Status s = prepare_model(m, false, given, &p); !s) return s;
+    if (m.real) {
+        if (Status s = real_point_evaluation(m, p, out, progress, threads); !s) return s;
+        progress("reconstruct", 1.0);
+        return Status::success();
+    }
     // In *out's memory when it has the size already (a caller measuring models one after the
     // other): a fresh page costs more than zeroing it (DECISIONS "Memory").
     Image im;
@@ -107,6 +150,7 @@ Status reconstruct_with(const Model& m, const ModelTopology* given, bool supersa
     } else {
         im = Image(m.width, m.height, m.maxval, m.channels);
     }
+    im.meta = m.meta;  // georeferencing and nodata travel to the image (its samples are not touched)
     if (supersample) supersampling(m, p, &im, progress, threads);
     else point_evaluation(m, p, &im, progress, threads);
     // Per-edge kinds (edge_kinds.h): the pixels the exceptions govern as their kind says.

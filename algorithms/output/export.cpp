@@ -8,13 +8,26 @@
 #include <cstring>
 #include <vector>
 
+#include "algorithms/imaging/georef.h"
 #include "algorithms/model/model_topology.h"
+#include "algorithms/output/gltf.h"
+#include "algorithms/output/little_endian.h"
 
 namespace erd {
 
 double default_zscale(const Model& m) {
+    PixelToWorld w;
+    const bool world = pixel_to_world(m.meta.geo, &w);
+    if (world && geo_projected(m.meta.geo)) return 1.0;
     double side = double(std::max(m.width, m.height));
-    return side / (10.0 * double(m.maxval == 0 ? 1 : m.maxval));
+    if (world) {
+        // The larger extent of the raster in its world units (degrees).
+        const double W1 = m.width - 1, H1 = m.height - 1;
+        side = std::max(std::hypot(w.a * W1, w.d * W1), std::hypot(w.b * H1, w.e * H1));
+    }
+    if (!m.real) return side / (10.0 * double(m.maxval == 0 ? 1 : m.maxval));
+    const double range = m.hi > m.lo ? m.hi - m.lo : 1.0;
+    return side / (10.0 * range);
 }
 
 namespace {
@@ -35,15 +48,6 @@ void append_face(std::string* s, const char* fmt, std::uint32_t a, std::uint32_t
     if (n > 0) s->append(buf, std::size_t(std::min(n, int(sizeof buf) - 1)));
 }
 
-// Little-endian float and uint32 (STL's byte order whatever the host's).
-void put_u32(std::string* s, std::uint32_t v) {
-    for (int k = 0; k < 4; ++k) s->push_back(char((v >> (8 * k)) & 0xFFu));
-}
-void put_f32(std::string* s, float f) {
-    std::uint32_t u;
-    std::memcpy(&u, &f, sizeof u);
-    put_u32(s, u);
-}
 
 using Vec3 = std::array<float, 3>;
 
@@ -63,7 +67,7 @@ void put_facet(std::string* s, const Vec3& a, const Vec3& b, const Vec3& c) {
 // Binary STL of the faces (corners counter-clockwise seen from +z); with base > 0, lifted by base
 // and closed by walls under the boundary edges (those whose reverse no face has) and a bottom.
 void write_stl(const std::vector<std::array<double, 3>>& pos, const std::vector<std::array<std::uint32_t, 3>>& faces,
-               double base, std::string* out, std::size_t* facets) {
+               double base, const std::string& header_text, std::string* out, std::size_t* facets) {
     std::vector<Vec3> top(pos.size());
     for (std::size_t i = 0; i < pos.size(); ++i) top[i] = {float(pos[i][0]), float(pos[i][1]), float(pos[i][2] + base)};
     std::vector<std::uint64_t> boundary;  // directed edges a -> b, a in the high half
@@ -77,7 +81,7 @@ void write_stl(const std::vector<std::array<double, 3>>& pos, const std::vector<
             if (!std::binary_search(edges.begin(), edges.end(), (e << 32) | (e >> 32))) boundary.push_back(e);
     }
     const std::size_t n = base > 0 ? 2 * faces.size() + 2 * boundary.size() : faces.size();
-    std::string header = "erd binary STL: x, y in pixels (y up), z = value * zscale";
+    std::string header = header_text;
     header.resize(80, ' ');
     out->append(header);
     put_u32(out, std::uint32_t(n));
@@ -115,6 +119,14 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     if (Status st = build_topology(m, &topo); !st) return st;
     const double zs = options.zscale > 0 ? options.zscale : default_zscale(m);
     const double top = double(m.height - 1);
+    // Pixels with y up, or the raster's world coordinates (GeoTIFF).
+    PixelToWorld wmap;
+    const bool world = pixel_to_world(m.meta.geo, &wmap);
+    const auto place = [&](LatticePoint p) -> std::array<double, 2> {
+        const double px = p.x / 2.0, py = p.y / 2.0;
+        if (world) return {wmap.x(px, py), wmap.y(px, py)};
+        return {px, top - py};
+    };
 
     // Positions of the written vertices (z from the luma of a colour model), their colours, and
     // each face's three indices into them.
@@ -130,7 +142,7 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
         std::vector<std::uint32_t> copy_of_wedge(cw.count);
         std::vector<bool> placed(cw.count, false);
         for (std::size_t v = 0; v < m.vertices.size(); ++v) {
-            double x = m.vertices[v].x / 2.0, y = top - m.vertices[v].y / 2.0;
+            const auto [x, y] = place(m.vertices[v]);
             if (cw.first[v] == cw.first[v + 1]) {
                 pos.push_back({x, y, value(&m.values[v * C]) * zs});
                 colour(&m.values[v * C]);
@@ -155,7 +167,8 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
             }
     } else {
         for (std::size_t v = 0; v < m.vertices.size(); ++v) {
-            pos.push_back({m.vertices[v].x / 2.0, top - m.vertices[v].y / 2.0, value(&m.values[v * C]) * zs});
+            const auto [x, y] = place(m.vertices[v]);
+            pos.push_back({x, y, value(&m.values[v * C]) * zs});
             colour(&m.values[v * C]);
         }
         face_idx = m.faces;
@@ -173,6 +186,21 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
                                                                : "; " + listed + " hard edges: the pixels along them are the surface at their centres")
                                   : "") +
                              (C > 1 ? "; colour: z from BT.601 luma, the vertex colours are the RGB values" : "");
+    const std::string frame = world ? "x, y in world units (GeoTIFF)" : "x, y in pixels (y up)";
+    // A colour value in [0, 1]: over maxval, or a real model's range.
+    const double c_lo = m.real ? m.lo : 0.0, c_span = m.real ? (m.hi > m.lo ? m.hi - m.lo : 1.0) : double(m.maxval);
+    // STL and glTF hold floats: world coordinates from the centre of the mesh.
+    double x0 = 0, y0 = 0;
+    if (world && !pos.empty() && (options.format == MeshFormat::stl || options.format == MeshFormat::glb)) {
+        double lx = pos[0][0], hx = lx, ly = pos[0][1], hy = ly;
+        for (const auto& q : pos) {
+            lx = std::min(lx, q[0]), hx = std::max(hx, q[0]);
+            ly = std::min(ly, q[1]), hy = std::max(hy, q[1]);
+        }
+        x0 = std::floor(0.5 * (lx + hx));
+        y0 = std::floor(0.5 * (ly + hy));
+        for (auto& q : pos) q[0] -= x0, q[1] -= y0;
+    }
     std::size_t facets = 0;
     // Progress over the text lines (vertices, then faces), about every 1%.
     const std::size_t lines = pos.size() + face_idx.size(), every = lines / 100 + 1;
@@ -196,21 +224,39 @@ Status export_mesh(const Model& m, const ExportOptions& options, std::string* ou
     };
     if (options.format == MeshFormat::stl) {
         for (auto& t : face_idx) std::swap(t[1], t[2]);
-        write_stl(pos, face_idx, options.base, out, &facets);
+        char head[81];
+        if (world) std::snprintf(head, sizeof head, "erd binary STL: world x - %.0f, y - %.0f (GeoTIFF), z = value * zscale", x0, y0);
+        write_stl(pos, face_idx, options.base, world ? std::string(head) : "erd binary STL: x, y in pixels (y up), z = value * zscale", out,
+                  &facets);
+    } else if (options.format == MeshFormat::glb) {
+        std::vector<std::array<std::uint8_t, 3>> colours;
+        for (const auto& c : rgb) {
+            std::array<std::uint8_t, 3> b{};
+            for (int k = 0; k < 3; ++k)
+                b[std::size_t(k)] = std::uint8_t(std::min(255.0, std::max(0.0, std::floor((c[std::size_t(k)] - c_lo) * 255.0 / c_span + 0.5))));
+            colours.push_back(b);
+        }
+        GltfMesh g;
+        g.positions = &pos;
+        g.faces = &face_idx;
+        g.colours = C > 1 ? &colours : nullptr;
+        g.origin = {x0, y0};
+        g.description = "erd mesh: " + frame + ", z = value * " + std::to_string(zs) + kind;
+        write_glb(g, out);
     } else if (options.format == MeshFormat::obj) {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
-        out->append("# erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
+        out->append("# erd mesh: " + frame + ", z = value * " + std::to_string(zs) + kind + "\n");
         // Colours as reals in [0, 1] after the position (an extension most OBJ readers take).
-        const auto unit = [&](double v) { return std::min(1.0, std::max(0.0, v / double(m.maxval))); };
-        text_lines("v %.9g %.9g %.9g", " %.6g %.6g %.6g", unit, "f %u %u %u\n", 1);
+        const auto unit = [&](double v) { return std::min(1.0, std::max(0.0, (v - c_lo) / c_span)); };
+        text_lines(world ? "v %.12g %.12g %.9g" : "v %.9g %.9g %.9g", " %.6g %.6g %.6g", unit, "f %u %u %u\n", 1);
     } else {
         out->reserve(pos.size() * 32 + face_idx.size() * 24 + 256);
-        out->append("ply\nformat ascii 1.0\ncomment erd mesh: x, y in pixels (y up), z = value * " + std::to_string(zs) + kind + "\n");
+        out->append("ply\nformat ascii 1.0\ncomment erd mesh: " + frame + ", z = value * " + std::to_string(zs) + kind + "\n");
         out->append("element vertex " + std::to_string(pos.size()) + "\nproperty double x\nproperty double y\nproperty double z\n");
         if (C > 1) out->append("property uchar red\nproperty uchar green\nproperty uchar blue\n");
         out->append("element face " + std::to_string(face_idx.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n");
-        const auto byte = [&](double v) { return std::min(255.0, std::max(0.0, std::floor(v * 255.0 / double(m.maxval) + 0.5))); };
-        text_lines("%.9g %.9g %.9g", " %.0f %.0f %.0f", byte, "3 %u %u %u\n", 0);
+        const auto byte = [&](double v) { return std::min(255.0, std::max(0.0, std::floor((v - c_lo) * 255.0 / c_span + 0.5))); };
+        text_lines(world ? "%.12g %.12g %.9g" : "%.9g %.9g %.9g", " %.0f %.0f %.0f", byte, "3 %u %u %u\n", 0);
     }
     if (counts) {
         counts->vertices = pos.size();

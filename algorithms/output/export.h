@@ -1,9 +1,23 @@
-// Meshes for 3-D tools: Wavefront OBJ, ASCII PLY and binary STL of a Model seen as a height field.
+// Meshes for 3-D tools: Wavefront OBJ, ASCII PLY, binary STL and glTF 2.0 binary (.glb) of a Model
+// seen as a height field.
 //
 // Frame: x = X/2 and y = (H-1) - Y/2 in pixels (the image's y axis flipped so the picture is upright
 // when seen from +z with y up), z = value * zscale. Faces are written counter-clockwise seen from
 // +z, so their normals point up. The default zscale, max(W, H) / (10 * maxval), makes the whole
-// value range one tenth of the larger image side high.
+// value range one tenth of the larger image side high (a real model: its range hi - lo).
+//
+// World coordinates (issue 47): a model of a georeferenced raster (GeoTIFF) is written in its
+// world units instead: x, y the pixel centre's world coordinates (algorithms/imaging/georef.h), the
+// default zscale 1 in a projected CRS (heights in the units of x and y) and one tenth of the larger
+// extent over the range otherwise (degrees). OBJ and PLY hold them as they are (9 significant
+// digits or more); STL and glTF store 32-bit floats, which would lose the centimetres of a UTM
+// coordinate, so they hold x - x0, y - y0 from the mesh's centre (x0, y0): STL names the origin in
+// its header, glTF puts it in its node's translation (JSON numbers, kept exactly).
+//
+// glTF: y up (glTF x = x, y = z, z = -y), one mesh of one indexed triangle list (32-bit indices),
+// POSITION with its bounds, COLOR_0 (unsigned bytes, normalized) for a colour model, a matte
+// material; no normals (viewers shade the faces flat, as the ERD surface is cut along its
+// discontinuities anyway).
 //
 // An ERD model is discontinuous across its constrained edges, so each wedge gets its own vertex
 // copy (a vertex with k wedges is written k times, at the same x and y, with the wedge's value) and
@@ -29,7 +43,7 @@
 
 namespace erd {
 
-enum class MeshFormat { obj, ply, stl };
+enum class MeshFormat { obj, ply, stl, glb };
 
 struct ExportOptions {
     MeshFormat format = MeshFormat::obj;
@@ -45,7 +59,8 @@ struct ExportCounts {
     std::size_t facets = 0;    // STL: facets written (faces, plus walls and bottom with a base)
 };
 
-// The default zscale for a model: max(W, H) / (10 * maxval).
+// The default zscale for a model: max(W, H) / (10 * maxval) (see above for real and georeferenced
+// models).
 double default_zscale(const Model& m);
 
 // Writes the model as OBJ or PLY text, or binary STL, into *out. Fails (Code::input) on an inconsistent model

@@ -7,6 +7,7 @@ import numpy.typing as npt
 
 PathLike = Union[str, bytes, os.PathLike]
 ImageArray = Union[npt.NDArray[np.uint8], npt.NDArray[np.uint16]]
+RealArray = Union[npt.NDArray[np.float32], npt.NDArray[np.float64], npt.NDArray[np.int16], npt.NDArray[np.int32], npt.NDArray[np.uint32]]
 MethodName = Literal["ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr"]
 
 METHODS: Tuple[str, ...]
@@ -50,10 +51,21 @@ class Mesh:
     @property
     def constrained_edges(self) -> npt.NDArray[np.int64]:
         """E x 2 vertex pairs."""
-    def reconstruct(self, supersample: Optional[bool] = None) -> ImageArray:
-        """H x W image (H x W x 3 for colour); None: 4x4 supersampling for ERD, point evaluation for basic (as `erd reconstruct`)."""
+    @property
+    def real(self) -> bool:
+        """True for a mesh of a real-valued image (values in its units)."""
+    @property
+    def value_range(self) -> Tuple[float, float]:
+        """(lo, hi) of a real mesh's image; (0, maxval) otherwise."""
+    def reconstruct(self, supersample: Optional[bool] = None) -> Union[ImageArray, npt.NDArray[np.float64]]:
+        """H x W image (H x W x 3 for colour); None: 4x4 supersampling for ERD, point evaluation for basic (as `erd reconstruct`).
+        A real mesh gives float64 with NaN where its image had no data."""
     def save(self, path: PathLike) -> None:
         """Writes the .model/.erd bytes `erd generate -o` writes."""
+    def export(self, path: PathLike, format: Optional[str] = None, zscale: Optional[float] = None) -> None:
+        """Writes .obj, .ply, .stl or .glb (glTF 2.0) as `erd export`."""
+    def glb(self, zscale: Optional[float] = None) -> bytes:
+        """The mesh as glTF 2.0 binary bytes."""
     def __len__(self) -> int: ...
 
 class Edges:
@@ -64,7 +76,7 @@ class Edges:
     tau_low: float
 
 def generate(
-    image: ImageArray,
+    image: Union[ImageArray, RealArray],
     method: MethodName = "erdgpi",
     density: float = 1.0,
     points: Optional[int] = None,
@@ -101,15 +113,20 @@ def generate(
     aa_errors: int = ...,
     triangles: int = ...,
     maxval: int = ...,
+    nodata: float = ...,
+    max_slack: float = ...,
+    minimax: int = ...,
+    min_step: float = ...,
     max_memory: int = ...,
     threads: int = ...,
 ) -> Mesh:
-    """Meshes a 2-D uint8/uint16 image as `erd generate` does (options: its long flag names)."""
+    """Meshes a 2-D uint8/uint16 image, or a real-valued float/int16/int32 array (NaN and nodata= mark
+    pixels without data), as `erd generate` does (options: its long flag names)."""
 
 def load(path: PathLike) -> Mesh:
     """Reads a .model or .erd file."""
 
-def psnr(a: ImageArray, b: ImageArray, maxval: Optional[int] = None) -> float:
+def psnr(a: Union[ImageArray, RealArray], b: Union[ImageArray, RealArray], maxval: Optional[int] = None) -> float:
     """PSNR of b against a in dB (inf when equal)."""
 
 def edges(

@@ -2,10 +2,12 @@
 
 #include <pybind11/numpy.h>
 
+#include <cctype>
 #include <utility>
 
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/model_topology.h"
+#include "algorithms/output/export.h"
 #include "api/erd.h"
 #include "cli/fileio.h"
 #include "cli/stats_json.h"
@@ -102,6 +104,45 @@ void save(const Mesh& m, pyb::handle path) {
     if (!st) raise_status(st, st.code == Code::runtime);
 }
 
+// The mesh as `erd export` writes it: the format from the name (.obj, .ply, .stl, .glb) or `format`.
+std::string export_bytes(const Mesh& m, const std::string& format, pyb::object zscale) {
+    ExportOptions o;
+    if (format == "obj") o.format = MeshFormat::obj;
+    else if (format == "ply") o.format = MeshFormat::ply;
+    else if (format == "stl") o.format = MeshFormat::stl;
+    else if (format == "glb") o.format = MeshFormat::glb;
+    else throw pyb::value_error("format '" + format + "' is not obj, ply, stl or glb");
+    if (!zscale.is_none()) {
+        o.zscale = zscale.cast<double>();
+        if (!(o.zscale > 0)) throw pyb::value_error("zscale must be greater than 0");
+    }
+    std::string out;
+    Status st;
+    {
+        pyb::gil_scoped_release unlocked;
+        st = export_mesh(m.model, o, &out);
+    }
+    if (!st) raise_status(st);
+    return out;
+}
+
+void export_file(const Mesh& m, pyb::handle path, pyb::object format, pyb::object zscale) {
+    const std::string name = path_text(path);
+    std::string f = format.is_none() ? std::string() : format.cast<std::string>();
+    if (f.empty()) {
+        const auto dot = name.find_last_of('.');
+        f = dot == std::string::npos ? std::string() : name.substr(dot + 1);
+        for (char& c : f) c = char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    const std::string bytes = export_bytes(m, f, zscale);
+    Status st;
+    {
+        pyb::gil_scoped_release unlocked;
+        st = cli::write_file_atomic(name, bytes);
+    }
+    if (!st) raise_status(st, true);
+}
+
 }  // namespace
 
 void bind_mesh(pyb::module_& m) {
@@ -172,6 +213,18 @@ void bind_mesh(pyb::module_& m) {
         .def("save", &save, pyb::arg("path"),
              "save(path)\n\nWrites the mesh as `erd generate -o` does: a .model for a basic mesh, an .erd for an ERD one\n"
              "(byte-identical files), atomically. OSError when the file cannot be written.")
+        .def("export", &export_file, pyb::arg("path"), pyb::arg("format") = pyb::none(), pyb::arg("zscale") = pyb::none(),
+             "export(path, format=None, zscale=None)\n\n"
+             "Writes the mesh as `erd export` does: Wavefront .obj, .ply, binary .stl or glTF 2.0 .glb (three.js,\n"
+             "Cesium, Blender), the format from the name unless format= says; a mesh of a GeoTIFF in its world\n"
+             "coordinates, holes over nodata open. zscale: height per value unit (default: erd export's).")
+        .def("glb", [](const Mesh& m, pyb::object zscale) { return pyb::bytes(export_bytes(m, "glb", zscale)); },
+             pyb::arg("zscale") = pyb::none(), "glb(zscale=None) -> bytes\n\nThe mesh as glTF 2.0 binary (.glb bytes), as export() writes it.")
+        .def_property_readonly("real", [](const Mesh& s) { return s.model.real; },
+                               "True for a mesh of a real-valued image (float, signed, with nodata): values in its units.")
+        .def_property_readonly("value_range", [](const Mesh& s) {
+            return s.model.real ? pyb::make_tuple(s.model.lo, s.model.hi) : pyb::make_tuple(0.0, double(s.model.maxval));
+        }, "(lo, hi): a real mesh's image's range of valid values (its PSNR peak is hi - lo); (0, maxval) otherwise.")
         .def("__len__", [](const Mesh& s) { return s.model.vertices.size(); }, "Number of vertices.")
         .def("__repr__", [](const Mesh& s) {
             return "<erd.Mesh " + std::string(s.method.empty() ? (s.model.kind == ModelKind::erd ? "erd" : "basic") : s.method) +

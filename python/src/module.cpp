@@ -33,7 +33,7 @@ Mesh generate(pyb::handle image, const std::string& method, double density, pyb:
     Status st = api::method_from_name(method, &m);
     if (!st) raise_status(st);
     GenerateArgs args = generate_args(density, points, kwargs);
-    const ImageArg img = image_arg(image, "image", args.maxval);
+    const ImageArg img = image_arg(image, "image", args.maxval, args.nodata);
     Interrupt interrupt;
     args.options.generate.progress = interrupt.hook();
     Mesh mesh;
@@ -169,7 +169,9 @@ PYBIND11_MODULE(_erd, m) {
     m.def("generate", &generate, pyb::arg("image"), pyb::arg("method") = "erdgpi", pyb::arg("density") = 1.0,
           pyb::arg("points") = pyb::none(),
           ("generate(image, method='erdgpi', density=1.0, points=None, **options) -> Mesh\n\n"
-           "Meshes a uint8 or uint16 array, H x W (gray) or H x W x 3 (RGB: a colour mesh), as `erd generate` does. method: 'ed', 'gpi' (basic\n"
+           "Meshes a uint8 or uint16 array, H x W (gray) or H x W x 3 (RGB: a colour mesh), as `erd generate` does, or a\n"
+           "real-valued one (float32, float64, int16, int32, uint32: elevation, scientific data) without quantising it;\n"
+           "NaN and nodata= mark pixels without data (the mesh covers the rest). method: 'ed', 'gpi' (basic\n"
            "model), 'erded', 'erdgpi' (ERD model). density: vertices as a percentage of the pixels; points:\n"
            "an exact vertex count instead (wins over density). options: the `erd generate` flags by their long\n"
            "names with '_' for '-' (beta=0.05, thesis=True, max_error=2.0, ...), plus maxval= (default 255 for\n"

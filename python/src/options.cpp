@@ -58,6 +58,10 @@ const std::vector<Spec>& specs() {
         {"removal_cycles", Kind::integer, 0, 16, [](GenerateArgs* a, double v) { a->options.generate.removal_cycles = int(v); }},
         {"aa_errors", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.supersampled_errors = v == 1; }},
         {"maxval", Kind::integer, 1, 65535, [](GenerateArgs* a, double v) { a->maxval = (long long)v; }},
+        {"nodata", Kind::real, -kBig, kBig, [](GenerateArgs* a, double v) { a->nodata = v; }},
+        {"max_slack", Kind::real, 1.0, 16.0, [](GenerateArgs* a, double v) { a->options.generate.max_slack = v; }},
+        {"minimax", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.minimax_rounds = int(v); }},
+        {"min_step", Kind::real, 0, 1e6, [](GenerateArgs* a, double v) { a->options.generate.min_step_factor = v; }},
         {"max_memory", Kind::integer, 0, 9e18, [](GenerateArgs* a, double v) { a->options.max_memory = std::size_t(v); }},
         {"threads", Kind::integer, 0, 256, [](GenerateArgs* a, double v) { a->options.generate.threads = int(v); }},
     };
@@ -156,7 +160,7 @@ GenerateArgs generate_args(double density, pyb::handle points, const pyb::kwargs
     for (const Spec& s : specs()) {
         if (!kwargs.contains(s.name)) continue;
         const double v = number(s.name, s.kind, kwargs[s.name]);
-        if (!(v >= s.lo && v <= s.hi))
+        if (!(v >= s.lo && v <= s.hi) && !(std::isnan(v) && std::string(s.name) == "nodata"))
             throw pyb::value_error(std::string(s.name) + ": " + std::string(pyb::str(kwargs[s.name])) + " is outside " +
                                    real_text(s.lo) + ".." + real_text(s.hi));
         s.set(&a, v);

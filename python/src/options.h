@@ -15,6 +15,7 @@ namespace erd::py {
 struct GenerateArgs {
     api::Options options;
     std::optional<long long> maxval;  // maxval=: the image's maxval (default from its dtype)
+    std::optional<double> nodata;     // nodata=: the value of the pixels without data
 };
 
 // density: percent (used unless points is given); points: None or a vertex count.

@@ -1,0 +1,115 @@
+#include "algorithms/methods/minimax_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/methods/wedge_fit.h"
+#include "kernel/raster.h"
+#include "kernel/raster_rows.h"
+
+namespace erd {
+
+namespace {
+
+// The smallest weight: a pixel far inside the bound still holds its face (without it the values
+// no large error pins down drift, and the errors IRLS ignored become the largest).
+constexpr double kFloor = 0.1;
+
+
+// One pass over the valid pixels of every face: the largest error of the current values, and (with
+// systems) the face systems of the errors weighted by (|e| / e_norm)^(2^squarings), p = 2 + 2^squarings.
+double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, int squarings, double e_norm,
+                     std::vector<FaceSystem>* systems) {
+    const RasterDomain domain{cdt.max_x(), cdt.max_y()};
+    const std::size_t W = std::size_t(image.width);
+    const std::uint8_t* ok = image.valid.empty() ? nullptr : image.valid.data();
+    const double inv = e_norm > 0 ? 1.0 / e_norm : 0.0;
+    double emax = 0;
+    if (systems) systems->assign(cdt.face_count(), FaceSystem());
+    for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+        const EdgeInd e = 3 * f;
+        const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
+        const SpanPlane plane = model.face_plane(cdt, f);
+        SpanPlane l0, l1;
+        l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
+        l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
+        FaceSystem fs;
+        bool owns = false;
+        for_each_owned_row(Lattice::pixels(), domain, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            const std::size_t row = std::size_t(j) * W;
+            const double Y = double(2 * j);
+            for (std::int32_t i = lo; i <= hi; ++i) {
+                if (ok && !ok[row + std::size_t(i)]) continue;
+                const double X = double(2 * i), b = image.reals[row + std::size_t(i)];
+                const double err = b - plane.at(X, Y);
+                emax = std::max(emax, std::fabs(err));
+                if (!systems) continue;
+                double w = std::fabs(err) * inv;
+                for (int k = 0; k < squarings; ++k) w *= w;
+                w = w > kFloor ? w : kFloor;
+                const double w0 = l0.at(X, Y), w1 = l1.at(X, Y), w2 = 1.0 - w0 - w1;
+                fs.g[0] += w * w0 * w0;
+                fs.g[1] += w * w0 * w1;
+                fs.g[2] += w * w0 * w2;
+                fs.g[3] += w * w1 * w1;
+                fs.g[4] += w * w1 * w2;
+                fs.g[5] += w * w2 * w2;
+                fs.h[0] += w * b * w0;
+                fs.h[1] += w * b * w1;
+                fs.h[2] += w * b * w2;
+                fs.bb += w * b * b;
+                owns = true;
+            }
+        });
+        if (!systems) continue;
+        fs.owns = owns;
+        for (int k = 0; k < 3; ++k) fs.entry[k] = model.corner_entry(cdt, e + EdgeInd(k));
+        (*systems)[f] = fs;
+    }
+    return emax;
+}
+
+}  // namespace
+
+double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress) {
+    if (!image.real()) return -1.0;
+    std::vector<double> kept(model->entry_count()), start(model->entry_count());
+    for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = model->entry_value(i);
+    MeshSystems systems;
+    WedgeFitOptions fo;
+    fo.iterations = 8;
+    fo.prior_weight = kFloor;  // each value also drawn to where the round started
+    fo.support_bounds = -1;
+    // Each pass measures the values the round before left (the first: those given) and weighs by
+    // them; a last pass without weights measures the last round's.
+    double best = 0, last = 0;
+    double e_norm = 0;
+    for (int r = 0; r <= rounds; ++r) {
+        progress("minimax fit", double(r) / double(rounds + 1));
+        // The first pass has no weights yet: it measures only.
+        const bool fit = r < rounds;
+        last = weighted_pass(cdt, image, *model, std::min(r + 1, 5), e_norm > 0 ? e_norm : 1.0, fit && r > 0 ? &systems.faces : nullptr);
+        if (r == 0 && fit) {
+            // The first round's weights need the first measure: one pass more.
+            e_norm = last;
+            last = weighted_pass(cdt, image, *model, 1, e_norm, &systems.faces);
+        }
+        if (r == 0 || last < best) {
+            best = last;
+            if (r > 0)
+                for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = model->entry_value(i);
+        }
+        if (!fit || best <= 0) break;
+        e_norm = last;
+        systems.stale.assign(systems.faces.size(), 0);
+        for (std::size_t i = 0; i < start.size(); ++i) start[i] = model->entry_value(i);
+        fit_wedge_values(cdt, image, fo, model, nullptr, &start, {}, &systems);
+    }
+    for (std::size_t i = 0; i < kept.size(); ++i) model->set_entry_value(i, kept[i]);
+    progress("minimax fit", 1.0);
+    return best;
+}
+
+}  // namespace erd

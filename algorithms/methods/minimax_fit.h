@@ -1,0 +1,25 @@
+// The wedge values of an ERD model of a real image fitted towards the smallest LARGEST error over
+// the valid pixels (issue 47: --max-error on terrain), on a fixed mesh.
+//
+// Greedy insertion (hmm's rule, and GPI's) puts a vertex on a pixel and gives it the pixel's
+// value, so on a convex or concave stretch every face's plane lies on one side of the data and its
+// largest error is twice what a plane shifted half way would have. The ERD model's values are
+// free (its wedge values are fitted, beyond the thesis: wedge_fit.h), so the fit here moves them
+// to balance the errors: iteratively reweighted least squares for ever higher norms of the errors
+// (weights (|e| / e_max)^2, ^4, ^8, ... at least 0.1, in the refit's face systems), the values of
+// the round with the smallest largest error kept. The methods then insert points where the
+// error is still above the bound (scaffold.h), so the bound holds whatever the fit reached.
+#pragma once
+#include "algorithms/imaging/image.h"
+#include "algorithms/model/erd_model.h"
+#include "kernel/cdt.h"
+#include "kernel/progress.h"
+
+namespace erd {
+
+// Refits model's values on cdt against the real image (valid pixels) for `rounds` rounds; returns
+// the largest error over the valid pixels of the values kept (those of the best round, or the
+// values it was given when none was better).
+double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress = {});
+
+}  // namespace erd
