@@ -37,11 +37,7 @@ bool PointRemover::worst_pixel(LatticePoint* out) {
     const FaceInd f = by_face_.top();
     LatticePoint p[3];
     double z[3 * 3];
-    for (int i = 0; i < 3; ++i) {
-        const EdgeInd e = 3 * f + EdgeInd(i);
-        p[i] = cdt_.point(cdt_.org(e));
-        for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = model_.corner_value(cdt_, e, c);
-    }
+    face_corners(f, p, z);
     SpanPlane planes[3];
     for (int c = 0; c < channels_; ++c) planes[c].set(p[0], z[c], p[1], z[channels_ + c], p[2], z[2 * channels_ + c]);
     const std::size_t width = std::size_t(image_.width), nc = std::size_t(channels_);
@@ -109,14 +105,18 @@ double PointRemover::triangle_error(const LatticePoint* p, const double* z) cons
     return total;
 }
 
-double PointRemover::face_error_now(FaceInd f) const {
-    LatticePoint p[3];
-    double z[3 * 3];
+void PointRemover::face_corners(FaceInd f, LatticePoint* p, double* z) const {
     for (int i = 0; i < 3; ++i) {
         const EdgeInd e = 3 * f + EdgeInd(i);
         p[i] = cdt_.point(cdt_.org(e));
         for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = model_.corner_value(cdt_, e, c);
     }
+}
+
+double PointRemover::face_error_now(FaceInd f) const {
+    LatticePoint p[3];
+    double z[3 * 3];
+    face_corners(f, p, z);
     return triangle_error(p, z);
 }
 
@@ -212,33 +212,41 @@ double PointRemover::hole_triangle_error(std::size_t t) {
     return e;
 }
 
-double PointRemover::significance(VertInd v) {
-    if (!gather(v)) return 0.0;
+bool PointRemover::significance_of(VertInd v, double* sig) {
+    if (!gather(v)) return false;
     ++stats_.evaluations;
     double before = 0.0;
     for (FaceInd f : star_) before += face_err_[f];
     triangulate_hole();
     double after = 0.0;
     for (std::size_t t = 0; t < tris_.size(); t += 3) after += hole_triangle_error(t);
-    return after - before;
+    *sig = after - before;
+    return true;
+}
+
+double PointRemover::significance(VertInd v) {
+    double sig = 0.0;
+    return significance_of(v, &sig) ? sig : 0.0;
 }
 
 void PointRemover::update(VertInd v) {
     if (v >= stale_.size()) stale_.resize(cdt_.vertex_count(), 0);
     stale_[v] = 0;
-    if (!cdt_.vertex_live(v) || !cdt_.can_remove(v)) {
+    double sig = 0.0;
+    if (!cdt_.vertex_live(v) || !significance_of(v, &sig)) {
         heap_.remove(v);
         return;
     }
-    heap_.set(v, -significance(v), tie_of(cdt_.point(v)));
+    heap_.set(v, -sig, tie_of(cdt_.point(v)));
 }
 
 void PointRemover::start() {
     started_ = true;
     stale_.assign(cdt_.vertex_count(), 0);
     heap_.reserve(cdt_.vertex_count());
+    double sig = 0.0;
     for (VertInd v = 0; v < cdt_.vertex_count(); ++v)
-        if (cdt_.vertex_live(v) && cdt_.can_remove(v)) heap_.set(v, -significance(v), tie_of(cdt_.point(v)));
+        if (cdt_.vertex_live(v) && significance_of(v, &sig)) heap_.set(v, -sig, tie_of(cdt_.point(v)));
 }
 
 void PointRemover::rescan_created() {

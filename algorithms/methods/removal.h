@@ -129,7 +129,9 @@ private:
     // neighbouring vertices share most of their hole triangles.
     double hole_triangle_error(std::size_t t);
     double face_error_now(FaceInd f) const;
+    void face_corners(FaceInd f, LatticePoint* p, double* z) const;  // points, 3 x channels_ values
     void rescan_created();
+    bool significance_of(VertInd v, double* sig);  // false (nothing computed) when v is not removable
     void update(VertInd v);  // recompute v's significance into the heap (or drop it)
     void touch_neighbours(const std::vector<VertInd>& around);
     // The star polygon of v into poly_ (positive order) and each vertex's value on the hole into

@@ -332,25 +332,45 @@ WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
     return f;
 }
 
+namespace {
+
+ErdModel* fresh_model(const Image& image, const GenerateOptions& options, std::unique_ptr<ErdModel>* out) {
+    *out = std::make_unique<ErdModel>(image, wedge_options(options));
+    return out->get();
+}
+ErdChannels* fresh_model(const Image& image, const GenerateOptions& options, std::unique_ptr<ErdChannels>* out) {
+    *out = std::make_unique<ErdChannels>(image, wedge_options(options), options.colour.shared_wedge_position,
+                                         options.colour.density);
+    return out->get();
+}
+
+// --bpr on an ERD mesh (not a real image's): bad-point replacement on *model's values, then the
+// compact mesh and a fresh model of it (line-search values) in *fresh, which *model then points to.
+template <class View, class M>
+Status erd_bpr(Cdt& cdt, const Image& image, const GenerateOptions& options, M** model, std::unique_ptr<M>* fresh,
+               StageTimer* timer, GenerateResult* result) {
+    if (options.bpr <= 0 || image.real()) return Status::success();
+    View values(**model);
+    result->stats.has_removal = true;
+    Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress, &result->stats.removal);
+    if (!st) return st;
+    Cdt compact;
+    if (!(st = compact_cdt(cdt, &compact))) return st;
+    cdt = std::move(compact);
+    *model = fresh_model(image, options, fresh);
+    (*model)->assign_all(cdt);
+    timer->lap("bad-point replacement");
+    return Status::success();
+}
+
+}  // namespace
+
 Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result,
                        const std::vector<double>* line_search_values) {
     std::unique_ptr<ErdModel> fresh;
-    if (options.bpr > 0 && !image.real()) {
-        ErdRemovalModel values(*model);
-        result->stats.has_removal = true;
-        Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress,
-                                          &result->stats.removal);
-        if (!st) return st;
-        Cdt compact;
-        if (!(st = compact_cdt(cdt, &compact))) return st;
-        cdt = std::move(compact);
-        fresh = std::make_unique<ErdModel>(image, wedge_options(options));
-        fresh->assign_all(cdt);
-        model = fresh.get();
-        line_search_values = nullptr;
-        timer->lap("bad-point replacement");
-    }
+    if (Status st = erd_bpr<ErdRemovalModel>(cdt, image, options, &model, &fresh, timer, result); !st) return st;
+    if (fresh) line_search_values = nullptr;
     // A real image: the values pinned to the vertices' pixels after each change (ErdModel::
     // pin_pixel_vertices), no guard (its models are not rounded), then the max-error pass.
     const bool real = image.real();
@@ -406,21 +426,7 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
 Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
     std::unique_ptr<ErdChannels> fresh;
-    if (options.bpr > 0 && !image.real()) {
-        ErdChannelsRemovalModel values(*model);
-        result->stats.has_removal = true;
-        Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress,
-                                          &result->stats.removal);
-        if (!st) return st;
-        Cdt compact;
-        if (!(st = compact_cdt(cdt, &compact))) return st;
-        cdt = std::move(compact);
-        fresh = std::make_unique<ErdChannels>(image, wedge_options(options), options.colour.shared_wedge_position,
-                                              options.colour.density);
-        fresh->assign_all(cdt);
-        model = fresh.get();
-        timer->lap("bad-point replacement");
-    }
+    if (Status st = erd_bpr<ErdChannelsRemovalModel>(cdt, image, options, &model, &fresh, timer, result); !st) return st;
     const bool real = image.real();  // as gray's
     if (options.wedge_fit > 0) {
         // As gray's refit (prior and support bounds per channel), then its flips.
