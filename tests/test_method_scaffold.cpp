@@ -188,8 +188,8 @@ TEST_CASE("erd generate: an unknown --method gets a did-you-mean, exit 2", "[cli
     REQUIRE(erd_test::binary_available());
     erd_test::RunResult r = erd_test::run_erd("generate --method erdgdi -i x.pgm -o y.erd");
     CHECK(r.status == 2);
-    CHECK_THAT(r.err, Catch::Contains("unknown method 'erdgdi'; available: ed, gpi, erded, erdgpi. Did you mean 'erdgpi'?"));
+    CHECK_THAT(r.err, Catch::Contains("unknown method 'erdgdi'; available: ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr. Did you mean 'erdgpi'?"));
     r = erd_test::run_erd("generate --method zzzzzz -i x.pgm -o y.erd");
     CHECK(r.status == 2);
-    CHECK_THAT(r.err, Catch::Contains("unknown method 'zzzzzz'; available: ed, gpi, erded, erdgpi.\n"));
+    CHECK_THAT(r.err, Catch::Contains("unknown method 'zzzzzz'; available: ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr.\n"));
 }
