@@ -75,6 +75,13 @@ std::vector<std::string> result_lines(const RunStats& r) {
             out.push_back("max error over valid pixels: " + real("%.6g", s.max_error) + " (after " +
                           std::to_string(s.fixup_insertions) + " insertions of the last greedy pass)");
     }
+    if (r.has_quality) {
+        const QualitySearchStats& q = r.quality;
+        out.push_back("quality search: " + std::to_string(q.points) + " points after " + std::to_string(q.runs) + " runs (" +
+                      (q.reached ? "the largest count short of the target: " + std::to_string(q.below)
+                                 : std::string("the target not reached at N")) +
+                      "; psnr " + real("%.4f", q.psnr) + " dB, max error " + real("%.4g", q.max_error) + ")");
+    }
     return out;
 }
 
