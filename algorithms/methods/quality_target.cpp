@@ -50,12 +50,29 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
     Status st = check_target(cap, image.width, image.height);
     if (!st) return st;
 
-    // Each run makes exactly its count: the methods' own quality stops are off.
+    // The first run is the method's own, its stops on: a greedy loop stops at the first count its
+    // mesh reaches the target, and where that mesh is the model (GPI: no refit or flips after, the
+    // same quality measured) that count is the smallest, as the loop inserts the same points in the
+    // same order whatever N is. Else its model, when it reaches the target, is the bracket's top.
+    int runs = 1;
+    Probe lo, hi, cur;
+    bool have_lo = false, have_hi = false;
+    if (!(st = method.run(image, options, &cur.result))) return st;
+    if (!(st = measure_quality(image, cur.result.model, options, &cur.db, &cur.max_error))) return st;
+    cur.n = std::int64_t(cur.result.achieved);
+    cur.meets = margin(cur, options) >= 0;
+    const RunStats& own = cur.result.stats;
+    const bool exact = own.has_greedy && !own.has_erd && !options.optimize &&
+                       (options.psnr <= 0 || std::fabs(own.greedy.psnr - cur.db) <= 1e-9 * std::max(1.0, cur.db)) &&
+                       (options.max_error < 0 || own.greedy.max_error == cur.max_error);
+    if (cur.meets) hi = std::move(cur), have_hi = true;
+    else lo = std::move(cur), have_lo = true;
+
+    // Then runs that make exactly their count: the methods' own quality stops off.
     GenerateOptions at = options;
     at.psnr = 0;
     at.max_error = -1;
     at.density_given = false;
-    int runs = 0;
     auto probe = [&](std::int64_t n, Probe* p) -> Status {
         at.points = n;
         p->n = n;
@@ -68,28 +85,26 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
         return s;
     };
 
-    // The bracket: lo short of the target (or none), hi reaching it (or none).
-    Probe lo, hi, cur;
-    bool have_lo = false, have_hi = false;
-    std::int64_t n = std::max<std::int64_t>(4, cap / 16);
-    for (;;) {
-        if (!(st = probe(n, &cur))) return st;
-        if (cur.meets) {
-            hi = std::move(cur), have_hi = true;
-            if (have_lo || n == 4) break;
+    // The bracket: lo short of the target, hi reaching it; grown from the first run by factors of 4
+    // down (or, when N itself falls short, not at all).
+    if (have_hi && !exact && hi.n > 4) {
+        std::int64_t n = std::max<std::int64_t>(4, hi.n / 4);
+        for (;;) {
+            if (!(st = probe(n, &cur))) return st;
+            if (!cur.meets) {
+                lo = std::move(cur), have_lo = true;
+                break;
+            }
+            hi = std::move(cur);
+            if (n == 4) break;
             n = std::max<std::int64_t>(4, n / 4);
-        } else {
-            lo = std::move(cur), have_lo = true;
-            if (have_hi || n == cap) break;
-            n = std::min(cap, n * 4);
         }
-        if ((have_lo && have_hi) || (have_hi && hi.n == 4)) break;
     }
 
     // Narrowed in log N until the ends are within the tolerance (or next to each other).
     int same_side = 0;
     bool last_meets = false;
-    while (have_lo && have_hi && hi.n > lo.n + 1 && double(hi.n) > kQualityCountTolerance * double(lo.n)) {
+    while (!exact && have_lo && have_hi && hi.n > lo.n + 1 && double(hi.n) > kQualityCountTolerance * double(lo.n)) {
         const double a = std::log(double(lo.n)), b = std::log(double(hi.n));
         const double ma = margin(lo, options), mb = margin(hi, options);
         double x = 0.5 * (a + b);
@@ -109,11 +124,13 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
 
     Probe& kept = have_hi ? hi : lo;
     *result = std::move(kept.result);
+    if (have_hi) result->requested = std::size_t(kept.n);
     result->stats.has_quality = true;
     QualitySearchStats& q = result->stats.quality;
     q.runs = runs;
     q.points = std::size_t(kept.n);
     q.below = have_lo && have_hi ? std::size_t(lo.n) : 0;
+    q.exact = exact && have_hi;
     q.reached = have_hi;
     q.psnr = kept.db;
     q.max_error = kept.max_error;

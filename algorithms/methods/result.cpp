@@ -78,7 +78,8 @@ std::vector<std::string> result_lines(const RunStats& r) {
     if (r.has_quality) {
         const QualitySearchStats& q = r.quality;
         out.push_back("quality search: " + std::to_string(q.points) + " points after " + std::to_string(q.runs) + " runs (" +
-                      (q.reached ? "the largest count short of the target: " + std::to_string(q.below)
+                      (q.exact ? std::string("the greedy loop's own stop")
+                       : q.reached ? "the largest count short of the target: " + std::to_string(q.below)
                                  : std::string("the target not reached at N")) +
                       "; psnr " + real("%.4f", q.psnr) + " dB, max error " + real("%.4g", q.max_error) + ")");
     }

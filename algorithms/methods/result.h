@@ -96,6 +96,7 @@ struct QualitySearchStats {
     std::size_t points = 0;      // the count kept (the bracket's upper end)
     std::size_t below = 0;       // the largest count measured short of the target (0: none)
     bool reached = false;        // the kept model reaches the target (false: N itself falls short)
+    bool exact = false;          // the method's own stop found the count (GPI's greedy loop): one run
     double psnr = 0;             // the kept model's quality, as measured (each when its target is set)
     double max_error = 0;
 };
