@@ -8,7 +8,7 @@
 #
 # The tables users read are rewritten in place in docs/RESULTS.md, each in its own marked section
 # (tools/results_section.sh; the rest of the file is left alone): "speed" (the scale block, beside
-# hmm), "memory", "colour-cost", "terrain" (issue 47), and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
+# hmm), "equal-quality" (beside hmm), "memory", "colour-cost", "terrain" (issue 47), and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
 # not run leaves its section as it was. RESULTS=FILE writes them elsewhere, RESULTS=none nowhere.
 set -u
 ERD=${1:-build/erd}
@@ -286,6 +286,22 @@ if [[ -s $speed_rows ]]; then
         echo "Targets (issue 18): erdgpi and erded at or below 1.0x hmm, within 2x gpi; peak memory in the"
         echo "memory section."
     } | results_section speed "Speed beside hmm (make bench, scale block)"
+fi
+# Equal quality beside hmm (issue 46): bench/equal_quality.sh (hmm's PSNR at 1%, the erdgpi count
+# that reaches it by --psnr, both timed). Writes the "equal-quality" section of docs/RESULTS.md.
+if [[ -n $HMM ]]; then
+    eq_table=$(bench/equal_quality.sh "$HMM" "$ERD" "$IMAGES" "$OUT" "$SCALE_RUNS")
+    echo "$eq_table" | sed 's/^/quality /'
+    {
+        echo "hmm meshes 1% of the pixels (\`hmm -z 1 -e 0 -p N\`); its PSNR is its STL evaluated at every pixel"
+        echo "(bench/stl_psnr.py); erdgpi's count is the fewest points whose model reaches that PSNR"
+        echo "(\`erd generate -m erdgpi -d 1 --psnr P\`, found within 2%). Whole process CPU ms, medians of"
+        echo "$SCALE_RUNS runs after a warm-up, one program after the other; ratio = erdgpi / hmm. synth 2048 soft:"
+        echo "\`erd synth\` 2048^2 with \`--edges soft\` for erdgpi. Targets (issue 46): equal quality <= 0.5x,"
+        echo "equal points <= 1.0x."
+        echo
+        echo "$eq_table"
+    } | results_section equal-quality "Equal quality beside hmm (make bench, issue 46)"
 fi
 # ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
