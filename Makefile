@@ -147,7 +147,7 @@ $(BUILD)/cgal_tests: $(BUILD)/third_party/catch_main.o $(BUILD)/tests/cgal/test_
 cgal-test: deps $(BUILD)/cgal_tests
 	$(BUILD)/cgal_tests
 $(BUILD)/imageio/png.o: $(ZLIB_HDR)
-$(BUILD)/imageio/tiff.o: $(TIFF_HDR)
+$(BUILD)/imageio/tiff.o $(BUILD)/imageio/tiff_stream.o $(BUILD)/imageio/tiff_write.o: $(TIFF_HDR)
 $(BUILD)/third_party/catch_main.o: $(CATCH_HDR)
 $(TEST_OBJ): $(CATCH_HDR)
 # The tests' own objects carry no debug information (a failing test names its file and line

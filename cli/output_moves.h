@@ -26,7 +26,7 @@ struct Move {
 // (`kill -9 %1`, timeout -s KILL), at any moment leaves every target old or every target new: the
 // child finishes. Only a kill of the child itself (a kill of every process, the OOM killer
 // choosing it) between two renames leaves some targets new and some old, each whole, and the old
-// files' second names (.erd-PID-N.tmp) beside them (docs/DECISIONS.md "Kill at any moment").
+// files' second names (.erd-PID-N.tmp) beside them (docs/DECISIONS.md "Outputs").
 // Returns the errno of the first failure, with the moves before it undone, or 0; *failed = its
 // index. The caller holds the handled signals (output_temporaries.h). pause_ms > 0 sleeps that
 // long before each move (the tests' ERD_TEST_COMMIT_PAUSE_MS, outputs.h).

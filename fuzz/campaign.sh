@@ -6,7 +6,7 @@
 #
 # Usage: fuzz/campaign.sh [-j JOBS] SECONDS [fuzz_NAME...]
 #
-# Where things go (docs/DECISIONS.md "Fuzz campaign"):
+# Where things go (docs/DECISIONS.md "Testing"):
 #   kept corpus   $FUZZ_CORPUS/NAME, default ${XDG_CACHE_HOME:-~/.cache}/erd-fuzz/NAME: outside
 #                 the checkout (no tracked file, kept by `make clean` and by a new work tree on
 #                 the same machine), shared by the checkouts of the machine, reused by every run

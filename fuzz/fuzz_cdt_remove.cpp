@@ -25,32 +25,13 @@
 #include <vector>
 
 #include "kernel/cdt.h"
+#include "fuzz/fuzz_checks.h"
+#include "tests/cdt_util.h"
+
+using fuzz_checks::check;
+using cdt_util::constraint_coords;
 
 namespace {
-
-struct Reader {
-    const std::uint8_t* data;
-    std::size_t size, pos = 0;
-    bool more() const { return pos < size; }
-    std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
-};
-
-void check(bool ok) {
-    if (!ok) __builtin_trap();
-}
-
-std::vector<std::array<std::int32_t, 4>> constraint_coords(const erd::Cdt& cdt) {
-    std::vector<std::array<erd::VertInd, 2>> c;
-    cdt.export_constraints(&c);
-    std::vector<std::array<std::int32_t, 4>> out;
-    for (const auto& e : c) {
-        erd::LatticePoint a = cdt.point(e[0]), b = cdt.point(e[1]);
-        if (erd::perturb_before(b, a)) std::swap(a, b);
-        out.push_back({a.x, a.y, b.x, b.y});
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 // verify(), then a fresh build of the live points (in reverse index order, one by one) and of
 // the constrained edges must give the same faces and constraints.
@@ -93,7 +74,7 @@ void check_changes(const erd::Cdt& cdt, std::size_t live_before, const std::vect
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace erd;
-    Reader in{data, size};
+    fuzz_checks::ByteReader in{data, size};
     const std::int32_t mx = std::int32_t(1 + in.byte() % 16), my = std::int32_t(1 + in.byte() % 16);
     const std::uint32_t mode = in.byte();
     const std::int32_t scale = (mode & 4) ? (1 << 19) : 1;

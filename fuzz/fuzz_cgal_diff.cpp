@@ -16,27 +16,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "fuzz/fuzz_checks.h"
 #include "tests/cgal/cgal_diff.h"
 #include "third_party/cgal_glue.h"
 
-namespace {
-
-struct Reader {
-    const std::uint8_t* data;
-    std::size_t size, pos = 0;
-    bool more() const { return pos < size; }
-    std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
-};
-
-void check(bool ok) {
-    if (!ok) __builtin_trap();
-}
-
-}  // namespace
+using fuzz_checks::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace cgal_diff;
-    Reader in{data, size};
+    fuzz_checks::ByteReader in{data, size};
     const std::int32_t gx = std::int32_t(1 + in.byte() % 32), gy = std::int32_t(1 + in.byte() % 32);
     const std::uint32_t mode = in.byte();
     const bool scaled = (mode & 2) != 0;

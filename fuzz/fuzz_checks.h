@@ -19,6 +19,14 @@ inline void check(bool ok) {
     if (!ok) std::abort();
 }
 
+// The kernel targets' input: bytes taken one at a time, zeros past the end.
+struct ByteReader {
+    const std::uint8_t* data;
+    std::size_t size, pos = 0;
+    bool more() const { return pos < size; }
+    std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
+};
+
 // The image limits the decoder targets run under: small enough that every allocation stays cheap.
 inline erd::imageio::ImageLimits image_limits() {
     erd::imageio::ImageLimits limits;

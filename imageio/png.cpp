@@ -214,7 +214,7 @@ Status encode_png(const Image& im, std::string* out) {
     const std::vector<unsigned char> filtered = filter_rows(raw, stride, rows, bpp);
 
     // Level 9, strategy Z_FILTERED (as libpng for filtered rows): the smallest of the settings
-    // measured (docs/DECISIONS.md, "PNG output").
+    // measured (docs/DECISIONS.md, "Images").
     z_stream z{};
     if (deflateInit2(&z, 9, Z_DEFLATED, 15, 9, Z_FILTERED) != Z_OK) return Status::failure("PNG output: zlib failed to start");
     std::string idat(deflateBound(&z, uLong(filtered.size())), '\0');

@@ -1,8 +1,8 @@
+// TIFF and GeoTIFF read through libtiff after our checks, whole or by windows (tiff.h).
 #include "imageio/tiff.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -15,130 +15,16 @@
 
 #include "algorithms/imaging/real_image.h"
 #include "imageio/messages.h"
+#include "imageio/tiff_stream.h"
 
 namespace erd::imageio {
 
-namespace {
+using namespace tiff_io;
 
-// The GeoTIFF tags and GDAL's nodata tag, which libtiff does not know: registered on a handle that
-// writes them (a reader sees them as libtiff's anonymous fields, which read the same way).
-constexpr ttag_t kPixelScale = 33550, kTiepoint = 33922, kTransform = 34264, kGeoKeys = 34735, kGeoDoubles = 34736,
-                 kGeoAscii = 34737, kGdalNodata = 42113;
-const TIFFFieldInfo kGeoFields[] = {
-    {kPixelScale, -1, -1, TIFF_DOUBLE, FIELD_CUSTOM, 1, 1, const_cast<char*>("ModelPixelScaleTag")},
-    {kTiepoint, -1, -1, TIFF_DOUBLE, FIELD_CUSTOM, 1, 1, const_cast<char*>("ModelTiepointTag")},
-    {kTransform, -1, -1, TIFF_DOUBLE, FIELD_CUSTOM, 1, 1, const_cast<char*>("ModelTransformationTag")},
-    {kGeoKeys, -1, -1, TIFF_SHORT, FIELD_CUSTOM, 1, 1, const_cast<char*>("GeoKeyDirectoryTag")},
-    {kGeoDoubles, -1, -1, TIFF_DOUBLE, FIELD_CUSTOM, 1, 1, const_cast<char*>("GeoDoubleParamsTag")},
-    {kGeoAscii, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0, const_cast<char*>("GeoAsciiParamsTag")},
-    {kGdalNodata, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0, const_cast<char*>("GDAL_NODATA")},
-};
+namespace {
 
 // A block (strip or tile) larger than this is refused before libtiff allocates it.
 constexpr std::uint64_t kMaxBlockBytes = std::uint64_t(1) << 28;
-
-// The bytes libtiff reads from or writes to: memory, a file, or the caller's sink.
-struct Stream {
-    const unsigned char* data = nullptr;  // reading memory
-    std::uint64_t size = 0;
-    std::string* out = nullptr;           // writing memory
-    std::FILE* file = nullptr;            // reading a file
-    ByteSink* sink = nullptr;             // writing (and reading back) the caller's file
-    std::uint64_t pos = 0;
-};
-
-tmsize_t stream_read(thandle_t h, void* buf, tmsize_t n) {
-    Stream* s = static_cast<Stream*>(h);
-    if (n <= 0) return 0;
-    if (s->sink) {
-        const std::size_t got = s->sink->read_at(s->pos, buf, std::size_t(n));
-        s->pos += got;
-        return tmsize_t(got);
-    }
-    if (s->file) {
-        if (std::fseek(s->file, long(s->pos), SEEK_SET) != 0) return 0;
-        const std::size_t got = std::fread(buf, 1, std::size_t(n), s->file);
-        s->pos += got;
-        return tmsize_t(got);
-    }
-    const std::uint64_t size = s->out ? s->out->size() : s->size;
-    const unsigned char* data = s->out ? reinterpret_cast<const unsigned char*>(s->out->data()) : s->data;
-    if (s->pos >= size) return 0;
-    const std::uint64_t k = std::min<std::uint64_t>(std::uint64_t(n), size - s->pos);
-    std::memcpy(buf, data + s->pos, std::size_t(k));
-    s->pos += k;
-    return tmsize_t(k);
-}
-
-tmsize_t stream_write(thandle_t h, void* buf, tmsize_t n) {
-    Stream* s = static_cast<Stream*>(h);
-    if (s->sink && n >= 0) {
-        if (!s->sink->write_at(s->pos, buf, std::size_t(n))) return 0;
-        s->pos += std::uint64_t(n);
-        return n;
-    }
-    if (!s->out || n < 0) return 0;
-    const std::uint64_t end = s->pos + std::uint64_t(n);
-    if (end > s->out->size()) s->out->resize(std::size_t(end));
-    std::memcpy(&(*s->out)[std::size_t(s->pos)], buf, std::size_t(n));
-    s->pos = end;
-    return n;
-}
-
-toff_t stream_size(thandle_t h) {
-    Stream* s = static_cast<Stream*>(h);
-    if (s->sink) return toff_t(s->sink->size());
-    return s->out ? toff_t(s->out->size()) : toff_t(s->size);
-}
-
-toff_t stream_seek(thandle_t h, toff_t off, int whence) {
-    Stream* s = static_cast<Stream*>(h);
-    std::uint64_t base = 0;
-    if (whence == SEEK_CUR) base = s->pos;
-    else if (whence == SEEK_END) base = stream_size(h);
-    s->pos = base + off;
-    return s->pos;
-}
-
-int stream_close(thandle_t) { return 0; }
-int stream_map(thandle_t, void**, toff_t*) { return 0; }
-void stream_unmap(thandle_t, void*, toff_t) {}
-
-// libtiff's messages for one handle: the first error kept (one line), warnings dropped (unknown
-// tags, such as the GeoTIFF ones, are warnings).
-struct Messages {
-    std::string error;
-};
-
-int on_error(TIFF*, void* user, const char* module, const char* fmt, va_list ap) {
-    Messages* m = static_cast<Messages*>(user);
-    if (m && m->error.empty()) {
-        char buf[512];
-        std::vsnprintf(buf, sizeof buf, fmt, ap);
-        std::string line = buf;
-        if (module && *module && line.find(module) == std::string::npos) line = std::string(module) + ": " + line;
-        for (char& c : line)
-            if (c == '\n' || c == '\r') c = ' ';
-        m->error = printable(line);
-    }
-    return 1;
-}
-
-int on_warning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
-
-TIFF* open_stream(Stream* s, const char* mode, Messages* msg, std::uint64_t max_alloc) {
-    TIFFOpenOptions* opts = TIFFOpenOptionsAlloc();
-    if (!opts) return nullptr;
-    TIFFOpenOptionsSetErrorHandlerExtR(opts, on_error, msg);
-    TIFFOpenOptionsSetWarningHandlerExtR(opts, on_warning, msg);
-    if (max_alloc) TIFFOpenOptionsSetMaxSingleMemAlloc(opts, tmsize_t(max_alloc));
-    TIFF* tif = TIFFClientOpenExt("TIFF", mode, s, stream_read, stream_write, stream_seek, stream_close, stream_size, stream_map,
-                                  stream_unmap, opts);
-    TIFFOpenOptionsFree(opts);
-    return tif;
-}
-
-std::string why(const Messages& m, const std::string& fallback) { return m.error.empty() ? fallback : m.error; }
 
 // A tag of doubles (stored as DOUBLE or FLOAT), shorts or text, as libtiff has it.
 bool get_doubles(TIFF* tif, ttag_t tag, std::vector<double>* out) {
@@ -217,16 +103,6 @@ inline double sample_at(const unsigned char* p, SampleType t) {
         case SampleType::f64: { double v; std::memcpy(&v, p, 8); return v; }
     }
     return 0;
-}
-
-int bytes_of(SampleType t) {
-    switch (t) {
-        case SampleType::u8: return 1;
-        case SampleType::u16: case SampleType::i16: return 2;
-        case SampleType::u32: case SampleType::i32: case SampleType::f32: return 4;
-        case SampleType::f64: return 8;
-    }
-    return 1;
 }
 
 }  // namespace
@@ -502,185 +378,6 @@ Status decode_tiff(const unsigned char* data, std::size_t size, Image* out, std:
     TiffReader r;
     if (Status s = r.open(data, size, limits); !s) return s;
     return r.read(0, 0, r.info().width, r.info().height, out, warning);
-}
-
-namespace {
-
-// The value v as type t: integers rounded (halves away from zero) and clamped to the type.
-template <class T>
-T to_type(double v) {
-    if constexpr (std::is_floating_point<T>::value) {
-        return T(v);
-    } else {
-        if (std::isnan(v)) return T(0);
-        const double r = std::round(v);
-        const double lo = double(std::numeric_limits<T>::min()), hi = double(std::numeric_limits<T>::max());
-        return T(r < lo ? lo : (r > hi ? hi : r));
-    }
-}
-
-}  // namespace
-
-namespace {
-
-// The directory of a w x h raster of C channels of type t with meta's tags; *rps the rows per strip.
-bool set_fields(TIFF* tif, int w, int h, std::size_t C, SampleType t, const RasterMeta& meta, std::uint32_t* rps) {
-    const std::size_t bs = std::size_t(bytes_of(t));
-    const bool fp = t == SampleType::f32 || t == SampleType::f64;
-    std::uint16_t fmt = SAMPLEFORMAT_UINT;
-    if (t == SampleType::i16 || t == SampleType::i32) fmt = SAMPLEFORMAT_INT;
-    if (fp) fmt = SAMPLEFORMAT_IEEEFP;
-    const std::size_t row_bytes = std::size_t(w) * C * bs;
-    *rps = std::uint32_t(std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(h), (std::size_t(1) << 16) / row_bytes)));
-    TIFFMergeFieldInfo(tif, kGeoFields, sizeof kGeoFields / sizeof kGeoFields[0]);
-    bool ok = TIFFSetField(tif, TIFFTAG_IMAGEWIDTH, std::uint32_t(w)) && TIFFSetField(tif, TIFFTAG_IMAGELENGTH, std::uint32_t(h)) &&
-              TIFFSetField(tif, TIFFTAG_SAMPLESPERPIXEL, std::uint16_t(C)) && TIFFSetField(tif, TIFFTAG_BITSPERSAMPLE, std::uint16_t(8 * bs)) &&
-              TIFFSetField(tif, TIFFTAG_SAMPLEFORMAT, fmt) &&
-              TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, C == 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK) &&
-              TIFFSetField(tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG) && TIFFSetField(tif, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE) &&
-              TIFFSetField(tif, TIFFTAG_PREDICTOR, fp ? PREDICTOR_FLOATINGPOINT : PREDICTOR_HORIZONTAL) &&
-              TIFFSetField(tif, TIFFTAG_ROWSPERSTRIP, *rps);
-    const GeoTags& g = meta.geo;
-    if (ok && !g.pixel_scale.empty()) ok = TIFFSetField(tif, kPixelScale, int(g.pixel_scale.size()), g.pixel_scale.data());
-    if (ok && !g.tiepoints.empty()) ok = TIFFSetField(tif, kTiepoint, int(g.tiepoints.size()), g.tiepoints.data());
-    if (ok && !g.transform.empty()) ok = TIFFSetField(tif, kTransform, int(g.transform.size()), g.transform.data());
-    if (ok && !g.keys.empty()) ok = TIFFSetField(tif, kGeoKeys, int(g.keys.size()), g.keys.data());
-    if (ok && !g.doubles.empty()) ok = TIFFSetField(tif, kGeoDoubles, int(g.doubles.size()), g.doubles.data());
-    if (ok && !g.ascii.empty()) ok = TIFFSetField(tif, kGeoAscii, g.ascii.c_str());
-    if (ok && meta.has_nodata) {
-        char text[64];
-        if (std::isnan(meta.nodata)) std::snprintf(text, sizeof text, "nan");
-        else std::snprintf(text, sizeof text, "%.17g", meta.nodata);
-        ok = TIFFSetField(tif, kGdalNodata, text);
-    }
-    return ok;
-}
-
-// Row values (NaN: nodata) as type t at dst.
-template <class T>
-void put_values(const double* v, std::size_t n, double nodata, unsigned char* dst) {
-    for (std::size_t k = 0; k < n; ++k) {
-        const T x = to_type<T>(std::isnan(v[k]) ? nodata : v[k]);
-        std::memcpy(dst + k * sizeof(T), &x, sizeof(T));
-    }
-}
-
-void put_typed(SampleType t, const double* v, std::size_t n, double nodata, unsigned char* dst) {
-    switch (t) {
-        case SampleType::u8: put_values<std::uint8_t>(v, n, nodata, dst); break;
-        case SampleType::u16: put_values<std::uint16_t>(v, n, nodata, dst); break;
-        case SampleType::u32: put_values<std::uint32_t>(v, n, nodata, dst); break;
-        case SampleType::i16: put_values<std::int16_t>(v, n, nodata, dst); break;
-        case SampleType::i32: put_values<std::int32_t>(v, n, nodata, dst); break;
-        case SampleType::f32: put_values<float>(v, n, nodata, dst); break;
-        case SampleType::f64: put_values<double>(v, n, nodata, dst); break;
-    }
-}
-
-// An integer type needs a value for nodata: its smallest (GDAL's habit for signed types).
-RasterMeta with_nodata(RasterMeta meta, SampleType t, bool holes) {
-    const bool fp = t == SampleType::f32 || t == SampleType::f64;
-    if (holes && !meta.has_nodata && !fp) {
-        meta.has_nodata = true;
-        meta.nodata = t == SampleType::i16 ? -32768.0 : t == SampleType::i32 ? -2147483648.0 : 0.0;
-    }
-    return meta;
-}
-
-class TiffRowWriter : public RowWriter {
-public:
-    Stream stream;
-    Messages msg;
-    TIFF* tif = nullptr;
-    int w = 0, h = 0, y = 0;
-    std::size_t C = 1, row_bytes = 0;
-    std::uint32_t rps = 1;
-    SampleType type = SampleType::f32;
-    double nodata = 0;
-    std::vector<unsigned char> strip;
-    ~TiffRowWriter() override {
-        if (tif) TIFFClose(tif);
-    }
-    Status write_row(const double* values) override {
-        if (!tif || y >= h) return Status::failure("TIFF writer: more rows than the image has");
-        put_typed(type, values, std::size_t(w) * C, nodata, strip.data() + std::size_t(std::uint32_t(y) % rps) * row_bytes);
-        ++y;
-        if (std::uint32_t(y) % rps == 0 || y == h) {
-            const std::size_t rows = std::uint32_t(y) % rps == 0 ? rps : std::uint32_t(y) % rps;
-            if (TIFFWriteEncodedStrip(tif, std::uint32_t(y - 1) / rps, strip.data(), tmsize_t(rows * row_bytes)) < 0)
-                return Status::failure("TIFF writer: " + why(msg, "strip refused"));
-        }
-        return Status::success();
-    }
-    Status finish() override {
-        if (!tif) return Status::failure("TIFF writer: not open");
-        if (y != h) return Status::failure("TIFF writer: " + std::to_string(y) + " rows of " + std::to_string(h) + " written");
-        const bool ok = TIFFWriteDirectory(tif) != 0;
-        TIFFClose(tif);
-        tif = nullptr;
-        if (!ok || !msg.error.empty()) return Status::failure("TIFF writer: " + why(msg, "the directory was refused"));
-        return Status::success();
-    }
-};
-
-}  // namespace
-
-Status open_tiff_row_writer(ByteSink* sink, int w, int h, int channels, const RasterMeta& given, std::unique_ptr<RowWriter>* out) {
-    auto wr = std::make_unique<TiffRowWriter>();
-    wr->stream.sink = sink;
-    wr->type = given.type;
-    const RasterMeta meta = with_nodata(given, given.type, true);
-    wr->nodata = meta.has_nodata ? meta.nodata : std::numeric_limits<double>::quiet_NaN();
-    wr->w = w;
-    wr->h = h;
-    wr->C = std::size_t(channels);
-    wr->row_bytes = std::size_t(w) * wr->C * std::size_t(bytes_of(meta.type));
-    const std::uint64_t raw = std::uint64_t(wr->row_bytes) * std::uint64_t(h);
-    wr->tif = open_stream(&wr->stream, raw > (std::uint64_t(3) << 30) ? "w8" : "w", &wr->msg, 0);
-    if (!wr->tif) return Status::failure("TIFF writer: " + why(wr->msg, "cannot start"));
-    if (!set_fields(wr->tif, w, h, wr->C, meta.type, meta, &wr->rps)) return Status::failure("TIFF writer: " + why(wr->msg, "a field was refused"));
-    wr->strip.assign(std::size_t(wr->rps) * wr->row_bytes, 0);
-    *out = std::move(wr);
-    return Status::success();
-}
-
-Status encode_tiff(const Image& im, std::string* out) {
-    if (im.width <= 0 || im.height <= 0 || (im.channels != 1 && im.channels != 3))
-        return Status::failure("internal error: invalid image for TIFF");
-    const SampleType t = im.real() ? im.meta.type : (im.maxval <= 255 ? SampleType::u8 : SampleType::u16);
-    const RasterMeta meta = with_nodata(im.meta, t, im.has_holes());
-    const double nodata = meta.has_nodata ? meta.nodata : std::numeric_limits<double>::quiet_NaN();
-    const std::size_t bs = std::size_t(bytes_of(t)), C = std::size_t(im.channels), W = std::size_t(im.width);
-    const std::uint64_t raw = std::uint64_t(W) * std::uint64_t(im.height) * C * bs;
-    std::string bytes;
-    Stream st;
-    st.out = &bytes;
-    Messages msg;
-    TIFF* tif = open_stream(&st, raw > (std::uint64_t(3) << 30) ? "w8" : "w", &msg, 0);
-    if (!tif) return Status::failure("TIFF writer: " + why(msg, "cannot start"));
-    std::uint32_t rps = 1;
-    bool ok = set_fields(tif, im.width, im.height, C, t, meta, &rps);
-    const std::size_t row_bytes = W * C * bs;
-    std::vector<unsigned char> strip;
-    std::vector<double> row(W * C);
-    for (std::uint32_t y0 = 0; ok && y0 < std::uint32_t(im.height); y0 += rps) {
-        const std::uint32_t y1 = std::min<std::uint32_t>(std::uint32_t(im.height), y0 + rps);
-        strip.assign(std::size_t(y1 - y0) * row_bytes, 0);
-        for (std::uint32_t y = y0; y < y1; ++y) {
-            for (std::size_t x = 0; x < W; ++x) {
-                const std::size_t i = std::size_t(y) * W + x;
-                const bool valid = pixel_valid(im, i);
-                for (std::size_t c = 0; c < C; ++c)
-                    row[x * C + c] = valid ? sample_value(im, i * C + c) : std::numeric_limits<double>::quiet_NaN();
-            }
-            put_typed(t, row.data(), W * C, nodata, strip.data() + std::size_t(y - y0) * row_bytes);
-        }
-        ok = TIFFWriteEncodedStrip(tif, y0 / rps, strip.data(), tmsize_t(strip.size())) >= 0;
-    }
-    TIFFClose(tif);
-    if (!ok || !msg.error.empty()) return Status::failure("TIFF writer: " + why(msg, "a field or strip was refused"));
-    *out = std::move(bytes);
-    return Status::success();
 }
 
 }  // namespace erd::imageio

@@ -12,26 +12,16 @@
 #include <vector>
 
 #include "kernel/cdt.h"
+#include "tests/cdt_util.h"
 
 using namespace erd;
+
+using cdt_util::constraint_coords;
 
 namespace {
 
 // The apex scan for every hole, and the CDT of the hole for every hole (kernel/cdt_remove.cpp).
 constexpr std::uint32_t kScanAlways = 0xFFFFFFFFu, kScanNever = 0;
-
-std::vector<std::array<std::int32_t, 4>> constraint_coords(const Cdt& cdt) {
-    std::vector<std::array<VertInd, 2>> c;
-    cdt.export_constraints(&c);
-    std::vector<std::array<std::int32_t, 4>> out;
-    for (const auto& e : c) {
-        LatticePoint a = cdt.point(e[0]), b = cdt.point(e[1]);
-        if (perturb_before(b, a)) std::swap(a, b);
-        out.push_back({a.x, a.y, b.x, b.y});
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 // A fresh build of cdt's live points (one batch) and of its constrained edges.
 Cdt fresh_build(const Cdt& cdt) {

@@ -11,10 +11,13 @@
 #include <vector>
 
 #include "kernel/cdt.h"
+#include "tests/cdt_util.h"
 #include "kernel/predicates.h"
 #include "kernel/spatial_order.h"
 
 using namespace erd;
+
+using cdt_util::constraint_coords;
 
 namespace {
 
@@ -44,20 +47,6 @@ std::uint32_t rnd(std::mt19937& g, std::uint32_t n) { return static_cast<std::ui
 template <class T>
 void shuffle(std::vector<T>& v, std::mt19937& g) {
     for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rnd(g, static_cast<std::uint32_t>(i))]);
-}
-
-// Constrained edges as sorted coordinate pairs.
-std::vector<std::array<std::int32_t, 4>> constraint_coords(const Cdt& cdt) {
-    std::vector<std::array<VertInd, 2>> c;
-    cdt.export_constraints(&c);
-    std::vector<std::array<std::int32_t, 4>> out;
-    for (const auto& e : c) {
-        LatticePoint a = cdt.point(e[0]), b = cdt.point(e[1]);
-        if (perturb_before(b, a)) std::swap(a, b);
-        out.push_back({a.x, a.y, b.x, b.y});
-    }
-    std::sort(out.begin(), out.end());
-    return out;
 }
 
 std::array<std::int32_t, 6> face_coords(const Cdt& cdt, FaceInd f) {

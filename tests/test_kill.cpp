@@ -8,7 +8,7 @@
 //     file or its complete new one, never a mixture inside a file; the names left beside them are
 //     whole old or new files (the old files' second names), and are counted.
 // The test process is a child subreaper meanwhile, so it waits for the commit child that a killed
-// erd leaves behind before it looks. The counts are printed (docs/DECISIONS.md "Kill at any moment").
+// erd leaves behind before it looks. The counts are printed (docs/DECISIONS.md "Outputs").
 #include <catch2/catch.hpp>
 
 #include <dirent.h>

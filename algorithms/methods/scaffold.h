@@ -94,8 +94,8 @@ using ErdRun = Status (*)(const Image& image, const GenerateOptions& options, bo
 // Under --edges auto, an image measured stepped (algorithms/imaging/edge_kind.h) is then
 // also meshed with the other treatments of its edges (soft detection, hard edges, no detected
 // edges), each model's edge kinds chosen by fit (algorithms/model/edge_kinds.h), and the model
-// whose own reconstruction has the highest PSNR is kept (docs/DECISIONS.md "Edge kinds per
-// edge"); stats.erd.tried_psnr has the three PSNRs.
+// whose own reconstruction has the highest PSNR is kept (docs/DECISIONS.md "Edge kinds");
+// stats.erd.tried_psnr has the three PSNRs.
 Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun run, GenerateResult* result);
 
 // The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the
