@@ -9,6 +9,7 @@ triangle holding it, rounded to the image's integers, as erd reconstructs its ow
 is 2^p - 1 of the image's maxval (erd's rule). Binary PGM (8 or 16 bits) only.
 """
 import math
+import re
 import struct
 import sys
 
@@ -18,23 +19,13 @@ import numpy as np
 def read_pgm(path):
     with open(path, "rb") as f:
         data = f.read()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b"#":
-            pos = data.index(b"\n", pos)
-            continue
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    if fields[0] != b"P5":
+    gap = rb"(?:\s|#[^\n]*\n)+"
+    m = re.match(rb"P5" + gap + rb"(\d+)" + gap + rb"(\d+)" + gap + rb"(\d+)\s", data)
+    if not m:
         raise SystemExit(f"{path}: not a binary PGM")
-    w, h, maxval = int(fields[1]), int(fields[2]), int(fields[3])
+    w, h, maxval = (int(v) for v in m.groups())
     dtype = ">u2" if maxval > 255 else "u1"
-    img = np.frombuffer(data, dtype=dtype, count=w * h, offset=pos + 1).reshape(h, w)
+    img = np.frombuffer(data, dtype=dtype, count=w * h, offset=m.end()).reshape(h, w)
     return img.astype(np.float64), maxval
 
 
