@@ -9,6 +9,7 @@
 
 #include "algorithms/imaging/drawings.h"
 #include "algorithms/methods/quality_target.h"
+#include "cli/stats_json.h"
 #include "synth_util.h"
 
 using namespace erd;
@@ -170,4 +171,16 @@ TEST_CASE("quality target: no target, or a real image, is one plain run", "[qual
     GenerateOptions o = at_density(3.0);
     o.max_error = 1;
     CHECK_FALSE(wants_quality_search(real, o));
+}
+
+TEST_CASE("quality target: --stats carries the search", "[quality-target]") {
+    const Image im = erd_test::synth_image(64, 64);
+    GenerateOptions o = at_density(5.0);
+    o.psnr = 30;
+    GenerateResult r;
+    REQUIRE(run_method(*find_method("gpi"), im, o, &r).ok());
+    const std::string text = cli::stats_json(cli::collect_stats("gpi", im, r));
+    INFO(text);
+    CHECK(text.find("\"quality_search\":{\"runs\":1,\"points\":" + std::to_string(r.stats.quality.points)) != std::string::npos);
+    CHECK(text.find("\"exact\":true") != std::string::npos);
 }
