@@ -407,7 +407,7 @@ if [[ -n ${HEIGHTMAP_SIZES:-} ]]; then
         n=$(( (s * s + 50) / 100 ))
         [[ -n $HMM ]] && hm_run "$s error" hmm "$HMM" -z 1 -e 0.001 -q "$OUT/hm$s.png" "$OUT/hm.stl"
         for m in gpi erdgpi; do
-            hm_run "$s error" "$m" "$ERD" generate -q -m "$m" -d 5 --max-error 65.535 -x 2 -i "$OUT/hm$s.png" -o "$OUT/hm.$m" --stats "$OUT/hm.json"
+            hm_run "$s error" "$m" "$ERD" generate -q -m "$m" -d 5 --max-error 65.535 --count-search 0 -x 2 -i "$OUT/hm$s.png" -o "$OUT/hm.$m" --stats "$OUT/hm.json"
         done
         [[ -n $HMM ]] && hm_run "$s 1%" hmm "$HMM" -z 1 -e 0 -p "$n" -q "$OUT/hm$s.png" "$OUT/hm.stl"
         for m in gpi erdgpi erded; do
@@ -418,7 +418,7 @@ if [[ -n ${HEIGHTMAP_SIZES:-} ]]; then
     {
         echo "A 16-bit heightmap made by \`erd synth -W S -H S --bits 16 --no-noise\` (sharp steps and discs on"
         echo "smooth slopes), as PNG, meshed (a) to a maximum error of 0.001 of the 65535 range, hmm's default"
-        echo "(\`hmm -z 1 -e 0.001\`; \`erd generate -d 5 --max-error 65.535 -x 2\`), and (b) to 1% of the pixels as"
+        echo "(\`hmm -z 1 -e 0.001\`; \`erd generate -d 5 --max-error 65.535 --count-search 0 -x 2\`: one run, as hmm), and (b) to 1% of the pixels as"
         echo "vertices (\`hmm -z 1 -e 0 -p N\`; \`erd generate -n N\`). One run each: triangles, CPU seconds, peak MB."
         echo "$hmm_note"
         echo

@@ -66,6 +66,7 @@ const CommandLine kGenerate = {
         {0, "minimax", "K", "ERD, real image, --max-error: rounds of the minimax fit of the values (default 2; 0: none)"},
         {0, "min-step", "F", "ERD, real image, --max-error E: keep detected edges whose step across is F*E or more (default 4; 0: all)"},
         {0, "psnr", "P", "the fewest points (up to N, within 2%) whose model reaches P dB (every method)"},
+        {0, "count-search", "0|1", "--psnr, --max-error: 1 search the fewest points (default), 0 one run (the greedy loop's own stop, before the ERD refit and flips)"},
         {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
         {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
@@ -208,6 +209,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
                                 real_text(o->alpha_min));
     if (a.has("edge-zero-radius"))
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
+    if (a.has("count-search")) o->count_search = a.integer("count-search", 1, 0, 1, st) == 1;
     if (a.has("aa-errors")) o->supersampled_errors = a.integer("aa-errors", 0, 0, 1, st) == 1;
     if (a.has("max-slack")) o->max_slack = a.real("max-slack", o->max_slack, 1.0, 16.0, st);
     if (a.has("minimax")) o->minimax_rounds = int(a.integer("minimax", o->minimax_rounds, 0, 64, st));

@@ -184,3 +184,17 @@ TEST_CASE("quality target: --stats carries the search", "[quality-target]") {
     CHECK(text.find("\"quality_search\":{\"runs\":1,\"points\":" + std::to_string(r.stats.quality.points)) != std::string::npos);
     CHECK(text.find("\"exact\":true") != std::string::npos);
 }
+
+TEST_CASE("quality target: --count-search 0 keeps the method's own run", "[quality-target]") {
+    const Image im = erd_test::synth_image(64, 64);
+    const MethodInfo& m = *find_method("erdgpi");
+    GenerateOptions o = at_density(8.0);
+    o.psnr = 30;
+    o.count_search = false;
+    GenerateResult a, b;
+    REQUIRE(run_method(m, im, o, &a).ok());
+    REQUIRE(m.run(im, o, &b).ok());
+    CHECK(a.stats.quality.runs == 1);
+    CHECK(a.model.vertices == b.model.vertices);
+    CHECK(a.model.corner_values == b.model.corner_values);
+}

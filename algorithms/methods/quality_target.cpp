@@ -62,6 +62,7 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
     cur.n = std::int64_t(cur.result.achieved);
     cur.meets = margin(cur, options) >= 0;
     const RunStats& own = cur.result.stats;
+    const bool one_run = !options.count_search;
     const bool exact = own.has_greedy && !own.has_erd && !options.optimize &&
                        (options.psnr <= 0 || std::fabs(own.greedy.psnr - cur.db) <= 1e-9 * std::max(1.0, cur.db)) &&
                        (options.max_error < 0 || own.greedy.max_error == cur.max_error);
@@ -87,7 +88,7 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
 
     // The bracket: lo short of the target, hi reaching it; grown from the first run by factors of 4
     // down (or, when N itself falls short, not at all).
-    if (have_hi && !exact && hi.n > 4) {
+    if (have_hi && !exact && !one_run && hi.n > 4) {
         std::int64_t n = std::max<std::int64_t>(4, hi.n / 4);
         for (;;) {
             if (!(st = probe(n, &cur))) return st;
@@ -104,7 +105,7 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
     // Narrowed in log N until the ends are within the tolerance (or next to each other).
     int same_side = 0;
     bool last_meets = false;
-    while (!exact && have_lo && have_hi && hi.n > lo.n + 1 && double(hi.n) > kQualityCountTolerance * double(lo.n)) {
+    while (!exact && !one_run && have_lo && have_hi && hi.n > lo.n + 1 && double(hi.n) > kQualityCountTolerance * double(lo.n)) {
         const double a = std::log(double(lo.n)), b = std::log(double(hi.n));
         const double ma = margin(lo, options), mb = margin(hi, options);
         double x = 0.5 * (a + b);

@@ -7,6 +7,9 @@
 // then narrowed by interpolation of the quality in log N (bisection when that stalls) until its
 // ends are within 2%. The model kept is the bracket's upper end: one that reaches the target.
 //
+// GenerateOptions::count_search = false (--count-search 0) keeps the first run alone: the method's
+// own, its greedy loop's stop on (one run's speed; an ERD model may miss or overshoot the target).
+//
 // Every method of the registry gets it through run_method (the CLI and the API call that, not
 // MethodInfo::run). A real image (issue 47) keeps its own rules: there --max-error is a bound the
 // methods meet inside one run, and --psnr the greedy loop's stop.
