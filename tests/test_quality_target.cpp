@@ -48,6 +48,15 @@ GenerateOptions at_density(double d) {
     return o;
 }
 
+// run_method with --psnr P at a density cap.
+GenerateResult searched(const char* method, const Image& im, double density, double psnr) {
+    GenerateOptions o = at_density(density);
+    o.psnr = psnr;
+    GenerateResult r;
+    REQUIRE(run_method(*find_method(method), im, o, &r).ok());
+    return r;
+}
+
 // Whether the method's model at n points reaches the options' targets, and its quality.
 bool meets(const MethodInfo& m, const Image& im, const GenerateOptions& target, std::int64_t n, double* db) {
     GenerateOptions o = target;
@@ -147,13 +156,10 @@ TEST_CASE("quality target: --max-error within 2% of the smallest count", "[quali
 
 TEST_CASE("quality target: a target N cannot reach keeps N's model, flagged", "[quality-target]") {
     const Image im = erd_test::synth_image(64, 64);
-    GenerateOptions o = at_density(2.0);
-    o.psnr = 90;
-    GenerateResult r;
-    REQUIRE(run_method(*find_method("erdgpi"), im, o, &r).ok());
+    const GenerateResult r = searched("erdgpi", im, 2.0, 90);
     REQUIRE(r.stats.has_quality);
     CHECK_FALSE(r.stats.quality.reached);
-    CHECK(r.requested == std::size_t(target_points(o, 64, 64)));
+    CHECK(r.requested == std::size_t(target_points(at_density(2.0), 64, 64)));
     CHECK(r.stats.quality.psnr < 90);
 }
 
@@ -175,10 +181,7 @@ TEST_CASE("quality target: no target, or a real image, is one plain run", "[qual
 
 TEST_CASE("quality target: --stats carries the search", "[quality-target]") {
     const Image im = erd_test::synth_image(64, 64);
-    GenerateOptions o = at_density(5.0);
-    o.psnr = 30;
-    GenerateResult r;
-    REQUIRE(run_method(*find_method("gpi"), im, o, &r).ok());
+    const GenerateResult r = searched("gpi", im, 5.0, 30);
     const std::string text = cli::stats_json(cli::collect_stats("gpi", im, r));
     INFO(text);
     CHECK(text.find("\"quality_search\":{\"runs\":1,\"points\":" + std::to_string(r.stats.quality.points)) != std::string::npos);
