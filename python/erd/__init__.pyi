@@ -103,6 +103,7 @@ def generate(
     flips: int = ...,
     moves: int = ...,
     aa_errors: int = ...,
+    count_search: int = ...,
     triangles: int = ...,
     maxval: int = ...,
     nodata: float = ...,

@@ -49,6 +49,7 @@ const std::vector<Spec>& specs() {
         {"flips", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.flips = int(v); }},
         {"moves", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.moves = int(v); }},
         {"aa_errors", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.supersampled_errors = v == 1; }},
+        {"count_search", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.count_search = v == 1; }},
         {"maxval", Kind::integer, 1, 65535, [](GenerateArgs* a, double v) { a->maxval = (long long)v; }},
         {"nodata", Kind::real, -kBig, kBig, [](GenerateArgs* a, double v) { a->nodata = v; }},
         {"max_slack", Kind::real, 1.0, 16.0, [](GenerateArgs* a, double v) { a->options.generate.max_slack = v; }},
