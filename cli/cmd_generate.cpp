@@ -16,6 +16,7 @@
 
 #include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/methods/quality_target.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
@@ -60,11 +61,12 @@ const CommandLine kGenerate = {
         {'t', "triangulation", "FILE", "also write the triangulation (erd-triangulation 1)"},
         {'p', "polylines", "FILE", "also write the polylines (erd-polylines 1; none for ed, gpi)"},
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
-        {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E (a real-valued image: every method, a bound on the model given)"},
+        {0, "max-error", "E", "the fewest points (up to N, within 2%) whose model has no error above E (every method; a real-valued image: a bound met in one run)"},
         {0, "max-slack", "S", "ERD, real image, --max-error E: the greedy stops at S*E before the minimax fit (default 1.6)"},
         {0, "minimax", "K", "ERD, real image, --max-error: rounds of the minimax fit of the values (default 2; 0: none)"},
         {0, "min-step", "F", "ERD, real image, --max-error E: keep detected edges whose step across is F*E or more (default 4; 0: all)"},
-        {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
+        {0, "psnr", "P", "the fewest points (up to N, within 2%) whose model reaches P dB (every method)"},
+        {0, "count-search", "0|1", "--psnr, --max-error: 1 search the fewest points (default), 0 one run (the greedy loop's own stop, before the ERD refit and flips)"},
         {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
         {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
@@ -223,6 +225,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
                                 real_text(o->alpha_min));
     if (a.has("edge-zero-radius"))
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
+    if (a.has("count-search")) o->count_search = a.integer("count-search", 1, 0, 1, st) == 1;
     if (a.has("aa-errors")) o->supersampled_errors = a.integer("aa-errors", 0, 0, 1, st) == 1;
     if (a.has("max-slack")) o->max_slack = a.real("max-slack", o->max_slack, 1.0, 16.0, st);
     if (a.has("minimax")) o->minimax_rounds = int(a.integer("minimax", o->minimax_rounds, 0, 64, st));
@@ -333,7 +336,7 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     std::string bytes, codec_note;
     DensityChoice choice;
     if (codec.choose_density) st = choose_density(*method, image, opt, codec, &res, &bytes, &choice);
-    else st = method->run(image, opt, &res);
+    else st = run_method(*method, image, opt, &res);
     progress.finish();
     if (!st && st.code == Code::input && !constraints_in.empty() && st.message.rfind("constraints: ", 0) == 0)
         return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message.substr(13)));
@@ -344,6 +347,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
         rep.detail(buf);
     }
     for (const std::string& s : result_lines(res.stats)) rep.detail(s);
+    if (res.stats.has_quality && !res.stats.quality.reached)
+        rep.warn(escape_name(in) + ": " + (opt.psnr > 0 ? "--psnr " + real_text(opt.psnr) : "--max-error " + real_text(opt.max_error)) +
+                 " not reached at N = " + std::to_string(res.requested) + " points (raise -d or -n)");
     if (res.stats.has_raster && opt.max_error >= 0 && res.stats.raster.max_error > opt.max_error)
         rep.warn(escape_name(in) + ": the largest error is " + real_text(res.stats.raster.max_error) + ", above --max-error " +
                  real_text(opt.max_error) + ": N points were reached first (raise -d or -n)");

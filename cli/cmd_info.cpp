@@ -13,6 +13,8 @@
 #include "algorithms/model/model_io.h"
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/fileio.h"
+#include "cli/framing.h"
 #include "cli/image_io.h"
 #include "cli/json.h"
 #include "cli/model_file.h"
@@ -44,7 +46,7 @@ const CommandLine kInfo = {
     "recognised from the content, not the name; a colour file whose channels are all equal is gray.\n"
     "A TIFF or PFM also shows its sample type, the range of its valid samples, its nodata value and\n"
     "count, and its georeferencing (GeoTIFF).\n"
-    "For a model (.model, .erd, .erdz, or a -t triangulation .tri; by name or content): its kind,\n"
+    "For a model (.model, .erd, .erdz, or a -t triangulation .tri; by name or content, \"-\" too): its kind,\n"
     "size, vertices, faces, constrained edges and their kinds, channels, the file's size and bits\n"
     "per pixel; for an .erdz also the size of each section.",
     {
@@ -53,9 +55,8 @@ const CommandLine kInfo = {
     "no warnings", 1, 1, "expected one IMAGE or MODEL",
 };
 
-// What a model file is, by its name or its first bytes: an .erdz (its magic), a text model
-// (.model, .erd, .tri; or content that starts with a number or "erd-", which no image does), or
-// not a model. Standard input is read as an image.
+// What a model file is, by its name or its first bytes: an .erdz, a text model (.model, .erd,
+// .tri, or looks_like_model), or not a model. Standard input is told by its bytes in run_info.
 static bool model_file(const std::string& path) {
     if (erdz_name(path) || model_kind_from_name(path) != ModelFileKind::unknown) return true;
     if (path == "-") return false;
@@ -64,10 +65,7 @@ static bool model_file(const std::string& path) {
     char head[64] = {0};
     const std::size_t n = std::fread(head, 1, sizeof head, f);
     std::fclose(f);
-    const std::string start(head, n);
-    if (n >= 4 && is_erdz(start.substr(0, 4))) return true;
-    const std::size_t i = start.find_first_not_of(" \t\r\n");
-    return i != std::string::npos && ((start[i] >= '0' && start[i] <= '9') || start.compare(i, 4, "erd-") == 0);
+    return looks_like_model(std::string(head, n));
 }
 
 // The kind of m's constrained edge i: Model::edges, or the other kind for an edge of
@@ -247,25 +245,21 @@ static int text_model_info(const std::string& path, const Model& m, const ModelF
     return 0;
 }
 
-static int model_info(const std::string& path, const Args& args, const Reporter& rep) {
+// A model file's facts; `text` (may be null) holds its bytes when they were read already (stdin).
+static int model_info(const std::string& path, const std::string* text, const Args& args, const Reporter& rep) {
     Model m;
     ErdzInfo info;
     ModelFileFacts file;
     std::string warning;
-    Status st = load_model_file(path, &m, &warning, nullptr, &info, &file);
+    Status st = text ? parse_model_bytes(path, *text, 0, &m, &warning, nullptr, &info, &file)
+                     : load_model_file(path, &m, &warning, nullptr, &info, &file);
     if (!st) return rep.fail(st);
     rep.warn(warning);
     return file.erdz ? erdz_info(path, m, info, file, args) : text_model_info(path, m, file, args);
 }
 
-static int run_info(const Args& args, const Reporter& rep) {
-    const std::string path = args.positional()[0];
-    if (model_file(path)) return model_info(path, args, rep);
-
-    Image im;
-    ImageFormat fmt = ImageFormat::unknown;
-    Status st = read_input_image(path, ColourInput::keep, rep, &im, &fmt);
-    if (!st) return rep.fail(st);
+// An image's facts.
+static int image_info(const std::string& path, const Image& im, ImageFormat fmt, const Args& args) {
     if (fmt == ImageFormat::tiff || fmt == ImageFormat::pfm || im.real()) return raster_info(path, im, fmt, args);
 
     unsigned lo = 65535, hi = 0;
@@ -289,6 +283,26 @@ static int run_info(const Args& args, const Reporter& rep) {
         std::printf("maxval:  %u\nbits:    %d\nsamples: min %u, max %u, mean %.4f\n", im.maxval, im.bits(), lo, hi, mean);
     }
     return 0;
+}
+
+static int run_info(const Args& args, const Reporter& rep) {
+    const std::string path = args.positional()[0];
+    Image im;
+    ImageFormat fmt = ImageFormat::unknown;
+    if (path != "-") {
+        if (model_file(path)) return model_info(path, nullptr, args, rep);
+        if (Status st = read_input_image(path, ColourInput::keep, rep, &im, &fmt); !st) return rep.fail(st);
+        return image_info(path, im, fmt, args);
+    }
+    // Standard input is read once, as far as its content goes, and told by its bytes: a model or an image.
+    std::string bytes, warning;
+    bool more = false;
+    if (Status st = read_file(path, &bytes, kMaxInputBytes, model_or_image_framer(ImageLimits()), &more); !st)
+        return rep.fail(st);
+    if (looks_like_model(bytes.substr(0, 64))) return model_info(path, &bytes, args, rep);
+    if (Status st = decode_image_bytes(path, bytes, more, 0, &im, &warning, &fmt); !st) return rep.fail(st);
+    rep.warn(warning);
+    return image_info(path, im, fmt, args);
 }
 
 int cmd_info(int argc, char** argv) { return run_command(kInfo, argc, argv, run_info); }

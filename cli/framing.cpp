@@ -243,6 +243,24 @@ Framer model_framer(bool triangulation) {
         true);
 }
 
+bool looks_like_model(const std::string& start) {
+    if (start.size() >= 4 && is_erdz(start.substr(0, 4))) return true;
+    const std::size_t i = start.find_first_not_of(" \t\r\n");
+    return i != std::string::npos && ((start[i] >= '0' && start[i] <= '9') || start.compare(i, 4, "erd-") == 0);
+}
+
+Framer model_or_image_framer(const ImageLimits& limits) {
+    return [model = model_framer(false), image = image_framer(limits)](const std::string& so_far, bool stream,
+                                                                      std::uint64_t* total) {
+        const std::size_t head = so_far.size() < 64 ? so_far.size() : 64;
+        if (head < 4 || (head < 64 && so_far.find_first_not_of(" \t\r\n") == std::string::npos)) {
+            *total = UINT64_MAX;
+            return Status::success();
+        }
+        return looks_like_model(so_far.substr(0, head)) ? model(so_far, stream, total) : image(so_far, stream, total);
+    };
+}
+
 Framer polylines_framer() {
     return text_framer(
         [](const std::string& text) {

@@ -29,4 +29,12 @@ Framer model_framer(bool triangulation);
 // Polylines text (erd-polylines 1, generate --constraints): as model text.
 Framer polylines_framer();
 
+// Whether the first bytes of a file are a model's: the .erdz magic, or text that starts with a
+// number or "erd-", which no image does.
+bool looks_like_model(const std::string& start);
+
+// A model or an image, told by its first bytes (looks_like_model), then framed as either; the
+// total stays unknown until 64 bytes or a non-blank one have come (erd info -).
+Framer model_or_image_framer(const ImageLimits& limits);
+
 }  // namespace erd::cli

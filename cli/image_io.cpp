@@ -48,11 +48,16 @@ Status read_image(const std::string& path, Image* out, std::string* warning, Ima
     std::string bytes;
     bool more = false;
     std::uint64_t unread = 0;
-    Status s = read_file(path, &bytes, kMaxInputBytes, image_framer(limits), &more, &unread);
-    if (!s) return s;
+    if (Status s = read_file(path, &bytes, kMaxInputBytes, image_framer(limits), &more, &unread); !s) return s;
+    return decode_image_bytes(path, bytes, more, unread, out, warning, format, limits);
+}
+
+Status decode_image_bytes(const std::string& path, const std::string& bytes, bool more, std::uint64_t unread, Image* out,
+                          std::string* warning, ImageFormat* format, const ImageLimits& limits) {
+    if (warning) warning->clear();
     const std::string name = escape_name(path == "-" ? "stdin" : path);
     std::string w;
-    s = decode_image(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), out, &w, format, limits);
+    Status s = decode_image(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), out, &w, format, limits);
     if (!s) return Status::bad_input(name + ": " + s.message);
     if (more) w += std::string(w.empty() ? "" : "\n") + "ignored the data after the image (a stream is read as far as its header says)";
     if (unread)  // a file whose image ends long before it does: what follows was never read

@@ -3,6 +3,7 @@
 // cli/fileio.h (standard input, streams framed by their header, atomic writes) and prefixes
 // every message with the path.
 #pragma once
+#include <cstdint>
 #include <string>
 
 #include "algorithms/imaging/image.h"
@@ -37,6 +38,11 @@ using imageio::PnmHeader;
 // file whose channels are equal everywhere is gray). Messages and warnings start with the path.
 Status read_image(const std::string& path, Image* out, std::string* warning, ImageFormat* format = nullptr,
                   const ImageLimits& limits = ImageLimits());
+
+// read_image's second half for bytes already read from `path`: `more` when a stream went on after
+// what its framing took, `unread` the bytes of a file never read (warnings say so).
+Status decode_image_bytes(const std::string& path, const std::string& bytes, bool more, std::uint64_t unread, Image* out,
+                          std::string* warning, ImageFormat* format = nullptr, const ImageLimits& limits = ImageLimits());
 
 // For a command that works on gray: a colour image becomes its BT.601 luma (algorithms/imaging/
 // luma.h, the conversion of every erd before colour). Unless the user asked for it (--gray), one

@@ -33,12 +33,18 @@ bool is_triangulation(const std::string& text) {
 
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo, ErdzInfo* info,
                        ModelFileFacts* file) {
-    if (warning) warning->clear();
     std::string text;
-    const ModelFileKind kind = model_kind_from_name(path);
     std::uint64_t unread = 0;
-    Status st = read_file(path, &text, kMaxInputBytes, model_framer(kind == ModelFileKind::triangulation), nullptr, &unread);
-    if (!st) return st;
+    const bool tri = model_kind_from_name(path) == ModelFileKind::triangulation;
+    if (Status st = read_file(path, &text, kMaxInputBytes, model_framer(tri), nullptr, &unread); !st) return st;
+    return parse_model_bytes(path, text, unread, out, warning, topo, info, file);
+}
+
+Status parse_model_bytes(const std::string& path, const std::string& text, std::uint64_t unread, Model* out,
+                         std::string* warning, ModelTopology* topo, ErdzInfo* info, ModelFileFacts* file) {
+    if (warning) warning->clear();
+    const ModelFileKind kind = model_kind_from_name(path);
+    Status st;
     // An .erdz file read as far as its header says, and a long tail after it never read: the
     // decoder's own refusal of bytes after the last section (a text file stops at a NUL, which
     // its reader refuses itself).

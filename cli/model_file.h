@@ -2,6 +2,7 @@
 // and the bytes of a model for the name it is written to.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,12 @@ struct ModelFileFacts {
 };
 Status load_model_file(const std::string& path, Model* out, std::string* warning, ModelTopology* topo = nullptr,
                        ErdzInfo* info = nullptr, ModelFileFacts* file = nullptr);
+
+// load_model_file's second half: `text`, read from `path` with `unread` bytes left after what its
+// framing took (0 when none or unknown), parsed as above.
+Status parse_model_bytes(const std::string& path, const std::string& text, std::uint64_t unread, Model* out,
+                         std::string* warning, ModelTopology* topo = nullptr, ErdzInfo* info = nullptr,
+                         ModelFileFacts* file = nullptr);
 
 // The model a subcommand draws, exports or reconstructs into `out`: refuses an `out` that is one
 // of `inputs` (refuse_overwrite, cli/fileio.h; the model's path first), reads inputs[0] with

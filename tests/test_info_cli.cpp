@@ -113,6 +113,35 @@ TEST_CASE("erd info on an .erdz: the mesh line with edge kinds, the file's bytes
     CHECK_THAT(j.out, Catch::Contains("\"bytes\":" + std::to_string(slurp(z).size()) + ","));
 }
 
+TEST_CASE("erd info - tells a model from an image on standard input, from a pipe or a file", "[cli][info]") {
+    if (!need_binary()) return;
+    TempDir dir;
+    const std::string img = dir.file("s.pgm");
+    REQUIRE(run_erd("synth --kind cartoon -W 64 -H 48 -o " + sh_quote(img)).status == 0);
+    for (const char* name : {"m.model", "m.erd", "m.erdz"}) {
+        const std::string path = dir.file(name);
+        REQUIRE(run_erd(std::string("generate -q -m ") + (name[2] == 'm' ? "gpi" : "erdgpi") + " -i " + sh_quote(img) +
+                        " -d 3 -o " + sh_quote(path)).status == 0);
+        const RunResult named = run_erd("info --json " + sh_quote(path));
+        REQUIRE(named.status == 0);
+        // The same facts as by its name, but the file's name.
+        std::string expected = named.out;
+        const std::string field = "\"file\":\"" + path + "\"";
+        REQUIRE(expected.find(field) != std::string::npos);
+        expected.replace(expected.find(field), field.size(), "\"file\":\"-\"");
+        for (const RunResult& r : {run_erd("info --json - < " + sh_quote(path)),       // a file
+                                   run_erd("info --json -", "cat " + sh_quote(path) + " |")}) {  // a pipe
+            INFO(name);
+            CHECK(r.status == 0);
+            CHECK(r.err.empty());
+            CHECK(r.out == expected);
+        }
+    }
+    const RunResult image = run_erd("info -", "cat " + sh_quote(img) + " |");
+    CHECK(image.status == 0);
+    CHECK_THAT(image.out, Catch::Contains("PGM (P5, raw)"));
+}
+
 TEST_CASE("erd help ends with the three commands most people need, and they run as printed", "[cli][info]") {
     if (!need_binary()) return;
     RunResult h = run_erd("help");

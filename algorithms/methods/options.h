@@ -58,6 +58,10 @@ struct GenerateOptions {
     // (erd_mesh.h InitialMeshOptions::min_step).
     double min_step_factor = 4.0;
     double psnr = 0.0;           // --psnr: whole-image PSNR >= P dB; <= 0: off
+    // --psnr / --max-error on an integer image (algorithms/methods/quality_target.h): search the
+    // fewest points whose model reaches the target (true), or keep the method's own run (false:
+    // one run, its greedy loop's stop; --count-search 0).
+    bool count_search = true;
     std::int64_t triangles = 0;  // --triangles: the mesh has >= T triangles; 0: off
     bool round_values = true;    // greedy: errors against the rounded approximation (DECISIONS.md)
 

@@ -99,6 +99,18 @@ struct RasterStats {
                                        // pixels, measured on its reconstruction (< 0: not measured)
 };
 
+// --psnr / --max-error on an integer image: the search for the fewest points whose model reaches
+// the target (algorithms/methods/quality_target.h).
+struct QualitySearchStats {
+    int runs = 0;                // whole runs of the method made
+    std::size_t points = 0;      // the count kept (the bracket's upper end)
+    std::size_t below = 0;       // the largest count measured short of the target (0: none)
+    bool reached = false;        // the kept model reaches the target (false: N itself falls short)
+    bool exact = false;          // the method's own stop found the count (GPI's greedy loop): one run
+    double psnr = 0;             // the kept model's quality, as measured (each when its target is set)
+    double max_error = 0;
+};
+
 // Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.
 struct StageTime {
     std::string name;
@@ -119,6 +131,8 @@ struct RunStats {
     RemovalRunStats removal;
     bool has_raster = false;  // a real image
     RasterStats raster;
+    bool has_quality = false;  // --psnr / --max-error searched the count
+    QualitySearchStats quality;
 };
 
 struct GenerateResult {

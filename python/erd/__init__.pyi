@@ -111,6 +111,7 @@ def generate(
     removal_cycles: int = ...,
     moves: int = ...,
     aa_errors: int = ...,
+    count_search: int = ...,
     triangles: int = ...,
     maxval: int = ...,
     nodata: float = ...,

@@ -57,6 +57,7 @@ const std::vector<Spec>& specs() {
         {"removal_stages", Kind::integer, 1, 16, [](GenerateArgs* a, double v) { a->options.generate.removal_stages = int(v); }},
         {"removal_cycles", Kind::integer, 0, 16, [](GenerateArgs* a, double v) { a->options.generate.removal_cycles = int(v); }},
         {"aa_errors", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.supersampled_errors = v == 1; }},
+        {"count_search", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.count_search = v == 1; }},
         {"maxval", Kind::integer, 1, 65535, [](GenerateArgs* a, double v) { a->maxval = (long long)v; }},
         {"nodata", Kind::real, -kBig, kBig, [](GenerateArgs* a, double v) { a->nodata = v; }},
         {"max_slack", Kind::real, 1.0, 16.0, [](GenerateArgs* a, double v) { a->options.generate.max_slack = v; }},

@@ -65,7 +65,7 @@ async function report(page, step) {
                 filesMs: t ? Number(t.cells[1].textContent) : NaN};
     });
     const save = async (id, file) => {
-        const [d] = await Promise.all([page.waitForEvent('download'), page.click('#' + id)]);
+        const [d] = await Promise.all([page.waitForEvent('download', WAIT), page.click('#' + id)]);
         await d.saveAs(file);
         return readFileSync(file);
     };
@@ -103,6 +103,7 @@ try {
     browser = await chromium.launch({executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox']});
     const errors = [];
     const page = await browser.newPage({viewport: {width: 1280, height: 800}, acceptDownloads: true});
+    page.setDefaultTimeout(WAIT.timeout);  // every wait, not only the meshes': a loaded machine is slow
     page.on('pageerror', (e) => errors.push(e.message));
 
     // opening: no action but waiting.
@@ -111,7 +112,7 @@ try {
     await settled(page, 0);
     console.log(`opening: meshed ${Date.now() - t0} ms after the page was asked for, with no user action`);
     const opening = await report(page, 'opening');
-    const [pic] = await Promise.all([page.waitForEvent('download'), page.click('#dl-original')]);
+    const [pic] = await Promise.all([page.waitForEvent('download', WAIT), page.click('#dl-original')]);
     await pic.saveAs(`${out}/opening.png`);
 
     // screens: the same page at 1280 and at 390 px wide.
