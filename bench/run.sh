@@ -169,6 +169,26 @@ else
     echo "erdmodel: lena.pgm or bull.pgm missing in $IMAGES; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# removal (issue 45): the recommended ERDGPR beside 531d603's default (its ERDGPI, which this
+# build's erdgpi reproduces byte for byte) at equal N. Target: ERDGPR <= 2.0x its CPU time, judged
+# by callgrind instructions (repeatable) and the CPU medians. BASE_ERD: that commit's binary
+# (default /work/base/erd-531d603, else this build's erdgpi).
+BASE_ERD=${BASE_ERD:-/work/base/erd-531d603}
+[[ -x $BASE_ERD ]] || BASE_ERD=$ERD
+if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm ]]; then
+    for c in "lena 1" "bull 0.25" "peppers 3"; do
+        read -r name d <<<"$c"
+        [[ -f $IMAGES/$name.pgm ]] || continue
+        bench_case "generate erdgpr $name $d%" 1000 -- "$ERD" generate --method erdgpr -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd"
+        bench_case "base erdgpi $name $d%" 1000 -- "$BASE_ERD" generate --method erdgpi -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd"
+        if command -v valgrind >/dev/null; then
+            a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method erdgpr -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+            b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$BASE_ERD" generate --method erdgpi -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+            awk -v a="$a" -v b="$b" -v c="$name $d%" 'BEGIN { if (a && b) printf "removal: erdgpr / base erdgpi %s: %.0fM / %.0fM instructions = %.2fx (target <= 2.0)\n", c, a / 1e6, b / 1e6, a / b }'
+        fi
+    done
+fi
+# ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
 # raster (issue 6): reconstruct, whole process: read the model, rasterise, write the PGM.
 # Target: 4x4 supersampled reconstruct of bull at 1% (ERDGPI model) <= 40 ms. Also point

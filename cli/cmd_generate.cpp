@@ -83,6 +83,14 @@ const CommandLine kGenerate = {
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
+        {0, "oversample", "K", "GPRFS, ERDGPR: the start holds K*N points before removal (default: GPRFS 8, ERDGPR 2)"},
+        {0, "removal-refit", "0|1", "ERDGPR: refit the wedge values before each removal stage (default 1)"},
+        {0, "removal-cycles", "C", "ERDGPR: C more cycles of insertion to K*N and removal to N (default 0)"},
+        {0, "removal-stages", "S", "ERDGPR: removal in S stages, each from a refitted compact mesh (default 1)"},
+        {0, "id-cycles", "C", "ID: insertion/removal cycles after growing to N (default 4; the quality-for-time knob)"},
+        {0, "id-share", "A", "ID: each cycle inserts and then removes A*N points (default 1)"},
+        {0, "lazy", nullptr, "GPR, GPRFS, ERDGPR: recompute stale significances only at the heap's top (cheaper, worse; default: at once)"},
+        {0, "bpr", "R", "any method: R rounds of bad-point replacement at the end (default 0)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
         {0, "flip-min-share", "F", "ERD: flips skip quadrilaterals whose error is below F of the mean of two faces (default 0.2)"},
         {0, "moves", "K", "ERD: vertex moves after the first K rounds of flips, followed by a refit (default 2)"},
@@ -195,6 +203,14 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
     if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
     if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
+    if (a.has("oversample")) o->oversample = a.real("oversample", 0.0, 1.0, 64.0, st);
+    if (a.has("id-cycles")) o->id_cycles = int(a.integer("id-cycles", 4, 0, 1000, st));
+    if (a.has("id-share")) o->id_share = a.real("id-share", 1.0, 0.0, 4.0, st);
+    if (a.has("lazy")) o->removal_lazy = true;
+    if (a.has("removal-refit")) o->removal_refit = int(a.integer("removal-refit", 1, 0, 1, st));
+    if (a.has("removal-cycles")) o->removal_cycles = int(a.integer("removal-cycles", 0, 0, 16, st));
+    if (a.has("removal-stages")) o->removal_stages = int(a.integer("removal-stages", 1, 1, 16, st));
+    if (a.has("bpr")) o->bpr = int(a.integer("bpr", 0, 0, 1000, st));
     if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
     if (a.has("optimize")) o->optimize = true;
     if (a.has("flips")) o->flips = int(a.integer("flips", 0, 0, 64, st));

@@ -66,6 +66,14 @@ std::vector<std::string> result_lines(const RunStats& r) {
         out.push_back("max abs error: " + real("%.4g", r.greedy.max_error));
         out.push_back("psnr (point evaluation): " + real("%.4f", r.greedy.psnr));
     }
+    if (r.has_removal) {
+        out.push_back("point removal: " + std::to_string(r.removal.removed) + " of " + std::to_string(r.removal.start) +
+                      " vertices removed, " + std::to_string(r.removal.evaluations) + " significances computed");
+        if (r.removal.bpr_rounds > 0)
+            out.push_back("bad-point replacement: " + std::to_string(r.removal.bpr_rounds) + " rounds, " +
+                          std::to_string(r.removal.bpr_moves) + " of " + std::to_string(r.removal.bpr_tried) +
+                          " exchanges kept");
+    }
     if (r.has_raster) {
         const RasterStats& s = r.raster;
         if (s.outline_points || s.dropped_faces)

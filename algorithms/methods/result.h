@@ -79,6 +79,16 @@ struct ErdStepStats {
     std::size_t kind_exceptions = 0;    // edges of the other kind than the model's (Model::kind_exceptions)
 };
 
+// Point removal (algorithms/methods/removal.h) and bad-point replacement (bpr.h).
+struct RemovalRunStats {
+    std::size_t start = 0;        // vertices when removal began
+    std::size_t removed = 0;      // vertices removed
+    std::size_t evaluations = 0;  // significances computed
+    int bpr_rounds = 0;           // bad-point replacement rounds run
+    std::size_t bpr_moves = 0;    // points moved (kept exchanges)
+    std::size_t bpr_tried = 0;    // exchanges tried
+};
+
 // A real image (issue 47): its valid region and the max-error guarantee.
 struct RasterStats {
     std::size_t outline_points = 0;  // vertices of the valid region's outline (nodata images)
@@ -117,6 +127,8 @@ struct RunStats {
     GreedyStats greedy;
     bool has_wedge_fit = false;  // ERD with wedge_fit > 0
     WedgeFitStats wedge_fit;
+    bool has_removal = false;  // GPR, GPRFS, ERDGPR, --bpr
+    RemovalRunStats removal;
     bool has_raster = false;  // a real image
     RasterStats raster;
     bool has_quality = false;  // --psnr / --max-error searched the count

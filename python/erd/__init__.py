@@ -11,6 +11,6 @@ Everything runs in the compiled extension erd._erd over the library's public C++
 """
 from ._erd import DensityError, Edges, Mesh, edges, generate, load, psnr
 
-METHODS = ("ed", "gpi", "erded", "erdgpi")
+METHODS = ("ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr")
 __version__ = "0.1.0"
 __all__ = ["DensityError", "Edges", "Mesh", "METHODS", "edges", "generate", "load", "psnr"]
