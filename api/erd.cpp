@@ -13,6 +13,7 @@
 #include "algorithms/imaging/real_image.h"
 #include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/methods/quality_target.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/reconstruct.h"
 
@@ -158,7 +159,7 @@ Status generate(Method m, const ImageView& image, const Options& options, Model*
                                    " bytes, more than max_memory " + std::to_string(options.max_memory));
     }
     GenerateResult result;
-    st = entry->run(copy, options.generate, &result);
+    st = run_method(*entry, copy, options.generate, &result);
     if (!st) return st;
     *model = std::move(result.model);
     std::string warning;

@@ -76,12 +76,13 @@ ImageView view_of(const Image& image);
 // The Image a view stands for (checked as generate() checks it): what the methods take.
 Status image_of(const ImageView& view, Image* out);
 
-// The four methods of the thesis: ED and GPI make a basic model, ERDED and ERDGPI an ERD model.
+// The four methods of the thesis: ED and GPI make a basic model, ERDED and ERDGPI an ERD model;
+// then the removal methods of issue 45: GPR, GPRFS and ID (basic), ERDGPR (ERD).
 // The values are the rows of the method registry (algorithms/methods/methods.h), in its order;
 // the names, model kinds and memory factors are read from there.
-enum class Method { ed, gpi, erded, erdgpi };
+enum class Method { ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr };
 
-// "ed", "gpi", "erded", "erdgpi".
+// "ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr".
 const char* method_name(Method m);
 // The method of that name; Code::input for any other name.
 Status method_from_name(const std::string& name, Method* out);

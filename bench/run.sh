@@ -8,7 +8,7 @@
 #
 # The tables users read are rewritten in place in docs/RESULTS.md, each in its own marked section
 # (tools/results_section.sh; the rest of the file is left alone): "speed" (the scale block, beside
-# hmm), "memory", "colour-cost", "terrain" (issue 47), and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
+# hmm), "equal-quality" (beside hmm), "memory", "colour-cost", "terrain" (issue 47), and "heightmaps" when HEIGHTMAP_SIZES is given. A block that did
 # not run leaves its section as it was. RESULTS=FILE writes them elsewhere, RESULTS=none nowhere.
 set -u
 ERD=${1:-build/erd}
@@ -169,6 +169,26 @@ else
     echo "erdmodel: lena.pgm or bull.pgm missing in $IMAGES; skipped"
 fi
 # ---------------------------------------------------------------------------------------------
+# removal (issue 45): the recommended ERDGPR beside 531d603's default (its ERDGPI, which this
+# build's erdgpi reproduces byte for byte) at equal N. Target: ERDGPR <= 2.0x its CPU time, judged
+# by callgrind instructions (repeatable) and the CPU medians. BASE_ERD: that commit's binary
+# (default /work/base/erd-531d603, else this build's erdgpi).
+BASE_ERD=${BASE_ERD:-/work/base/erd-531d603}
+[[ -x $BASE_ERD ]] || BASE_ERD=$ERD
+if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm ]]; then
+    for c in "lena 1" "bull 0.25" "peppers 3"; do
+        read -r name d <<<"$c"
+        [[ -f $IMAGES/$name.pgm ]] || continue
+        bench_case "generate erdgpr $name $d%" 1000 -- "$ERD" generate --method erdgpr -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd"
+        bench_case "base erdgpi $name $d%" 1000 -- "$BASE_ERD" generate --method erdgpi -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd"
+        if command -v valgrind >/dev/null; then
+            a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method erdgpr -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+            b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$BASE_ERD" generate --method erdgpi -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+            awk -v a="$a" -v b="$b" -v c="$name $d%" 'BEGIN { if (a && b) printf "removal: erdgpr / base erdgpi %s: %.0fM / %.0fM instructions = %.2fx (target <= 2.0)\n", c, a / 1e6, b / 1e6, a / b }'
+        fi
+    done
+fi
+# ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
 # raster (issue 6): reconstruct, whole process: read the model, rasterise, write the PGM.
 # Target: 4x4 supersampled reconstruct of bull at 1% (ERDGPI model) <= 40 ms. Also point
@@ -287,6 +307,22 @@ if [[ -s $speed_rows ]]; then
         echo "memory section."
     } | results_section speed "Speed beside hmm (make bench, scale block)"
 fi
+# Equal quality beside hmm (issue 46): bench/equal_quality.sh (hmm's PSNR at 1%, the erdgpi count
+# that reaches it by --psnr, both timed). Writes the "equal-quality" section of docs/RESULTS.md.
+if [[ -n $HMM ]]; then
+    eq_table=$(bench/equal_quality.sh "$HMM" "$ERD" "$IMAGES" "$OUT" "$SCALE_RUNS")
+    echo "$eq_table" | sed 's/^/quality /'
+    {
+        echo "hmm meshes 1% of the pixels (\`hmm -z 1 -e 0 -p N\`); its PSNR is its STL evaluated at every pixel"
+        echo "(bench/stl_psnr.py); erdgpi's count is the fewest points whose model reaches that PSNR"
+        echo "(\`erd generate -m erdgpi -d 1 --psnr P\`, found within 2%). Whole process CPU ms, medians of"
+        echo "$SCALE_RUNS runs after a warm-up, one program after the other; ratio = erdgpi / hmm. synth 2048 soft:"
+        echo "\`erd synth\` 2048^2 with \`--edges soft\` for erdgpi. Targets (issue 46): equal quality <= 0.5x,"
+        echo "equal points <= 1.0x."
+        echo
+        echo "$eq_table"
+    } | results_section equal-quality "Equal quality beside hmm (make bench, issue 46)"
+fi
 # ---------------------------------------------------------------------------------------------
 # ---------------------------------------------------------------------------------------------
 # memory (issues 18, 19): the peak memory of every method at -d 1 and 0.1, one run per case,
@@ -391,7 +427,7 @@ if [[ -n ${HEIGHTMAP_SIZES:-} ]]; then
         n=$(( (s * s + 50) / 100 ))
         [[ -n $HMM ]] && hm_run "$s error" hmm "$HMM" -z 1 -e 0.001 -q "$OUT/hm$s.png" "$OUT/hm.stl"
         for m in gpi erdgpi; do
-            hm_run "$s error" "$m" "$ERD" generate -q -m "$m" -d 5 --max-error 65.535 -x 2 -i "$OUT/hm$s.png" -o "$OUT/hm.$m" --stats "$OUT/hm.json"
+            hm_run "$s error" "$m" "$ERD" generate -q -m "$m" -d 5 --max-error 65.535 --count-search 0 -x 2 -i "$OUT/hm$s.png" -o "$OUT/hm.$m" --stats "$OUT/hm.json"
         done
         [[ -n $HMM ]] && hm_run "$s 1%" hmm "$HMM" -z 1 -e 0 -p "$n" -q "$OUT/hm$s.png" "$OUT/hm.stl"
         for m in gpi erdgpi erded; do
@@ -402,7 +438,7 @@ if [[ -n ${HEIGHTMAP_SIZES:-} ]]; then
     {
         echo "A 16-bit heightmap made by \`erd synth -W S -H S --bits 16 --no-noise\` (sharp steps and discs on"
         echo "smooth slopes), as PNG, meshed (a) to a maximum error of 0.001 of the 65535 range, hmm's default"
-        echo "(\`hmm -z 1 -e 0.001\`; \`erd generate -d 5 --max-error 65.535 -x 2\`), and (b) to 1% of the pixels as"
+        echo "(\`hmm -z 1 -e 0.001\`; \`erd generate -d 5 --max-error 65.535 --count-search 0 -x 2\`: one run, as hmm), and (b) to 1% of the pixels as"
         echo "vertices (\`hmm -z 1 -e 0 -p N\`; \`erd generate -n N\`). One run each: triangles, CPU seconds, peak MB."
         echo "$hmm_note"
         echo

@@ -16,6 +16,7 @@
 
 #include "algorithms/methods/memory_estimate.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/methods/quality_target.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
@@ -60,11 +61,12 @@ const CommandLine kGenerate = {
         {'t', "triangulation", "FILE", "also write the triangulation (erd-triangulation 1)"},
         {'p', "polylines", "FILE", "also write the polylines (erd-polylines 1; none for ed, gpi)"},
         {'x', "exit-mode", "0|1|2", "N not reached exactly: 0 error (exit 3), 1 warning, 2 silent"},
-        {0, "max-error", "E", "greedy methods: also stop when the largest abs error <= E (a real-valued image: every method, a bound on the model given)"},
+        {0, "max-error", "E", "the fewest points (up to N, within 2%) whose model has no error above E (every method; a real-valued image: a bound met in one run)"},
         {0, "max-slack", "S", "ERD, real image, --max-error E: the greedy stops at S*E before the minimax fit (default 1.6)"},
         {0, "minimax", "K", "ERD, real image, --max-error: rounds of the minimax fit of the values (default 2; 0: none)"},
         {0, "min-step", "F", "ERD, real image, --max-error E: keep detected edges whose step across is F*E or more (default 4; 0: all)"},
-        {0, "psnr", "P", "greedy methods: also stop when the PSNR reaches P dB"},
+        {0, "psnr", "P", "the fewest points (up to N, within 2%) whose model reaches P dB (every method)"},
+        {0, "count-search", "0|1", "--psnr, --max-error: 1 search the fewest points (default), 0 one run (the greedy loop's own stop, before the ERD refit and flips)"},
         {0, "triangles", "T", "greedy methods: also stop when the mesh has T triangles or more"},
         {'l', "min-length", "L", "ERD: minimum polyline length (default automatic)"},
         {'b', "beta", "B", "ERD: Canny hysteresis proportion beta (default automatic)"},
@@ -81,6 +83,14 @@ const CommandLine kGenerate = {
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
+        {0, "oversample", "K", "GPRFS, ERDGPR: the start holds K*N points before removal (default: GPRFS 8, ERDGPR 2)"},
+        {0, "removal-refit", "0|1", "ERDGPR: refit the wedge values before each removal stage (default 1)"},
+        {0, "removal-cycles", "C", "ERDGPR: C more cycles of insertion to K*N and removal to N (default 0)"},
+        {0, "removal-stages", "S", "ERDGPR: removal in S stages, each from a refitted compact mesh (default 1)"},
+        {0, "id-cycles", "C", "ID: insertion/removal cycles after growing to N (default 4; the quality-for-time knob)"},
+        {0, "id-share", "A", "ID: each cycle inserts and then removes A*N points (default 1)"},
+        {0, "lazy", nullptr, "GPR, GPRFS, ERDGPR: recompute stale significances only at the heap's top (cheaper, worse; default: at once)"},
+        {0, "bpr", "R", "any method: R rounds of bad-point replacement at the end (default 0)"},
         {0, "refit-stages", "K", "ERDGPI: refit the wedge values K times during refinement (default 0)"},
         {0, "flip-min-share", "F", "ERD: flips skip quadrilaterals whose error is below F of the mean of two faces (default 0.2)"},
         {0, "moves", "K", "ERD: vertex moves after the first K rounds of flips, followed by a refit (default 2)"},
@@ -193,6 +203,14 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("wedge-fit")) o->wedge_fit = int(a.integer("wedge-fit", o->wedge_fit, 0, 1000, st));
     if (a.has("wedge-prior")) o->wedge_prior = a.real("wedge-prior", o->wedge_prior, 0.0, 1e9, st);
     if (a.has("wedge-bounds")) o->wedge_bounds = a.real("wedge-bounds", o->wedge_bounds, -1.0, 1e6, st);
+    if (a.has("oversample")) o->oversample = a.real("oversample", 0.0, 1.0, 64.0, st);
+    if (a.has("id-cycles")) o->id_cycles = int(a.integer("id-cycles", 4, 0, 1000, st));
+    if (a.has("id-share")) o->id_share = a.real("id-share", 1.0, 0.0, 4.0, st);
+    if (a.has("lazy")) o->removal_lazy = true;
+    if (a.has("removal-refit")) o->removal_refit = int(a.integer("removal-refit", 1, 0, 1, st));
+    if (a.has("removal-cycles")) o->removal_cycles = int(a.integer("removal-cycles", 0, 0, 16, st));
+    if (a.has("removal-stages")) o->removal_stages = int(a.integer("removal-stages", 1, 1, 16, st));
+    if (a.has("bpr")) o->bpr = int(a.integer("bpr", 0, 0, 1000, st));
     if (a.has("refit-stages")) o->refit_stages = int(a.integer("refit-stages", 0, 0, 64, st));
     if (a.has("optimize")) o->optimize = true;
     if (a.has("flips")) o->flips = int(a.integer("flips", 0, 0, 64, st));
@@ -207,6 +225,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
                                 real_text(o->alpha_min));
     if (a.has("edge-zero-radius"))
         o->edge_zero_radius = int(a.integer("edge-zero-radius", o->edge_zero_radius, 0, 64, st));
+    if (a.has("count-search")) o->count_search = a.integer("count-search", 1, 0, 1, st) == 1;
     if (a.has("aa-errors")) o->supersampled_errors = a.integer("aa-errors", 0, 0, 1, st) == 1;
     if (a.has("max-slack")) o->max_slack = a.real("max-slack", o->max_slack, 1.0, 16.0, st);
     if (a.has("minimax")) o->minimax_rounds = int(a.integer("minimax", o->minimax_rounds, 0, 64, st));
@@ -323,7 +342,7 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     std::string bytes, codec_note;
     DensityChoice choice;
     if (codec.choose_density) st = choose_density(*method, image, opt, codec, &res, &bytes, &choice);
-    else st = method->run(image, opt, &res);
+    else st = run_method(*method, image, opt, &res);
     progress.finish();
     if (!st && st.code == Code::input && !constraints_in.empty() && st.message.rfind("constraints: ", 0) == 0)
         return rep.fail(Status::bad_input(escape_name(constraints_in) + ": " + st.message.substr(13)));
@@ -334,6 +353,9 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
         rep.detail(buf);
     }
     for (const std::string& s : result_lines(res.stats)) rep.detail(s);
+    if (res.stats.has_quality && !res.stats.quality.reached)
+        rep.warn(escape_name(in) + ": " + (opt.psnr > 0 ? "--psnr " + real_text(opt.psnr) : "--max-error " + real_text(opt.max_error)) +
+                 " not reached at N = " + std::to_string(res.requested) + " points (raise -d or -n)");
     if (res.stats.has_raster && opt.max_error >= 0 && res.stats.raster.max_error > opt.max_error)
         rep.warn(escape_name(in) + ": the largest error is " + real_text(res.stats.raster.max_error) + ", above --max-error " +
                  real_text(opt.max_error) + ": N points were reached first (raise -d or -n)");

@@ -53,11 +53,15 @@ namespace erd::cli {
 namespace {
 
 // generate's flags that `erd tiles` passes on to every tile (the others are its own or make no
-// sense for a tile: outputs, batches, stdin, the .erdz rate flags, user constraints, --optimize).
+// sense for a tile: outputs, batches, stdin, the .erdz rate flags, user constraints, --optimize,
+// the count search and bad-point replacement of generate's run (a tile is one method run), the
+// removal methods' flags).
 bool forwarded(const char* name) {
     static const char* const kNot[] = {"method", "input", "output", "triangulation", "polylines", "exit-mode", "constraints",
                                        "no-detect", "max-memory", "stats", "psnr-report", "progress", "jobs", "summary",
-                                       "step", "bpp", "step-psnr", "choose-density", "gray", "optimize"};
+                                       "step", "bpp", "step-psnr", "choose-density", "gray", "optimize", "count-search", "bpr",
+                                       "oversample", "removal-refit", "removal-cycles", "removal-stages", "id-cycles", "id-share",
+                                       "lazy"};
     for (const char* n : kNot)
         if (std::strcmp(n, name) == 0) return false;
     return true;
@@ -96,8 +100,13 @@ const CommandLine& tiles_command_line() {
             },
             "no summary lines",
         };
-        for (const OptionSpec& o : generate_command_line().options)
-            if (forwarded(o.long_name)) c.options.push_back(o);
+        // --max-error and --psnr are each tile's greedy stop (generate's one run, --count-search 0).
+        for (OptionSpec o : generate_command_line().options) {
+            if (!forwarded(o.long_name)) continue;
+            if (std::strcmp(o.long_name, "max-error") == 0) o.help = "every tile: the greedy stops when its largest abs error <= E (the sides: the 1-D greedy's)";
+            if (std::strcmp(o.long_name, "psnr") == 0) o.help = "every tile: the greedy stops when its PSNR reaches P dB (so does the whole raster's)";
+            c.options.push_back(o);
+        }
         return c;
     }();
     return cl;

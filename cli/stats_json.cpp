@@ -47,6 +47,8 @@ GenerateStats collect_stats(const std::string& method, const Image& image, const
         s.other_kind_edges = result.model.kind_exceptions.size();
     }
     if (rs.has_greedy) s.stop = to_string(rs.greedy.stop);
+    s.has_quality = rs.has_quality;
+    s.quality = rs.quality;
     return s;
 }
 
@@ -74,6 +76,12 @@ std::string stats_json(const GenerateStats& s) {
     j.num("total_seconds", s.total_seconds).integer("peak_memory_bytes", s.peak_memory_bytes);
     j.integer("memory_estimate_bytes", s.memory_estimate_bytes);
     if (s.has_psnr) j.num("psnr", s.psnr);
+    if (s.has_quality) {
+        const QualitySearchStats& q = s.quality;
+        j.object("quality_search", JsonObject().integer("runs", q.runs).integer("points", (long long)q.points)
+                                       .integer("below", (long long)q.below).boolean("reached", q.reached)
+                                       .boolean("exact", q.exact).num("psnr", q.psnr).num("max_error", q.max_error));
+    }
     return j.text() + "\n";
 }
 

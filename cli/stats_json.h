@@ -37,6 +37,8 @@ struct GenerateStats {
     long long memory_estimate_bytes = 0;  // what the memory cap compared (the estimate + the process's 1.4 MiB)
     bool has_psnr = false;
     double psnr = 0;
+    bool has_quality = false;        // --psnr / --max-error searched the count (quality_target.h)
+    QualitySearchStats quality;
 };
 
 // Fills the counts from the result's model (constrained edges: the model's list, or where an ERD

@@ -26,6 +26,7 @@
 #include "api/erd.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/options.h"
+#include "algorithms/methods/quality_target.h"
 #include "algorithms/model/reconstruct.h"
 #include "kernel/cdt.h"
 
@@ -135,7 +136,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::int64_t n = target_points(o, image.width, image.height);
     const bool in_range = check_target(n, image.width, image.height).ok();
     GenerateResult res;
-    const Status st = method.run(image, o, &res);
+    const Status st = run_method(method, image, o, &res);  // --psnr / --max-error: the count searched
     if (!in_range) {
         check(!st.ok() && st.code == Code::input);
         return 0;
@@ -144,7 +145,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(st.code == Code::input && !st.message.empty());
         return 0;
     }
-    check(res.requested == std::size_t(n));
+    if (res.stats.has_quality) {
+        const QualitySearchStats& q = res.stats.quality;
+        check(res.requested <= std::size_t(n) && res.requested >= 4);
+        if (q.reached) check((o.psnr <= 0 || q.psnr >= o.psnr) && (o.max_error < 0 || q.max_error <= o.max_error));
+    } else {
+        check(res.requested == std::size_t(n));
+    }
     check_model(image, res);
     return 0;
 }

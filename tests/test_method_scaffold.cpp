@@ -22,15 +22,17 @@ using namespace erd;
 TEST_CASE("method registry: one row per method, read by the API and the thesis names", "[methods]") {
     std::size_t count = 0;
     const MethodInfo* table = methods(&count);
-    REQUIRE(count == 4);
-    CHECK(method_names() == "ed, gpi, erded, erdgpi");
-    const api::Method ids[] = {api::Method::ed, api::Method::gpi, api::Method::erded, api::Method::erdgpi};
+    REQUIRE(count == 8);
+    CHECK(method_names() == "ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr");
+    const api::Method ids[] = {api::Method::ed,  api::Method::gpi,   api::Method::erded, api::Method::erdgpi,
+                               api::Method::gpr, api::Method::gprfs, api::Method::id,    api::Method::erdgpr};
     for (std::size_t i = 0; i < count; ++i) {
         INFO(table[i].name);
         CHECK(find_method(table[i].name) == &table[i]);
         CHECK(std::string(api::method_name(ids[i])) == table[i].name);
-        CHECK(table[i].thesis_program != nullptr);
-        CHECK(std::string(table[i].thesis_flags).rfind("idnotpx", 0) == 0);
+        // The thesis's four have its program names; the removal methods (issue 45) none.
+        CHECK((table[i].thesis_program != nullptr) == (i < 4));
+        if (i < 4) CHECK(std::string(table[i].thesis_flags).rfind("idnotpx", 0) == 0);
         CHECK(table[i].bytes_per_pixel > 0);
         CHECK(table[i].run != nullptr);
         api::Options o;
@@ -40,6 +42,8 @@ TEST_CASE("method registry: one row per method, read by the API and the thesis n
     }
     CHECK(table[0].model == ModelKind::basic);
     CHECK(table[3].model == ModelKind::erd);
+    CHECK(table[4].model == ModelKind::basic);
+    CHECK(table[7].model == ModelKind::erd);
     CHECK(find_method("erd_gpi") == nullptr);  // the thesis's name is not a method name
 }
 
@@ -184,8 +188,8 @@ TEST_CASE("erd generate: an unknown --method gets a did-you-mean, exit 2", "[cli
     REQUIRE(erd_test::binary_available());
     erd_test::RunResult r = erd_test::run_erd("generate --method erdgdi -i x.pgm -o y.erd");
     CHECK(r.status == 2);
-    CHECK_THAT(r.err, Catch::Contains("unknown method 'erdgdi'; available: ed, gpi, erded, erdgpi. Did you mean 'erdgpi'?"));
+    CHECK_THAT(r.err, Catch::Contains("unknown method 'erdgdi'; available: ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr. Did you mean 'erdgpi'?"));
     r = erd_test::run_erd("generate --method zzzzzz -i x.pgm -o y.erd");
     CHECK(r.status == 2);
-    CHECK_THAT(r.err, Catch::Contains("unknown method 'zzzzzz'; available: ed, gpi, erded, erdgpi.\n"));
+    CHECK_THAT(r.err, Catch::Contains("unknown method 'zzzzzz'; available: ed, gpi, erded, erdgpi, gpr, gprfs, id, erdgpr.\n"));
 }

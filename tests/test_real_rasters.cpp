@@ -245,6 +245,19 @@ TEST_CASE("the valid region's outline: between valid and nodata pixels, never th
     }
 }
 
+// The removal methods (issue 45: gpr, gprfs, id, erdgpr) refuse a real image with one clear
+// Code::input line naming the methods that take it; true for them (checked here), false for the
+// others.
+static bool refuses_real(const erd::MethodInfo& method, const Image& im, const erd::GenerateOptions& o) {
+    const std::string name = method.name;
+    if (name != "gpr" && name != "gprfs" && name != "id" && name != "erdgpr") return false;
+    erd::GenerateResult res;
+    const erd::Status st = method.run(im, o, &res);
+    CHECK(st.code == erd::Code::input);
+    CHECK_THAT(st.message, Catch::Contains(name + ": real-valued rasters are not supported") && Catch::Contains("use gpi or erdgpi"));
+    return true;
+}
+
 TEST_CASE("every method meshes a real image with nodata: faces own its valid pixels, none of its holes", "[real]") {
     const Image im = terrain(64, 40, true);
     std::size_t count = 0;
@@ -255,6 +268,7 @@ TEST_CASE("every method meshes a real image with nodata: faces own its valid pix
         o.density = 8;
         o.density_given = true;
         erd::GenerateResult res;
+        if (refuses_real(table[k], im, o)) continue;
         REQUIRE(table[k].run(im, o, &res).ok());
         const erd::Model& m = res.model;
         CHECK(m.real);
@@ -291,6 +305,7 @@ TEST_CASE("--max-error on a real image is a bound on the model, for every method
         o.density_given = true;
         o.max_error = 0.75;
         erd::GenerateResult res;
+        if (refuses_real(table[k], im, o)) continue;
         REQUIRE(table[k].run(im, o, &res).ok());
         Image rec;
         REQUIRE(erd::reconstruct(res.model, false, &rec).ok());

@@ -15,7 +15,10 @@
 #   tools/graphics_svg.py rendered by rsvg-convert, ERDGPI (flag 1%, mixed-text 2%: a detail of its
 #   title and logo) before (--edges soft: what auto chose for them before per-edge kinds) and after
 #   (the default), mesh over the reconstruction (constrained edges red) and error map, the original.
-#   PARTS (default "bull hard quality colour graphics") picks the parts.
+#   Point removal (issue 45, part "removal"): bull 0.125% and lena 1%, the recommended ERDGPR beside
+#   ERDGPI (531d603's default, byte-identical): a detail of the mesh over the reconstruction and
+#   its error map.
+#   PARTS (default "bull hard quality colour graphics removal") picks the parts.
 # usage: tools/docs_images.sh ERD_BIN IMAGES_DIR [OUT_DIR]
 set -euo pipefail
 erd=${1:-build/erd}
@@ -29,7 +32,7 @@ if [ ! -x "$erd" ]; then echo "docs_images: no erd binary at $erd (run make firs
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-parts=${PARTS:-bull hard quality colour graphics}
+parts=${PARTS:-bull hard quality colour graphics removal}
 
 if [[ " $parts " == *" colour "* ]]; then
     src="$images/color/kodim03.ppm"
@@ -58,6 +61,21 @@ if [[ " $parts " == *" quality "* ]]; then
             echo "docs_images: $name $d% ERDGPI $when: PSNR $("$erd" psnr "$images/$name.pgm" "$tmp/q_${name}_$when.pgm") dB" >&2
             "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_mesh.png"
             "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_error.png"
+        done
+    done
+fi
+
+if [[ " $parts " == *" removal "* ]]; then
+    for c in "bull 0.125 260,40,320,240" "lena 1 200,180,200,200"; do
+        read -r name d box <<<"$c"
+        [ -f "$images/$name.pgm" ] || { echo "docs_images: $images/$name.pgm not found" >&2; exit 1; }
+        for method in erdgpi erdgpr; do
+            model="$tmp/r_${name}_$method.erd"
+            "$erd" generate -m "$method" -i "$images/$name.pgm" -d "$d" -x 1 -q -o "$model"
+            "$erd" reconstruct "$model" -q -o "$tmp/r_${name}_$method.pgm"
+            echo "docs_images: $name $d% $method: PSNR $("$erd" psnr "$images/$name.pgm" "$tmp/r_${name}_$method.pgm") dB" >&2
+            "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/removal_${name}_${method}_mesh.png"
+            "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/removal_${name}_${method}_error.png"
         done
     done
 fi

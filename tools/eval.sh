@@ -12,7 +12,11 @@
 # search alpha in [1, 1.5], density zeroed on edge pixels only, ERDGPI errors against the
 # supersampled approximation) for the reproduction targets, and
 # "erd default" (our least-squares wedge refit, alpha in [0.75, 1], edge radius 1 pixel).
-# Variant names: METHOD (erd default) and METHOD+thesis. tools/eval_startup.sh (Table 3.4) and
+# Variant names: METHOD (erd default) and METHOD+thesis. The removal methods of issue 45 (gpr,
+# gprfs, id: basic model; erdgpr: ERD model, the recommended default) have no thesis table; every
+# method also runs with "+bpr" (--bpr 1, bad-point replacement), and the section "Every method"
+# puts all variants side by side with their CPU seconds (user + system of erd generate).
+# tools/eval_startup.sh (Table 3.4) and
 # tools/eval_hard.sh (hard-edged pictures, issue 15), tools/eval_colour.sh (colour images,
 # issue 17) and tools/eval_graphics.sh (anti-aliased graphics and mixed pictures, issue 44) run last.
 set -u
@@ -39,18 +43,20 @@ declare -A DENSITIES=([bull]="0.125 0.25 0.5 1" [lena]="0.5 1 2 3" [peppers]="0.
 # Tolerance of the quality targets (issues 5 and 6): ours >= thesis - TOL counts as met.
 declare -A TOL=([ed]=1.5 [gpi]=0.5 [erded]=0.5 [erdgpi]=0.3)
 declare -A TABLE=([ed]="3.5" [gpi]="3.6" [erded]="3.5" [erdgpi]="3.6")
+BPR=${BPR:-1}  # rounds of the +bpr variants
 
 registered=$("$ERD" generate --help 2>/dev/null | sed -n '/^Methods:/,$p' | awk 'NR > 1 {print $1}')
 methods=()
-for m in ${METHODS:-ed gpi erded erdgpi}; do
+for m in ${METHODS:-ed gpi gpr gprfs id erded erdgpi erdgpr}; do
     grep -qx "$m" <<<"$registered" && methods+=("$m")
 done
 if [[ ${#methods[@]} -eq 0 ]]; then echo "eval: no methods registered in $ERD"; exit 1; fi
 variants=()
 for m in "${methods[@]}"; do
     case $m in
-        erded|erdgpi) variants+=("$m+thesis" "$m+previous" "$m") ;;
-        *) variants+=("$m" "$m+optimize") ;;
+        erded|erdgpi) variants+=("$m+thesis" "$m+previous" "$m" "$m+bpr") ;;
+        ed|gpi) variants+=("$m" "$m+optimize" "$m+bpr") ;;
+        *) variants+=("$m" "$m+bpr") ;;
     esac
 done
 # Flags of each variant suffix. "+previous" is the default before issue 16 (no flips, plain
@@ -64,6 +70,7 @@ title() {
         *+thesis) echo "$M, thesis method (--thesis)" ;;
         *+previous) echo "$M, previous default (no flips, plain refit: ${VFLAGS[previous]})" ;;
         *+optimize) echo "$M --optimize (least-squares values, flips)" ;;
+        *+bpr) echo "$M --bpr $BPR (bad-point replacement)" ;;
         erded|erdgpi) echo "$M, erd default (regularised wedge refit, flips, moves, alpha 0.75-1, edge radius 1)" ;;
         *) echo "$M" ;;
     esac
@@ -72,21 +79,21 @@ title() {
 # One case -> one line "method image density N_requested N_got psnr seconds" on stdout.
 run_case() {
     local v=$1 img=$2 d=$3 ext=model m=${1%%+*} flags=()
-    case $m in erded|erdgpi) ext=erd ;; esac
+    case $m in erd*) ext=erd ;; esac
     # (run_case runs under xargs, where VFLAGS, an associative array, is not exported.)
     case $v in
         *+thesis) flags=(--thesis) ;;
         *+previous) flags=(--flips 0 --wedge-prior 0 --wedge-bounds -1) ;;
         *+optimize) flags=(--optimize) ;;
+        *+bpr) flags=(--bpr "$BPR") ;;
     esac
     local base=$OUT/$img.$v.$d mesh log start end psnr got req
     mesh=$base.$ext
     log=$base.log
-    start=$(date +%s.%N)
-    if ! "$ERD" generate --method "$m" "${flags[@]}" -i "$IMAGES/$img.pgm" -d "$d" -x 1 -o "$mesh" -t "$base.tri" >"$log" 2>&1; then
+    # CPU seconds (user + system) of erd generate: what a shared machine measures fairly.
+    if ! /usr/bin/time -o "$base.cpu" -f "%U %S" "$ERD" generate --method "$m" "${flags[@]}" -i "$IMAGES/$img.pgm" -d "$d" -x 1 -o "$mesh" -t "$base.tri" >"$log" 2>&1; then
         echo "$v $img $d - - failed 0"; return
     fi
-    end=$(date +%s.%N)
     "$ERD" reconstruct "$mesh" -o "$base.pgm" >>"$log" 2>&1 || { echo "$v $img $d - - noreconstruct 0"; return; }
     psnr=$("$ERD" psnr "$IMAGES/$img.pgm" "$base.pgm" 2>>"$log") || psnr=failed
     req=$(sed -n 's/.*requested \([0-9]*\) but got \([0-9]*\).*/\1/p' "$log" | head -1)
@@ -95,10 +102,10 @@ run_case() {
         # N reached exactly: the vertex count is the model file's second number.
         got=$(awk 'NR == 2 {print $1; exit}' "$mesh"); req=$got
     fi
-    echo "$v $img $d $req $got $psnr $(awk -v a="$start" -v b="$end" 'BEGIN {printf "%.3f", b - a}')"
+    echo "$v $img $d $req $got $psnr $(awk '{printf "%.3f", $1 + $2}' "$base.cpu")"
 }
 export -f run_case
-export ERD IMAGES OUT
+export ERD IMAGES OUT BPR
 
 cases=()
 for m in "${variants[@]}"; do
@@ -128,8 +135,8 @@ kept=$OUT/kept_sections.md
     echo "$(git rev-parse --short HEAD 2>/dev/null || echo unknown). PSNR in dB of the reconstruction (imgsyn for"
     echo "ED/GPI models, 4x4-supersampled imgsyn_aa for ERD models) against the original, beside the thesis's"
     echo "Tables 3.5 (ED, ERDED) and 3.6 (GPI, ERDGPI). diff = ours - thesis. \"met\" = ours >= thesis - tol"
-    echo "(tol: ED 1.5, GPI 0.5, ERDED 0.5, ERDGPI 0.3 dB, the targets of issues 5 and 6). time = wall"
-    echo "seconds of \`erd generate\` (load, mesh, write), $JOBS cases at once on a shared machine."
+    echo "(tol: ED 1.5, GPI 0.5, ERDED 0.5, ERDGPI 0.3 dB, the targets of issues 5 and 6). time = CPU"
+    echo "seconds (user + system) of \`erd generate\` (load, mesh, write), $JOBS cases at once on a shared machine."
     echo "Misses of the targets and their likely causes: docs/DECISIONS.md \"ED and GPI\", \"ERD model and methods\"."
     echo "The sections after the thesis tables are written by the command each one names (make codec-bench,"
     echo "make bench, tools/eval_*.sh) and kept when another command rewrites the file."
@@ -139,8 +146,41 @@ kept=$OUT/kept_sections.md
     echo "\"erd default\" is what \`erd generate\` does without flags (our least-squares wedge refit, alpha in"
     echo "[0.75, 1] px, edge radius 1 px, point-evaluated ERDGPI errors; docs/DECISIONS.md \"ERD model and methods\")."
     echo
+    # Every variant side by side (issue 45): PSNR and CPU seconds per case, medians at the foot.
+    echo "## Every method: PSNR dB / CPU s on the thesis's 12 cases (issue 45)"
+    echo
+    echo "Basic model: ED, GPI (the thesis's), GPR, GPRFS, ID (the removal methods, docs/DECISIONS.md"
+    echo "\"Point removal\"); ERD model: ERDED, ERDGPI, ERDGPR (ERDGPI to 2N, then removal to N: the"
+    echo "recommended default). +bpr: \`--bpr $BPR\`; +optimize: \`--optimize\`; +thesis: \`--thesis\`."
+    echo
+    printf '| variant |'; for img in bull lena peppers; do for d in ${DENSITIES[$img]}; do printf ' %s %s |' "$img" "$d"; done; done
+    printf ' median PSNR | median gain over GPI | CPU s (sum) |\n'
+    printf '|---|'; for img in bull lena peppers; do for d in ${DENSITIES[$img]}; do printf -- '---:|'; done; done; printf -- '---:|---:|---:|\n'
+    for v in "${variants[@]}"; do
+        awk -v v="$v" -v order="bull 0.125 bull 0.25 bull 0.5 bull 1 lena 0.5 lena 1 lena 2 lena 3 peppers 0.5 peppers 1 peppers 2 peppers 3" '
+            function median(a, n,    i, j, x) {  # sorts a[1..n] in place (mawk has no asort)
+                if (!n) return 0
+                for (i = 2; i <= n; i++) { x = a[i]; for (j = i - 1; j >= 1 && a[j] > x; j--) a[j + 1] = a[j]; a[j + 1] = x }
+                return (n % 2) ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
+            }
+            $6 ~ /^[0-9.]+$/ { p[$1 " " $2 " " $3] = $6; t[$1 " " $2 " " $3] = $7 }
+            END {
+                n = split(order, o, " "); line = "| " v " |"; k = 0; cpu = 0
+                for (i = 1; i < n; i += 2) {
+                    c = o[i] " " o[i + 1]
+                    if ((v " " c) in p) {
+                        line = line sprintf(" %.2f / %.2f |", p[v " " c], t[v " " c]); ps[++k] = p[v " " c]; cpu += t[v " " c]
+                        if (("gpi " c) in p) gs[++kg] = p[v " " c] - p["gpi " c]
+                    } else line = line " - |"
+                }
+                med = median(ps, k); gm = median(gs, kg)
+                printf "%s %.2f | %+.2f | %.2f |\n", line, med, gm, cpu
+            }' "$OUT/raw.txt"
+    done
+    echo
     for v in "${variants[@]}"; do
         m=${v%%+*}
+        [[ -n ${TABLE[$m]:-} ]] || continue
         echo "## $(title "$v") (thesis Table ${TABLE[$m]})"
         echo
         echo "| image | density % | N | ours | thesis | diff | met | time s |"
@@ -182,12 +222,16 @@ kept=$OUT/kept_sections.md
     # Gains of the ERD methods over our own baselines (issue 6; targets: ERDGPI - GPI median >= 1.0 dB,
     # ERDED - ED >= 3.0 dB), for both variants, and of our default over the thesis method.
     for pair in "erdgpi+thesis gpi" "erdgpi gpi" "erded+thesis ed" "erded ed" "erdgpi erdgpi+thesis" "erded erded+thesis" \
-                "erdgpi erdgpi+previous" "erded erded+previous" "gpi+optimize gpi" "ed+optimize ed"; do
+                "erdgpi erdgpi+previous" "erded erded+previous" "gpi+optimize gpi" "ed+optimize ed" \
+                "gpr gpi" "gprfs gpi" "id gpi" "erdgpr erdgpi" "erdgpr gpr" "erdgpr id" "erdgpr gpi+optimize"; do
         read -r a b <<<"$pair"
         grep -q "^$a " "$OUT/raw.txt" && grep -q "^$b " "$OUT/raw.txt" || continue
         A=$(title "$a"); B=$(title "$b")
         case $pair in
             "erdgpi"*" gpi") target=" (target: median >= +1.0 dB)" ;;
+            "gpr gpi"|"gprfs gpi"|"id gpi") target=" (issue 45: the best removal method >= +0.7 dB median)" ;;
+            "erdgpr erdgpi") target=" (issue 45: the default against 531d603's (ERDGPI's, byte-identical): >= +0.5 dB median)" ;;
+            "erdgpr gpr"|"erdgpr id"|"erdgpr gpi+optimize") target=" (issue 45: >= +1.5 dB median over the best basic-model method)" ;;
             "erded"*" ed") target=" (target: median >= +3.0 dB)" ;;
             *) target="" ;;
         esac

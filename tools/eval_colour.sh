@@ -44,7 +44,9 @@ run_case() {
 export -f run_case
 export EVAL IMAGES
 cases=()
-for v in gpi ed erdgpi erded erdgpi+luma; do
+# The removal methods of issue 45 (tools/eval.sh "Every method"): METHODS45= (empty) leaves them out.
+METHODS45=${METHODS45-gpr gprfs id erdgpr}
+for v in gpi ed erdgpi erded erdgpi+luma $METHODS45; do
     for img in "${imgs[@]}"; do for d in 0.5 1 2; do cases+=("$v $img $d"); done; done
 done
 echo "eval_colour: ${#cases[@]} cases, $JOBS at a time"
@@ -93,6 +95,25 @@ section=$OUT/colour_section.md
     echo "triangulation of their points and constraints, with the flips that give their faces, is valid and"
     echo "has their faces; each wedge one value per channel):"
     echo "$(awk '$4 != "failed"' "$OUT/colour_raw.txt" | wc -l) of $(wc -l <"$OUT/colour_raw.txt")."
+    if [[ -n $METHODS45 ]]; then
+        echo
+        echo "Every method on the colour images (issue 45): RGB-PSNR dB per image and density, the median"
+        echo "of the 21 cases, and its gain over ERDGPI (531d603's default, byte-identical)."
+        echo
+        cols="gpi ed $METHODS45 erded erdgpi"
+        printf '%s' '| image | density % |'; for v in $cols; do printf ' %s |' "$v"; done; printf '\n|---|---:|'
+        for v in $cols; do printf -- '---:|'; done; echo
+        awk -v cols="$cols" '{ p[$1 " " $2 " " $3] = $4; k[$2 " " $3] = 1 }
+             END { n = split(cols, c, " "); for (x in k) { split(x, f, " "); line = "| " f[1] " | " f[2] " |"
+                   for (i = 1; i <= n; i++) line = line " " ((c[i] " " x) in p ? sprintf("%.2f", p[c[i] " " x]) : "-") " |"
+                   print line } }' "$OUT/colour_raw.txt" | sort -t'|' -k2,2 -k3,3g
+        echo
+        for v in $cols; do
+            m=$(awk -v v="$v" '$1 == v && $4 ~ /^[0-9.]+$/ {print $4}' "$OUT/colour_raw.txt" | median | tr -d +)
+            g=$(awk -v v="$v" '{ p[$1 " " $2 " " $3] = $4 } END { for (c in p) { split(c, f, " "); if (f[1] == v && ("erdgpi " f[2] " " f[3]) in p) print p[c] - p["erdgpi " f[2] " " f[3]] } }' "$OUT/colour_raw.txt" | median)
+            echo "- $v: median $m dB, $g dB over ERDGPI"
+        done
+    fi
     echo "<!-- /colour -->"
 } >"$section"
 put_section colour "$section" "$RESULTS"

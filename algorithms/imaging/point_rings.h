@@ -133,10 +133,14 @@ private:
     }
 
     static unsigned popcount64(std::uint64_t v) {
+#if defined(__POPCNT__)
+        return unsigned(__builtin_popcountll(v));  // one instruction (the Makefile's -mpopcnt on x86-64)
+#else
         v = v - ((v >> 1) & 0x5555555555555555ull);
         v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);
         v = (v + (v >> 4)) & 0x0F0F0F0F0F0F0F0Full;
         return unsigned((v * 0x0101010101010101ull) >> 56);
+#endif
     }
     static unsigned lowest_bit(std::uint64_t v) { return unsigned(__builtin_ctzll(v)); }  // v != 0
 

@@ -1,9 +1,6 @@
 #include "algorithms/methods/ed.h"
 
-#include "algorithms/imaging/colour.h"
-#include "algorithms/imaging/error_diffusion.h"
-#include "algorithms/imaging/mmsodd.h"
-#include "algorithms/methods/exact_count.h"
+#include "algorithms/methods/ed_select.h"
 #include "algorithms/methods/scaffold.h"
 #include "kernel/cdt.h"
 
@@ -20,15 +17,14 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     StageTimer timer(result);
     if (options.progress.report_cancelled("sample selection", 0.0)) return Status::failure(kCancelled);
     // Colour: the channels' MMSODDs combined (ColourChoices::density).
-    Grid<double> sigma = ed_density(colour_mmsodd(image, 3, options.colour.density, options.threads), 1.0, options.threads);
+    Grid<double> sigma = ed_sigma(image, options);
     timer.lap("mmsodd density");
     if (options.progress.report_cancelled("sample selection", 0.2)) return Status::failure(kCancelled);
 
     // Steps 2-3: error diffusion chooses the N - 4 non-corner points; the corners are forbidden
     // to it (their density still diffuses) and always added, so the total is N exactly whenever
     // the threshold search finds N - 4.
-    Grid<std::uint8_t> corners(w, h, 0);
-    corners(0, 0) = corners(w - 1, 0) = corners(w - 1, h - 1) = corners(0, h - 1) = 1;
+    Grid<std::uint8_t> corners = ed_corners(w, h);
     // Nodata (a real image's holes): never chosen, no density; the outline of the valid region is
     // a constraint of the mesh, and its points count towards N.
     Cdt cdt;
@@ -41,17 +37,11 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
                 corners.data[i] = 1;
                 sigma.data[i] = 0.0;
             }
-    DiffusionParams params;
-    params.startup = Startup::none;
-    params.forbidden = &corners;
-    params.threads = options.threads;
     DiffusionResult chosen;
     const std::size_t have = cdt.vertex_count();
-    const std::size_t want = std::size_t(n) - have;
-    st = select_points(sigma, want, params, &chosen);
-    if (!st) return st;
     std::size_t adjusted = 0;
-    if (chosen.points.size() != want) adjusted = lower_threshold_to_exact(sigma, want, params, &chosen);
+    st = ed_choose(sigma, std::size_t(n) - have, options, corners, &chosen, &adjusted);
+    if (!st) return st;
     result->stats.has_diffusion = true;
     result->stats.diffusion.rho = chosen.rho;
     result->stats.diffusion.passes = chosen.passes;
@@ -65,8 +55,7 @@ Status generate_ed(const Image& image, const GenerateOptions& options, GenerateR
     st = cdt.insert_points(chosen.points, &ids);
     if (!st) return st;
     timer.lap("triangulate");
-    finish_basic_method(cdt, image, options, &timer, result);
-    return Status::success();
+    return finish_basic_method(cdt, image, options, &timer, result);
 }
 
 }  // namespace erd

@@ -30,6 +30,7 @@ public:
 
     int channels() const { return int(models_.size()); }
     const ErdModel& channel(int c) const { return *models_[std::size_t(c)]; }
+    ErdModel& channel(int c) { return *models_[std::size_t(c)]; }
 
     void assign_vertex(const Cdt& cdt, VertInd v);
     void assign_all(const Cdt& cdt);

@@ -148,14 +148,12 @@ Status erded_once(const Image& image, const GenerateOptions& options, bool hard_
         ErdChannels model(image, wo, options.colour.shared_wedge_position, options.colour.density);
         model.assign_all(cdt);
         timer.lap("triangulation and wedge values");
-        finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
-        return Status::success();
+        return finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
     }
     ErdModel model(image, wo);
     model.assign_all(cdt);
     timer.lap("triangulation and wedge values");
-    finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
-    return Status::success();
+    return finish_erd_method(cdt, image, options, &mesh, &model, &timer, result);
 }
 
 }  // namespace

@@ -19,4 +19,8 @@ namespace erd {
 // --max-error / --psnr, or when no pixel has nonzero error.
 Status generate_erdgpi(const Image& image, const GenerateOptions& options, GenerateResult* result);
 
+// Registry entry "erdgpr" (erd_removal.h): ERDGPI to K*N vertices (K = --oversample, default
+// kErdgprOversample), then greedy point removal to N by the ERD model's error, then ERDGPI's end.
+Status generate_erdgpr(const Image& image, const GenerateOptions& options, GenerateResult* result);
+
 }  // namespace erd

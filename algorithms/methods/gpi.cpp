@@ -25,8 +25,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     if (!st) return st;
     timer.lap("greedy insertion");
 
-    finish_basic_method(cdt, image, options, &timer, result);
-    return Status::success();
+    return finish_basic_method(cdt, image, options, &timer, result);
 }
 
 }  // namespace erd

@@ -58,6 +58,10 @@ struct GenerateOptions {
     // (erd_mesh.h InitialMeshOptions::min_step).
     double min_step_factor = 4.0;
     double psnr = 0.0;           // --psnr: whole-image PSNR >= P dB; <= 0: off
+    // --psnr / --max-error on an integer image (algorithms/methods/quality_target.h): search the
+    // fewest points whose model reaches the target (true), or keep the method's own run (false:
+    // one run, its greedy loop's stop; --count-search 0).
+    bool count_search = true;
     std::int64_t triangles = 0;  // --triangles: the mesh has >= T triangles; 0: off
     bool round_values = true;    // greedy: errors against the rounded approximation (DECISIONS.md)
 
@@ -89,6 +93,17 @@ struct GenerateOptions {
     double flip_min_share = 0.2;  // quadrilaterals below this share of the mean error are not tried
     int flips = 2;               // ERD (ours): rounds of data-dependent flips + refit after the refit
     bool optimize = false;       // ED, GPI (--optimize, ours): least-squares vertex values
+    // Point removal (issue 45; algorithms/methods/removal.h).
+    double oversample = 0.0;     // --oversample K: GPRFS's ED start and ERDGPR's ERDGPI start hold
+                                 // K*N points (0: the method's default, docs/DECISIONS.md "Point removal")
+    int removal_refit = 1;       // ERDGPR: refit the wedge values before each removal stage (0: off)
+    int removal_cycles = 0;      // ERDGPR: insertion to K*N and removal to N again this many times
+    int removal_stages = 1;      // ERDGPR: removal stages (each ends with a compact mesh)
+    bool removal_lazy = false;   // --lazy: recompute stale significances when they reach the top
+                                 // instead of at once (cheaper, worse: docs/DECISIONS.md "Point removal")
+    int id_cycles = 4;           // ID: insertion/removal cycles after the growth to N (--id-cycles)
+    double id_share = 1.0;       // ID: each cycle inserts and removes this share of N (--id-share)
+    int bpr = 0;                 // --bpr R: rounds of bad-point replacement after the method (bpr.h)
     double alpha_min = 0.75;     // ERD wedge-value line search range along the bisector, in pixels
     double alpha_max = 1.0;      // (ours; the thesis's is [1, 1.5], DECISIONS.md)
     EdgeChoice edges = EdgeChoice::automatic;  // ERD: auto measures the image; --thesis: soft

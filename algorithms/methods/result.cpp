@@ -66,6 +66,14 @@ std::vector<std::string> result_lines(const RunStats& r) {
         out.push_back("max abs error: " + real("%.4g", r.greedy.max_error));
         out.push_back("psnr (point evaluation): " + real("%.4f", r.greedy.psnr));
     }
+    if (r.has_removal) {
+        out.push_back("point removal: " + std::to_string(r.removal.removed) + " of " + std::to_string(r.removal.start) +
+                      " vertices removed, " + std::to_string(r.removal.evaluations) + " significances computed");
+        if (r.removal.bpr_rounds > 0)
+            out.push_back("bad-point replacement: " + std::to_string(r.removal.bpr_rounds) + " rounds, " +
+                          std::to_string(r.removal.bpr_moves) + " of " + std::to_string(r.removal.bpr_tried) +
+                          " exchanges kept");
+    }
     if (r.has_raster) {
         const RasterStats& s = r.raster;
         if (s.outline_points || s.dropped_faces)
@@ -74,6 +82,16 @@ std::vector<std::string> result_lines(const RunStats& r) {
         if (s.max_error >= 0)
             out.push_back("max error over valid pixels: " + real("%.6g", s.max_error) + " (after " +
                           std::to_string(s.fixup_insertions) + " insertions of the last greedy pass)");
+    }
+    if (r.has_quality) {
+        const QualitySearchStats& q = r.quality;
+        out.push_back("quality search: " + std::to_string(q.points) + " points after " + std::to_string(q.runs) + " runs (" +
+                      (q.exact ? std::string("the greedy loop's own stop")
+                       : !q.reached ? std::string("the target not reached at N")
+                       : q.runs == 1 ? std::string("one run, --count-search 0")
+                       : q.below == 0 ? std::string("the fewest there are, 4, reach the target")
+                                      : "the largest count short of the target: " + std::to_string(q.below)) +
+                      "; psnr " + real("%.4f", q.psnr) + " dB, max error " + real("%.4g", q.max_error) + ")");
     }
     return out;
 }

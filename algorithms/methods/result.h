@@ -79,6 +79,16 @@ struct ErdStepStats {
     std::size_t kind_exceptions = 0;    // edges of the other kind than the model's (Model::kind_exceptions)
 };
 
+// Point removal (algorithms/methods/removal.h) and bad-point replacement (bpr.h).
+struct RemovalRunStats {
+    std::size_t start = 0;        // vertices when removal began
+    std::size_t removed = 0;      // vertices removed
+    std::size_t evaluations = 0;  // significances computed
+    int bpr_rounds = 0;           // bad-point replacement rounds run
+    std::size_t bpr_moves = 0;    // points moved (kept exchanges)
+    std::size_t bpr_tried = 0;    // exchanges tried
+};
+
 // A real image (issue 47): its valid region and the max-error guarantee.
 struct RasterStats {
     std::size_t outline_points = 0;  // vertices of the valid region's outline (nodata images)
@@ -87,6 +97,18 @@ struct RasterStats {
     std::size_t fixup_insertions = 0;  // --max-error: points the last greedy pass inserted
     double max_error = -1.0;           // --max-error: the model's largest error over the valid
                                        // pixels, measured on its reconstruction (< 0: not measured)
+};
+
+// --psnr / --max-error on an integer image: the search for the fewest points whose model reaches
+// the target (algorithms/methods/quality_target.h).
+struct QualitySearchStats {
+    int runs = 0;                // whole runs of the method made
+    std::size_t points = 0;      // the count kept (the bracket's upper end)
+    std::size_t below = 0;       // the largest count measured short of the target (0: none)
+    bool reached = false;        // the kept model reaches the target (false: N itself falls short)
+    bool exact = false;          // the method's own stop found the count (GPI's greedy loop): one run
+    double psnr = 0;             // the kept model's quality, as measured (each when its target is set)
+    double max_error = 0;
 };
 
 // Wall time of one stage of a method, for `erd generate` progress lines and benchmarks.
@@ -105,8 +127,12 @@ struct RunStats {
     GreedyStats greedy;
     bool has_wedge_fit = false;  // ERD with wedge_fit > 0
     WedgeFitStats wedge_fit;
+    bool has_removal = false;  // GPR, GPRFS, ERDGPR, --bpr
+    RemovalRunStats removal;
     bool has_raster = false;  // a real image
     RasterStats raster;
+    bool has_quality = false;  // --psnr / --max-error searched the count
+    QualitySearchStats quality;
 };
 
 struct GenerateResult {

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "algorithms/imaging/colour.h"
+#include "algorithms/methods/bpr.h"
+#include "algorithms/methods/erd_removal.h"
 #include "algorithms/imaging/edge_kind.h"
 #include "algorithms/imaging/real_image.h"
 #include "algorithms/imaging/valid_region.h"
@@ -179,8 +182,19 @@ void measure_max_error(const Image& image, const Model& m, const GenerateOptions
 
 }  // namespace
 
-void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
-                         GenerateResult* result) {
+Status finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
+                           GenerateResult* result) {
+    if (options.bpr > 0 && !image.real()) {  // --bpr: not on real images (issue 47)
+        SampleRemovalModel samples(image);
+        result->stats.has_removal = true;
+        Status st = bad_point_replacement(&cdt, image, samples, options.round_values, options.bpr, options.progress,
+                                          &result->stats.removal);
+        if (!st) return st;
+        Cdt compact;
+        if (!(st = compact_cdt(cdt, &compact))) return st;
+        cdt = std::move(compact);
+        timer->lap("bad-point replacement");
+    }
     if (image.real() && options.max_error >= 0 && !options.optimize) {
         BasicGreedyModel greedy(image);
         if (Status st = max_error_fixup(cdt, image, options, greedy, result); !st) result->stats.raster.fixup_insertions = 0;
@@ -196,6 +210,7 @@ void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         timer->lap("optimize");
     }
     measure_max_error(image, result->model, options, result);
+    return Status::success();
 }
 
 GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
@@ -342,9 +357,45 @@ WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
     return f;
 }
 
-void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+namespace {
+
+ErdModel* fresh_model(const Image& image, const GenerateOptions& options, std::unique_ptr<ErdModel>* out) {
+    *out = std::make_unique<ErdModel>(image, wedge_options(options));
+    return out->get();
+}
+ErdChannels* fresh_model(const Image& image, const GenerateOptions& options, std::unique_ptr<ErdChannels>* out) {
+    *out = std::make_unique<ErdChannels>(image, wedge_options(options), options.colour.shared_wedge_position,
+                                         options.colour.density);
+    return out->get();
+}
+
+// --bpr on an ERD mesh (not a real image's): bad-point replacement on *model's values, then the
+// compact mesh and a fresh model of it (line-search values) in *fresh, which *model then points to.
+template <class View, class M>
+Status erd_bpr(Cdt& cdt, const Image& image, const GenerateOptions& options, M** model, std::unique_ptr<M>* fresh,
+               StageTimer* timer, GenerateResult* result) {
+    if (options.bpr <= 0 || image.real()) return Status::success();
+    View values(**model);
+    result->stats.has_removal = true;
+    Status st = bad_point_replacement(&cdt, image, values, false, options.bpr, options.progress, &result->stats.removal);
+    if (!st) return st;
+    Cdt compact;
+    if (!(st = compact_cdt(cdt, &compact))) return st;
+    cdt = std::move(compact);
+    *model = fresh_model(image, options, fresh);
+    (*model)->assign_all(cdt);
+    timer->lap("bad-point replacement");
+    return Status::success();
+}
+
+}  // namespace
+
+Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result,
                        const std::vector<double>* line_search_values) {
+    std::unique_ptr<ErdModel> fresh;
+    if (Status st = erd_bpr<ErdRemovalModel>(cdt, image, options, &model, &fresh, timer, result); !st) return st;
+    if (fresh) line_search_values = nullptr;
     // A real image: the values pinned to the vertices' pixels after each change (ErdModel::
     // pin_pixel_vertices), no guard (its models are not rounded), then the max-error pass.
     const bool real = image.real();
@@ -394,10 +445,13 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
     finish_raster_model(image, &result->model, &result->stats);
     finish_erd_stats(mesh, model, timer, result);
     measure_max_error(image, result->model, options, result);
+    return Status::success();
 }
 
-void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result) {
+    std::unique_ptr<ErdChannels> fresh;
+    if (Status st = erd_bpr<ErdChannelsRemovalModel>(cdt, image, options, &model, &fresh, timer, result); !st) return st;
     const bool real = image.real();  // as gray's
     if (options.wedge_fit > 0) {
         // As gray's refit (prior and support bounds per channel), then its flips.
@@ -430,6 +484,7 @@ void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& opti
     finish_raster_model(image, &result->model, &result->stats);
     finish_erd_stats(mesh, &model->channel(0), timer, result);
     measure_max_error(image, result->model, options, result);
+    return Status::success();
 }
 
 namespace {

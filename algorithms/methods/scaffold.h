@@ -64,7 +64,9 @@ void finish_raster_model(const Image& image, Model* m, RunStats* stats);
 // A real image with --max-error: greedy insertion first goes on until the largest error over the
 // valid pixels is at most E (the bound holds for the model given back; not with --optimize, which
 // the CLI refuses there), and the model's largest error is measured into stats.raster.
-void finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
+// With options.bpr, bad-point replacement (bpr.h) on cdt first, timed as "bad-point replacement";
+// its failure (cancel, kernel) is returned.
+Status finish_basic_method(Cdt& cdt, const Image& image, const GenerateOptions& options, StageTimer* timer,
                          GenerateResult* result);
 
 // The greedy loop's options for GPI and ERDGPI: stop at n vertices or by --max-error / --psnr,
@@ -105,15 +107,17 @@ Status run_erd_method(const Image& image, const GenerateOptions& options, ErdRun
 // The common end of ERDED and ERDGPI once cdt is final and *model holds its wedge values: the
 // least-squares refit (options.wedge_fit > 0, stage "wedge refit"), the ERD model into result,
 // the step-1 facts and the wedge-value counts, the polylines (moved out of *mesh); stage "model".
+// With options.bpr, bad-point replacement (bpr.h) first, on the model's current values, then a
+// fresh model of the compact mesh (line-search values) goes on.
 // line_search_values: the values the refit is drawn towards and bounded around when the model's
 // current values are not the line-search ones (ERDGPI's staged refits); nullptr: the current ones.
-void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdModel* model, StageTimer* timer, GenerateResult* result,
                        const std::vector<double>* line_search_values = nullptr);
 // The same for a colour image: the refit of every channel with the same options, drawn towards
 // each channel's current (line-search) values (ErdChannels::fit), the flips on the error summed
 // over the channels and the refit again (options.flips), the C-channel model.
-void finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
+Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& options, InitialMesh* mesh,
                        ErdChannels* model, StageTimer* timer, GenerateResult* result);
 
 }  // namespace erd

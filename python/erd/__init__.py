@@ -13,6 +13,6 @@ erd.tiles: rasters larger than memory in tiles (`erd tiles`), also on Dask.
 from ._erd import DensityError, Edges, Mesh, edges, generate, load, psnr
 from . import tiles
 
-METHODS = ("ed", "gpi", "erded", "erdgpi")
+METHODS = ("ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr")
 __version__ = "0.1.0"
 __all__ = ["DensityError", "Edges", "Mesh", "METHODS", "edges", "generate", "load", "psnr", "tiles"]

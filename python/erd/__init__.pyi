@@ -8,7 +8,7 @@ import numpy.typing as npt
 PathLike = Union[str, bytes, os.PathLike]
 ImageArray = Union[npt.NDArray[np.uint8], npt.NDArray[np.uint16]]
 RealArray = Union[npt.NDArray[np.float32], npt.NDArray[np.float64], npt.NDArray[np.int16], npt.NDArray[np.int32], npt.NDArray[np.uint32]]
-MethodName = Literal["ed", "gpi", "erded", "erdgpi"]
+MethodName = Literal["ed", "gpi", "erded", "erdgpi", "gpr", "gprfs", "id", "erdgpr"]
 
 METHODS: Tuple[str, ...]
 __version__: str
@@ -101,8 +101,17 @@ def generate(
     alpha_max: float = ...,
     edge_zero_radius: int = ...,
     flips: int = ...,
+    oversample: float = ...,
+    lazy: int = ...,
+    bpr: int = ...,
+    id_cycles: int = ...,
+    id_share: float = ...,
+    removal_refit: int = ...,
+    removal_stages: int = ...,
+    removal_cycles: int = ...,
     moves: int = ...,
     aa_errors: int = ...,
+    count_search: int = ...,
     triangles: int = ...,
     maxval: int = ...,
     nodata: float = ...,

@@ -155,7 +155,7 @@ void bind_mesh(pyb::module_& m) {
         .def_property_readonly("kind", [](const Mesh& s) { return s.model.kind == ModelKind::erd ? "erd" : "basic"; },
                                "'basic' or 'erd'.")
         .def_property_readonly("method", [](const Mesh& s) { return s.method.empty() ? pyb::object(pyb::none()) : pyb::object(pyb::str(s.method)); },
-                               "The method that made the mesh ('ed', 'gpi', 'erded', 'erdgpi'); None when loaded from a file.")
+                               "The method that made the mesh ('ed', 'gpi', 'erded', 'erdgpi', 'gpr', 'gprfs', 'id', 'erdgpr'); None when loaded from a file.")
         .def_property_readonly("width", [](const Mesh& s) { return s.model.width; }, "Image width in pixels.")
         .def_property_readonly("height", [](const Mesh& s) { return s.model.height; }, "Image height in pixels.")
         .def_property_readonly("maxval", [](const Mesh& s) { return s.model.maxval; }, "Largest sample value of the image.")

@@ -126,3 +126,20 @@ def test_save_errors(small, tmp_path):
     mesh.save(str(tmp_path / "m.model"))
     mesh.save(os.fsencode(tmp_path / "b.model"))
     assert (tmp_path / "m.model").read_bytes() == (tmp_path / "b.model").read_bytes()
+
+
+def test_removal_methods_and_bpr_are_reachable(small):
+    """Issue 45: gpr, gprfs, id, erdgpr and --bpr from Python, N exact, the options' CLI names."""
+    assert {"gpr", "gprfs", "id", "erdgpr"} <= set(erd.METHODS)
+    n = 160
+    for method in ("gprfs", "id", "erdgpr"):
+        mesh = erd.generate(small, method, points=n)
+        assert len(mesh.vertices) == n
+    plain = erd.generate(small, "gpi", points=n)
+    moved = erd.generate(small, "gpi", points=n, bpr=1)
+    assert len(moved.vertices) == n
+    assert not np.array_equal(plain.vertices, moved.vertices)
+    erd.generate(small, "gprfs", points=n, oversample=8.0, lazy=1)
+    erd.generate(small, "id", points=n, id_cycles=1, id_share=0.5)
+    with pytest.raises(ValueError, match="oversample"):
+        erd.generate(small, "gprfs", points=n, oversample=0.5)

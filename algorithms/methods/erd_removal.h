@@ -1,0 +1,62 @@
+// The ERD model's refinement by removal (issue 45): ERDGPR is ERDGPI to K*N vertices, then greedy
+// point removal (removal.h) to N by the ERD model's error, the constrained vertices kept (the kernel
+// refuses them), every remaining wedge keeping its value; the mesh is then compacted and its
+// wedge values assigned again as insertion assigns them, for the refit that ends every ERD method.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "algorithms/methods/erd_channels.h"
+#include "algorithms/methods/removal.h"
+#include "algorithms/model/erd_model.h"
+
+namespace erd {
+
+// ERDGPR's default K (docs/DECISIONS.md "Point removal").
+constexpr double kErdgprOversample = 2.0;
+
+// The gray ERD model's wedge values as removal sees them.
+class ErdRemovalModel : public RemovalModel {
+public:
+    explicit ErdRemovalModel(ErdModel& model) : model_(model) {}
+    double corner_value(const Cdt& cdt, EdgeInd e, int) const override { return model_.corner_value(cdt, e); }
+    void on_vertex_inserted(const Cdt& cdt, VertInd v) override { model_.assign_vertex(cdt, v); }
+    void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const override {
+        out->assign(1, model_.corner_value(cdt, cdt.out_edge(v)));
+    }
+    void restore_values(const Cdt& cdt, VertInd v, const std::vector<double>& values) override {
+        model_.set_entry_value(model_.corner_entry(cdt, cdt.out_edge(v)), values[0]);
+    }
+
+private:
+    ErdModel& model_;
+};
+
+// The same for a colour ERD model: channel c's wedge values.
+class ErdChannelsRemovalModel : public RemovalModel {
+public:
+    explicit ErdChannelsRemovalModel(ErdChannels& model) : model_(model) {}
+    double corner_value(const Cdt& cdt, EdgeInd e, int c) const override { return model_.channel(c).corner_value(cdt, e); }
+    void on_vertex_inserted(const Cdt& cdt, VertInd v) override { model_.assign_vertex(cdt, v); }
+    void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const override {
+        out->clear();
+        for (int c = 0; c < model_.channels(); ++c) out->push_back(model_.channel(c).corner_value(cdt, cdt.out_edge(v)));
+    }
+    void restore_values(const Cdt& cdt, VertInd v, const std::vector<double>& values) override {
+        for (int c = 0; c < model_.channels(); ++c) {
+            ErdModel& m = model_.channel(c);
+            m.set_entry_value(m.corner_entry(cdt, cdt.out_edge(v)), values[std::size_t(c)]);
+        }
+    }
+
+private:
+    ErdChannels& model_;
+};
+
+// Removes vertices of *cdt by least significance under `model` until n remain (real-valued errors,
+// lazy as `lazy` says), then replaces *cdt by its compact copy (compact_cdt). The caller assigns
+// the wedge values of the compact mesh. Adds to *stats.
+Status erd_remove_to(Cdt* cdt, const Image& image, RemovalModel& model, std::size_t n, bool lazy,
+                     const ProgressHook& progress, RemovalRunStats* stats);
+
+}  // namespace erd
