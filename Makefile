@@ -329,12 +329,12 @@ clean-embedded:
 # Objects go to python/build/, where `pip install .` finds them too; only changed sources are
 # recompiled. `make python-venv-check`: that pip install into a fresh venv, then import and run it.
 PYTHON     ?= /usr/bin/python3
-PY_DEBS    := python3-dev python3-pybind11 python3-numpy python3-pytest python3-setuptools python3-wheel python3-venv
+PY_DEBS    := python3-dev python3-pybind11 python3-numpy python3-pytest python3-setuptools python3-wheel python3-venv python3-dask python3-distributed
 PY_PTH     := erd-checkout.pth
 
 .PHONY: python python-deps python-test python-venv-check
 python-deps: $(STB_HDR)
-	@$(PYTHON) -c "import pybind11, numpy, pytest, setuptools, wheel, venv" 2>/dev/null || { \
+	@$(PYTHON) -c "import pybind11, numpy, pytest, setuptools, wheel, venv, dask, distributed" 2>/dev/null || { \
 	  echo "installing Debian packages $(PY_DEBS)" >&2; \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null 2>&1 || \
 	  { apt-get update -q >/dev/null 2>&1 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $(PY_DEBS) >/dev/null; }; }

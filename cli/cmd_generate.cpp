@@ -234,6 +234,12 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
 
 }  // namespace
 
+const CommandLine& generate_command_line() { return kGenerate; }
+
+void parse_generate_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st) {
+    parse_options(a, o, exit_mode, st);
+}
+
 // The output files of one image.
 struct Paths {
     std::string in, out, tri, poly, stats;

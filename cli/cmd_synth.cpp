@@ -7,7 +7,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstring>
 #include <memory>
 
 #include "algorithms/imaging/drawings.h"
@@ -80,6 +83,8 @@ private:
     int fd_;
 };
 
+constexpr int kMaxRowSide = 1 << 20;
+
 // --kind dem: the elevation model (algorithms/imaging/synth_dem.h) row by row.
 int synth_dem(const Args& args, const Reporter& rep, int w, int h, std::uint64_t seed) {
     DemParams dp;
@@ -126,8 +131,43 @@ int synth_dem(const Args& args, const Reporter& rep, int w, int h, std::uint64_t
             return s ? s : Status::failure(escape_name(out) + ": " + s.message);
         });
         if (!st || !(st = outputs.commit())) return rep.fail(st);
+    } else if (fmt == ImageFormat::pgm_raw && !dp.holes && !args.has("plain") && out != "-") {
+        // Raw PGM without nodata (--solid): by rows as well, in two passes (the range first), the
+        // same bytes as the whole image's 16-bit proxy (real_image.h make_proxy): rasters larger
+        // than memory for `erd tiles` (issue 48).
+        double lo = INFINITY, hi = -INFINITY;
+        for (int y = 0; y < h; ++y) {
+            dem_row(dp, y, row.data());
+            for (double v : row) lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        const double l2 = 0.5 * lo, half_span = 0.5 * hi - l2;
+        const double k = half_span > 0 ? 65535.0 / half_span : 0.0;
+        Outputs outputs;
+        if (!(st = outputs.check({out}, {}))) return rep.fail(st);
+        st = outputs.stage_stream(out, [&](int fd) {
+            FdSink sink(fd);
+            const std::string head = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n65535\n";
+            if (!sink.write_at(0, head.data(), head.size())) return Status::failure(escape_name(out) + ": " + std::strerror(errno));
+            std::vector<unsigned char> bytes(2 * std::size_t(w));
+            for (int y = 0; y < h; ++y) {
+                dem_row(dp, y, row.data());
+                for (std::size_t x = 0; x < std::size_t(w); ++x) {
+                    const double q = (0.5 * row[x] - l2) * k + 0.5;
+                    const auto v = std::uint16_t(q > 0 ? (q >= 65535.0 ? 65535.0 : q) : 0.0);
+                    bytes[2 * x] = std::uint8_t(v >> 8);
+                    bytes[2 * x + 1] = std::uint8_t(v & 0xff);
+                }
+                if (!sink.write_at(head.size() + std::uint64_t(y) * bytes.size(), bytes.data(), bytes.size()))
+                    return Status::failure(escape_name(out) + ": " + std::strerror(errno));
+            }
+            return Status::success();
+        });
+        if (!st || !(st = outputs.commit())) return rep.fail(st);
     } else {
         // PNG, PGM: the 16-bit proxy of the whole model (it must be in memory).
+        if (w > kMaxImageSide || h > kMaxImageSide || std::int64_t(w) * h > kMaxImagePixels)
+            return rep.usage("--kind dem larger than " + std::to_string(kMaxImageSide) + " a side or 2^28 pixels is written by rows: "
+                             "to .tif, .pfm or a raw .pgm with --solid");
         std::vector<double> all(std::size_t(w) * std::size_t(h));
         for (int y = 0; y < h; ++y) dem_row(dp, y, all.data() + std::size_t(y) * std::size_t(w));
         Image im;
@@ -147,8 +187,10 @@ static int run_synth(const Args& args, const Reporter& rep) {
 
     Status st;
     SynthParams p;
-    p.width = int(args.integer("width", 256, 1, kMaxImageSide, &st));
-    p.height = int(args.integer("height", 256, 1, kMaxImageSide, &st));
+    // The elevation model is made by rows: up to 2^20 a side where it is written by rows.
+    const int side = args.str("kind") == "dem" ? kMaxRowSide : kMaxImageSide;
+    p.width = int(args.integer("width", 256, 1, side, &st));
+    p.height = int(args.integer("height", 256, 1, side, &st));
     p.bits = int(args.integer("bits", 8, 1, 16, &st));
     p.seed = std::uint64_t(args.integer("seed", 1, 0, (long long)(~0ull >> 1), &st));
     p.noise = !args.has("no-noise");

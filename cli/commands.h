@@ -3,7 +3,13 @@
 // 3 target sampling density not achieved (thesis -x mode 0).
 #pragma once
 
+#include "algorithms/methods/options.h"
+#include "cli/args.h"
+#include "kernel/status.h"
+
 namespace erd::cli {
+
+struct CommandLine;
 
 using CommandFn = int (*)(int argc, char** argv);
 
@@ -22,6 +28,12 @@ int cmd_reconstruct(int argc, char** argv);
 int cmd_render(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 int cmd_convert(int argc, char** argv);
+int cmd_tiles(int argc, char** argv);
+
+// generate's option table and its flags into *o (the first bad value sets *st): `erd tiles`
+// takes the same method options.
+const CommandLine& generate_command_line();
+void parse_generate_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st);
 
 // The thesis's seven programs (Appendix A.5), reached through argv[0] (issue: packaging).
 int thesis_alias(const char* name, int argc, char** argv, bool* handled);

@@ -31,6 +31,7 @@ static const Command kCommands[] = {
     {"convert", "rewrite a model as .model/.erd text or .erdz binary", cmd_convert},
     {"info", "what an image or a model file holds (size, channels, vertices, bits per pixel)", cmd_info},
     {"synth", "write a deterministic test image", cmd_synth},
+    {"tiles", "mesh a raster larger than memory in tiles that meet exactly (plan, tasks, merge)", cmd_tiles},
     {"help", "list subcommands, or show one's help", cmd_help},
 };
 

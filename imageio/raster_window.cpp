@@ -28,6 +28,14 @@ Status RasterWindow::open(const std::string& path, const ImageLimits& limits) {
         return s;
     }
     file_ = f;
+    if (format_ == ImageFormat::png) {
+        png_ = std::make_unique<PngRows>();
+        if (!(s = png_->open(f, limits))) return s;
+        width_ = png_->width();
+        height_ = png_->height();
+        channels_ = png_->channels();
+        return s;
+    }
     if (format_ == ImageFormat::pfm) {
         if (!(s = pfm_header(head, n, limits, &pfm_))) return s;
         width_ = pfm_.width;
@@ -42,7 +50,7 @@ Status RasterWindow::open(const std::string& path, const ImageLimits& limits) {
         channels_ = pnm_.channels;
         return s;
     }
-    return Status::bad_input(std::string(format_name(format_)) + " is not read by windows (TIFF, PFM, raw PGM and PPM are)");
+    return Status::bad_input(std::string(format_name(format_)) + " is not read by windows (TIFF, PFM, raw PGM and PPM, PNG are)");
 }
 
 Status RasterWindow::read(int x0, int y0, int x1, int y1, Image* out, std::string* warning) {
@@ -51,6 +59,7 @@ Status RasterWindow::read(int x0, int y0, int x1, int y1, Image* out, std::strin
                                  std::to_string(y1) + ") is not inside the " + std::to_string(width_) + " x " +
                                  std::to_string(height_) + " image");
     if (tiff_) return tiff_->read(x0, y0, x1, y1, out, warning);
+    if (png_) return png_->read(x0, y0, x1, y1, out);
     if (!file_) return Status::failure("no file open");
     const std::size_t W = std::size_t(width_), C = std::size_t(channels_), ww = std::size_t(x1 - x0), wh = std::size_t(y1 - y0);
     if (format_ == ImageFormat::pfm) {

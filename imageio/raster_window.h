@@ -1,8 +1,9 @@
 // Rasters read by windows (issue 47 for whole files, issue 48 for tiles): a file opened once, its
 // size and type known from the header, then any rectangle read without reading the rest of the
 // raster: TIFF by the strips or tiles the window meets (imageio/tiff.h), PFM and raw PGM/PPM (P5,
-// P6) by the rows it meets (seeks). Other formats (PNG, JPEG, plain PNM, PAM) are refused here:
-// they are read whole (decode_image).
+// P6) by the rows it meets (seeks), PNG (gray or RGB, 8 or 16 bits, not interlaced) by inflating
+// rows up to the window's last (imageio/png_rows.h). Other formats (JPEG, plain PNM, PAM, palette
+// or interlaced PNG) are refused here: they are read whole (decode_image).
 #pragma once
 #include <cstdio>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "algorithms/imaging/image.h"
 #include "imageio/image_format.h"
 #include "imageio/pfm.h"
+#include "imageio/png_rows.h"
 #include "imageio/pnm.h"
 #include "imageio/tiff.h"
 #include "kernel/status.h"
@@ -43,6 +45,7 @@ private:
     int width_ = 0, height_ = 0, channels_ = 1;
     std::FILE* file_ = nullptr;
     std::unique_ptr<TiffReader> tiff_;
+    std::unique_ptr<PngRows> png_;
     PfmHeader pfm_;
     PnmHeader pnm_;
 };

@@ -20,11 +20,7 @@ ERD=${1:-build/erd}
 PY=/usr/bin/python3
 d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
-check() {  # LABEL COMMAND...: PASS or FAIL with the command's last line
-    local label=$1 out
-    shift
-    if out=$("$@" 2>&1); then echo "PASS: $label: $(tail -1 <<<"$out")"; else echo "FAIL: $label: $(tail -3 <<<"$out" | tr '\n' ' ')"; fi
-}
+. tests/check_lines.sh  # check LABEL COMMAND...
 
 $PY tests/dem_data.py "$d" >"$d/ranges" || { echo "FAIL: tests/dem_data.py (python3-numpy, python-matplotlib-data?)"; exit 1; }
 "$ERD" synth -q --kind dem -W 640 -H 512 -o "$d/synth.tif" && "$ERD" synth -q --kind dem -W 640 -H 512 -o "$d/synth.pfm" &&

@@ -155,17 +155,23 @@ stage_vector() {
 
 stage_web() { browser_stage web tests/web_test.sh "$IMAGES"; }
 
-# Real elevation data (issue 47): --max-error bounds measured by numpy, precision, TIFF round
-# trips, every .glb through the Khronos validator; each PASS line is a test.
-stage_raster() {
-    bash tests/raster_test.sh build/erd >"$log/raster" 2>&1
-    grep -E '^(FAIL|SKIP)' "$log/raster" | head -20
-    local p f s
-    p=$(grep -c '^PASS' "$log/raster"); f=$(grep -c '^FAIL' "$log/raster"); s=$(grep -c '^SKIP' "$log/raster")
-    echo "$p raster checks passed, $f failed"
+stage_lines() {  # NAME SCRIPT...: a script whose PASS, FAIL and SKIP lines are each a test
+    local name=$1 p f s
+    shift
+    bash "$@" >"$log/$name" 2>&1
+    grep -E '^(FAIL|SKIP)' "$log/$name" | head -20
+    p=$(grep -c '^PASS' "$log/$name"); f=$(grep -c '^FAIL' "$log/$name"); s=$(grep -c '^SKIP' "$log/$name")
+    echo "$p $name checks passed, $f failed"
     [[ $p -eq 0 && $f -eq 0 ]] && f=1  # the script ran nothing
     passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
 }
+# Real elevation data (issue 47): --max-error bounds measured by numpy, precision, TIFF round
+# trips, every .glb through the Khronos validator; each PASS line is a test.
+stage_raster() { stage_lines raster tests/raster_test.sh build/erd; }
+
+# Tiles (issue 48): seams of merged meshes checked by numpy, the same bytes however the tasks run,
+# the merged .glb validated, refusals; each PASS line is a test (the Dask run is pytest's).
+stage_tiles() { stage_lines tiles tests/tiles_test.sh build/erd; }
 
 run_job() {
     local name=$1 fn=$2 t0=$SECONDS
@@ -226,6 +232,7 @@ run_job tsan stage_tsan
 run_job web stage_web
 run_job vector stage_vector
 run_job raster stage_raster
+run_job tiles stage_tiles
 wait "$chain_pid"
 show_job asan "unit tests under ASan+UBSan: result"
 show_job embedded "embedded build (-Os -fno-exceptions -fno-rtti) and its example (counts as one test)"
@@ -234,6 +241,7 @@ show_job tsan "thread tests under ThreadSanitizer (build-tsan/erd_tsan_tests: ev
 show_job vector "vector SVG in real renderers (chromium headless, rsvg-convert): PSNR within 0.3 dB of erd's point reconstruction and of erd reconstruct's image"
 show_job web "web page (web/, WebAssembly) in chromium via playwright-core: opens meshed, slider, cancel, drop, file, paste, bad file; each mesh the native erd's"
 show_job raster "rasters (tests/raster_test.sh): real DEMs' --max-error bounds checked by numpy, precision, TIFF round trips, glTF validator (each check counts)"
+show_job tiles "tiles (tests/tiles_test.sh): merged meshes valid triangulations, N kept, the same bytes in any task order and under GNU parallel, .glb validated (each check counts)"
 
 stage
 [[ $skipped -gt 0 ]] && echo "$skipped skipped (not counted as passed): see SKIPPED above"

@@ -39,7 +39,7 @@ Status erdgpi_colour(const Image& image, const GenerateOptions& options, std::si
         if (cdt->vertex_count() < n && !(st = greedy_refine(*cdt, image, greedy, go, &result->stats.greedy))) return st;
     }
     timer->lap("greedy insertion");
-    if (cdt->vertex_count() > result->requested) {
+    if (cdt->vertex_count() > result->requested && !options.lock_border) {
         // As gray: the values refitted first (each channel drawn towards its line-search values).
         WedgeFitStats unused;
         if (options.removal_refit > 0 && options.wedge_fit > 0) model.fit(*cdt, wedge_fit_options(options), &unused);
@@ -111,7 +111,9 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
     timer.lap("greedy insertion");
     for (std::size_t i = line_search.size(); staged && i < model.entry_count(); ++i)
         line_search.push_back(model.entry_value(i));
-    if (cdt.vertex_count() > result->requested) {
+    // A tile's fixed side vertices (options.lock_border) are never removed: its initial mesh may
+    // hold more than N (side and constraint points), and then stays so.
+    if (cdt.vertex_count() > result->requested && !options.lock_border) {
         // Removal to N in options.removal_stages stages of equal size ratio; before each the
         // wedge values are refitted (options.removal_refit), drawn towards the line-search ones,
         // so that the significances see values like the final ones. Each stage ends with the

@@ -15,6 +15,7 @@ Status generate_gpi(const Image& image, const GenerateOptions& options, Generate
     if (!st) return st;
     cdt.reserve(std::size_t(n));
     if (!(st = insert_valid_outline(image, &cdt, &result->stats, std::size_t(n)))) return st;
+    if (!(st = insert_border_points(options, &cdt))) return st;
     timer.lap("triangulate corners");
 
     BasicGreedyModel model(image);

@@ -61,6 +61,11 @@ GreedyRefiner::GreedyRefiner(Cdt& cdt, const Image& image, GreedyModel& model, c
 
 Status GreedyRefiner::run(GreedyStats* stats) {
     for (LatticePoint p : cdt_.points()) ban(p);
+    if (options_.ban_border) {
+        const std::int32_t mx = cdt_.max_x(), my = cdt_.max_y();
+        for (std::int32_t x = 0; x <= mx; x += 2) ban({x, 0}), ban({x, my});
+        for (std::int32_t y = 0; y <= my; y += 2) ban({0, y}), ban({mx, y});
+    }
     grow();
     if (options_.supersampled) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);

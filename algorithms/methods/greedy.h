@@ -124,6 +124,9 @@ struct GreedyOptions {
     // largest sum (the rule of hmm and Garland-Heckbert's max-error greedy): fewer points for the
     // same bound. The methods set it for real images (docs/DECISIONS.md "Rasters").
     bool max_error_first = false;
+    // A tile (GenerateOptions::lock_border): the pixels on the rectangle's sides are never
+    // candidates (their vertices were decided before the run).
+    bool ban_border = false;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
 };

@@ -119,6 +119,14 @@ struct GenerateOptions {
     std::vector<std::vector<LatticePoint>> constraints;
     bool detect = true;
 
+    // A tile of a larger raster (issue 48, algorithms/methods/tiles.h): its rectangle's sides are
+    // shared with its neighbours, so their vertices are decided before the tile runs. With
+    // lock_border, GPI and ERDGPI insert border_points (on the sides, doubled coordinates) after
+    // the corners and add no other point on a side (the greedy bans the side pixels; ERD step 1
+    // cuts detected polylines where they reach a side). Off: nothing changes.
+    bool lock_border = false;
+    std::vector<LatticePoint> border_points;
+
     ColourChoices colour;        // colour images only (channels == 3)
 
     ProgressHook progress;       // optional: called with (stage, fraction) during long stages

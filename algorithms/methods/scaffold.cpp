@@ -113,6 +113,18 @@ std::size_t distinct_points_of(const std::vector<Polyline>& lines) {
 
 }  // namespace
 
+Status insert_border_points(const GenerateOptions& options, Cdt* cdt) {
+    if (!options.lock_border || options.border_points.empty()) return Status::success();
+    for (LatticePoint p : options.border_points) {
+        const bool on_side = p.x == 0 || p.y == 0 || p.x == cdt->max_x() || p.y == cdt->max_y();
+        if (!on_side || p.x < 0 || p.y < 0 || p.x > cdt->max_x() || p.y > cdt->max_y() || p.x % 2 || p.y % 2)
+            return Status::bad_input("a tile's border point (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                                     ") is not a pixel on its rectangle's sides");
+    }
+    std::vector<VertInd> v;
+    return cdt->insert_points(options.border_points, &v, false);
+}
+
 Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats, std::size_t target) {
     if (!image.has_holes()) return Status::success();
     const std::vector<Polyline> outline = valid_outline(image.valid, image.width, image.height);
@@ -210,6 +222,7 @@ GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
     go.round_values = options.round_values;
     go.max_channel_error = options.colour.max_channel_error;
     go.progress = options.progress;
+    go.ban_border = options.lock_border;
     return go;
 }
 
@@ -277,8 +290,20 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         mo.colour_gradient = options.colour.edges;
     }
     mo.progress = options.progress;
+    // A tile: detected polylines cut where they reach a side (the sides' vertices are decided).
+    std::vector<std::uint8_t> cut;
+    if (options.lock_border) {
+        cut = near;
+        if (cut.empty()) cut.assign(std::size_t(image.width) * std::size_t(image.height), 0);
+        for (int x = 0; x < image.width; ++x)
+            cut[std::size_t(x)] = cut[std::size_t(image.height - 1) * std::size_t(image.width) + std::size_t(x)] = 1;
+        for (int y = 0; y < image.height; ++y)
+            cut[std::size_t(y) * std::size_t(image.width)] = cut[std::size_t(y) * std::size_t(image.width) + std::size_t(image.width - 1)] = 1;
+        mo.near_nodata = &cut;
+    }
     st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
+    if (!(st = insert_border_points(options, cdt))) return st;
     if (image.has_holes()) {
         result->stats.has_raster = true;
         result->stats.raster.outline_points = distinct_points_of(outline);

@@ -50,6 +50,10 @@ Model basic_model(const Cdt& cdt, const Image& image);
 // (Code::input) when the corners and the outline are more than `target` points.
 Status insert_valid_outline(const Image& image, Cdt* cdt, RunStats* stats, std::size_t target);
 
+// A tile (options.lock_border): options.border_points inserted into cdt as plain vertices (each a
+// pixel on the rectangle's sides, else Code::input). Does nothing otherwise.
+Status insert_border_points(const GenerateOptions& options, Cdt* cdt);
+
 // Gives *m (a model of image made on the whole rectangle) the image's raster facts: its meta
 // (type, nodata, georeferencing) and, for a real image, real values with the image's range and
 // no maxval, the faces over nodata dropped (counted in stats->raster when stats is given).
