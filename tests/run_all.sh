@@ -188,9 +188,9 @@ show_job() {
     echo "   ($t s)"
 }
 
-# Installs chromium and librsvg2-bin when missing (as the Makefile installs its packages); without
+# Installs chromium, librsvg2-bin and GNU parallel (the tiles stage) when missing (as the Makefile installs its packages); without
 # any renderer the browser stages are counted as skipped, never as passed.
-for pkg in chromium:chromium rsvg-convert:librsvg2-bin; do
+for pkg in chromium:chromium rsvg-convert:librsvg2-bin parallel:parallel; do
     command -v "${pkg%%:*}" >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${pkg#*:}" >/dev/null 2>&1 || true
 done
 # The Python and web stages' packages too, here and one after the other: the stages run side by
