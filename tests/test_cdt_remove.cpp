@@ -13,6 +13,7 @@
 
 #include "kernel/cdt.h"
 #include "tests/cdt_util.h"
+#include "tests/test_cdt_util.h"
 
 using namespace erd;
 
@@ -43,13 +44,6 @@ Cdt fresh_build(const Cdt& cdt) {
         REQUIRE(rep.dropped_crossing == 0);
     }
     return f;
-}
-
-void must_verify(const Cdt& cdt) {
-    std::string why;
-    const bool ok = cdt.verify(&why);
-    INFO(why);
-    REQUIRE(ok);
 }
 
 void must_equal_fresh(const Cdt& cdt) {

@@ -12,6 +12,7 @@
 
 #include "kernel/cdt.h"
 #include "tests/cdt_util.h"
+#include "tests/test_cdt_util.h"
 #include "kernel/predicates.h"
 #include "kernel/spatial_order.h"
 
@@ -33,13 +34,6 @@ VertInd must_insert(Cdt& cdt, LatticePoint p, FaceInd hint = noFace) {
     INFO(s.message);
     REQUIRE(s.ok());
     return v;
-}
-
-void must_verify(const Cdt& cdt) {
-    std::string why;
-    const bool ok = cdt.verify(&why);
-    INFO(why);
-    REQUIRE(ok);
 }
 
 std::uint32_t rnd(std::mt19937& g, std::uint32_t n) { return static_cast<std::uint32_t>(g() % n); }

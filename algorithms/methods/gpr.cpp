@@ -32,6 +32,28 @@ Status remove_to_n(Cdt* cdt, const Image& image, const GenerateOptions& options,
     return finish_basic_method(*cdt, image, options, timer, result);
 }
 
+// Every pixel, as lattice points in row order.
+std::vector<LatticePoint> all_pixels(const Image& image) {
+    std::vector<LatticePoint> all;
+    all.reserve(image.pixels());
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) all.push_back(LatticePoint{2 * x, 2 * y});
+    return all;
+}
+
+// The start points triangulated (a stage named `lap`, when given), then removal to N.
+Status remove_from(const std::vector<LatticePoint>& pts, const char* lap, const Image& image,
+                   const GenerateOptions& options, StageTimer* timer, GenerateResult* result) {
+    Cdt cdt;
+    Status st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
+    if (!st) return st;
+    cdt.reserve(pts.size() + 4);
+    std::vector<VertInd> ids;
+    if (!(st = cdt.insert_points(pts, &ids, false))) return st;
+    if (lap) timer->lap(lap);
+    return remove_to_n(&cdt, image, options, timer, result);
+}
+
 }  // namespace
 
 Status generate_gpr(const Image& image, const GenerateOptions& options, GenerateResult* result) {
@@ -39,19 +61,7 @@ Status generate_gpr(const Image& image, const GenerateOptions& options, Generate
     if (!st) return st;
     if (!(st = removal_accepts(image, "gpr"))) return st;
     StageTimer timer(result);
-    Cdt cdt;
-    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
-    if (!st) return st;
-    std::vector<LatticePoint> all;
-    all.reserve(image.pixels());
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) all.push_back(LatticePoint{2 * x, 2 * y});
-    cdt.reserve(all.size());
-    std::vector<VertInd> ids;
-    st = cdt.insert_points(all, &ids, false);
-    if (!st) return st;
-    timer.lap("triangulate all pixels");
-    return remove_to_n(&cdt, image, options, &timer, result);
+    return remove_from(all_pixels(image), "triangulate all pixels", image, options, &timer, result);
 }
 
 Status generate_gprfs(const Image& image, const GenerateOptions& options, GenerateResult* result) {
@@ -61,13 +71,9 @@ Status generate_gprfs(const Image& image, const GenerateOptions& options, Genera
     StageTimer timer(result);
     const double k = options.oversample > 0 ? options.oversample : kGprfsOversample;
     const std::size_t start = std::min(image.pixels(), std::size_t(double(result->requested) * k + 0.5));
-    Cdt cdt;
-    st = cdt.reset(2 * (image.width - 1), 2 * (image.height - 1));
-    if (!st) return st;
     std::vector<LatticePoint> pts;
     if (start >= image.pixels()) {
-        for (int y = 0; y < image.height; ++y)
-            for (int x = 0; x < image.width; ++x) pts.push_back(LatticePoint{2 * x, 2 * y});
+        pts = all_pixels(image);
     } else {
         DiffusionResult chosen;
         std::size_t adjusted = 0;
@@ -77,11 +83,7 @@ Status generate_gprfs(const Image& image, const GenerateOptions& options, Genera
         pts = std::move(chosen.points);
     }
     timer.lap("error diffusion");
-    cdt.reserve(pts.size() + 4);
-    std::vector<VertInd> ids;
-    st = cdt.insert_points(pts, &ids, false);
-    if (!st) return st;
-    return remove_to_n(&cdt, image, options, &timer, result);
+    return remove_from(pts, nullptr, image, options, &timer, result);
 }
 
 Status generate_id(const Image& image, const GenerateOptions& options, GenerateResult* result) {
