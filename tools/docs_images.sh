@@ -49,18 +49,26 @@ if [[ " $parts " == *" colour "* ]]; then
     "$erd" render "$model" -q --over "$src" --no-edges --scale 0.5 -o "$out/colour_kodim03_original.png"
 fi
 
+# mesh_pictures PART NAME D BOX TAG LABEL GENERATE-ARGS...: NAME meshed at D%, its PSNR said, and
+# the mesh over the reconstruction and the error picture of BOX as docs/img/PART_NAME_TAG_*.png.
+mesh_pictures() {
+    local part=$1 name=$2 d=$3 box=$4 tag=$5 label=$6
+    shift 6
+    local model="$tmp/${part}_${name}_$tag.erd" rec="$tmp/${part}_${name}_$tag.pgm"
+    "$erd" generate "$@" -i "$images/$name.pgm" -d "$d" -x 1 -q -o "$model"
+    "$erd" reconstruct "$model" -q -o "$rec"
+    echo "docs_images: $name $d% $label: PSNR $("$erd" psnr "$images/$name.pgm" "$rec") dB" >&2
+    "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/${part}_${name}_${tag}_mesh.png"
+    "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/${part}_${name}_${tag}_error.png"
+}
+
 if [[ " $parts " == *" quality "* ]]; then
     for c in "bull 0.125 260,40,320,240" "lena 1 200,180,200,200"; do
         read -r name d box <<<"$c"
         [ -f "$images/$name.pgm" ] || { echo "docs_images: $images/$name.pgm not found" >&2; exit 1; }
         for when in before after; do
             flags=(); [ "$when" = before ] && flags=(--flips 0 --wedge-prior 0 --wedge-bounds -1)
-            model="$tmp/q_${name}_$when.erd"
-            "$erd" generate -m erdgpi "${flags[@]}" -i "$images/$name.pgm" -d "$d" -x 1 -q -o "$model"
-            "$erd" reconstruct "$model" -q -o "$tmp/q_${name}_$when.pgm"
-            echo "docs_images: $name $d% ERDGPI $when: PSNR $("$erd" psnr "$images/$name.pgm" "$tmp/q_${name}_$when.pgm") dB" >&2
-            "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_mesh.png"
-            "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/quality_${name}_${when}_error.png"
+            mesh_pictures quality "$name" "$d" "$box" "$when" "ERDGPI $when" -m erdgpi "${flags[@]}"
         done
     done
 fi
@@ -70,12 +78,7 @@ if [[ " $parts " == *" removal "* ]]; then
         read -r name d box <<<"$c"
         [ -f "$images/$name.pgm" ] || { echo "docs_images: $images/$name.pgm not found" >&2; exit 1; }
         for method in erdgpi erdgpr; do
-            model="$tmp/r_${name}_$method.erd"
-            "$erd" generate -m "$method" -i "$images/$name.pgm" -d "$d" -x 1 -q -o "$model"
-            "$erd" reconstruct "$model" -q -o "$tmp/r_${name}_$method.pgm"
-            echo "docs_images: $name $d% $method: PSNR $("$erd" psnr "$images/$name.pgm" "$tmp/r_${name}_$method.pgm") dB" >&2
-            "$erd" render "$model" -q --over-reconstruction --crop "$box" --scale 2 -o "$out/removal_${name}_${method}_mesh.png"
-            "$erd" render "$model" -q --error "$images/$name.pgm" --no-edges --crop "$box" --scale 2 -o "$out/removal_${name}_${method}_error.png"
+            mesh_pictures removal "$name" "$d" "$box" "$method" "$method" -m "$method"
         done
     done
 fi
