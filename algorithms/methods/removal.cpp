@@ -89,13 +89,18 @@ double PointRemover::triangle_error(const LatticePoint* p, const double* z) cons
                 return;
             }
             double v = plane.at(double(2 * lo), double(2 * j));
-            for (std::int32_t x = lo; x <= hi; ++x, v += dv) {
-                double a = v;
-                if (round_) {
-                    const double cl = v < maxval ? v : maxval;
-                    const std::int32_t r = std::int32_t(cl + 0.5);
-                    a = r < 0 ? 0.0 : double(r);
+            if (!round_) {  // the ERD model's real-valued errors: the loop without the rounding test
+                const std::uint16_t* px = row + std::size_t(lo) * nc;
+                for (std::int32_t x = lo; x <= hi; ++x, v += dv, px += nc) {
+                    const double e = double(*px) - v;
+                    sum += e * e;
                 }
+                return;
+            }
+            for (std::int32_t x = lo; x <= hi; ++x, v += dv) {
+                const double cl = v < maxval ? v : maxval;
+                const std::int32_t r = std::int32_t(cl + 0.5);
+                const double a = r < 0 ? 0.0 : double(r);
                 const double e = double(row[std::size_t(x) * nc]) - a;
                 sum += e * e;
             }
@@ -181,17 +186,24 @@ void PointRemover::hole(VertInd v, std::vector<std::array<VertInd, 3>>* out) {
     for (std::size_t t = 0; t < tris_.size(); t += 3) out->push_back({poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]});
 }
 
-double PointRemover::hole_triangle_error(std::size_t t) {
-    VertInd v[3] = {poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]};
-    int r = v[1] < v[0] ? (v[2] < v[1] ? 2 : 1) : (v[2] < v[0] ? 2 : 0);  // rotate the smallest first
-    const VertInd a = v[r], b = v[(r + 1) % 3], c = v[(r + 2) % 3];
+std::size_t PointRemover::cache_slot(const VertInd* v, CacheSlot* key) {
+    const int r = v[1] < v[0] ? (v[2] < v[1] ? 2 : 1) : (v[2] < v[0] ? 2 : 0);  // rotate the smallest first
+    *key = CacheSlot{v[r], v[(r + 1) % 3], v[(r + 2) % 3], 0.0};
     if (cache_.empty()) cache_.resize(std::size_t(1) << 16);
     const std::size_t mask = cache_.size() - 1;
-    std::uint64_t h = (std::uint64_t(a) * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(b) * 0xC2B2AE3D27D4EB4Full) ^
-                      (std::uint64_t(c) * 0x165667B19E3779F9ull);
+    const std::uint64_t h = (std::uint64_t(key->a) * 0x9E3779B97F4A7C15ull) ^
+                            (std::uint64_t(key->b) * 0xC2B2AE3D27D4EB4Full) ^ (std::uint64_t(key->c) * 0x165667B19E3779F9ull);
     std::size_t i = std::size_t(h >> 20) & mask;
     for (; cache_[i].a != noVertex; i = (i + 1) & mask)
-        if (cache_[i].a == a && cache_[i].b == b && cache_[i].c == c) return cache_[i].error;
+        if (cache_[i].a == key->a && cache_[i].b == key->b && cache_[i].c == key->c) break;
+    return i;
+}
+
+double PointRemover::hole_triangle_error(std::size_t t) {
+    const VertInd v[3] = {poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]};
+    CacheSlot key;
+    const std::size_t i = cache_slot(v, &key);
+    if (cache_[i].a != noVertex) return cache_[i].error;
     LatticePoint p[3];
     double z[3 * 3];
     for (int k = 0; k < 3; ++k) {
@@ -207,7 +219,8 @@ double PointRemover::hole_triangle_error(std::size_t t) {
         cache_used_ = 0;
         return e;
     }
-    cache_[i] = CacheSlot{a, b, c, e};
+    key.error = e;
+    cache_[i] = key;
     ++cache_used_;
     return e;
 }
@@ -249,7 +262,7 @@ void PointRemover::start() {
         if (cdt_.vertex_live(v) && significance_of(v, &sig)) heap_.set(v, -sig, tie_of(cdt_.point(v)));
 }
 
-void PointRemover::rescan_created() {
+void PointRemover::rescan_created(bool cached) {
     if (face_err_.size() < cdt_.face_count()) face_err_.resize(cdt_.face_count(), 0.0);
     for (FaceInd f : cdt_.changes().destroyed) {
         total_ -= face_err_[f];
@@ -257,7 +270,15 @@ void PointRemover::rescan_created() {
         if (track_) by_face_.remove(f);
     }
     for (FaceInd f : cdt_.changes().created) {
-        total_ += face_err_[f] = face_error_now(f);
+        // After a removal the created faces are the hole's triangles, whose errors significance()
+        // mostly cached (the same pixels and values: hole_triangle_error).
+        std::size_t i = 0;
+        CacheSlot key;
+        if (cached) {
+            const VertInd v[3] = {cdt_.face_vertex(f, 0), cdt_.face_vertex(f, 1), cdt_.face_vertex(f, 2)};
+            i = cache_slot(v, &key);
+        }
+        total_ += face_err_[f] = cached && cache_[i].a != noVertex ? cache_[i].error : face_error_now(f);
         if (track_) by_face_.set(f, face_err_[f], f);
     }
 }
@@ -282,7 +303,7 @@ Status PointRemover::remove(VertInd v) {
     if (!st) return st;
     if (track_ && !(pv.x & 1) && !(pv.y & 1)) occupied_[pixel_index(pv)] = 0;
     heap_.remove(v);
-    rescan_created();
+    rescan_created(true);
     ++stats_.removed;
     touch_neighbours(around_);
     return Status::success();
@@ -295,7 +316,7 @@ Status PointRemover::insert(LatticePoint p, VertInd* v, const std::vector<double
     model_.on_vertex_inserted(cdt_, *v);
     if (values) model_.restore_values(cdt_, *v, *values);
     if (track_) occupied_[pixel_index(p)] = 1;
-    rescan_created();
+    rescan_created(false);
     around_.clear();
     for (FaceInd f : cdt_.changes().created)
         for (int i = 0; i < 3; ++i) around_.push_back(cdt_.face_vertex(f, i));

@@ -128,9 +128,18 @@ private:
     // vertex indices are never reused, so the cache is keyed by the vertex triple; the stars of
     // neighbouring vertices share most of their hole triangles.
     double hole_triangle_error(std::size_t t);
+    struct CacheSlot {
+        VertInd a = noVertex, b = noVertex, c = noVertex;
+        double error = 0.0;
+    };
+    // The cache slot of triangle v[0..2] (positive order, any rotation): its entry, or the empty
+    // slot where it goes; *key gets the triple in the cache's rotation.
+    std::size_t cache_slot(const VertInd* v, CacheSlot* key);
     double face_error_now(FaceInd f) const;
     void face_corners(FaceInd f, LatticePoint* p, double* z) const;  // points, 3 x channels_ values
-    void rescan_created();
+    // The errors of the faces the last kernel change created; after a removal (cached) from the
+    // hole-triangle cache where it holds them.
+    void rescan_created(bool cached);
     bool significance_of(VertInd v, double* sig);  // false (nothing computed) when v is not removable
     void update(VertInd v);  // recompute v's significance into the heap (or drop it)
     void touch_neighbours(const std::vector<VertInd>& around);
@@ -168,10 +177,6 @@ private:
     std::vector<std::uint32_t> stack_;
     std::vector<EdgeInd> corners_;
     std::vector<VertInd> around_;
-    struct CacheSlot {
-        VertInd a = noVertex, b = noVertex, c = noVertex;
-        double error = 0.0;
-    };
     std::vector<CacheSlot> cache_;  // open addressing, linear probing; emptied when half full
     std::size_t cache_used_ = 0;
 };
