@@ -5,9 +5,9 @@
 namespace erd {
 
 Status erd_remove_to(Cdt* cdt, const Image& image, RemovalModel& model, std::size_t n, bool lazy,
-                     const ProgressHook& progress, RemovalRunStats* stats) {
+                     const ProgressHook& progress, RemovalRunStats* stats, const MeshSystems* systems) {
     {
-        PointRemover remover(*cdt, image, model, false);
+        PointRemover remover(*cdt, image, model, false, systems);
         remover.lazy = lazy;
         if (stats->start == 0) stats->start = cdt->live_vertex_count();
         remover.start();

@@ -55,8 +55,8 @@ private:
 
 // Removes vertices of *cdt by least significance under `model` until n remain (real-valued errors,
 // lazy as `lazy` says), then replaces *cdt by its compact copy (compact_cdt). The caller assigns
-// the wedge values of the compact mesh. Adds to *stats.
+// the wedge values of the compact mesh. Adds to *stats. systems: PointRemover's.
 Status erd_remove_to(Cdt* cdt, const Image& image, RemovalModel& model, std::size_t n, bool lazy,
-                     const ProgressHook& progress, RemovalRunStats* stats);
+                     const ProgressHook& progress, RemovalRunStats* stats, const MeshSystems* systems = nullptr);
 
 }  // namespace erd

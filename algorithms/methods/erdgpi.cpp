@@ -123,11 +123,15 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
         const std::size_t from = cdt.vertex_count();
         const int stages = std::max(1, options.removal_stages);
         result->stats.has_removal = true;
+        // The refit's face systems give removal its first face errors (PointRemover).
+        MeshSystems systems;
         const auto refit = [&](bool first) {
+            systems = MeshSystems();
             if (options.removal_refit <= 0 || options.wedge_fit <= 0) return;
             std::vector<double> ls;
             for (std::size_t i = 0; i < m->entry_count(); ++i) ls.push_back(m->entry_value(i));
-            fit_wedge_values(cdt, image, wedge_fit_options(options), m, nullptr, staged && first ? &line_search : &ls);
+            fit_wedge_values(cdt, image, wedge_fit_options(options), m, nullptr, staged && first ? &line_search : &ls,
+                             {}, &systems);
         };
         for (int cycle = 0; cycle <= options.removal_cycles; ++cycle) {
             if (cycle > 0) {  // insertion again to the start size, against the refitted values
@@ -145,7 +149,9 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
                                                                      double(k) / double(stages)) + 0.5);
                 refit(cycle == 0 && k == 1);
                 ErdRemovalModel rm(*m);
-                st = erd_remove_to(&cdt, image, rm, to, options.removal_lazy, options.progress, &result->stats.removal);
+                st = erd_remove_to(&cdt, image, rm, to, options.removal_lazy, options.progress, &result->stats.removal,
+                                   &systems);
+                systems = MeshSystems();
                 if (!st) return st;
                 current = std::make_unique<ErdModel>(image, wedge_options(options));
                 current->assign_all(cdt);

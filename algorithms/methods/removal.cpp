@@ -12,12 +12,23 @@
 
 namespace erd {
 
-PointRemover::PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bool round_values)
+PointRemover::PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bool round_values,
+                           const MeshSystems* systems)
     : cdt_(cdt), image_(image), model_(model), round_(round_values), channels_(image.channels) {
     domain_ = RasterDomain{cdt.max_x(), cdt.max_y()};
     face_err_.assign(cdt.face_count(), 0.0);
-    for (FaceInd f = 0; f < cdt.face_count(); ++f)
-        if (cdt.face_live(f)) total_ += face_err_[f] = face_error_now(f);
+    const bool quadratic = systems && systems->matches(cdt) && !round_ && channels_ == 1;
+    for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+        if (!cdt.face_live(f)) continue;
+        if (quadratic && !systems->stale[f]) {
+            LatticePoint p[3];
+            double z[3];
+            face_corners(f, p, z);
+            total_ += face_err_[f] = std::max(0.0, systems->faces[f].sse(z[0], z[1], z[2]));
+        } else {
+            total_ += face_err_[f] = face_error_now(f);
+        }
+    }
 }
 
 void PointRemover::track_faces() {

@@ -24,6 +24,7 @@
 
 #include "algorithms/imaging/image.h"
 #include "algorithms/methods/heap.h"
+#include "algorithms/methods/wedge_fit.h"
 #include "kernel/cdt.h"
 #include "kernel/progress.h"
 #include "kernel/raster.h"
@@ -80,8 +81,11 @@ struct RemovalStats {
 class PointRemover {
 public:
     // cdt: the mesh (any CDT; its constrained and corner vertices are never removed). Scans every
-    // face once; significances are computed by start().
-    PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bool round_values);
+    // face once; significances are computed by start(). systems (optional; gray, real-valued
+    // errors): the refit's face systems of cdt (wedge_fit.h), whose quadratic forms give the face
+    // errors without that scan.
+    PointRemover(Cdt& cdt, const Image& image, RemovalModel& model, bool round_values,
+                 const MeshSystems* systems = nullptr);
 
     // Computes the significance of every removable vertex (in vertex order) and fills the heap.
     // Before it, insert() keeps only the face errors (growth by worst_pixel, as GPI grows).
