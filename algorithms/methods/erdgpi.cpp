@@ -153,8 +153,10 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
                                    &systems);
                 systems = MeshSystems();
                 if (!st) return st;
-                current = std::make_unique<ErdModel>(image, wedge_options(options));
-                current->assign_all(cdt);
+                auto fresh = std::make_unique<ErdModel>(image, wedge_options(options));
+                fresh->take_mmsodd(*m);
+                fresh->assign_all(cdt);
+                current = std::move(fresh);
                 m = current.get();
             }
         }

@@ -60,6 +60,15 @@ public:
         have_mmsodd_ = true;
     }
 
+    // Takes over `old`'s MMSODD (its grid or the pixels its line searches computed; a model of the
+    // same image and options), so a fresh model of a changed mesh does not compute them again.
+    void take_mmsodd(ErdModel& old) {
+        if (old.have_mmsodd_) set_mmsodd(std::move(old.mmsodd_));
+        old.have_mmsodd_ = false;
+        local_ = std::move(old.local_);
+        old.local_.clear();
+    }
+
     // Computes and stores the wedge values of v from the current triangulation.
     void assign_vertex(const Cdt& cdt, VertInd v);
     // assign_vertex for every vertex.
