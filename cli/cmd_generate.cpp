@@ -218,6 +218,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("moves")) o->moves = int(a.integer("moves", 0, 0, 64, st));
     if (a.has("move-step")) o->move_step = int(a.integer("move-step", 2, 1, 64, st));
     if (a.has("move-min-gain")) o->move_min_gain = a.real("move-min-gain", 0.0, 0.0, 1e9, st);
+    o->ending_given = a.has("flips") || a.has("moves") || a.has("move-step") || a.has("move-min-gain");
     if (a.has("alpha-min")) o->alpha_min = a.real("alpha-min", o->alpha_min, 0.0, 64.0, st);
     if (a.has("alpha-max")) o->alpha_max = a.real("alpha-max", o->alpha_max, 0.0, 64.0, st);
     if (st->ok() && o->alpha_max < o->alpha_min)

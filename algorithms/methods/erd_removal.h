@@ -15,6 +15,15 @@ namespace erd {
 // ERDGPR's default K (docs/DECISIONS.md "Point removal").
 constexpr double kErdgprOversample = 2.0;
 
+// ERDGPR's ending unless the caller set any of it (GenerateOptions::ending_given): one more round
+// of flips and of moves than ERDGPI's, the first moves two pixels long, more of them tried
+// (docs/DECISIONS.md "Point removal").
+struct ErdgprEnding {
+    int flips = 3, moves = 3, move_step = 4;
+    double move_min_gain = 0.02;
+};
+constexpr ErdgprEnding kErdgprEnding{};
+
 // The gray ERD model's wedge values as removal sees them.
 class ErdRemovalModel : public RemovalModel {
 public:

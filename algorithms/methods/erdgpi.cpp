@@ -190,7 +190,13 @@ Status generate_erdgpi(const Image& image, const GenerateOptions& options, Gener
 }
 
 Status generate_erdgpr(const Image& image, const GenerateOptions& options, GenerateResult* result) {
-    return run_erd_method(image, options, erdgpr_once, result);
+    if (options.ending_given) return run_erd_method(image, options, erdgpr_once, result);
+    GenerateOptions o = options;
+    o.flips = kErdgprEnding.flips;
+    o.moves = kErdgprEnding.moves;
+    o.move_step = kErdgprEnding.move_step;
+    o.move_min_gain = kErdgprEnding.move_min_gain;
+    return run_erd_method(image, o, erdgpr_once, result);
 }
 
 }  // namespace erd

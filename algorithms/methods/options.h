@@ -92,6 +92,8 @@ struct GenerateOptions {
     double move_min_gain = 0.05; // moves predicted to gain less than this share of the error are not tried
     double flip_min_share = 0.2;  // quadrilaterals below this share of the mean error are not tried
     int flips = 2;               // ERD (ours): rounds of data-dependent flips + refit after the refit
+    bool ending_given = false;   // flips, moves, move_step or move_min_gain set by the caller: ERDGPR
+                                 // keeps them (else its own ending, erd_removal.h kErdgprEnding)
     bool optimize = false;       // ED, GPI (--optimize, ours): least-squares vertex values
     // Point removal (issue 45; algorithms/methods/removal.h).
     double oversample = 0.0;     // --oversample K: GPRFS's ED start and ERDGPR's ERDGPI start hold

@@ -46,8 +46,14 @@ const std::vector<Spec>& specs() {
         {"alpha_min", Kind::real, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.alpha_min = v; }},
         {"alpha_max", Kind::real, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.alpha_max = v; }},
         {"edge_zero_radius", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.edge_zero_radius = int(v); }},
-        {"flips", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.flips = int(v); }},
-        {"moves", Kind::integer, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.moves = int(v); }},
+        {"flips", Kind::integer, 0, 64, [](GenerateArgs* a, double v) {
+             a->options.generate.flips = int(v);
+             a->options.generate.ending_given = true;
+         }},
+        {"moves", Kind::integer, 0, 64, [](GenerateArgs* a, double v) {
+             a->options.generate.moves = int(v);
+             a->options.generate.ending_given = true;
+         }},
         {"oversample", Kind::real, 1, 64, [](GenerateArgs* a, double v) { a->options.generate.oversample = v; }},
         {"lazy", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.removal_lazy = v == 1; }},
         {"bpr", Kind::integer, 0, 1000, [](GenerateArgs* a, double v) { a->options.generate.bpr = int(v); }},
