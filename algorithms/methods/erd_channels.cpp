@@ -65,6 +65,16 @@ void ErdChannels::flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const 
     improve_by_flips(cdt, planes, models, max_flips, stats, seed_faces);
 }
 
+void ErdChannels::move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats) const {
+    std::vector<const Image*> planes;
+    std::vector<const ErdModel*> models;
+    for (std::size_t c = 0; c < models_.size(); ++c) {
+        planes.push_back(&planes_[c]);
+        models.push_back(models_[c].get());
+    }
+    improve_by_moves(cdt, planes, models, step, min_gain, stats);
+}
+
 void ErdChannels::to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const {
     const std::size_t C = models_.size();
     Model one;

@@ -46,6 +46,8 @@ public:
     std::vector<std::vector<double>> values() const;
     // Data-dependent flips (flips.h) on the squared error summed over the channels.
     void flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const;
+    // Vertex moves (flips.h improve_by_moves) on the squared error summed over the channels.
+    void move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats) const;
     // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 

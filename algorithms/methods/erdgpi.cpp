@@ -196,6 +196,7 @@ Status generate_erdgpr(const Image& image, const GenerateOptions& options, Gener
     o.moves = kErdgprEnding.moves;
     o.move_step = kErdgprEnding.move_step;
     o.move_min_gain = kErdgprEnding.move_min_gain;
+    o.colour.moves = true;
     return run_erd_method(image, o, erdgpr_once, result);
 }
 

@@ -189,14 +189,19 @@ void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const s
     flip_channels(cdt, planes, models, max_flips, stats, seed_faces, nullptr, 0.0);
 }
 
-void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
-                      MeshSystems* systems, MoveStats* stats) {
+namespace {
+
+// The moves of one or C channels (improve_by_moves): channel c's values from models[c] on
+// planes[c], its face systems in *systems[c]; the gradient and the errors summed over the channels.
+void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
+                   std::int32_t step, double min_gain, const std::vector<MeshSystems*>& systems, MoveStats* stats) {
     MoveStats st;
-    if (!systems || !systems->matches(*cdt)) return;
-    TriangleError tri_error({&image}, *cdt);
-    auto corner = [&](EdgeInd e) { return model.corner_value(*cdt, e); };
+    const std::size_t C = models.size();
+    for (MeshSystems* s : systems)
+        if (!s || !s->matches(*cdt)) return;
+    TriangleError tri_error(planes, *cdt);
     std::vector<EdgeInd> star;
-    std::vector<double> zs;  // per star corner: (z_a, z_b) of the face (v, a, b)
+    std::vector<double> zs;  // per star corner and channel: (z_a, z_b) of the face (v, a, b)
     for (VertInd v = 4; v < cdt->vertex_count(); ++v) {
         const LatticePoint p0 = cdt->point(v);
         if (cdt->on_boundary(v)) continue;
@@ -208,26 +213,31 @@ void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::
         // approximation moves by -w_v grad(plane) . delta, so d SSE_f = -2 grad(plane_f) . r_f,v
         // with r_f,v = sum e w_v = (G z - h)_v of the face's system; pixels changing faces
         // across v's edges add nothing at first order (the planes agree there).
-        double zv = 0, current = 0, gx = 0, gy = 0;
+        double zv[kMaxChannels] = {}, current = 0, gx = 0, gy = 0;
         zs.clear();
         for (EdgeInd e : star) {
             const FaceInd f = face_of(e);
             const EdgeInd k = 3 * f;
-            const double z[3] = {corner(k), corner(k + 1), corner(k + 2)};
-            const FaceSystem& fs = systems->get(*cdt, image, f);
-            double gz[3];
-            fs.gram_times(z[0], z[1], z[2], gz);
             const int i = int(e - k);
-            zv = z[i];
-            zs.push_back(z[(i + 1) % 3]);
-            zs.push_back(z[(i + 2) % 3]);
-            const double s = (z[0] * gz[0] + z[1] * gz[1] + z[2] * gz[2]) - 2.0 * (z[0] * fs.h[0] + z[1] * fs.h[1] + z[2] * fs.h[2]) + fs.bb;
-            current += s > 0 ? s : 0;
-            SpanPlane plane;
-            plane.set(cdt->point(cdt->org(k)), z[0], cdt->point(cdt->org(k + 1)), z[1], cdt->point(cdt->org(k + 2)), z[2]);
-            const double r = gz[i] - fs.h[i];
-            gx -= 2.0 * r * plane.gx;
-            gy -= 2.0 * r * plane.gy;
+            for (std::size_t c = 0; c < C; ++c) {
+                const ErdModel& model = *models[c];
+                const double z[3] = {model.corner_value(*cdt, k), model.corner_value(*cdt, k + 1),
+                                     model.corner_value(*cdt, k + 2)};
+                const FaceSystem& fs = systems[c]->get(*cdt, *planes[c], f);
+                double gz[3];
+                fs.gram_times(z[0], z[1], z[2], gz);
+                zv[c] = z[i];
+                zs.push_back(z[(i + 1) % 3]);
+                zs.push_back(z[(i + 2) % 3]);
+                const double s = (z[0] * gz[0] + z[1] * gz[1] + z[2] * gz[2]) -
+                                 2.0 * (z[0] * fs.h[0] + z[1] * fs.h[1] + z[2] * fs.h[2]) + fs.bb;
+                current += s > 0 ? s : 0;
+                SpanPlane plane;
+                plane.set(cdt->point(cdt->org(k)), z[0], cdt->point(cdt->org(k + 1)), z[1], cdt->point(cdt->org(k + 2)), z[2]);
+                const double r = gz[i] - fs.h[i];
+                gx -= 2.0 * r * plane.gx;
+                gy -= 2.0 * r * plane.gy;
+            }
         }
         // The lattice step most against the gradient, and its first-order gain.
         const std::int32_t dx = gx < -0.4142 * std::abs(gy) ? step : (gx > 0.4142 * std::abs(gy) ? -step : 0);
@@ -241,14 +251,41 @@ void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::
         double s = 0;
         for (std::size_t i = 0; i < star.size() && s < bound; ++i) {
             const EdgeInd e = star[i];
-            const double z[3] = {zv, zs[2 * i], zs[2 * i + 1]};
-            s += tri_error(p, &z[0], cdt->point(cdt->dest(e)), &z[1], cdt->point(cdt->org(prev_edge(e))), &z[2], s, bound);
+            double za[kMaxChannels], zb[kMaxChannels];
+            for (std::size_t c = 0; c < C; ++c) {
+                za[c] = zs[(2 * i) * C + 2 * c];
+                zb[c] = zs[(2 * i) * C + 2 * c + 1];
+            }
+            s += tri_error(p, zv, cdt->point(cdt->dest(e)), za, cdt->point(cdt->org(prev_edge(e))), zb, s, bound);
         }
         if (!(s < bound) || !cdt->move_vertex(v, p)) continue;
         ++st.moves;
-        for (EdgeInd e : star) systems->mark(face_of(e));
+        for (EdgeInd e : star)
+            for (MeshSystems* sys : systems) sys->mark(face_of(e));
     }
     if (stats) *stats = st;
+}
+
+}  // namespace
+
+void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
+                      MeshSystems* systems, MoveStats* stats) {
+    if (stats) *stats = MoveStats();
+    move_channels(cdt, {&image}, {&model}, step, min_gain, {systems}, stats);
+}
+
+void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
+                      std::int32_t step, double min_gain, MoveStats* stats) {
+    if (stats) *stats = MoveStats();
+    // Each channel's systems made as the moves first need them (a face's pass over the pixels).
+    std::vector<MeshSystems> own(models.size());
+    std::vector<MeshSystems*> systems;
+    for (MeshSystems& s : own) {
+        s.faces.resize(cdt->face_count());
+        s.stale.assign(cdt->face_count(), 1);
+        systems.push_back(&s);
+    }
+    move_channels(cdt, planes, models, step, min_gain, systems, stats);
 }
 
 }  // namespace erd

@@ -49,15 +49,23 @@ void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* mo
     std::vector<FaceInd> seed;  // as the gray rounds above, their refits with half the steps too
     WedgeFitOptions later = wedge_fit_options(options);
     later.iterations = (later.iterations + 1) / 2;
+    const bool with_moves = options.colour.moves && options.moves > 0 && options.wedge_fit > 0;
+    const auto refit = [&] {
+        WedgeFitStats again;
+        model->fit(*cdt, later, &again, {}, line_search);
+        if (stats) stats->sse_after = again.sse_after;
+    };
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
         model->flip(cdt, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed);
         seed = std::move(fs.changed);
-        if (fs.flips == 0) break;
-        if (options.wedge_fit > 0) {
-            WedgeFitStats again;
-            model->fit(*cdt, later, &again, {}, line_search);
-            if (stats) stats->sse_after = again.sse_after;
+        const bool moves = with_moves && round < options.moves;
+        if (fs.flips == 0 && !moves) break;
+        if (options.wedge_fit > 0 && fs.flips > 0) refit();
+        if (moves) {  // options.colour.moves: as the gray rounds' moves, each followed by a refit
+            MoveStats ms;
+            model->move(cdt, std::max<std::int32_t>(1, options.move_step >> round), options.move_min_gain, &ms);
+            if (ms.moves > 0) refit();
         }
     }
 }

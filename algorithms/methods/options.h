@@ -36,6 +36,9 @@ struct ColourChoices {
     // or the largest channel's (colour.h ColourGradient). The edge kind and hard (crack) edges
     // read the luma whatever this says.
     ColourGradient edges = ColourGradient::luma;
+    // The ending's vertex moves (GenerateOptions::moves) on the channels too; off: flips only
+    // (ERDGPI's, ERDED's colour ending). ERDGPR's own ending turns it on.
+    bool moves = false;
 };
 
 // --edges: what the ERD methods take the image's edges to be (algorithms/imaging/edge_kind.h).
