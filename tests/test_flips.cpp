@@ -169,6 +169,66 @@ TEST_CASE("vertex moves lower the squared error and keep the count, constraints 
     r.check_kept();
 }
 
+namespace {
+
+// The squared error of channels models[c] on planes[c] over every face, from the face systems.
+double channels_sse(const Cdt& cdt, const std::vector<const Image*>& planes, const std::vector<ErdModel*>& models) {
+    double total = 0;
+    for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+        if (!cdt.face_live(f)) continue;
+        const EdgeInd e = 3 * f;
+        for (std::size_t c = 0; c < planes.size(); ++c) {
+            const FaceSystem fs = face_system(*planes[c], RasterDomain{cdt.max_x(), cdt.max_y()}, cdt.point(cdt.org(e)),
+                                              cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)));
+            total += fs.sse(models[c]->corner_value(cdt, e), models[c]->corner_value(cdt, e + 1),
+                            models[c]->corner_value(cdt, e + 2));
+        }
+    }
+    return total;
+}
+
+}  // namespace
+
+TEST_CASE("colour vertex moves lower the channels' summed error; one channel moves as the gray moves", "[flips]") {
+    SECTION("three channels") {
+        RidgeMesh r(5);
+        Image g = r.im, b = r.im;  // two more planes: the ramp reversed, and a vertical ramp
+        for (int y = 0; y < g.height; ++y)
+            for (int x = 0; x < g.width; ++x) {
+                g.at(x, y) = std::uint16_t(255 - r.im.at(x, y));
+                b.at(x, y) = std::uint16_t((r.im.at(x, y) + 5 * y) % 256);
+            }
+        const std::vector<const Image*> planes{&r.im, &g, &b};
+        ErdModel mg(g, WedgeValueOptions{}), mb(b, WedgeValueOptions{});
+        mg.assign_all(r.cdt);
+        mb.assign_all(r.cdt);
+        const std::vector<ErdModel*> models{&r.model, &mg, &mb};
+        for (std::size_t c = 0; c < 3; ++c) fit_wedge_values(r.cdt, *planes[c], WedgeFitOptions{}, models[c], nullptr);
+        const std::size_t n = r.cdt.vertex_count();
+        const double before = channels_sse(r.cdt, planes, models);
+        MoveStats ms;
+        improve_by_moves(&r.cdt, planes, {models.begin(), models.end()}, 2, 0.0, &ms);
+        CHECK(ms.moves > 0);
+        CHECK(ms.tested >= ms.moves);
+        CHECK(r.cdt.vertex_count() == n);
+        CHECK(channels_sse(r.cdt, planes, models) < before);
+        r.check_kept();
+    }
+    SECTION("one channel: the same moves as the gray function's") {
+        RidgeMesh a(7), b(7);
+        MeshSystems systems;
+        fit_wedge_values(a.cdt, a.im, WedgeFitOptions{}, &a.model, nullptr, nullptr, {}, &systems);
+        fit_wedge_values(b.cdt, b.im, WedgeFitOptions{}, &b.model, nullptr);
+        MoveStats ma, mb;
+        improve_by_moves(&a.cdt, a.im, a.model, 2, 0.0, &systems, &ma);
+        improve_by_moves(&b.cdt, {&b.im}, {&b.model}, 2, 0.0, &mb);
+        CHECK(ma.moves > 0);
+        CHECK(ma.moves == mb.moves);
+        CHECK(ma.tested == mb.tested);
+        for (VertInd v = 0; v < a.cdt.vertex_count(); ++v) CHECK(a.cdt.point(v) == b.cdt.point(v));
+    }
+}
+
 TEST_CASE("rounds of moves go coarse to fine: one pixel, then half a pixel", "[flips]") {
     // Displacements of the vertices after `moves` rounds (doubled units): round 1 steps 2, round 2
     // steps 1, so an odd component shows a second-round move and moves 1 leaves every one even.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algorithms/methods/bpr.h"
+#include "algorithms/methods/erd_removal.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/methods/removal.h"
 #include "algorithms/methods/result.h"
@@ -97,6 +98,36 @@ TEST_CASE("removal: significance is the error change of the kernel's removal", "
     CHECK(cdt.live_vertex_count() == 40);
 }
 
+TEST_CASE("removal: face errors from the refit's systems are the scanned ones", "[removal]") {
+    const Image im = erd_test::synth_image(41, 29, 8, 11);
+    Cdt cdt;
+    REQUIRE(cdt.reset(2 * 40, 2 * 28).ok());
+    std::vector<LatticePoint> pts;
+    for (int i = 0; i < 41 * 29; i += 5) pts.push_back(LatticePoint{2 * (i % 41), 2 * (i / 41)});
+    std::vector<VertInd> ids;
+    REQUIRE(cdt.insert_points(pts, &ids).ok());
+    REQUIRE(cdt.insert_constraint(ids[3], ids[40]).ok());  // a wedge pair or two
+    ErdModel model(im, WedgeValueOptions{});
+    model.assign_all(cdt);
+    MeshSystems systems;
+    fit_wedge_values(cdt, im, WedgeFitOptions{}, &model, nullptr, nullptr, {}, &systems);
+    REQUIRE(systems.matches(cdt));
+    ErdRemovalModel values(model);
+    PointRemover scanned(cdt, im, values, false), quadratic(cdt, im, values, false, &systems);
+    for (FaceInd f = 0; f < cdt.face_count(); ++f)
+        if (cdt.face_live(f))
+            CHECK(quadratic.face_error(f) == Approx(scanned.face_error(f)).margin(1e-7 * (1 + scanned.face_error(f))));
+    CHECK(quadratic.total_error() == Approx(scanned.total_error()));
+    CHECK(scanned.total_error() > 0);
+    // Both run to the same count; the cached removal keeps its face errors those of the mesh.
+    quadratic.start();
+    REQUIRE(quadratic.run_to(60, {}).ok());
+    CHECK(cdt.live_vertex_count() == 60);
+    CHECK(quadratic.total_error() == Approx(PointRemover(cdt, im, values, false).total_error()));
+    std::string why;
+    CHECK(cdt.verify(&why));
+}
+
 TEST_CASE("removal: lazy and eager both stop at exactly N and lower the error monotonically in N", "[removal]") {
     const Image im = erd_test::synth_image(40, 30, 8, 2);
     for (bool lazy : {true, false}) {
@@ -135,6 +166,33 @@ TEST_CASE("removal methods: exact N, deterministic, on small generated images", 
     REQUIRE(m->run(im, o, &b).ok());
     CHECK(a.model.vertices == b.model.vertices);
     CHECK(a.model.faces == b.model.faces);
+}
+
+TEST_CASE("erdgpr's own ending unless the caller sets flips, moves, move step or gain", "[removal][methods]") {
+    const Image im = erd_test::synth_image(64, 48, 8, 12);
+    const MethodInfo* m = find_method("erdgpr");
+    REQUIRE(m != nullptr);
+    GenerateOptions own;
+    own.points = 160;
+    GenerateOptions spelled = own;  // the same ending, given
+    spelled.ending_given = true;
+    spelled.flips = kErdgprEnding.flips;
+    spelled.moves = kErdgprEnding.moves;
+    spelled.move_step = kErdgprEnding.move_step;
+    spelled.move_min_gain = kErdgprEnding.move_min_gain;
+    spelled.colour.moves = true;
+    GenerateOptions generic = own;  // the generic defaults, given
+    generic.ending_given = true;
+    GenerateResult a, b, c;
+    REQUIRE(m->run(im, own, &a).ok());
+    REQUIRE(m->run(im, spelled, &b).ok());
+    REQUIRE(m->run(im, generic, &c).ok());
+    CHECK(a.achieved == 160);
+    CHECK(c.achieved == 160);
+    CHECK(a.model.vertices == b.model.vertices);
+    CHECK(a.model.corner_values == b.model.corner_values);
+    // The generic ending: fewer rounds of flips and moves, shorter and fewer moves.
+    CHECK((a.model.vertices != c.model.vertices || a.model.corner_values != c.model.corner_values));
 }
 
 TEST_CASE("bad-point replacement never raises the error it measures, and keeps the count", "[removal][bpr]") {
