@@ -191,12 +191,12 @@ void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const s
 
 namespace {
 
-// The moves of one or C channels (improve_by_moves): channel c's values from models[c] on
+// The moves of C channels (1 or 3, improve_by_moves): channel c's values from models[c] on
 // planes[c], its face systems in *systems[c]; the gradient and the errors summed over the channels.
+template <std::size_t C>
 void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
                    std::int32_t step, double min_gain, const std::vector<MeshSystems*>& systems, MoveStats* stats) {
     MoveStats st;
-    const std::size_t C = models.size();
     for (MeshSystems* s : systems)
         if (!s || !s->matches(*cdt)) return;
     TriangleError tri_error(planes, *cdt);
@@ -213,7 +213,7 @@ void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
         // approximation moves by -w_v grad(plane) . delta, so d SSE_f = -2 grad(plane_f) . r_f,v
         // with r_f,v = sum e w_v = (G z - h)_v of the face's system; pixels changing faces
         // across v's edges add nothing at first order (the planes agree there).
-        double zv[kMaxChannels] = {}, current = 0, gx = 0, gy = 0;
+        double zv[C] = {}, current = 0, gx = 0, gy = 0;
         zs.clear();
         for (EdgeInd e : star) {
             const FaceInd f = face_of(e);
@@ -251,7 +251,7 @@ void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
         double s = 0;
         for (std::size_t i = 0; i < star.size() && s < bound; ++i) {
             const EdgeInd e = star[i];
-            double za[kMaxChannels], zb[kMaxChannels];
+            double za[C], zb[C];
             for (std::size_t c = 0; c < C; ++c) {
                 za[c] = zs[(2 * i) * C + 2 * c];
                 zb[c] = zs[(2 * i) * C + 2 * c + 1];
@@ -271,7 +271,7 @@ void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
 void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
                       MeshSystems* systems, MoveStats* stats) {
     if (stats) *stats = MoveStats();
-    move_channels(cdt, {&image}, {&model}, step, min_gain, {systems}, stats);
+    move_channels<1>(cdt, {&image}, {&model}, step, min_gain, {systems}, stats);
 }
 
 void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
@@ -285,7 +285,8 @@ void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const s
         s.stale.assign(cdt->face_count(), 1);
         systems.push_back(&s);
     }
-    move_channels(cdt, planes, models, step, min_gain, systems, stats);
+    if (models.size() == 1) move_channels<1>(cdt, planes, models, step, min_gain, systems, stats);
+    else if (models.size() == 3) move_channels<3>(cdt, planes, models, step, min_gain, systems, stats);
 }
 
 }  // namespace erd

@@ -55,7 +55,7 @@ struct MoveStats {
 void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
                       MeshSystems* systems, MoveStats* stats);
 
-// The same for one triangulation's C channels (a colour model: models[c] on planes[c]): the
+// The same for one triangulation's 1 or 3 channels (a colour model: models[c] on planes[c]): the
 // gradient and the errors summed over the channels, each channel's face systems made here as the
 // moves first need them.
 void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
