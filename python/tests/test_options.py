@@ -143,3 +143,9 @@ def test_removal_methods_and_bpr_are_reachable(small):
     erd.generate(small, "id", points=n, id_cycles=1, id_share=0.5)
     with pytest.raises(ValueError, match="oversample"):
         erd.generate(small, "gprfs", points=n, oversample=0.5)
+    # erdgpr's own end (3 rounds of flips and moves, longer moves) unless flips= or moves= is given:
+    # the generic end given makes another mesh.
+    own = erd.generate(small, "erdgpr", points=n)
+    generic = erd.generate(small, "erdgpr", points=n, flips=2, moves=2)
+    assert len(generic.vertices) == n
+    assert not (np.array_equal(own.vertices, generic.vertices) and np.array_equal(own.corner_values, generic.corner_values))
