@@ -239,6 +239,10 @@ struct BorderScan {
     TileGrid g;
     int T;
     std::vector<std::vector<double>> cols, rows;
+    // ERD: the lines kCrossingBand samples to either side of the inner lines (crossings go on
+    // across): near_cols[2 i] and [2 i + 1] beside vertical line i, near_rows likewise.
+    bool band = false;
+    std::vector<std::vector<double>> near_cols, near_rows;
     std::vector<double> weight;
     RowRing<std::int32_t> ints;
     RowRing<double> reals;
@@ -259,6 +263,17 @@ void RowRing<V>::row(const S* src, int y, BorderScan* scan) {
     for (int i = 0; i <= g.nx; ++i) scan->cols[std::size_t(i)][std::size_t(y)] = double(r2[std::size_t(g.column(i))]);
     for (int j = 0; j <= g.ny; ++j)
         if (g.row(j) == y) scan->rows[std::size_t(j)].assign(r2.begin(), r2.end());
+    if (scan->band) {
+        for (int i = 1; i < g.nx; ++i)
+            for (int s = 0; s < 2; ++s) {
+                const int x = std::clamp(g.column(i) + (s ? kCrossingBand : -kCrossingBand), 0, g.width - 1);
+                scan->near_cols[std::size_t(2 * i + s)][std::size_t(y)] = double(r2[std::size_t(x)]);
+            }
+        for (int j = 1; j < g.ny; ++j)
+            for (int s = 0; s < 2; ++s)
+                if (std::clamp(g.row(j) + (s ? kCrossingBand : -kCrossingBand), 0, g.height - 1) == y)
+                    scan->near_rows[std::size_t(2 * j + s)].assign(r2.begin(), r2.end());
+    }
     if (y < 2 || W < 3) return;
     // The weight of row y - 1.
     h.resize(W);
@@ -317,6 +332,11 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     plan->grid = g;
 
     BorderScan scan(g, T);
+    if (method->model == ModelKind::erd) {
+        scan.band = true;
+        scan.near_cols.assign(2 * std::size_t(g.nx + 1), std::vector<double>(std::size_t(H)));
+        scan.near_rows.assign(2 * std::size_t(g.ny + 1), std::vector<double>());
+    }
     const int band = std::max(1, int((std::size_t(1) << 22) / std::size_t(W)));
     bool first = true, real = false;
     // The ERD methods' kind of edge, measured once for the raster (the sum of the bands'
@@ -407,6 +427,32 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
             plan->hborder[std::size_t(j)][std::size_t(i)] = simplify_profile(z, rule_for(density(i, j - 1), density(i, j), a1 - a0));
             border += std::int64_t(plan->hborder[std::size_t(j)][std::size_t(i)].size()) - 2;
         }
+    // ERD: where a discontinuity crosses a border between two tiles (both tiles end a constrained
+    // edge there): the strong-step rule of the edge kind along the border's profile, going on
+    // across it (tiles.h profile_crossings).
+    if (erd_method && hi > lo) {
+        const double strong = real ? kStrongStep * (hi - lo) : double(std::max(1, int(kStrongStep * double(maxval) + 0.5)));
+        plan->vcross.assign(plan->vborder.size(), std::vector<std::vector<int>>(std::size_t(g.ny)));
+        plan->hcross.assign(plan->hborder.size(), std::vector<std::vector<int>>(std::size_t(g.nx)));
+        for (int i = 1; i < g.nx; ++i)
+            for (int j = 0; j < g.ny; ++j) {
+                auto piece = [&](const std::vector<double>& line) {
+                    return std::vector<double>(line.begin() + g.row(j), line.begin() + g.row(j + 1) + 1);
+                };
+                plan->vcross[std::size_t(i)][std::size_t(j)] =
+                    profile_crossings(piece(cols[std::size_t(i)]), piece(scan.near_cols[std::size_t(2 * i)]), piece(scan.near_cols[std::size_t(2 * i + 1)]), strong);
+                border += std::int64_t(plan->vcross[std::size_t(i)][std::size_t(j)].size());
+            }
+        for (int j = 1; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                auto piece = [&](const std::vector<double>& line) {
+                    return std::vector<double>(line.begin() + g.column(i), line.begin() + g.column(i + 1) + 1);
+                };
+                plan->hcross[std::size_t(j)][std::size_t(i)] =
+                    profile_crossings(piece(rows[std::size_t(j)]), piece(scan.near_rows[std::size_t(2 * j)]), piece(scan.near_rows[std::size_t(2 * j + 1)]), strong);
+                border += std::int64_t(plan->hcross[std::size_t(j)][std::size_t(i)].size());
+            }
+    }
     if (border > N)
         return Status::bad_input(escape_name(in) + ": the tiles' borders take " + std::to_string(border) + " of the " +
                                  std::to_string(N) + " points; raise -d or -n, or the tile size");
@@ -416,7 +462,7 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     plan->points.resize(std::size_t(g.count()));
     plan->triangles.resize(std::size_t(g.count()));
     for (int k = 0; k < g.count(); ++k) {
-        const std::int64_t sides = std::int64_t(plan->side_points(k).size()) - 4;  // the corners counted twice
+        const std::int64_t sides = std::int64_t(plan->side_points(k).size() + plan->side_crossings(k).size()) - 4;  // corners twice
         plan->points[std::size_t(k)] = std::min<std::int64_t>(std::int64_t(area(k)), inner[std::size_t(k)] + sides);
         plan->triangles[std::size_t(k)] = opt.triangles > 0 ? std::max<std::int64_t>(1, tris[std::size_t(k)]) : 0;
     }
@@ -452,6 +498,7 @@ Status run_task(const TilesPlan& plan, const std::string& dir, int k, const Repo
     opt.triangles = plan.triangles[std::size_t(k)];
     opt.lock_border = true;
     opt.border_points = plan.side_points(k);
+    opt.border_crossings = plan.side_crossings(k);
     opt.threads = 1;
     int x0, y0, x1, y1;
     plan.window(k, &x0, &y0, &x1, &y1);
@@ -482,9 +529,12 @@ Status run_task(const TilesPlan& plan, const std::string& dir, int k, const Repo
         if (!(st = outputs.stage(export_out, mesh))) return st;
     }
     if (!(st = outputs.commit())) return st;
-    char line[200];
+    char line[300];
     std::snprintf(line, sizeof line, "task %d (%s): %zu points, %zu faces from %d x %d in %.2f s", k, plan.tile_name(k).c_str(),
                   res.model.vertices.size(), res.model.faces.size(), image.width, image.height, seconds_since(t0));
+    if (!opt.border_crossings.empty())
+        std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), "; %zu side crossings, %zu reached by a detected edge",
+                      opt.border_crossings.size(), res.stats.erd.joined_crossings);
     rep.note(line);
     return Status::success();
 }
@@ -516,6 +566,7 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
         if (m.width != x1 - x0 + 1 || m.height != y1 - y0 + 1)
             return Status::bad_input(escape_name(path) + ": not the model of this tile");
         std::vector<LatticePoint> want = plan.side_points(k), have;
+        for (LatticePoint p : plan.side_crossings(k)) want.push_back(p);
         const std::int32_t mx = 2 * (x1 - x0), my = 2 * (y1 - y0);
         for (LatticePoint p : m.vertices)
             if (p.x == 0 || p.y == 0 || p.x == mx || p.y == my) have.push_back(p);
@@ -562,11 +613,13 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
         for (const auto& b : l) border += (long long)b.size() - 2;
     for (const auto& l : plan.hborder)
         for (const auto& b : l) border += (long long)b.size() - 2;
+    for (const auto* c : {&plan.vcross, &plan.hcross})
+        for (const auto& l : *c)
+            for (const auto& b : l) border += (long long)b.size();
     border += (long long)(plan.grid.nx + 1) * (plan.grid.ny + 1);
     long long side_sum = 0;
     for (int k = 0; k < plan.grid.count(); ++k) {
-        std::vector<LatticePoint> s = plan.side_points(k);
-        side_sum += (long long)s.size() - 4;
+        side_sum += (long long)(plan.side_points(k).size() + plan.side_crossings(k).size()) - 4;
     }
     JsonObject idx;
     idx.str("format", "erd-tiles-index 1").str("raster", plan.raster).str("method", plan.method);
