@@ -434,24 +434,22 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
         const double strong = real ? kStrongStep * (hi - lo) : double(std::max(1, int(kStrongStep * double(maxval) + 0.5)));
         plan->vcross.assign(plan->vborder.size(), std::vector<std::vector<int>>(std::size_t(g.ny)));
         plan->hcross.assign(plan->hborder.size(), std::vector<std::vector<int>>(std::size_t(g.nx)));
+        // The crossings of the border a0 .. a1 of `line` (before, after: its neighbours in the band).
+        auto crossings = [&](const std::vector<double>& line, const std::vector<double>& before, const std::vector<double>& after,
+                             int a0, int a1) {
+            auto piece = [&](const std::vector<double>& l) { return std::vector<double>(l.begin() + a0, l.begin() + a1 + 1); };
+            std::vector<int> c = profile_crossings(piece(line), piece(before), piece(after), strong);
+            border += std::int64_t(c.size());
+            return c;
+        };
         for (int i = 1; i < g.nx; ++i)
-            for (int j = 0; j < g.ny; ++j) {
-                auto piece = [&](const std::vector<double>& line) {
-                    return std::vector<double>(line.begin() + g.row(j), line.begin() + g.row(j + 1) + 1);
-                };
-                plan->vcross[std::size_t(i)][std::size_t(j)] =
-                    profile_crossings(piece(cols[std::size_t(i)]), piece(scan.near_cols[std::size_t(2 * i)]), piece(scan.near_cols[std::size_t(2 * i + 1)]), strong);
-                border += std::int64_t(plan->vcross[std::size_t(i)][std::size_t(j)].size());
-            }
+            for (int j = 0; j < g.ny; ++j)
+                plan->vcross[std::size_t(i)][std::size_t(j)] = crossings(cols[std::size_t(i)], scan.near_cols[std::size_t(2 * i)],
+                                                                         scan.near_cols[std::size_t(2 * i + 1)], g.row(j), g.row(j + 1));
         for (int j = 1; j < g.ny; ++j)
-            for (int i = 0; i < g.nx; ++i) {
-                auto piece = [&](const std::vector<double>& line) {
-                    return std::vector<double>(line.begin() + g.column(i), line.begin() + g.column(i + 1) + 1);
-                };
-                plan->hcross[std::size_t(j)][std::size_t(i)] =
-                    profile_crossings(piece(rows[std::size_t(j)]), piece(scan.near_rows[std::size_t(2 * j)]), piece(scan.near_rows[std::size_t(2 * j + 1)]), strong);
-                border += std::int64_t(plan->hcross[std::size_t(j)][std::size_t(i)].size());
-            }
+            for (int i = 0; i < g.nx; ++i)
+                plan->hcross[std::size_t(j)][std::size_t(i)] = crossings(rows[std::size_t(j)], scan.near_rows[std::size_t(2 * j)],
+                                                                         scan.near_rows[std::size_t(2 * j + 1)], g.column(i), g.column(i + 1));
     }
     if (border > N)
         return Status::bad_input(escape_name(in) + ": the tiles' borders take " + std::to_string(border) + " of the " +

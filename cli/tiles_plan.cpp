@@ -15,32 +15,31 @@ void TilesPlan::window(int k, int* x0, int* y0, int* x1, int* y1) const {
     *y1 = grid.row(j + 1);
 }
 
-std::vector<LatticePoint> TilesPlan::side_points(int k) const {
-    const int i = k % grid.nx, j = k / grid.nx;
+namespace {
+
+using Lines = std::vector<std::vector<std::vector<int>>>;
+
+// Tile k's entries of v (its left and right vertical lines) and h (its top and bottom lines) as
+// points on its sides, doubled: offset o at 2 o + odd.
+std::vector<LatticePoint> on_sides(const TilesPlan& p, int k, const Lines& v, const Lines& h, int odd) {
+    const int i = k % p.grid.nx, j = k / p.grid.nx;
     int x0, y0, x1, y1;
-    window(k, &x0, &y0, &x1, &y1);
+    p.window(k, &x0, &y0, &x1, &y1);
     const std::int32_t mx = 2 * (x1 - x0), my = 2 * (y1 - y0);
     std::vector<LatticePoint> pts;
-    for (int o : vborder[std::size_t(i)][std::size_t(j)]) pts.push_back({0, 2 * o});
-    for (int o : vborder[std::size_t(i + 1)][std::size_t(j)]) pts.push_back({mx, 2 * o});
-    for (int o : hborder[std::size_t(j)][std::size_t(i)]) pts.push_back({2 * o, 0});
-    for (int o : hborder[std::size_t(j + 1)][std::size_t(i)]) pts.push_back({2 * o, my});
+    if (v.empty()) return pts;
+    for (int o : v[std::size_t(i)][std::size_t(j)]) pts.push_back({0, 2 * o + odd});
+    for (int o : v[std::size_t(i + 1)][std::size_t(j)]) pts.push_back({mx, 2 * o + odd});
+    for (int o : h[std::size_t(j)][std::size_t(i)]) pts.push_back({2 * o + odd, 0});
+    for (int o : h[std::size_t(j + 1)][std::size_t(i)]) pts.push_back({2 * o + odd, my});
     return pts;
 }
 
-std::vector<LatticePoint> TilesPlan::side_crossings(int k) const {
-    const int i = k % grid.nx, j = k / grid.nx;
-    int x0, y0, x1, y1;
-    window(k, &x0, &y0, &x1, &y1);
-    const std::int32_t mx = 2 * (x1 - x0), my = 2 * (y1 - y0);
-    std::vector<LatticePoint> pts;
-    if (vcross.empty()) return pts;
-    for (int o : vcross[std::size_t(i)][std::size_t(j)]) pts.push_back({0, 2 * o + 1});
-    for (int o : vcross[std::size_t(i + 1)][std::size_t(j)]) pts.push_back({mx, 2 * o + 1});
-    for (int o : hcross[std::size_t(j)][std::size_t(i)]) pts.push_back({2 * o + 1, 0});
-    for (int o : hcross[std::size_t(j + 1)][std::size_t(i)]) pts.push_back({2 * o + 1, my});
-    return pts;
-}
+}  // namespace
+
+std::vector<LatticePoint> TilesPlan::side_points(int k) const { return on_sides(*this, k, vborder, hborder, 0); }
+
+std::vector<LatticePoint> TilesPlan::side_crossings(int k) const { return on_sides(*this, k, vcross, hcross, 1); }
 
 std::string TilesPlan::tile_name(int k) const {
     return "tile_" + std::to_string(k / grid.nx) + "_" + std::to_string(k % grid.nx);
