@@ -32,6 +32,14 @@ void all_pixels(const Image& im, Cdt* cdt) {
     REQUIRE(cdt->insert_points(pts, &ids).ok());
 }
 
+// A CDT of every k-th pixel of im in scan order; *ids their vertices.
+void every_kth_pixel(const Image& im, int k, Cdt* cdt, std::vector<VertInd>* ids) {
+    REQUIRE(cdt->reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
+    std::vector<LatticePoint> pts;
+    for (int i = 0; i < im.width * im.height; i += k) pts.push_back(LatticePoint{2 * (i % im.width), 2 * (i / im.width)});
+    REQUIRE(cdt->insert_points(pts, ids).ok());
+}
+
 // The error of the mesh scanned from scratch (a fresh remover's face sums).
 double fresh_error(Cdt& cdt, const Image& im, RemovalModel& model, bool round) {
     PointRemover r(cdt, im, model, round);
@@ -101,11 +109,8 @@ TEST_CASE("removal: significance is the error change of the kernel's removal", "
 TEST_CASE("removal: face errors from the refit's systems are the scanned ones", "[removal]") {
     const Image im = erd_test::synth_image(41, 29, 8, 11);
     Cdt cdt;
-    REQUIRE(cdt.reset(2 * 40, 2 * 28).ok());
-    std::vector<LatticePoint> pts;
-    for (int i = 0; i < 41 * 29; i += 5) pts.push_back(LatticePoint{2 * (i % 41), 2 * (i / 41)});
     std::vector<VertInd> ids;
-    REQUIRE(cdt.insert_points(pts, &ids).ok());
+    every_kth_pixel(im, 5, &cdt, &ids);
     REQUIRE(cdt.insert_constraint(ids[3], ids[40]).ok());  // a wedge pair or two
     ErdModel model(im, WedgeValueOptions{});
     model.assign_all(cdt);
@@ -199,12 +204,8 @@ TEST_CASE("bad-point replacement never raises the error it measures, and keeps t
     const Image im = erd_test::synth_image(60, 44, 8, 6);
     for (bool round : {true, false}) {
         Cdt cdt;
-        REQUIRE(cdt.reset(2 * 59, 2 * 43).ok());
-        // A poor start: every 7th pixel in scan order.
-        std::vector<LatticePoint> pts;
-        for (int i = 0; i < 60 * 44; i += 7) pts.push_back(LatticePoint{2 * (i % 60), 2 * (i / 60)});
         std::vector<VertInd> ids;
-        REQUIRE(cdt.insert_points(pts, &ids).ok());
+        every_kth_pixel(im, 7, &cdt, &ids);  // a poor start
         const std::size_t n = cdt.live_vertex_count();
         SampleRemovalModel model(im);
         const double before = fresh_error(cdt, im, model, round);

@@ -55,23 +55,24 @@ std::vector<std::vector<double>> ErdChannels::values() const {
     return out;
 }
 
+void ErdChannels::views(std::vector<const Image*>* planes, std::vector<const ErdModel*>* models) const {
+    for (std::size_t c = 0; c < models_.size(); ++c) {
+        planes->push_back(&planes_[c]);
+        models->push_back(models_[c].get());
+    }
+}
+
 void ErdChannels::flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const {
     std::vector<const Image*> planes;
     std::vector<const ErdModel*> models;
-    for (std::size_t c = 0; c < models_.size(); ++c) {
-        planes.push_back(&planes_[c]);
-        models.push_back(models_[c].get());
-    }
+    views(&planes, &models);
     improve_by_flips(cdt, planes, models, max_flips, stats, seed_faces);
 }
 
 void ErdChannels::move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats) const {
     std::vector<const Image*> planes;
     std::vector<const ErdModel*> models;
-    for (std::size_t c = 0; c < models_.size(); ++c) {
-        planes.push_back(&planes_[c]);
-        models.push_back(models_[c].get());
-    }
+    views(&planes, &models);
     improve_by_moves(cdt, planes, models, step, min_gain, stats);
 }
 

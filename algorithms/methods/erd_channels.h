@@ -52,6 +52,9 @@ public:
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 
 private:
+    // Each channel's plane and model, appended in channel order (the flips' and moves' inputs).
+    void views(std::vector<const Image*>* planes, std::vector<const ErdModel*>* models) const;
+
     std::vector<Image> planes_;  // sized once: the models keep references into it
     std::vector<std::unique_ptr<ErdModel>> models_;
 };
