@@ -5,9 +5,10 @@
 namespace erd {
 
 Status erd_remove_to(Cdt* cdt, const Image& image, RemovalModel& model, std::size_t n, bool lazy,
-                     const ProgressHook& progress, RemovalRunStats* stats, const MeshSystems* systems) {
+                     const ProgressHook& progress, RemovalRunStats* stats, MeshSystems* systems) {
     {
         PointRemover remover(*cdt, image, model, false, systems);
+        if (systems) *systems = MeshSystems();  // read: their memory back before the removals
         remover.lazy = lazy;
         if (stats->start == 0) stats->start = cdt->live_vertex_count();
         remover.start();

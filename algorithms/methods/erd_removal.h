@@ -64,8 +64,8 @@ private:
 
 // Removes vertices of *cdt by least significance under `model` until n remain (real-valued errors,
 // lazy as `lazy` says), then replaces *cdt by its compact copy (compact_cdt). The caller assigns
-// the wedge values of the compact mesh. Adds to *stats. systems: PointRemover's.
+// the wedge values of the compact mesh. Adds to *stats. systems: PointRemover's (emptied once read).
 Status erd_remove_to(Cdt* cdt, const Image& image, RemovalModel& model, std::size_t n, bool lazy,
-                     const ProgressHook& progress, RemovalRunStats* stats, const MeshSystems* systems = nullptr);
+                     const ProgressHook& progress, RemovalRunStats* stats, MeshSystems* systems = nullptr);
 
 }  // namespace erd

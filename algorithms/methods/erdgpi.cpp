@@ -151,7 +151,6 @@ Status erdgpi_run(const Image& image, const GenerateOptions& options, bool hard_
                 ErdRemovalModel rm(*m);
                 st = erd_remove_to(&cdt, image, rm, to, options.removal_lazy, options.progress, &result->stats.removal,
                                    &systems);
-                systems = MeshSystems();
                 if (!st) return st;
                 auto fresh = std::make_unique<ErdModel>(image, wedge_options(options));
                 fresh->take_mmsodd(*m);
