@@ -32,6 +32,16 @@ double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, 
         const EdgeInd e = 3 * f;
         const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
         const SpanPlane plane = model.face_plane(cdt, f);
+        if (!systems) {  // measure only: no barycentric planes
+            for_each_owned_row(Lattice::pixels(), domain, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+                const std::size_t row = std::size_t(j) * W;
+                const double Y = double(2 * j);
+                for (std::int32_t i = lo; i <= hi; ++i)
+                    if (!ok || ok[row + std::size_t(i)])
+                        emax = std::max(emax, std::fabs(image.reals[row + std::size_t(i)] - plane.at(double(2 * i), Y)));
+            });
+            continue;
+        }
         SpanPlane l0, l1;
         l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
         l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
@@ -45,7 +55,6 @@ double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, 
                 const double X = double(2 * i), b = image.reals[row + std::size_t(i)];
                 const double err = b - plane.at(X, Y);
                 emax = std::max(emax, std::fabs(err));
-                if (!systems) continue;
                 double w = std::fabs(err) * inv;
                 for (int k = 0; k < squarings; ++k) w *= w;
                 w = w > kFloor ? w : kFloor;
@@ -63,7 +72,6 @@ double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, 
                 owns = true;
             }
         });
-        if (!systems) continue;
         fs.owns = owns;
         for (int k = 0; k < 3; ++k) fs.entry[k] = model.corner_entry(cdt, e + EdgeInd(k));
         (*systems)[f] = fs;
@@ -110,6 +118,10 @@ double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int roun
     for (std::size_t i = 0; i < kept.size(); ++i) model->set_entry_value(i, kept[i]);
     progress("minimax fit", 1.0);
     return best;
+}
+
+double largest_error(const Cdt& cdt, const Image& image, const ErdModel& model) {
+    return image.real() ? weighted_pass(cdt, image, model, 0, 1.0, nullptr) : -1.0;
 }
 
 }  // namespace erd

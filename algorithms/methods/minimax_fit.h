@@ -22,4 +22,8 @@ namespace erd {
 // values it was given when none was better).
 double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress = {});
 
+// The largest error over the valid pixels of the real image of model on cdt, each pixel evaluated
+// on the face that owns it (as reconstruct evaluates a real model's pixels); -1 for an integer image.
+double largest_error(const Cdt& cdt, const Image& image, const ErdModel& model);
+
 }  // namespace erd

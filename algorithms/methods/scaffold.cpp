@@ -284,7 +284,12 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         mo.outline = &outline;
         mo.near_nodata = &near;
     }
-    if (image.real() && options.max_error >= 0) mo.min_step = options.min_step_factor * options.max_error;
+    if (image.real() && options.max_error >= 0) {
+        mo.min_step = options.min_step_factor * options.max_error;
+        // The cliff test (min_step) decides which edges count: no simple-image test, whose own
+        // edge detection was half of step 1 (DECISIONS.md "Rasters").
+        if (mo.request.simple < 0 && options.min_step_factor > 0) mo.request.simple = 1;
+    }
     if (image.channels > 1 && options.colour.edges != ColourGradient::luma) {
         mo.colour = &image;
         mo.colour_gradient = options.colour.edges;
@@ -444,7 +449,9 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
     finish_raster_model(image, &result->model, &result->stats);
     finish_erd_stats(mesh, model, timer, result);
-    measure_max_error(image, result->model, options, result);
+    // The model's own planes on the mesh, as its reconstruction evaluates them (faces over nodata
+    // own no valid pixel): half the cost of reconstructing the model file's (issue 47 speed).
+    if (real && options.max_error >= 0) result->stats.raster.max_error = largest_error(cdt, image, *model);
     return Status::success();
 }
 
