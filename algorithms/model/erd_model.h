@@ -76,7 +76,7 @@ public:
     void pin_pixel_vertices(const Cdt& cdt, double bound);
 
     // Number of stored wedges of v (0 when never assigned).
-    std::uint32_t wedge_count(VertInd v) const { return v < count_.size() ? count_[v] : 0; }
+    std::uint32_t wedge_count(VertInd v) const { return v < slots_.size() ? slots_[v].count : 0; }
     // The value of the wedge with id `id` of v, or of its only wedge. NaN when v has no such wedge.
     double wedge_value(VertInd v, WedgeId id) const;
     // The wedge value at corner e (a half-edge leaving v): the value of the wedge face e/3 lies in.
@@ -141,8 +141,13 @@ private:
     double smoothed_pixel(int u, int v) const;  // S of algorithms/mmsodd.h at pixel (u, v)
     int stencil_radius_ = -1;  // radius of taps_b_ (the binomial); < 0 until the first use
     std::vector<double> taps_b_;
-    std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
-    std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
+    // Per vertex: the index of its first entry and the number of its entries (wedges), side by
+    // side: a corner's value reads one slot (one cache line) before its entry.
+    struct Slot {
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;
+    };
+    std::vector<Slot> slots_;
     std::vector<Entry> entries_;
     std::vector<Wedge> scratch_;
     std::vector<EdgeInd> star_;
