@@ -117,11 +117,16 @@ void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {
     if (cdt.wedge_count(v) <= 1) {
         const LatticePoint p = cdt.point(v);
         entries_.push_back({kOnlyWedge, bilinear_doubled(phi_, p.x, p.y)});
+        entry_vertex_.push_back(v);
         slots_[v].count = 1;
+        slots_[v].value = entries_.back().value;
         return;
     }
     cdt.wedges(v, &scratch_);
-    for (const Wedge& w : scratch_) entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
+    for (const Wedge& w : scratch_) {
+        entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
+        entry_vertex_.push_back(v);
+    }
     slots_[v].count = std::uint32_t(scratch_.size());
     if (phi_.real()) pin_pixel(cdt, v);
 }
@@ -133,7 +138,7 @@ void ErdModel::pin_pixel(const Cdt& cdt, VertInd v, double bound) {
     if (!phi_.valid.empty() && !phi_.valid[px]) return;
     const double z = phi_.reals[px];
     if (slots_[v].count == 1) {
-        if (bound < 0 || std::fabs(entries_[slots_[v].first].value - z) > bound) entries_[slots_[v].first].value = z;
+        if (bound < 0 || std::fabs(entries_[slots_[v].first].value - z) > bound) set_entry_value(slots_[v].first, z);
         return;
     }
     // The wedge of the face that owns the vertex's pixel (kernel/raster.h).
@@ -165,6 +170,8 @@ void ErdModel::assign_all(const Cdt& cdt) {
     slots_.assign(n, Slot());
     entries_.clear();
     entries_.reserve(n + n / 4);
+    entry_vertex_.clear();
+    entry_vertex_.reserve(n + n / 4);
     for (std::size_t v = 0; v < n; ++v) assign_vertex(cdt, VertInd(v));
 }
 
@@ -197,7 +204,7 @@ std::uint32_t ErdModel::multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) 
 double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
     if (v >= slots_.size() || slots_[v].count == 0) return std::numeric_limits<double>::quiet_NaN();
-    if (slots_[v].count == 1) return entries_[slots_[v].first].value;
+    if (slots_[v].count == 1) return slots_[v].value;
     const std::uint32_t i = multi_wedge_entry(cdt, v, e);
     return i == kNoEntry ? std::numeric_limits<double>::quiet_NaN() : entries_[i].value;
 }

@@ -96,7 +96,11 @@ public:
     std::uint32_t corner_entry(const Cdt& cdt, EdgeInd e) const;
     std::size_t entry_count() const { return entries_.size(); }
     double entry_value(std::size_t i) const { return entries_[i].value; }
-    void set_entry_value(std::size_t i, double z) { entries_[i].value = z; }
+    void set_entry_value(std::size_t i, double z) {
+        entries_[i].value = z;
+        Slot& s = slots_[entry_vertex_[i]];
+        if (s.count == 1 && s.first == i) s.value = z;  // a vertex's only value, kept in its slot too
+    }
 
     // The line search's MMSODD at pixel (x, y) inside the image when no grid was supplied: the
     // filters of mmsodd(phi, smoothing_order) with zero borders at that pixel, computed on first
@@ -141,14 +145,17 @@ private:
     double smoothed_pixel(int u, int v) const;  // S of algorithms/mmsodd.h at pixel (u, v)
     int stencil_radius_ = -1;  // radius of taps_b_ (the binomial); < 0 until the first use
     std::vector<double> taps_b_;
-    // Per vertex: the index of its first entry and the number of its entries (wedges), side by
-    // side: a corner's value reads one slot (one cache line) before its entry.
+    // Per vertex: the index of its first entry, the number of its entries (wedges) and, for a
+    // vertex of one wedge, a copy of its value: a corner's value then reads the slot alone (one
+    // cache line; the entry's load missed the cache on 1-2 pixel faces: docs/log/dem-speed.md).
     struct Slot {
         std::uint32_t first = 0;
         std::uint32_t count = 0;
+        double value = 0;
     };
     std::vector<Slot> slots_;
     std::vector<Entry> entries_;
+    std::vector<VertInd> entry_vertex_;  // per entry: its vertex (set_entry_value's slot copy)
     std::vector<Wedge> scratch_;
     std::vector<EdgeInd> star_;
     Stats stats_;
