@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# `make fuzz-campaign`: every fuzz target (or the ones named) for SECONDS each, on a corpus kept
-# from run to run, two targets at a time with -j 2. Per target it prints the executions, the kept
+# `make fuzz-campaign`: every fuzz target (or the ones named) for SECONDS of its own CPU time each
+# (so a campaign on a shared machine fuzzes as long as on a quiet one; the wall time is printed
+# beside it), on a corpus kept from run to run, two targets at a time with -j 2. Per target it prints the executions, the kept
 # corpus's size, the findings (crash, leak, timeout and out-of-memory inputs) and the seeds it
 # merged back; at the end a table for docs/HOSTILE.md.
 #
@@ -62,11 +63,14 @@ campaign() {
     rm -rf "$dir"; mkdir -p "$dir" "$corpus"
     local dict=""; [[ -f fuzz/$n.dict ]] && dict="-dict=fuzz/$n.dict"
     local seed_dirs=(); [[ -d $seeds ]] && seed_dirs=("$seeds")
-    local t0=$SECONDS left=$SECONDS_EACH execs=0 starts=0 e before findings=0
-    while (( left > 0 && starts < 20 )); do
+    # The CPU clock: a start runs for the CPU seconds left as wall seconds (wall >= CPU, so it never
+    # overshoots), then what it used is counted, and the next start takes the rest.
+    local t0=$SECONDS left=$SECONDS_EACH execs=0 starts=0 e before findings=0 cpu=0 used
+    while (( left > 0 && starts < 100 )); do
         starts=$((starts + 1))
         before=$findings
-        $B/$n "$corpus" "${seed_dirs[@]}" $dict -max_total_time="$left" -artifact_prefix="$dir/" \
+        /usr/bin/time -f "%U %S" -o "$dir/start.cpu" \
+            $B/$n "$corpus" "${seed_dirs[@]}" $dict -max_total_time="$left" -artifact_prefix="$dir/" \
             -malloc_limit_mb=2048 -rss_limit_mb=4096 -timeout=10 -print_final_stats=1 >"$dir/start.log" 2>&1
         # Executions: the final statistics (printed on a crash too), else the last status line.
         e=$(grep -E '^stat::number_of_executed_units' "$dir/start.log" | tail -1 | awk '{print $2}')
@@ -74,11 +78,16 @@ campaign() {
         execs=$((execs + ${e:-0}))
         { cat "$dir/start.log"; echo "== start $starts ended (${e:-0} executions)"; } >>"$dir/log"
         rm -f "$dir/start.log"
-        left=$((SECONDS_EACH - (SECONDS - t0)))
+        used=$(awk '{ printf "%d", $1 + $2 }' "$dir/start.cpu" 2>/dev/null)
+        cpu=$((cpu + ${used:-0}))
+        rm -f "$dir/start.cpu"
+        left=$((SECONDS_EACH - cpu))
         findings=$(ls "$dir" | grep -cE '^(crash|leak|timeout|oom)-')
-        (( findings > before )) || break  # the time is up (or it stopped without a finding)
+        (( findings > 20 )) && break  # one bug found over and over: fix it first
+        (( findings == before && ${used:-0} < 1 )) && break  # it could not run: see the log
+        (( left < 30 )) && break  # the rest is start-up
     done
-    local fuzzed=$((SECONDS - t0))
+    local fuzzed=$cpu wall=$((SECONDS - t0))
     # Inputs of the kept corpus that reach coverage the seeds do not: merged into a copy of the
     # seeds, the new files are the ones merge added.
     local merged=0
@@ -98,10 +107,10 @@ campaign() {
                      s=$(stat -c %s "$f"); (( s <= MERGE_BYTES )) && echo "$s $f"; done | sort -n | cut -d' ' -f2-)
         rm -rf "$m" "$dir/seeds.list"
     fi
-    echo "$execs $(ls "$corpus" | wc -l) $findings $merged $starts $fuzzed" >"$dir/result"
+    echo "$execs $(ls "$corpus" | wc -l) $findings $merged $starts $fuzzed $wall" >"$dir/result"
 }
 
-echo "fuzz campaign: ${#names[@]} targets, $SECONDS_EACH s each, $jobs at a time; kept corpus $KEPT"
+echo "fuzz campaign: ${#names[@]} targets, $SECONDS_EACH CPU s each, $jobs at a time; kept corpus $KEPT"
 running=0
 for n in "${names[@]}"; do
     [[ -z $n ]] && continue
@@ -111,12 +120,12 @@ for n in "${names[@]}"; do
 done
 wait
 
-table="| target | hours | executions | corpus | findings |"$'\n'"| --- | --- | --- | --- | --- |"
+table="| target | CPU hours | wall hours | executions | corpus | findings |"$'\n'"| --- | --- | --- | --- | --- | --- |"
 for n in "${names[@]}"; do
     [[ -z $n ]] && continue
     if [[ ! -f $OUT/$n/result ]]; then echo "FAIL $n (no result; see $OUT/$n/log)"; status=1; continue; fi
-    read -r execs corpus findings merged starts secs <"$OUT/$n/result"
-    line="$n: $secs s, $execs executions, corpus $corpus, $findings findings, $merged new seeds"
+    read -r execs corpus findings merged starts secs wall <"$OUT/$n/result"
+    line="$n: $secs CPU s ($wall s wall), $execs executions, corpus $corpus, $findings findings, $merged new seeds"
     if (( findings > 0 )); then
         status=1
         echo "FOUND $line"
@@ -126,7 +135,7 @@ for n in "${names[@]}"; do
         echo "PASS $line"
     fi
     what=$findings; (( findings == 0 )) && what=0
-    table+=$'\n'"| $n | $(awk -v s="$secs" 'BEGIN { printf "%.2f", s / 3600 }') | $execs | $corpus | $what |"
+    table+=$'\n'"| $n | $(awk -v s="$secs" 'BEGIN { printf "%.2f", s / 3600 }') | $(awk -v s="$wall" 'BEGIN { printf "%.2f", s / 3600 }') | $execs | $corpus | $what |"
 done
 echo "$table" >"$OUT/table.md"
 echo
