@@ -14,7 +14,9 @@
 
 #include "algorithms/imaging/real_image.h"
 #include "algorithms/imaging/valid_region.h"
+#include "algorithms/methods/greedy_models.h"
 #include "algorithms/methods/methods.h"
+#include "algorithms/methods/minimax_fit.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
@@ -316,6 +318,42 @@ TEST_CASE("--max-error on a real image is a bound on the model, for every method
         // the last bits), the others on the reconstruction.
         CHECK(res.stats.raster.max_error == Approx(e).epsilon(1e-12));
     }
+}
+
+TEST_CASE("greedy on a real image with the pixel owners: the same mesh, and the owners kept", "[real]") {
+    const Image im = terrain(60, 44, true);
+    // A coarse mesh first (the state the last insertions of ERDGPI start from), then the same
+    // continuation without and with the owner map.
+    erd::Cdt start;
+    REQUIRE(start.reset(2 * im.width - 2, 2 * im.height - 2).ok());
+    erd::ErdModel m0(im, erd::WedgeValueOptions{});
+    m0.assign_all(start);
+    erd::ErdGreedyModel g0(m0);
+    erd::GreedyOptions go;
+    go.round_values = false;
+    go.max_error_first = true;
+    go.max_error = 2.0;
+    go.target_vertices = im.pixels();
+    erd::GreedyStats gs;
+    REQUIRE(erd::greedy_refine(start, im, g0, go, &gs).ok());
+    go.max_error = 0.3;
+    erd::Cdt plain = start, mapped = start;
+    erd::ErdModel mp(im, erd::WedgeValueOptions{}), mm(im, erd::WedgeValueOptions{});
+    mp.assign_all(plain);
+    mm.assign_all(mapped);
+    erd::ErdGreedyModel gp(mp), gm(mm);
+    erd::GreedyStats sp, sm;
+    REQUIRE(erd::greedy_refine(plain, im, gp, go, &sp).ok());
+    std::vector<erd::FaceInd> owners = erd::pixel_owners(mapped, im);
+    go.owners = &owners;
+    REQUIRE(erd::greedy_refine(mapped, im, gm, go, &sm).ok());
+    CHECK(sm.insertions > 100);
+    CHECK(sm.insertions == sp.insertions);
+    CHECK(sm.total_squared_error == sp.total_squared_error);
+    CHECK(mapped.points() == plain.points());
+    CHECK(owners == erd::pixel_owners(mapped, im));  // every re-scan kept them
+    CHECK(erd::largest_error(mapped, im, mm, &owners) == erd::largest_error(plain, im, mp));
+    CHECK(erd::largest_error(mapped, im, mm) <= 0.3);
 }
 
 TEST_CASE("ERD step 1 on a real image with --max-error: no simple-image test, the cliff test decides", "[real]") {

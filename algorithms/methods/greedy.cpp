@@ -71,7 +71,9 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         touched_.clear();
     }
-    for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
+    if (by_owner()) scan_all_by_owner();
+    else
+        for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
 
     GreedyStop stop;
     std::vector<FaceInd> dirty;

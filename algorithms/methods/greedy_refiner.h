@@ -94,6 +94,14 @@ private:
     // pixels without data left out (greedy_real.cpp).
     [[gnu::noinline]] void rescan_real(FaceInd f);
 
+    // Every face scanned as rescan_real would, face after face, from GreedyOptions::owners: one
+    // sweep of the rows, each span on its face's plane (greedy_real.cpp).
+    void scan_all_by_owner();
+    bool by_owner() const {
+        return real_ && channels_ == 1 && options_.owners &&
+               options_.owners->size() == std::size_t(image_.width) * std::size_t(image_.height);
+    }
+
     // rescan for a colour image: every channel's plane by point evaluation, stepped along each
     // span (rounded and clamped as reconstruction writes it when round_values). The candidate
     // metric is the sum of squared channel errors or the largest squared channel error.

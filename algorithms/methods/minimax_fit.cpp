@@ -20,7 +20,7 @@ constexpr double kFloor = 0.1;
 
 // The face that owns each pixel (noFace outside every face): one scan of the mesh, which the
 // passes below then read pixel by pixel instead of scanning every face again.
-std::vector<FaceInd> pixel_owners(const Cdt& cdt, const Image& image) {
+std::vector<FaceInd> owners_of(const Cdt& cdt, const Image& image) {
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
     const std::size_t W = std::size_t(image.width);
     std::vector<FaceInd> owner(W * std::size_t(image.height), noFace);
@@ -92,7 +92,10 @@ double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, 
 
 }  // namespace
 
-double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress) {
+std::vector<FaceInd> pixel_owners(const Cdt& cdt, const Image& image) { return owners_of(cdt, image); }
+
+double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress,
+                   const std::vector<FaceInd>* owners) {
     if (!image.real()) return -1.0;
     std::vector<double> kept(model->entry_count()), start(model->entry_count());
     for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = model->entry_value(i);
@@ -105,7 +108,9 @@ double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int roun
     // them; a last pass without weights measures the last round's.
     double best = 0, last = 0;
     double e_norm = 0;
-    const std::vector<FaceInd> owner = pixel_owners(cdt, image);  // the mesh stays as it is
+    std::vector<FaceInd> own;  // the mesh stays as it is: one map for every pass
+    if (!owners) own = owners_of(cdt, image);
+    const std::vector<FaceInd>& owner = owners ? *owners : own;
     for (int r = 0; r <= rounds; ++r) {
         progress("minimax fit", double(r) / double(rounds + 1));
         // The first pass has no weights yet: it measures only.
@@ -132,8 +137,9 @@ double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int roun
     return best;
 }
 
-double largest_error(const Cdt& cdt, const Image& image, const ErdModel& model) {
-    return image.real() ? weighted_pass(cdt, image, model, pixel_owners(cdt, image), 0, 1.0, nullptr) : -1.0;
+double largest_error(const Cdt& cdt, const Image& image, const ErdModel& model, const std::vector<FaceInd>* owners) {
+    if (!image.real()) return -1.0;
+    return weighted_pass(cdt, image, model, owners ? *owners : owners_of(cdt, image), 0, 1.0, nullptr);
 }
 
 }  // namespace erd
