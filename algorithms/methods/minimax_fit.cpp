@@ -45,15 +45,12 @@ double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, 
     const std::uint8_t* ok = image.valid.empty() ? nullptr : image.valid.data();
     const double inv = e_norm > 0 ? 1.0 / e_norm : 0.0;
     const std::size_t F = cdt.face_count();
-    std::vector<SpanPlane> planes(F), l0(systems ? F : 0), l1(systems ? F : 0);
-    for (FaceInd f = 0; f < F; ++f) {
-        planes[f] = model.face_plane(cdt, f);
-        if (!systems) continue;
-        const EdgeInd e = 3 * f;
-        const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
-        l0[f].set(p0, 1.0, p1, 0.0, p2, 0.0);
-        l1[f].set(p0, 0.0, p1, 1.0, p2, 0.0);
-    }
+    std::vector<SpanPlane> planes(F);
+    for (FaceInd f = 0; f < F; ++f) planes[f] = model.face_plane(cdt, f);
+    // The barycentric planes of the face of the current run of pixels (made per run, not kept
+    // per face: 80 bytes a face of peak memory).
+    SpanPlane l0, l1;
+    FaceInd lf = noFace;
     double emax = 0;
     if (systems) systems->assign(F, FaceSystem());
     for (std::size_t j = 0; j < H; ++j) {
@@ -69,7 +66,14 @@ double weighted_pass(const Cdt& cdt, const Image& image, const ErdModel& model, 
             double w = std::fabs(err) * inv;
             for (int k = 0; k < squarings; ++k) w *= w;
             w = w > kFloor ? w : kFloor;
-            const double w0 = l0[f].at(X, Y), w1 = l1[f].at(X, Y), w2 = 1.0 - w0 - w1;
+            if (f != lf) {
+                const EdgeInd e = 3 * f;
+                const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
+                l0.set(p0, 1.0, p1, 0.0, p2, 0.0);
+                l1.set(p0, 0.0, p1, 1.0, p2, 0.0);
+                lf = f;
+            }
+            const double w0 = l0.at(X, Y), w1 = l1.at(X, Y), w2 = 1.0 - w0 - w1;
             FaceSystem& fs = (*systems)[f];
             fs.g[0] += w * w0 * w0;
             fs.g[1] += w * w0 * w1;
