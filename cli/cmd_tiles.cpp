@@ -25,7 +25,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/codec/erdz.h"
@@ -155,6 +157,141 @@ Status tile_options(const TilesPlan& plan, GenerateOptions* o) {
     return st ? st : Status::bad_input("plan: " + st.message);
 }
 
+// --plan's one pass over the raster, a row at a time: the border lines' samples (cols: vertical
+// line i's column, rows: horizontal line j's row), the range, and each tile's weight, the sum over
+// its pixels of |second difference|^(1/2) (the larger of x and y). V is the samples' type in the
+// row ring: std::int32_t for an integer raster (exact differences; h^(1/2) from a table of the
+// 4 maxval + 1 possible h), double for a real one. Each tile's
+// sum is added pixel by pixel in x then y order, so the weights are the doubles of a plain
+// per-pixel loop in doubles (plan.txt byte-identical; docs/log/tiles.md has the counts).
+struct BorderScan;
+
+// The row loops of --plan's scan, in blocks of a fixed width, which GCC's cheapest vectoriser
+// (-O2) takes. Each pixel's differences are its own; the range of an integer row is exact in any
+// order, a real row's goes pixel by pixel (a NaN must not change which value is the smallest).
+constexpr std::size_t kBlock = 16;
+
+// dst[0..n) = src, *lo and *hi lowered and raised to its range.
+template <class V, class S>
+void load_row(const S* __restrict src, V* __restrict dst, std::size_t n, V* lo, V* hi) {
+    V l = *lo, u = *hi;
+    std::size_t x = 0;
+    if constexpr (std::is_integral_v<S>) {
+        for (; x + kBlock <= n; x += kBlock) {
+            V bl = l, bu = u;
+            for (std::size_t t = 0; t < kBlock; ++t) {
+                const V v = V(src[x + t]);
+                dst[x + t] = v;
+                bl = std::min(bl, v);
+                bu = std::max(bu, v);
+            }
+            l = bl, u = bu;
+        }
+    }
+    for (; x < n; ++x) {
+        const V v = V(src[x]);
+        dst[x] = v;
+        l = std::min(l, v);
+        u = std::max(u, v);
+    }
+    *lo = l, *hi = u;
+}
+
+// h[x] = the larger |second difference| at x of row b (along it, and across rows a, b, c), for
+// 0 < x < n - 1.
+template <class V>
+V larger_second_difference(const V* a, const V* b, const V* c, std::size_t x) {
+    const V hx = b[x - 1] - 2 * b[x] + b[x + 1], hy = a[x] - 2 * b[x] + c[x];
+    const V ax = hx < 0 ? -hx : hx, ay = hy < 0 ? -hy : hy;
+    return ax < ay ? ay : ax;
+}
+
+// One block of h[x] for x = 1 .. kBlock (the caller offsets the rows). Not inlined: inlined into
+// the row loop, GCC -O2 no longer vectorises it (the restrict pointers are lost).
+template <class V>
+[[gnu::noinline]] void second_differences_block(const V* __restrict a, const V* __restrict b, const V* __restrict c, V* __restrict h) {
+    for (int x = 1; x <= int(kBlock); ++x) h[x] = larger_second_difference(a, b, c, std::size_t(x));
+}
+
+template <class V>
+void second_differences(const V* a, const V* b, const V* c, V* h, std::size_t n) {
+    std::size_t x = 1;
+    for (; x + kBlock + 1 <= n; x += kBlock) second_differences_block(a + x - 1, b + x - 1, c + x - 1, h + x - 1);
+    for (; x + 1 < n; ++x) h[x] = larger_second_difference(a, b, c, x);
+}
+
+template <class V>
+struct RowRing {
+    std::vector<V> r0, r1, r2;   // rows y - 2, y - 1, y
+    std::vector<V> h;            // the row's larger |second difference|
+    std::vector<double> root;    // integers: root[h] = h^(1/2)
+    V lo = std::numeric_limits<V>::has_infinity ? std::numeric_limits<V>::infinity() : std::numeric_limits<V>::max();
+    V hi = std::numeric_limits<V>::has_infinity ? -std::numeric_limits<V>::infinity() : std::numeric_limits<V>::lowest();
+    void start(std::uint32_t maxval) {
+        root.resize(4 * std::size_t(maxval) + 1);
+        for (std::size_t k = 0; k < root.size(); ++k) root[k] = std::sqrt(double(k));
+    }
+    template <class S>
+    void row(const S* src, int y, BorderScan* scan);
+};
+
+struct BorderScan {
+    TileGrid g;
+    int T;
+    std::vector<std::vector<double>> cols, rows;
+    // ERD: the lines kCrossingBand samples to either side of the inner lines (crossings go on
+    // across): near_cols[2 i] and [2 i + 1] beside vertical line i, near_rows likewise.
+    bool band = false;
+    std::vector<std::vector<double>> near_cols, near_rows;
+    std::vector<double> weight;
+    RowRing<std::int32_t> ints;
+    RowRing<double> reals;
+    BorderScan(const TileGrid& grid, int t)
+        : g(grid), T(t), cols(std::size_t(g.nx + 1), std::vector<double>(std::size_t(g.height))), rows(std::size_t(g.ny + 1)),
+          weight(std::size_t(g.count()), 0.0) {}
+};
+
+template <class V>
+template <class S>
+void RowRing<V>::row(const S* src, int y, BorderScan* scan) {
+    const TileGrid& g = scan->g;
+    const std::size_t W = std::size_t(g.width);
+    std::swap(r0, r1);
+    std::swap(r1, r2);
+    r2.resize(W);
+    load_row(src, r2.data(), W, &lo, &hi);
+    for (int i = 0; i <= g.nx; ++i) scan->cols[std::size_t(i)][std::size_t(y)] = double(r2[std::size_t(g.column(i))]);
+    for (int j = 0; j <= g.ny; ++j)
+        if (g.row(j) == y) scan->rows[std::size_t(j)].assign(r2.begin(), r2.end());
+    if (scan->band) {
+        for (int i = 1; i < g.nx; ++i)
+            for (int s = 0; s < 2; ++s) {
+                const int x = std::clamp(g.column(i) + (s ? kCrossingBand : -kCrossingBand), 0, g.width - 1);
+                scan->near_cols[std::size_t(2 * i + s)][std::size_t(y)] = double(r2[std::size_t(x)]);
+            }
+        for (int j = 1; j < g.ny; ++j)
+            for (int s = 0; s < 2; ++s)
+                if (std::clamp(g.row(j) + (s ? kCrossingBand : -kCrossingBand), 0, g.height - 1) == y)
+                    scan->near_rows[std::size_t(2 * j + s)].assign(r2.begin(), r2.end());
+    }
+    if (y < 2 || W < 3) return;
+    // The weight of row y - 1.
+    h.resize(W);
+    second_differences(r0.data(), r1.data(), r2.data(), h.data(), W);
+    double* wrow = &scan->weight[std::size_t(std::min((y - 1) / scan->T, g.ny - 1)) * std::size_t(g.nx)];
+    for (int i = 0; i < g.nx; ++i) {
+        const std::size_t x0 = std::max<std::size_t>(1, std::size_t(i) * std::size_t(scan->T));
+        const std::size_t x1 = i == g.nx - 1 ? W - 1 : std::min(W - 1, std::size_t(i + 1) * std::size_t(scan->T));
+        double s = wrow[i];
+        if (!root.empty()) {
+            for (std::size_t x = x0; x < x1; ++x) s += root[std::size_t(h[x])];
+        } else {
+            for (std::size_t x = x0; x < x1; ++x) s += std::sqrt(double(h[x]));
+        }
+        wrow[i] = s;
+    }
+}
+
 // --plan: the raster read once, by bands of rows: the border lines' samples and each tile's weight.
 Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     Status st;
@@ -194,21 +331,18 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     const TileGrid g = make_tile_grid(W, H, T);
     plan->grid = g;
 
-    std::vector<std::vector<double>> cols(std::size_t(g.nx + 1), std::vector<double>(std::size_t(H)));
-    std::vector<std::vector<double>> rows(std::size_t(g.ny + 1));
-    std::vector<double> weight(std::size_t(g.count()), 0.0);
-    const std::size_t Wn = std::size_t(W);
-    std::vector<double> r0(Wn), r1(Wn), r2(Wn);  // rows y-2, y-1, y
-    std::vector<double> pow23;  // h^(1/2) for the integer second differences
-    std::vector<int> tile_of_x(Wn);
-    for (int x = 0; x < W; ++x) tile_of_x[std::size_t(x)] = std::min(x / T, g.nx - 1);
+    BorderScan scan(g, T);
+    if (method->model == ModelKind::erd) {
+        scan.band = true;
+        scan.near_cols.assign(2 * std::size_t(g.nx + 1), std::vector<double>(std::size_t(H)));
+        scan.near_rows.assign(2 * std::size_t(g.ny + 1), std::vector<double>());
+    }
     const int band = std::max(1, int((std::size_t(1) << 22) / std::size_t(W)));
     bool first = true, real = false;
     // The ERD methods' kind of edge, measured once for the raster (the sum of the bands'
     // counts) and given to every tile, unless --edges says.
     const bool erd_method = method->model == ModelKind::erd;
     EdgeKindStats kinds;
-    double lo = INFINITY, hi = -INFINITY;
     std::uint32_t maxval = 0;
     Image im;
     std::string warning;
@@ -219,10 +353,7 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
             real = im.real();
             maxval = im.maxval;
             plan->geo = im.meta.geo;
-            if (!real) {
-                pow23.resize(4 * std::size_t(maxval) + 1);
-                for (std::size_t h = 0; h < pow23.size(); ++h) pow23[h] = std::sqrt(double(h));
-            }
+            if (!real) scan.ints.start(maxval);
             first = false;
         }
         if (im.real() != real) return Status::bad_input(escape_name(in) + ": its windows differ in type");
@@ -233,32 +364,15 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
         if (im.has_holes())
             return Status::bad_input(escape_name(in) + ": a raster with nodata pixels is not tiled (the outline of the valid region would cross the tiles' sides)");
         for (int y = y0; y < y1; ++y) {
-            std::swap(r0, r1);
-            std::swap(r1, r2);
             const std::size_t at = std::size_t(y - y0) * std::size_t(W);
-            for (int x = 0; x < W; ++x) {
-                const double v = real ? im.reals[at + std::size_t(x)] : double(im.samples[at + std::size_t(x)]);
-                r2[std::size_t(x)] = v;
-                lo = std::min(lo, v);
-                hi = std::max(hi, v);
-            }
-            for (int i = 0; i <= g.nx; ++i) cols[std::size_t(i)][std::size_t(y)] = r2[std::size_t(g.column(i))];
-            for (int j = 0; j <= g.ny; ++j)
-                if (g.row(j) == y) rows[std::size_t(j)] = r2;
-            // The weight of row y - 1: |second difference| (the larger of x and y) ^ (1/2).
-            if (y >= 2) {
-                const int ym = y - 1;
-                double* wrow = &weight[std::size_t(std::min(ym / T, g.ny - 1)) * std::size_t(g.nx)];
-                for (int x = 1; x + 1 < W; ++x) {
-                    const double c = r1[std::size_t(x)];
-                    const double hx = std::fabs(r1[std::size_t(x) - 1] - 2 * c + r1[std::size_t(x) + 1]);
-                    const double hy = std::fabs(r0[std::size_t(x)] - 2 * c + r2[std::size_t(x)]);
-                    const double h = std::max(hx, hy);
-                    wrow[tile_of_x[std::size_t(x)]] += real ? std::sqrt(h) : pow23[std::size_t(h)];
-                }
-            }
+            if (real) scan.reals.row(im.reals.data() + at, y, &scan);
+            else scan.ints.row(im.samples.data() + at, y, &scan);
         }
     }
+    const std::vector<std::vector<double>>& cols = scan.cols;
+    const std::vector<std::vector<double>>& rows = scan.rows;
+    const std::vector<double>& weight = scan.weight;
+    const double lo = real ? scan.reals.lo : double(scan.ints.lo), hi = real ? scan.reals.hi : double(scan.ints.hi);
     if (erd_method && !a.has("edges") && !a.has("thesis")) {
         plan->args.push_back("--edges");
         plan->args.push_back(kinds.is_hard() ? "hard" : "soft");
@@ -313,6 +427,30 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
             plan->hborder[std::size_t(j)][std::size_t(i)] = simplify_profile(z, rule_for(density(i, j - 1), density(i, j), a1 - a0));
             border += std::int64_t(plan->hborder[std::size_t(j)][std::size_t(i)].size()) - 2;
         }
+    // ERD: where a discontinuity crosses a border between two tiles (both tiles end a constrained
+    // edge there): the strong-step rule of the edge kind along the border's profile, going on
+    // across it (tiles.h profile_crossings).
+    if (erd_method && hi > lo) {
+        const double strong = real ? kStrongStep * (hi - lo) : double(std::max(1, int(kStrongStep * double(maxval) + 0.5)));
+        plan->vcross.assign(plan->vborder.size(), std::vector<std::vector<int>>(std::size_t(g.ny)));
+        plan->hcross.assign(plan->hborder.size(), std::vector<std::vector<int>>(std::size_t(g.nx)));
+        // The crossings of the border a0 .. a1 of `line` (before, after: its neighbours in the band).
+        auto crossings = [&](const std::vector<double>& line, const std::vector<double>& before, const std::vector<double>& after,
+                             int a0, int a1) {
+            auto piece = [&](const std::vector<double>& l) { return std::vector<double>(l.begin() + a0, l.begin() + a1 + 1); };
+            std::vector<int> c = profile_crossings(piece(line), piece(before), piece(after), strong);
+            border += std::int64_t(c.size());
+            return c;
+        };
+        for (int i = 1; i < g.nx; ++i)
+            for (int j = 0; j < g.ny; ++j)
+                plan->vcross[std::size_t(i)][std::size_t(j)] = crossings(cols[std::size_t(i)], scan.near_cols[std::size_t(2 * i)],
+                                                                         scan.near_cols[std::size_t(2 * i + 1)], g.row(j), g.row(j + 1));
+        for (int j = 1; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i)
+                plan->hcross[std::size_t(j)][std::size_t(i)] = crossings(rows[std::size_t(j)], scan.near_rows[std::size_t(2 * j)],
+                                                                         scan.near_rows[std::size_t(2 * j + 1)], g.column(i), g.column(i + 1));
+    }
     if (border > N)
         return Status::bad_input(escape_name(in) + ": the tiles' borders take " + std::to_string(border) + " of the " +
                                  std::to_string(N) + " points; raise -d or -n, or the tile size");
@@ -322,7 +460,7 @@ Status make_plan(const Args& a, const std::string& dir, TilesPlan* plan) {
     plan->points.resize(std::size_t(g.count()));
     plan->triangles.resize(std::size_t(g.count()));
     for (int k = 0; k < g.count(); ++k) {
-        const std::int64_t sides = std::int64_t(plan->side_points(k).size()) - 4;  // the corners counted twice
+        const std::int64_t sides = std::int64_t(plan->side_points(k).size() + plan->side_crossings(k).size()) - 4;  // corners twice
         plan->points[std::size_t(k)] = std::min<std::int64_t>(std::int64_t(area(k)), inner[std::size_t(k)] + sides);
         plan->triangles[std::size_t(k)] = opt.triangles > 0 ? std::max<std::int64_t>(1, tris[std::size_t(k)]) : 0;
     }
@@ -358,6 +496,7 @@ Status run_task(const TilesPlan& plan, const std::string& dir, int k, const Repo
     opt.triangles = plan.triangles[std::size_t(k)];
     opt.lock_border = true;
     opt.border_points = plan.side_points(k);
+    opt.border_crossings = plan.side_crossings(k);
     opt.threads = 1;
     int x0, y0, x1, y1;
     plan.window(k, &x0, &y0, &x1, &y1);
@@ -388,9 +527,12 @@ Status run_task(const TilesPlan& plan, const std::string& dir, int k, const Repo
         if (!(st = outputs.stage(export_out, mesh))) return st;
     }
     if (!(st = outputs.commit())) return st;
-    char line[200];
+    char line[300];
     std::snprintf(line, sizeof line, "task %d (%s): %zu points, %zu faces from %d x %d in %.2f s", k, plan.tile_name(k).c_str(),
                   res.model.vertices.size(), res.model.faces.size(), image.width, image.height, seconds_since(t0));
+    if (!opt.border_crossings.empty())
+        std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), "; %zu side crossings, %zu reached by a detected edge",
+                      opt.border_crossings.size(), res.stats.erd.joined_crossings);
     rep.note(line);
     return Status::success();
 }
@@ -422,6 +564,7 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
         if (m.width != x1 - x0 + 1 || m.height != y1 - y0 + 1)
             return Status::bad_input(escape_name(path) + ": not the model of this tile");
         std::vector<LatticePoint> want = plan.side_points(k), have;
+        for (LatticePoint p : plan.side_crossings(k)) want.push_back(p);
         const std::int32_t mx = 2 * (x1 - x0), my = 2 * (y1 - y0);
         for (LatticePoint p : m.vertices)
             if (p.x == 0 || p.y == 0 || p.x == mx || p.y == my) have.push_back(p);
@@ -468,11 +611,13 @@ Status finish(const TilesPlan& plan, const std::string& dir, const Args& a, cons
         for (const auto& b : l) border += (long long)b.size() - 2;
     for (const auto& l : plan.hborder)
         for (const auto& b : l) border += (long long)b.size() - 2;
+    for (const auto* c : {&plan.vcross, &plan.hcross})
+        for (const auto& l : *c)
+            for (const auto& b : l) border += (long long)b.size();
     border += (long long)(plan.grid.nx + 1) * (plan.grid.ny + 1);
     long long side_sum = 0;
     for (int k = 0; k < plan.grid.count(); ++k) {
-        std::vector<LatticePoint> s = plan.side_points(k);
-        side_sum += (long long)s.size() - 4;
+        side_sum += (long long)(plan.side_points(k).size() + plan.side_crossings(k).size()) - 4;
     }
     JsonObject idx;
     idx.str("format", "erd-tiles-index 1").str("raster", plan.raster).str("method", plan.method);

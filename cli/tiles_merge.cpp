@@ -69,7 +69,8 @@ public:
     }
     Status walk(const std::function<void(const Vertex&)>& on_vertex,
                 const std::function<void(const std::uint32_t*, const Vertex*)>& on_face) {
-        std::unordered_map<std::uint64_t, std::pair<std::uint32_t, Vertex>> side;
+        // Side vertices by lattice point (ERD: and value: a crossing's two sides are two copies).
+        std::unordered_map<std::uint64_t, std::vector<std::pair<double, std::uint32_t>>> side;
         std::uint32_t next = 0;
         const int H = plan_.grid.height;
         for (int k = 0; k < plan_.grid.count(); ++k) {
@@ -97,12 +98,16 @@ public:
                 const bool on_side = p.x == 0 || p.y == 0 || p.x == mx || p.y == my;
                 const std::uint64_t key = std::uint64_t(gy) << 32 | std::uint64_t(gx);
                 auto found = on_side ? side.find(key) : side.end();
-                if (found != side.end()) {
-                    id = found->second.first;
+                const std::pair<double, std::uint32_t>* same = nullptr;
+                if (found != side.end())
+                    for (const auto& c : found->second)
+                        if (!erd || c.first == value) same = &c;
+                if (same) {
+                    id = same->second;
                 } else {
                     id = next++;
                     on_vertex(here);
-                    if (on_side) side.emplace(key, std::make_pair(id, here));
+                    if (on_side) side[key].push_back({value, id});
                 }
                 copies[v].push_back({value, id});
                 *out = here;

@@ -15,18 +15,31 @@ void TilesPlan::window(int k, int* x0, int* y0, int* x1, int* y1) const {
     *y1 = grid.row(j + 1);
 }
 
-std::vector<LatticePoint> TilesPlan::side_points(int k) const {
-    const int i = k % grid.nx, j = k / grid.nx;
+namespace {
+
+using Lines = std::vector<std::vector<std::vector<int>>>;
+
+// Tile k's entries of v (its left and right vertical lines) and h (its top and bottom lines) as
+// points on its sides, doubled: offset o at 2 o + odd.
+std::vector<LatticePoint> on_sides(const TilesPlan& p, int k, const Lines& v, const Lines& h, int odd) {
+    const int i = k % p.grid.nx, j = k / p.grid.nx;
     int x0, y0, x1, y1;
-    window(k, &x0, &y0, &x1, &y1);
+    p.window(k, &x0, &y0, &x1, &y1);
     const std::int32_t mx = 2 * (x1 - x0), my = 2 * (y1 - y0);
     std::vector<LatticePoint> pts;
-    for (int o : vborder[std::size_t(i)][std::size_t(j)]) pts.push_back({0, 2 * o});
-    for (int o : vborder[std::size_t(i + 1)][std::size_t(j)]) pts.push_back({mx, 2 * o});
-    for (int o : hborder[std::size_t(j)][std::size_t(i)]) pts.push_back({2 * o, 0});
-    for (int o : hborder[std::size_t(j + 1)][std::size_t(i)]) pts.push_back({2 * o, my});
+    if (v.empty()) return pts;
+    for (int o : v[std::size_t(i)][std::size_t(j)]) pts.push_back({0, 2 * o + odd});
+    for (int o : v[std::size_t(i + 1)][std::size_t(j)]) pts.push_back({mx, 2 * o + odd});
+    for (int o : h[std::size_t(j)][std::size_t(i)]) pts.push_back({2 * o + odd, 0});
+    for (int o : h[std::size_t(j + 1)][std::size_t(i)]) pts.push_back({2 * o + odd, my});
     return pts;
 }
+
+}  // namespace
+
+std::vector<LatticePoint> TilesPlan::side_points(int k) const { return on_sides(*this, k, vborder, hborder, 0); }
+
+std::vector<LatticePoint> TilesPlan::side_crossings(int k) const { return on_sides(*this, k, vcross, hcross, 1); }
 
 std::string TilesPlan::tile_name(int k) const {
     return "tile_" + std::to_string(k / grid.nx) + "_" + std::to_string(k % grid.nx);
@@ -76,6 +89,16 @@ std::string plan_text(const TilesPlan& p) {
             for (int o : v) s += " " + std::to_string(o);
             s += "\n";
         }
+    auto crossings = [&](const char* key, int a, int b, const std::vector<int>& v) {
+        if (v.empty()) return;
+        s += std::string(key) + " " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(v.size());
+        for (int o : v) s += " " + std::to_string(o);
+        s += "\n";
+    };
+    for (std::size_t i = 0; i < p.vcross.size(); ++i)
+        for (std::size_t j = 0; j < p.vcross[i].size(); ++j) crossings("vcross", int(i), int(j), p.vcross[i][j]);
+    for (std::size_t j = 0; j < p.hcross.size(); ++j)
+        for (std::size_t i = 0; i < p.hcross[j].size(); ++i) crossings("hcross", int(j), int(i), p.hcross[j][i]);
     for (int k = 0; k < p.grid.count(); ++k)
         s += "task " + std::to_string(k) + " " + std::to_string(k % p.grid.nx) + " " + std::to_string(k / p.grid.nx) + " " +
              std::to_string(p.points[std::size_t(k)]) + " " + std::to_string(p.triangles[std::size_t(k)]) + "\n";
@@ -158,6 +181,8 @@ Status parse_plan(const std::string& text, TilesPlan* p) {
             if (g.nx != p->grid.nx || g.ny != p->grid.ny) return bad("the grid does not match the size and the tile");
             p->vborder.assign(std::size_t(g.nx + 1), std::vector<std::vector<int>>(std::size_t(g.ny)));
             p->hborder.assign(std::size_t(g.ny + 1), std::vector<std::vector<int>>(std::size_t(g.nx)));
+            p->vcross = p->vborder;
+            p->hcross = p->hborder;
             p->points.assign(std::size_t(g.count()), -1);
             p->triangles.assign(std::size_t(g.count()), 0);
             sized = true;
@@ -172,7 +197,7 @@ Status parse_plan(const std::string& text, TilesPlan* p) {
         else if (key == "geo-tie") doubles(&p->geo.tiepoints);
         else if (key == "geo-transform") doubles(&p->geo.transform);
         else if (key == "arg") p->args.push_back(rest);
-        else if (key == "vborder" || key == "hborder" || key == "task") {
+        else if (key == "vborder" || key == "hborder" || key == "vcross" || key == "hcross" || key == "task") {
             if (!sized) return bad(key + " before grid");
             const long long a = f.integer(), b = f.integer(), c = f.integer();
             if (key == "task") {
@@ -183,19 +208,22 @@ Status parse_plan(const std::string& text, TilesPlan* p) {
                 p->triangles[std::size_t(a)] = tri;
                 continue;
             }
-            const bool v = key == "vborder";
+            const bool v = key[0] == 'v', cross = key[1] == 'c';
             const long long lines = v ? p->grid.nx : p->grid.ny, cells = v ? p->grid.ny : p->grid.nx;
-            if (!f.ok() || a < 0 || a > lines || b < 0 || b >= cells || c < 2) return bad("bad " + key + " line");
+            // Crossings: on a line between two tiles, strictly between the border's ends.
+            if (!f.ok() || a < (cross ? 1 : 0) || a > (cross ? lines - 1 : lines) || b < 0 || b >= cells || c < (cross ? 1 : 2))
+                return bad("bad " + key + " line");
             const int len = v ? p->grid.row(int(b) + 1) - p->grid.row(int(b)) : p->grid.column(int(b) + 1) - p->grid.column(int(b));
             if (c > len + 1) return bad("bad " + key + " line");
-            std::vector<int>& out = v ? p->vborder[std::size_t(a)][std::size_t(b)] : p->hborder[std::size_t(a)][std::size_t(b)];
+            std::vector<int>& out = (v ? (cross ? p->vcross : p->vborder) : (cross ? p->hcross : p->hborder))[std::size_t(a)][std::size_t(b)];
             out.clear();
             for (long long k = 0; k < c; ++k) {
                 const long long o = f.integer();
-                if (!f.ok() || o < 0 || o > len || (!out.empty() && o <= out.back())) return bad("bad offset in " + key);
+                if (!f.ok() || o < 0 || o > len || (!out.empty() && o <= out.back()) || (cross && (o < 1 || o + 2 > len)))
+                    return bad("bad offset in " + key);
                 out.push_back(int(o));
             }
-            if (out.front() != 0 || out.back() != len) return bad(key + " must start and end at the tile corners");
+            if (!cross && (out.front() != 0 || out.back() != len)) return bad(key + " must start and end at the tile corners");
         } else if (key == "end") {
             ended = true;
         } else return bad("unknown key '" + key + "'");

@@ -10,6 +10,8 @@
 //   arg TEXT                    each of generate's flags as given, re-parsed by every task
 //   vborder I J K o1 .. oK      vertical line I, tile row J: the chosen samples' offsets from its top
 //   hborder J I K o1 .. oK      horizontal line J, tile column I: offsets from its left end
+//   vcross I J K o1 .. oK       ERD: where a discontinuity crosses that border, between samples o
+//   hcross J I K o1 .. oK       and o + 1 (doubled offset 2o + 1); only lines with K > 0
 //   task K I J POINTS TRIANGLES one tile: column I, row J, its vertex budget and triangle budget (0: off)
 //   end
 #pragma once
@@ -37,12 +39,17 @@ struct TilesPlan {
     // vborder[i][j]: offsets (from row(j)) of the chosen samples on vertical line i in tile row j;
     // hborder[j][i]: offsets (from column(i)) on horizontal line j in tile column i. Both ends included.
     std::vector<std::vector<std::vector<int>>> vborder, hborder;
+    // vcross[i][j], hcross[j][i]: the crossings of the same borders (tiles.h profile_crossings),
+    // offsets o of crossings between samples o and o + 1. Empty for GPI.
+    std::vector<std::vector<std::vector<int>>> vcross, hcross;
     std::vector<std::int64_t> points, triangles;  // per task k = j * nx + i
 
     // The tile of task k: its window (inclusive) and its sides' points in the tile's doubled
     // coordinates, corners included.
     void window(int k, int* x0, int* y0, int* x1, int* y1) const;
     std::vector<LatticePoint> side_points(int k) const;
+    // Its sides' crossings in the same coordinates (one coordinate odd).
+    std::vector<LatticePoint> side_crossings(int k) const;
     std::string tile_name(int k) const;  // "tile_J_I"
 };
 

@@ -1,5 +1,7 @@
 #include "imageio/raster_window.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -86,12 +88,21 @@ Status RasterWindow::read(int x0, int y0, int x1, int y1, Image* out, std::strin
         const long at = long(pnm_.sep + 1 + (std::size_t(y0) + y) * row + std::size_t(x0) * C * bps);
         if (std::fseek(file_, at, SEEK_SET) != 0 || std::fread(bytes.data(), 1, bytes.size(), file_) != bytes.size())
             return Status::bad_input("raster truncated at row " + std::to_string(std::size_t(y0) + y));
-        for (std::size_t k = 0; k < ww * C; ++k) {
-            const std::uint32_t v = bps == 1 ? bytes[k] : (std::uint32_t(bytes[2 * k]) << 8 | bytes[2 * k + 1]);
-            if (v > pnm_.maxval)
-                return Status::bad_input("sample " + std::to_string(v) + " above maxval " + std::to_string(pnm_.maxval) + " in row " +
-                                         std::to_string(std::size_t(y0) + y));
-            im.samples[y * ww * C + k] = std::uint16_t(v);
+        // The row decoded, then checked against maxval by its largest sample (the first sample
+        // above it named).
+        std::uint16_t* dst = im.samples.data() + y * ww * C;
+        const std::size_t n = ww * C;
+        std::uint16_t top = 0;
+        if (bps == 1) {
+            for (std::size_t k = 0; k < n; ++k) dst[k] = bytes[k], top = std::max<std::uint16_t>(top, dst[k]);
+        } else {
+            for (std::size_t k = 0; k < n; ++k)
+                dst[k] = std::uint16_t(bytes[2 * k] << 8 | bytes[2 * k + 1]), top = std::max(top, dst[k]);
+        }
+        if (top > pnm_.maxval) {
+            const std::uint16_t v = *std::find_if(dst, dst + n, [&](std::uint16_t s) { return s > pnm_.maxval; });
+            return Status::bad_input("sample " + std::to_string(v) + " above maxval " + std::to_string(pnm_.maxval) + " in row " +
+                                     std::to_string(std::size_t(y0) + y));
         }
     }
     im.meta.type = bps == 1 ? SampleType::u8 : SampleType::u16;

@@ -147,3 +147,88 @@ TEST_CASE("PNG read by rows: any window equals the whole decode (gray 8 and 16 b
         std::remove(path.c_str());
     }
 }
+
+TEST_CASE("border crossings: the strong step that is the largest of its neighbours and goes on across", "[tiles]") {
+    const auto same = [](const std::vector<double>& z, double strong) { return profile_crossings(z, z, z, strong); };
+    // A step of 100 between samples 5 and 6, a ramp of 30 a sample (no crossing), a step too weak.
+    std::vector<double> z = {0, 0, 0, 0, 0, 0, 100, 100, 130, 160, 190, 190, 195, 195, 195};
+    CHECK(same(z, 50) == std::vector<int>{5});
+    CHECK(same(z, 20) == std::vector<int>{5});  // the ramp's equal differences: none the largest
+    CHECK(same(z, 101).empty());
+    // Not at the ends: a step between the first two samples or the last two is a corner's.
+    CHECK(same({0, 100, 100, 100, 100}, 50).empty());
+    CHECK(same({0, 0, 0, 0, 100}, 50).empty());
+    // A blurred step: its middle difference.
+    CHECK(same({0, 0, 0, 10, 60, 90, 100, 100, 100}, 40) == std::vector<int>{3});
+    // Across the border: the parallel profiles step 3 samples earlier and 2 later (an oblique
+    // edge) by at least half; not when one is flat, steps the other way, 5 samples off or too little.
+    const std::vector<double> early = {0, 0, 0, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60};
+    const std::vector<double> late = {0, 0, 0, 0, 0, 0, 0, 0, 100, 100, 100, 100, 100, 100, 100};
+    CHECK(profile_crossings(z, early, late, 50) == std::vector<int>{5});
+    CHECK(profile_crossings(z, early, std::vector<double>(z.size(), 7.0), 50).empty());
+    std::vector<double> down(late);
+    for (double& v : down) v = -v;
+    CHECK(profile_crossings(z, early, down, 50).empty());
+    const std::vector<double> far = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 100, 100, 100, 100};
+    CHECK(profile_crossings(z, early, far, 50).empty());
+    CHECK(profile_crossings(z, {0, 0, 0, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20}, late, 50).empty());  // 20 < 50 / 2
+    CHECK(profile_crossings(z, {0, 0, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60, 60}, late, 50) == std::vector<int>{5});  // 4 off
+}
+
+TEST_CASE("border crossings: a stub into the tile for each, the nearest polyline end joined to it", "[tiles]") {
+    // A 21 x 11 tile (doubled 40 x 20): crossings on the left side at y = 7.5 and the bottom at x = 10.5.
+    const std::vector<LatticePoint> crossings = {{0, 15}, {21, 20}};
+    std::vector<Polyline> lines = {{{4, 14}, {20, 10}}, {{30, 2}, {24, 8}}};  // ends 4 units from the first
+    std::size_t joined = 0;
+    std::vector<Polyline> out = join_crossings(lines, crossings, 21, 11, &joined);
+    CHECK(joined == 1);
+    REQUIRE(out.size() == 4);
+    CHECK(out[0] == Polyline{{0, 15}, {2, 15}});  // the stubs: one pixel straight in
+    CHECK(out[1] == Polyline{{21, 20}, {21, 18}});
+    CHECK(out[2] == Polyline{{2, 15}, {4, 14}, {20, 10}});
+    CHECK(out[3] == lines[1]);
+}
+
+TEST_CASE("a tile with a crossing: the step kept on both sides of the crossing vertex", "[tiles]") {
+    // A hard step along x = 20.5 + y / 4 on a 41 x 33 tile; its bottom side crosses it at x = 28.5.
+    Image im(41, 33, 255, 1);
+    for (int y = 0; y < 33; ++y)
+        for (int x = 0; x < 41; ++x) im.at(x, y) = std::uint16_t(double(x) > 20.5 + y / 4.0 ? 200 : 40);
+    const std::int32_t my = 2 * 32;
+    GenerateOptions o;
+    o.density = 5;
+    o.density_given = true;
+    o.lock_border = true;
+    o.border_points = {{56, my}, {58, my}};
+    o.border_crossings = {{57, my}};
+    GenerateResult res;
+    REQUIRE(find_method("erdgpi")->run(im, o, &res));
+    pin_side_values(im, &res.model);
+    const Model& m = res.model;
+    std::uint32_t v = 0;
+    while (v < m.vertices.size() && !(m.vertices[v].x == 57 && m.vertices[v].y == my)) ++v;
+    REQUIRE(v < m.vertices.size());
+    bool constrained = false;
+    for (const auto& e : m.constraints) constrained |= e[0] == v || e[1] == v;
+    CHECK(constrained);
+    // The faces along the side: the one towards x = 28 takes 40, towards x = 29 takes 200.
+    int towards_a = 0, towards_b = 0;
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            if (m.faces[f][std::size_t(k)] != v) continue;
+            for (int j = 1; j < 3; ++j) {
+                const LatticePoint q = m.vertices[m.faces[f][std::size_t((k + j) % 3)]];
+                if (q.y != my) continue;
+                const double z = m.corner_values[f][std::size_t(k)];
+                if (q.x < 57) {
+                    ++towards_a;
+                    CHECK(z == 40.0);
+                } else {
+                    ++towards_b;
+                    CHECK(z == 200.0);
+                }
+            }
+        }
+    CHECK(towards_a == 1);
+    CHECK(towards_b == 1);
+}

@@ -6,6 +6,8 @@
 #     edge one face on the boundary or two opposite faces inside: no crack, no T-junction, no
 #     overlap, Euler V - E + F = 1), and --finish found every tile's sides equal to the plan's;
 #   - the budget: the merged mesh has exactly N = D W H / 100 vertices;
+#   - ERD crossings: a step across a tile side ends a discontinuity at the planned side vertex in
+#     both tiles, with the same values on either side of it at the seam;
 #   - the same bytes however the tasks run: one run; --plan, the tasks in reverse order, --finish;
 #     GNU parallel -j 2 when installed (else SKIP); the Dask run is python/tests/test_tiles.py's;
 #   - a 16-bit PNG read by rows gives the tiles of the PGM of the same samples;
@@ -40,6 +42,21 @@ for m in gpi erdgpi; do
     "$ERD" tiles -q -o "$d/$m.b" --finish --merge "$d/$m.b.ply"
     same "$m plan + tasks in reverse order + finish = one run" "$d/$m" "$d/$m.b" "$d/$m.ply" "$d/$m.b.ply"
 done
+
+# A hard step crossing two tile sides (x = 60 + 0.6 y on 257^2, 2 x 2 tiles of 128): the plan puts a
+# crossing where it meets each inner line, both tiles end a discontinuity at that vertex with the
+# same two values on the seam (tests/tiles_crossing.py), and the merged mesh is still a triangulation.
+$PY -c "
+import sys
+px = bytes(200 if x > 0.6 * y + 60 else 40 for y in range(257) for x in range(257))
+sys.stdout.buffer.write(b'P5\n257 257\n255\n' + px)" >"$d/step.pgm"
+check "erdgpi: a step across two tile sides" "$ERD" tiles -q -m erdgpi -i "$d/step.pgm" --tile 128 -d 2 -o "$d/step" --merge "$d/step.ply"
+check "erdgpi: the plan's crossings are the step's (y 113.5 on x = 128, x 136.5 on y = 128)" \
+    test "$(grep cross "$d/step/plan.txt" | tr '\n' ' ')" = "vcross 1 0 1 113 hcross 1 1 1 8 "
+check "erdgpi: each crossing ends a discontinuity at the same vertex in both tiles" $PY tests/tiles_crossing.py "$d/step"
+check "erdgpi: the step's merged mesh is a triangulation" $PY tests/tiles_check.py "$d/step.ply" 257 257
+check "erdgpi: the heightmap's crossings end a discontinuity in both tiles" $PY tests/tiles_crossing.py "$d/erdgpi"
+check "gpi plans no crossing" bash -c "! grep -q cross '$d/gpi/plan.txt'"
 
 if command -v parallel >/dev/null && parallel --version 2>/dev/null | grep -q GNU; then
     "$ERD" tiles -q -m gpi -i "$d/dem.pgm" --tile 256 -d 1 -o "$d/gpi.p" --plan

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The seam picture of docs/img (issue 48): a window of a merged mesh (`erd tiles --merge x.ply`)
-around a corner shared by four tiles, drawn as SVG: faces shaded by height, their edges in black,
-each tile's faces in its own tint, the tiles' border lines dashed red.
+around a corner shared by four tiles (or any point), drawn as SVG: faces shaded by height, their
+edges in black, each tile's faces in its own tint, the tiles' border lines dashed red, and the
+ERD discontinuities (edges whose two faces take different copies of an end: a step) in blue.
 
     tiles_seam_svg.py MESH.ply W H TILE CX CY HALF OUT.svg    (window: CX +- HALF, CY +- HALF pixels)
 """
@@ -41,6 +42,21 @@ def main():
         if y0 <= k <= y1:
             parts.append('<line x1="0" y1="%.1f" x2="900" y2="%.1f" stroke="red" stroke-width="2" stroke-dasharray="8,6" '
                          'opacity="0.7"/>' % ((k - y0) * scale, (k - y0) * scale))
+    # Discontinuities: the faces on either side of an edge (by position) use different copies.
+    key = np.round(v[:, 0] * 2).astype(np.int64) * (4 * h + 8) + np.round(v[:, 1] * 2).astype(np.int64)
+    sides = {}
+    for a, b, c in f:
+        for p, q in ((a, b), (b, c), (c, a)):
+            sides.setdefault(frozenset((key[p], key[q])), []).append({key[p]: p, key[q]: q})
+    for e, fs in sides.items():
+        if len(fs) != 2 or fs[0] == fs[1]:
+            continue
+        p, q = fs[0].values()
+        xs, ys = x[[p, q]], y[[p, q]]
+        if xs.max() < x0 or xs.min() > x1 or ys.max() < y0 or ys.min() > y1:
+            continue
+        parts.append('<line x1="%.2f" y1="%.2f" x2="%.2f" y2="%.2f" stroke="rgb(20,60,230)" stroke-width="3"/>' %
+                     ((xs[0] - x0) * scale, (ys[0] - y0) * scale, (xs[1] - x0) * scale, (ys[1] - y0) * scale))
     parts.append("</svg>")
     with open(out, "w") as fo:
         fo.write("\n".join(parts) + "\n")

@@ -10,6 +10,7 @@
 #include "algorithms/imaging/bilinear.h"
 #include "algorithms/imaging/edge_polylines.h"
 #include "algorithms/imaging/valid_region.h"
+#include "algorithms/methods/tiles.h"
 
 namespace erd {
 
@@ -285,6 +286,10 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
         out->edges = Grid<std::uint8_t>(2 * image.width - 1, 2 * image.height - 1, 0);
         out->polylines.clear();
         out->constraint_points = 0;
+    }
+    if (options.side_crossings && !options.side_crossings->empty()) {
+        out->polylines = join_crossings(std::move(out->polylines), *options.side_crossings, image.width, image.height, &out->joined_crossings);
+        out->constraint_points += 2 * options.side_crossings->size();  // the stubs (a joined end may be one)
     }
     if (!user.empty() || !outline.empty()) {
         for (const Polyline& pl : out->polylines)

@@ -46,6 +46,10 @@ struct InitialMeshOptions {
     // detected polylines are cut. Neither is in out->polylines. May be null.
     const std::vector<Polyline>* outline = nullptr;
     const std::vector<std::uint8_t>* near_nodata = nullptr;
+    // A tile (GenerateOptions::border_crossings): points on its sides where a constrained edge must
+    // end; the polylines (cut at the sides by near_nodata) are joined to them (tiles.h
+    // join_crossings). May be null.
+    const std::vector<LatticePoint>* side_crossings = nullptr;
     // A real image meshed to --max-error E: detected polylines whose step (the median over their
     // segments of the difference of the image 1.5 pixels to either side) is below this are left
     // out, so that only cliffs that pay for their points become constraints. 0: all kept.
@@ -64,6 +68,7 @@ struct InitialMesh {
     std::vector<Polyline> polylines;   // simplified polylines that made it into the mesh
     std::size_t constraint_points = 0; // distinct polyline points (before the kernel)
     std::size_t dropped_crossing = 0;  // constraint pieces refused by the kernel (crossings)
+    std::size_t joined_crossings = 0;  // side_crossings a detected polyline was continued to
     std::size_t dropped_polylines = 0; // polylines left out because the mesh would exceed N
     std::size_t n0 = 0;                // vertices of the initial mesh (corners included)
     // Some count of the parameter selection took the plain curves (hard_fallback): only then can

@@ -126,6 +126,10 @@ struct GenerateOptions {
     // cuts detected polylines where they reach a side). Off: nothing changes.
     bool lock_border = false;
     std::vector<LatticePoint> border_points;
+    // ERDGPI on a tile: where a discontinuity crosses a side (the plan's, between two side pixels:
+    // one coordinate odd). Each ends a constrained edge: the detected polyline that ends nearest
+    // it, within kCrossingReach, continued to it, else a stub one pixel long into the tile.
+    std::vector<LatticePoint> border_crossings;
 
     ColourChoices colour;        // colour images only (channels == 3)
 

@@ -54,6 +54,7 @@ struct ErdStepStats {
     std::size_t polylines = 0;          // simplified polylines in the initial mesh
     std::size_t initial_vertices = 0;   // N0, corners included
     std::size_t dropped_crossing = 0;   // constraint pieces the kernel refused (crossings)
+    std::size_t joined_crossings = 0;   // a tile: planned side crossings a detected polyline reached
     std::size_t dropped_polylines = 0;  // polylines left out so the mesh stays within N
     std::size_t multi_wedges = 0;       // wedge values found by the line search
     std::size_t alpha_first = 0;        // ... whose maximum was at the near end of the range

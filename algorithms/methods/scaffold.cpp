@@ -307,6 +307,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         for (int y = 0; y < image.height; ++y)
             cut[std::size_t(y) * std::size_t(image.width)] = cut[std::size_t(y) * std::size_t(image.width) + std::size_t(image.width - 1)] = 1;
         mo.near_nodata = &cut;
+        mo.side_crossings = &options.border_crossings;
     }
     st = build_initial_mesh(gray, mo, cdt, mesh);
     if (!st) return st;
@@ -344,6 +345,7 @@ void finish_erd_stats(InitialMesh* mesh, const ErdModel* model, StageTimer* time
     s.polylines = mesh->polylines.size();
     s.initial_vertices = mesh->n0;
     s.dropped_crossing = mesh->dropped_crossing;
+    s.joined_crossings = mesh->joined_crossings;
     s.dropped_polylines = mesh->dropped_polylines;
     s.multi_wedges = model->stats().multi_wedges;
     s.alpha_first = model->stats().alpha_first;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/imaging/polylines.h"
 #include "algorithms/model/model.h"
 
 namespace erd {
@@ -50,9 +51,36 @@ std::vector<int> simplify_profile(const std::vector<double>& z, const ProfileRul
 // when the weights sum to 0): the parts sum to total.
 std::vector<std::int64_t> split_budget(std::int64_t total, const std::vector<double>& weights);
 
+// Where an ERD discontinuity crosses a shared border: between samples k and k + 1 of its profile
+// z[0..L] when their difference is at least `strong` and larger than the differences just before
+// and after (edge_kind.h's strong step, read along the border), with 1 <= k and k + 2 <= L (not
+// at a tile corner), and the step goes on across the border: the parallel profiles kCrossingBand
+// samples to either side (`before`, `after`, as long as z) each step by at least strong / 2, the
+// same way, between samples m and m + 1 for some |m - k| <= kCrossingShift. The ks, ascending.
+// Both tiles of the border end a constrained edge there.
+constexpr int kCrossingBand = 2;
+constexpr int kCrossingShift = 2 * kCrossingBand;  // edges at 26.6 degrees or more to the border
+std::vector<int> profile_crossings(const std::vector<double>& z, const std::vector<double>& before,
+                                   const std::vector<double>& after, double strong);
+
+// How far (Chebyshev, doubled units) a tile's detected polyline may end from a planned crossing
+// and still be continued to it (docs/DECISIONS.md "Tiles").
+constexpr int kCrossingReach = 8;
+
+// A tile's polylines (doubled coordinates, none on a side) joined to the planned crossings of its
+// sides (w x h pixels). Every crossing gets a stub, a constrained edge one pixel long straight into
+// the tile, listed first (inserted first, no detected piece can cut it off: then both tiles have
+// the discontinuity at the crossing); the nearest free polyline end within kCrossingReach (ties to
+// the earlier crossing, polyline, end) is continued to the stub's inner end. *joined counts those.
+std::vector<Polyline> join_crossings(std::vector<Polyline> lines, const std::vector<LatticePoint>& crossings, int w, int h,
+                                     std::size_t* joined);
+
 // A tile's model after its run: every vertex on the rectangle's sides takes the sample at its
 // pixel in all its wedges (ERD: the refit and the line search leave them off), so that the two
 // tiles of a border give its vertices the same values. A basic model's are the samples already.
+// A crossing vertex (between side pixels a and b, a first along the side) takes a's sample in its
+// wedge that touches the side towards a, b's in the one towards b (its vertex value their mean),
+// so both tiles give the seam the same step.
 void pin_side_values(const Image& image, Model* m);
 
 }  // namespace erd
