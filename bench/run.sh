@@ -597,6 +597,12 @@ if mkdir -p "$OUT/dem" && /usr/bin/python3 tests/dem_data.py "$OUT/dem" >"$OUT/d
             echo "|---|---|---:|---:|---:|---|"
             awk -F'|' '{ printf "| %s | %s | %s | %.2f | %.0f | %s |\n", $1, $2, $3, $4 / 1000, $5 / 1024, $6 }' "$terrain_rows"
             echo
+            # The verdict per DEM: erdgpi / hmm in triangles and in CPU time (< 1 meets the target).
+            awk -F'|' '$2 == "hmm" { tri[$1] = $3; cpu[$1] = $4 }
+                       $2 == "erd erdgpi" && ($1 in tri) && tri[$1] > 0 && cpu[$1] > 0 {
+                           printf "- %s: erdgpi / hmm triangles %.2f, CPU %.2f (%s)\n", $1, $3 / tri[$1], $4 / cpu[$1],
+                                  ($3 < tri[$1] && $4 < cpu[$1]) ? "met" : "not met" }' "$terrain_rows"
+            echo
             echo "Targets (issue 47): erdgpi within E everywhere, with fewer triangles and less CPU time than hmm."
         } | results_section terrain "Terrain beside hmm (issue 47; make bench, terrain block)"
     fi

@@ -53,7 +53,7 @@ GreedyRefiner::GreedyRefiner(Cdt& cdt, const Image& image, GreedyModel& model, c
     }
     // Each insertion adds two faces; reserving avoids regrowing the heaps' back-pointer arrays.
     std::size_t faces = 2 * std::max(options.target_vertices, cdt.vertex_count()) + 8;
-    by_sum_.reserve(faces);
+    if (!max_first_) by_sum_.reserve(faces);  // max_first_: the faces by largest error alone
     if (track_max_) by_max_.reserve(faces);
     faces_.reserve(faces);
     stamp_.reserve(faces);
@@ -71,7 +71,9 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         touched_.clear();
     }
-    for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
+    if (by_owner()) scan_all_by_owner();
+    else
+        for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
 
     GreedyStop stop;
     std::vector<FaceInd> dirty;
@@ -86,7 +88,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         if (track_max_ && current_max() <= options_.max_error) { stop = GreedyStop::max_error; break; }
         if (options_.psnr > 0.0 && psnr() >= options_.psnr) { stop = GreedyStop::psnr; break; }
         if (options_.max_triangles && cdt_.face_count() >= options_.max_triangles) { stop = GreedyStop::triangles; break; }
-        if (by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
+        if (max_first_ ? by_max_.empty() : by_sum_.empty()) { stop = GreedyStop::exhausted; break; }
 
         const FaceInd f = max_first_ ? by_max_.top() : by_sum_.top();
         const LatticePoint p = faces_[f].cand;

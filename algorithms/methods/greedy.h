@@ -129,6 +129,11 @@ struct GreedyOptions {
     bool ban_border = false;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
+    // Optional, a real gray image: the face that owns each pixel in the mesh given (pixel_owners,
+    // minimax_fit.h). The first scan of all faces reads it (one sweep of the rows, the same sums
+    // and candidates as scanning each face), and every re-scan keeps it, so it holds the final
+    // mesh's owners at the end.
+    std::vector<FaceInd>* owners = nullptr;
 };
 
 // Refines `cdt` (already holding the initial mesh: the four corners for GPI; corners, polyline

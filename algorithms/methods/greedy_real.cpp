@@ -5,9 +5,11 @@
 // leaves as they were.
 #include "algorithms/methods/greedy_refiner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "algorithms/methods/greedy_scan.h"
 #include "kernel/raster_rows.h"
@@ -61,8 +63,10 @@ void GreedyRefiner::rescan_real(FaceInd f) {
     if (C == 1) {
         const SpanPlane& plane = planes[0];
         const double dv = 2.0 * plane.gx;
+        FaceInd* const owner = by_owner() ? options_.owners->data() : nullptr;
         for_each_owned_row(Lattice::pixels(), domain_, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
             const std::size_t row = std::size_t(j) * width;
+            if (owner) std::fill(owner + row + std::size_t(lo), owner + row + std::size_t(hi) + 1, f);
             const double v = plane.at(double(2 * lo), double(2 * j));
             const bool moved = ok ? scan_real_span<true>(reals + row, ok + row, banned + row, lo, hi, v, dv, &sum, &best, &bx)
                                   : scan_real_span<false>(reals + row, nullptr, banned + row, lo, hi, v, dv, &sum, &best, &bx);
@@ -105,6 +109,42 @@ void GreedyRefiner::rescan_real(FaceInd f) {
     }
     if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
     settle(f, sum, best);
+}
+
+void GreedyRefiner::scan_all_by_owner() {
+    const std::size_t F = faces_.size(), W = std::size_t(image_.width), H = std::size_t(image_.height);
+    const FaceInd* const owner = options_.owners->data();
+    const double* const reals = image_.reals.data();
+    const std::uint8_t* const ok = image_.valid.empty() ? nullptr : image_.valid.data();
+    const std::uint8_t* const banned = banned_.data();
+    std::vector<SpanPlane> planes(F);
+    for (FaceInd f = 0; f < F; ++f) planes[f] = model_.face_plane(cdt_, f);
+    std::vector<double> sum(F, 0.0), best(F, -1.0);
+    std::vector<std::int32_t> bx(F, 0), by(F, 0);
+    // A face owns one run of each row it reaches: the span rescan_real would scan, taken left to
+    // right, rows top to bottom, so each face's sums and candidate come out as there.
+    for (std::size_t j = 0; j < H; ++j) {
+        const std::size_t row = j * W;
+        for (std::size_t x = 0; x < W;) {
+            const FaceInd f = owner[row + x];
+            std::size_t x1 = x;
+            while (x1 + 1 < W && owner[row + x1 + 1] == f) ++x1;
+            if (f < F) {
+                const double v = planes[f].at(double(2 * x), double(2 * j)), dv = 2.0 * planes[f].gx;
+                const std::int32_t lo = std::int32_t(x), hi = std::int32_t(x1);
+                const bool moved = ok ? scan_real_span<true>(reals + row, ok + row, banned + row, lo, hi, v, dv, &sum[f], &best[f], &bx[f])
+                                      : scan_real_span<false>(reals + row, nullptr, banned + row, lo, hi, v, dv, &sum[f], &best[f], &bx[f]);
+                if (moved) by[f] = std::int32_t(j);
+            }
+            x = x1 + 1;
+        }
+    }
+    for (FaceInd f = 0; f < F; ++f) {
+        stamp_[f] = generation_;
+        total_ -= faces_[f].sum;
+        if (best[f] > 0.0) faces_[f].cand = LatticePoint{2 * bx[f], 2 * by[f]};
+        settle(f, sum[f], best[f]);
+    }
 }
 
 }  // namespace erd

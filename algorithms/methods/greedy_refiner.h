@@ -94,6 +94,14 @@ private:
     // pixels without data left out (greedy_real.cpp).
     [[gnu::noinline]] void rescan_real(FaceInd f);
 
+    // Every face scanned as rescan_real would, face after face, from GreedyOptions::owners: one
+    // sweep of the rows, each span on its face's plane (greedy_real.cpp).
+    void scan_all_by_owner();
+    bool by_owner() const {
+        return real_ && channels_ == 1 && options_.owners &&
+               options_.owners->size() == std::size_t(image_.width) * std::size_t(image_.height);
+    }
+
     // rescan for a colour image: every channel's plane by point evaluation, stepped along each
     // span (rounded and clamped as reconstruction writes it when round_values). The candidate
     // metric is the sum of squared channel errors or the largest squared channel error.
@@ -117,11 +125,11 @@ private:
         total_ += sum;
         if (best > 0.0) {
             fs.cand_error = best;
-            by_sum_.set(f, sum, tie_of(fs.cand));
+            if (!max_first_) by_sum_.set(f, sum, tie_of(fs.cand));
             if (track_max_) by_max_.set(f, best, tie_of(fs.cand));
         } else {
             fs.cand_error = -1.0;
-            by_sum_.remove(f);
+            if (!max_first_) by_sum_.remove(f);
             if (track_max_) by_max_.remove(f);
         }
     }
@@ -138,7 +146,7 @@ private:
     std::vector<FaceState> faces_;
     std::vector<std::uint32_t> stamp_;  // generation in which the face was last scanned
     std::uint32_t generation_ = 1;
-    IndexedMaxHeap by_sum_;  // faces with a candidate, keyed on squared-error sum
+    IndexedMaxHeap by_sum_;  // faces with a candidate, keyed on squared-error sum (empty when max_first_)
     IndexedMaxHeap by_max_;  // the same faces keyed on candidate error (only for --max-error)
     bool track_max_ = false;
     bool max_first_ = false;  // GreedyOptions::max_error_first

@@ -10,6 +10,8 @@
 // the round with the smallest largest error kept. The methods then insert points where the
 // error is still above the bound (scaffold.h), so the bound holds whatever the fit reached.
 #pragma once
+#include <vector>
+
 #include "algorithms/imaging/image.h"
 #include "algorithms/model/erd_model.h"
 #include "kernel/cdt.h"
@@ -20,6 +22,17 @@ namespace erd {
 // Refits model's values on cdt against the real image (valid pixels) for `rounds` rounds; returns
 // the largest error over the valid pixels of the values kept (those of the best round, or the
 // values it was given when none was better).
-double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress = {});
+// owners: pixel_owners(cdt, image) when the caller has it (else it is made here).
+double fit_minimax(const Cdt& cdt, const Image& image, ErdModel* model, int rounds, ProgressHook progress = {},
+                   const std::vector<FaceInd>* owners = nullptr);
+
+// The face of cdt that owns each pixel of image (W x H, row by row; kernel/raster.h's rule).
+std::vector<FaceInd> pixel_owners(const Cdt& cdt, const Image& image);
+
+// The largest error over the valid pixels of the real image of model on cdt, each pixel evaluated
+// on the face that owns it (as reconstruct evaluates a real model's pixels); -1 for an integer image.
+// owners: pixel_owners(cdt, image) when the caller has it.
+double largest_error(const Cdt& cdt, const Image& image, const ErdModel& model,
+                     const std::vector<FaceInd>* owners = nullptr);
 
 }  // namespace erd

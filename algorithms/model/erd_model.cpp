@@ -112,31 +112,33 @@ double ErdModel::mmsodd_near(double x, double y) {
 }
 
 void ErdModel::assign_vertex(const Cdt& cdt, VertInd v) {
-    if (first_.size() <= v) {
-        first_.resize(std::size_t(v) + 1, 0);
-        count_.resize(std::size_t(v) + 1, 0);
-    }
-    first_[v] = std::uint32_t(entries_.size());
+    if (slots_.size() <= v) slots_.resize(std::size_t(v) + 1);
+    slots_[v].first = std::uint32_t(entries_.size());
     if (cdt.wedge_count(v) <= 1) {
         const LatticePoint p = cdt.point(v);
         entries_.push_back({kOnlyWedge, bilinear_doubled(phi_, p.x, p.y)});
-        count_[v] = 1;
+        entry_vertex_.push_back(v);
+        slots_[v].count = 1;
+        slots_[v].value = entries_.back().value;
         return;
     }
     cdt.wedges(v, &scratch_);
-    for (const Wedge& w : scratch_) entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
-    count_[v] = std::uint32_t(scratch_.size());
+    for (const Wedge& w : scratch_) {
+        entries_.push_back({w.id, multi_wedge_value(cdt, v, w)});
+        entry_vertex_.push_back(v);
+    }
+    slots_[v].count = std::uint32_t(scratch_.size());
     if (phi_.real()) pin_pixel(cdt, v);
 }
 
 void ErdModel::pin_pixel(const Cdt& cdt, VertInd v, double bound) {
     const LatticePoint p = cdt.point(v);
-    if ((p.x & 1) || (p.y & 1) || v >= count_.size() || count_[v] == 0) return;
+    if ((p.x & 1) || (p.y & 1) || v >= slots_.size() || slots_[v].count == 0) return;
     const std::size_t px = std::size_t(p.y / 2) * std::size_t(phi_.width) + std::size_t(p.x / 2);
     if (!phi_.valid.empty() && !phi_.valid[px]) return;
     const double z = phi_.reals[px];
-    if (count_[v] == 1) {
-        if (bound < 0 || std::fabs(entries_[first_[v]].value - z) > bound) entries_[first_[v]].value = z;
+    if (slots_[v].count == 1) {
+        if (bound < 0 || std::fabs(entries_[slots_[v].first].value - z) > bound) set_entry_value(slots_[v].first, z);
         return;
     }
     // The wedge of the face that owns the vertex's pixel (kernel/raster.h).
@@ -155,28 +157,29 @@ void ErdModel::pin_pixel(const Cdt& cdt, VertInd v, double bound) {
 
 void ErdModel::pin_pixel_vertices(const Cdt& cdt) {
     if (!phi_.real()) return;
-    for (VertInd v = 0; v < count_.size(); ++v) pin_pixel(cdt, v);
+    for (VertInd v = 0; v < slots_.size(); ++v) pin_pixel(cdt, v);
 }
 
 void ErdModel::pin_pixel_vertices(const Cdt& cdt, double bound) {
     if (!phi_.real()) return;
-    for (VertInd v = 0; v < count_.size(); ++v) pin_pixel(cdt, v, bound);
+    for (VertInd v = 0; v < slots_.size(); ++v) pin_pixel(cdt, v, bound);
 }
 
 void ErdModel::assign_all(const Cdt& cdt) {
     const std::size_t n = cdt.vertex_count();
-    first_.assign(n, 0);
-    count_.assign(n, 0);
+    slots_.assign(n, Slot());
     entries_.clear();
     entries_.reserve(n + n / 4);
+    entry_vertex_.clear();
+    entry_vertex_.reserve(n + n / 4);
     for (std::size_t v = 0; v < n; ++v) assign_vertex(cdt, VertInd(v));
 }
 
 double ErdModel::wedge_value(VertInd v, WedgeId id) const {
-    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
-    const Entry* e = &entries_[first_[v]];
-    if (count_[v] == 1) return e->value;
-    for (std::uint32_t i = 0; i < count_[v]; ++i)
+    if (v >= slots_.size() || slots_[v].count == 0) return std::numeric_limits<double>::quiet_NaN();
+    const Entry* e = &entries_[slots_[v].first];
+    if (slots_[v].count == 1) return e->value;
+    for (std::uint32_t i = 0; i < slots_[v].count; ++i)
         if (e[i].id == id) return e[i].value;
     return std::numeric_limits<double>::quiet_NaN();
 }
@@ -190,7 +193,7 @@ std::uint32_t ErdModel::multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) 
     while (cdt.twin(b) != noEdge && !cdt.constrained(b)) b = cdt.rot_prev(b);
     const LatticePoint p = cdt.point(v), q = cdt.point(cdt.dest(b));
     const std::int64_t dx = std::int64_t(q.x) - p.x, dy = std::int64_t(q.y) - p.y;
-    for (std::uint32_t i = first_[v]; i < first_[v] + count_[v]; ++i) {
+    for (std::uint32_t i = slots_[v].first; i < slots_[v].first + slots_[v].count; ++i) {
         const WedgeId id = entries_[i].id;
         const std::int64_t ex = std::int32_t(std::uint32_t(id >> 32)), ey = std::int32_t(std::uint32_t(id));
         if (ex * dy - ey * dx == 0 && ex * dx + ey * dy > 0) return i;
@@ -200,24 +203,24 @@ std::uint32_t ErdModel::multi_wedge_entry(const Cdt& cdt, VertInd v, EdgeInd e) 
 
 double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
-    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
-    if (count_[v] == 1) return entries_[first_[v]].value;
+    if (v >= slots_.size() || slots_[v].count == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (slots_[v].count == 1) return slots_[v].value;
     const std::uint32_t i = multi_wedge_entry(cdt, v, e);
     return i == kNoEntry ? std::numeric_limits<double>::quiet_NaN() : entries_[i].value;
 }
 
 std::uint32_t ErdModel::corner_entry(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
-    if (count_[v] == 1) return first_[v];
+    if (slots_[v].count == 1) return slots_[v].first;
     const std::uint32_t i = multi_wedge_entry(cdt, v, e);
-    return i == kNoEntry ? first_[v] : i;
+    return i == kNoEntry ? slots_[v].first : i;
 }
 
 double ErdModel::vertex_value(VertInd v) const {
-    if (v >= count_.size() || count_[v] == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (v >= slots_.size() || slots_[v].count == 0) return std::numeric_limits<double>::quiet_NaN();
     double s = 0;
-    for (std::uint32_t i = 0; i < count_[v]; ++i) s += entries_[first_[v] + i].value;
-    return s / count_[v];
+    for (std::uint32_t i = 0; i < slots_[v].count; ++i) s += entries_[slots_[v].first + i].value;
+    return s / slots_[v].count;
 }
 
 SpanPlane ErdModel::face_plane(const Cdt& cdt, FaceInd f) const {

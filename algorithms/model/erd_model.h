@@ -85,7 +85,7 @@ public:
     void pin_pixel_vertices(const Cdt& cdt, double bound);
 
     // Number of stored wedges of v (0 when never assigned).
-    std::uint32_t wedge_count(VertInd v) const { return v < count_.size() ? count_[v] : 0; }
+    std::uint32_t wedge_count(VertInd v) const { return v < slots_.size() ? slots_[v].count : 0; }
     // The value of the wedge with id `id` of v, or of its only wedge. NaN when v has no such wedge.
     double wedge_value(VertInd v, WedgeId id) const;
     // The wedge value at corner e (a half-edge leaving v): the value of the wedge face e/3 lies in.
@@ -105,7 +105,11 @@ public:
     std::uint32_t corner_entry(const Cdt& cdt, EdgeInd e) const;
     std::size_t entry_count() const { return entries_.size(); }
     double entry_value(std::size_t i) const { return entries_[i].value; }
-    void set_entry_value(std::size_t i, double z) { entries_[i].value = z; }
+    void set_entry_value(std::size_t i, double z) {
+        entries_[i].value = z;
+        Slot& s = slots_[entry_vertex_[i]];
+        if (s.count == 1 && s.first == i) s.value = z;  // a vertex's only value, kept in its slot too
+    }
 
     // The line search's MMSODD at pixel (x, y) inside the image when no grid was supplied: the
     // filters of mmsodd(phi, smoothing_order) with zero borders at that pixel, computed on first
@@ -150,9 +154,17 @@ private:
     double smoothed_pixel(int u, int v) const;  // S of algorithms/mmsodd.h at pixel (u, v)
     int stencil_radius_ = -1;  // radius of taps_b_ (the binomial); < 0 until the first use
     std::vector<double> taps_b_;
-    std::vector<std::uint32_t> first_;  // per vertex: index of its first entry
-    std::vector<std::uint32_t> count_;  // per vertex: number of entries (wedges)
+    // Per vertex: the index of its first entry, the number of its entries (wedges) and, for a
+    // vertex of one wedge, a copy of its value: a corner's value then reads the slot alone (one
+    // cache line; the entry's load missed the cache on 1-2 pixel faces: docs/log/dem-speed.md).
+    struct Slot {
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;
+        double value = 0;
+    };
+    std::vector<Slot> slots_;
     std::vector<Entry> entries_;
+    std::vector<VertInd> entry_vertex_;  // per entry: its vertex (set_entry_value's slot copy)
     std::vector<Wedge> scratch_;
     std::vector<EdgeInd> star_;
     Stats stats_;
