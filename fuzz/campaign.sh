@@ -18,6 +18,9 @@
 #                 FUZZ_MERGE_BYTES (default 8192) bytes, and none once the target's seeds hold
 #                 FUZZ_SEED_BYTES (default 524288): `git add fuzz/corpus` keeps them
 #   findings      build-fuzz/campaign/NAME/ (crash-*, leak-*, timeout-*, oom-*), with the log
+#   the record    fuzz/campaign.tsv (committed): a line per target and run (date, commit fuzzed,
+#                 target, CPU s, wall s, executions, corpus, findings); docs/HOSTILE.md's
+#                 "Fuzz campaign" table sums it per target (tools/hostile_table.sh)
 #   targets       build-asan/NAME, built as fuzz/run.sh builds them (ASan + UBSan + libFuzzer)
 #
 # A target that finds something is started again on the same corpus for the time left (at most
@@ -108,6 +111,11 @@ campaign() {
         rm -rf "$m" "$dir/seeds.list"
     fi
     echo "$execs $(ls "$corpus" | wc -l) $findings $merged $starts $fuzzed $wall" >"$dir/result"
+    # The record: the commit fuzzed ("+" when the work tree differed from it).
+    local commit; commit=$(git rev-parse --short=7 HEAD 2>/dev/null || echo unknown)
+    git diff --quiet HEAD -- . ':!fuzz/campaign.tsv' ':!fuzz/corpus' 2>/dev/null || commit+="+"
+    printf '%s\t%s\t%s\t%d\t%d\t%d\t%d\t%d\n' "$(date -u +%F)" "$commit" "$n" "$fuzzed" "$wall" "$execs" \
+        "$(ls "$corpus" | wc -l)" "$findings" >>fuzz/campaign.tsv
 }
 
 echo "fuzz campaign: ${#names[@]} targets, $SECONDS_EACH CPU s each, $jobs at a time; kept corpus $KEPT"

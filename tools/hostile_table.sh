@@ -537,4 +537,22 @@ OLDA=$(sum a.pgm)
 CHECK='[[ $(sum a.pgm) == "$OLDA" ]]' case_ "psnr: the summary is an ORIGINAL: refused" 2 psnr '{name}.pgm' many/a.pgm many/in/c.pgm --summary ./a.pgm
 mkdir esc; cp in.pgm esc/$'a\033]0;x\007.pgm'; cp in.pgm $'a\033]0;x\007.pgm'
 SHOW='(stdout: esc/a\x1b]0;x\x07.pgm inf)' CHECK='! LC_ALL=C grep -q $'"'"'\033'"'"' out.stdout' case_ "psnr over many: a name with escapes is printed escaped on stdout" 0 psnr '{name}.pgm' esc/
+cat <<'EOF'
+
+## Fuzz campaign (issue 49)
+`make fuzz-campaign` (fuzz/campaign.sh): every target on a corpus kept from run to run, timed by
+its own CPU time; each run's line is in fuzz/campaign.tsv, summed here per target (the corpus is
+the latest run's; "commits" are the sources fuzzed). make test runs the short smoke runs.
+
+| target | CPU hours | executions | corpus | findings | runs | commits |
+| --- | --- | --- | --- | --- | --- | --- |
+EOF
+for t in $(cd "$SRC/fuzz" && ls fuzz_*.cpp | sed 's/\.cpp$//'); do
+    awk -F'\t' -v t="$t" '$3 == t { cpu += $4; ex += $6; corpus = $7; f += $8; runs++; if (!($2 in seen)) { seen[$2] = 1; c = c (c ? " " : "") $2 } }
+        END { printf "| %s | %.2f | %d | %s | %d | %d | %s |\n", t, cpu / 3600, ex, runs ? corpus : "-", f, runs, runs ? c : "-" }' \
+        "$SRC/fuzz/campaign.tsv"
+done
+echo
+awk -F'\t' '{ cpu[$3] += $4 } END { n = 0; for (t in cpu) if (cpu[t] >= 3600) n++; printf "Targets with at least one CPU hour: %d.\n", n }' "$SRC/fuzz/campaign.tsv"
+
 exit $bad
