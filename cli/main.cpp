@@ -94,8 +94,9 @@ namespace {
 // edge detector's planes between detections, the greedy and refit arrays after them) is paid
 // for again in page faults. A fixed threshold above the largest of them takes them from the
 // heap, where freed blocks are reused as they are: fewer faults for a little more peak RSS
-// (docs/DECISIONS.md "Memory"). Keeping the freed top of the heap as well (M_TRIM_THRESHOLD)
-// saves few more faults for more RSS, so it is left alone.
+// (docs/DECISIONS.md "Memory"). The freed top of the heap is kept too (M_TRIM_THRESHOLD, up to
+// 256 MiB): ERDGPR's refits, removal cache and flip rounds free and take again arrays of a few MB
+// each, which glibc would otherwise give back and fault in again (kodim03 2%: 23.0k -> 5.5k faults).
 //
 // Not under Valgrind: its tools run glibc's allocator in a brk segment of a few MB, and heap
 // growth beyond it fails (std::bad_alloc on lena). Valgrind always preloads its vgpreload_*
@@ -105,6 +106,7 @@ namespace {
     const char* preload = std::getenv("LD_PRELOAD");
     if (preload && std::strstr(preload, "vgpreload")) return;
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
 }
 
