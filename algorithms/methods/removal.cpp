@@ -76,6 +76,45 @@ double PointRemover::triangle_error(const LatticePoint* p, const double* z) cons
     const std::size_t width = std::size_t(image_.width), nc = std::size_t(channels_);
     const std::uint16_t* samples = image_.samples.data();
     double total = 0.0;
+    if (!round_ && channels_ > 1 && channels_ <= 3) {
+        // The ERD model's colour errors: one pass over the face's pixels for all channels, each
+        // channel's sum in the order the one-channel loop below takes (the same doubles).
+        SpanPlane planes[3];
+        double dv[3], sums[3] = {0.0, 0.0, 0.0};
+        for (int c = 0; c < channels_; ++c) {
+            planes[c].set(p[0], z[c], p[1], z[channels_ + c], p[2], z[2 * channels_ + c]);
+            dv[c] = 2.0 * planes[c].gx;
+        }
+        for_each_owned_row(Lattice::pixels(), domain_, p[0], p[1], p[2], [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            const std::uint16_t* px = samples + (std::size_t(j) * width + std::size_t(lo)) * nc;
+            if (nc == 3) {
+                double v0 = planes[0].at(double(2 * lo), double(2 * j)), v1 = planes[1].at(double(2 * lo), double(2 * j)),
+                       v2 = planes[2].at(double(2 * lo), double(2 * j));
+                double s0 = sums[0], s1 = sums[1], s2 = sums[2];
+                for (std::int32_t x = lo; x <= hi; ++x, px += 3, v0 += dv[0], v1 += dv[1], v2 += dv[2]) {
+                    const double e0 = double(px[0]) - v0, e1 = double(px[1]) - v1, e2 = double(px[2]) - v2;
+                    s0 += e0 * e0;
+                    s1 += e1 * e1;
+                    s2 += e2 * e2;
+                }
+                sums[0] = s0;
+                sums[1] = s1;
+                sums[2] = s2;
+                return;
+            }
+            for (int c = 0; c < channels_; ++c) {
+                double v = planes[c].at(double(2 * lo), double(2 * j)), sum = sums[c];
+                const std::uint16_t* q = px + c;
+                for (std::int32_t x = lo; x <= hi; ++x, v += dv[c], q += nc) {
+                    const double e = double(*q) - v;
+                    sum += e * e;
+                }
+                sums[c] = sum;
+            }
+        });
+        for (int c = 0; c < channels_; ++c) total += sums[c];
+        return total;
+    }
     for (int c = 0; c < channels_; ++c) {
         const double z0 = z[c], z1 = z[channels_ + c], z2 = z[2 * channels_ + c];
         // Integer values (the basic model's samples) round exactly, as reconstruction does, so
