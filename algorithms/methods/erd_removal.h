@@ -29,6 +29,7 @@ class ErdRemovalModel : public RemovalModel {
 public:
     explicit ErdRemovalModel(ErdModel& model) : model_(model) {}
     double corner_value(const Cdt& cdt, EdgeInd e, int) const override { return model_.corner_value(cdt, e); }
+    void corner_values(const Cdt& cdt, EdgeInd e, int, double* z) const override { z[0] = model_.corner_value(cdt, e); }
     void on_vertex_inserted(const Cdt& cdt, VertInd v) override { model_.assign_vertex(cdt, v); }
     void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const override {
         out->assign(1, model_.corner_value(cdt, cdt.out_edge(v)));
@@ -46,6 +47,12 @@ class ErdChannelsRemovalModel : public RemovalModel {
 public:
     explicit ErdChannelsRemovalModel(ErdChannels& model) : model_(model) {}
     double corner_value(const Cdt& cdt, EdgeInd e, int c) const override { return model_.channel(c).corner_value(cdt, e); }
+    // The channels share their wedges (erd_channels.h): corner e's entry is looked up once.
+    void corner_values(const Cdt& cdt, EdgeInd e, int channels, double* z) const override {
+        const std::uint32_t i = model_.channel(0).corner_lookup(cdt, e);
+        const VertInd v = cdt.org(e);
+        for (int c = 0; c < channels; ++c) z[c] = model_.channel(c).looked_up_value(v, i);
+    }
     void on_vertex_inserted(const Cdt& cdt, VertInd v) override { model_.assign_vertex(cdt, v); }
     void save_values(const Cdt& cdt, VertInd v, std::vector<double>* out) const override {
         out->clear();

@@ -164,7 +164,7 @@ void PointRemover::face_corners(FaceInd f, LatticePoint* p, double* z) const {
     for (int i = 0; i < 3; ++i) {
         const EdgeInd e = 3 * f + EdgeInd(i);
         p[i] = cdt_.point(cdt_.org(e));
-        for (int c = 0; c < channels_; ++c) z[i * channels_ + c] = model_.corner_value(cdt_, e, c);
+        model_.corner_values(cdt_, e, channels_, z + i * channels_);
     }
 }
 
@@ -186,12 +186,14 @@ bool PointRemover::gather(VertInd v) {
         star_.push_back(face_of(e));
         const EdgeInd at_q = next_edge(e);
         poly_.push_back(cdt_.org(at_q));
-        for (int c = 0; c < channels_; ++c) polyz_.push_back(model_.corner_value(cdt_, at_q, c));
+        polyz_.resize(polyz_.size() + std::size_t(channels_));
+        model_.corner_values(cdt_, at_q, channels_, polyz_.data() + polyz_.size() - std::size_t(channels_));
     }
     if (cdt_.on_boundary(v)) {  // open fan: the last neighbour closes it
         const EdgeInd at_q = prev_edge(corners_.back());
         poly_.push_back(cdt_.org(at_q));
-        for (int c = 0; c < channels_; ++c) polyz_.push_back(model_.corner_value(cdt_, at_q, c));
+        polyz_.resize(polyz_.size() + std::size_t(channels_));
+        model_.corner_values(cdt_, at_q, channels_, polyz_.data() + polyz_.size() - std::size_t(channels_));
     }
     return true;
 }

@@ -39,6 +39,10 @@ class RemovalModel {
 public:
     virtual ~RemovalModel() = default;
     virtual double corner_value(const Cdt& cdt, EdgeInd e, int c) const = 0;
+    // Every channel's value at corner e into z[0 .. channels).
+    virtual void corner_values(const Cdt& cdt, EdgeInd e, int channels, double* z) const {
+        for (int c = 0; c < channels; ++c) z[c] = corner_value(cdt, e, c);
+    }
     // Called after PointRemover::insert created vertex v: assign its values.
     virtual void on_vertex_inserted(const Cdt& cdt, VertInd v) {
         (void)cdt;

@@ -209,6 +209,14 @@ double ErdModel::corner_value(const Cdt& cdt, EdgeInd e) const {
     return i == kNoEntry ? std::numeric_limits<double>::quiet_NaN() : entries_[i].value;
 }
 
+std::uint32_t ErdModel::corner_lookup(const Cdt& cdt, EdgeInd e) const {
+    const VertInd v = cdt.org(e);
+    if (v >= slots_.size() || slots_[v].count == 0) return kNoValue;
+    if (slots_[v].count == 1) return slots_[v].first;
+    static_assert(kNoEntry == kNoValue, "corner_lookup returns multi_wedge_entry's none");
+    return multi_wedge_entry(cdt, v, e);
+}
+
 std::uint32_t ErdModel::corner_entry(const Cdt& cdt, EdgeInd e) const {
     const VertInd v = cdt.org(e);
     if (slots_[v].count == 1) return slots_[v].first;

@@ -20,6 +20,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -103,6 +104,14 @@ public:
     // The flat index of the stored wedge value that corner e uses (for fitting all values at once),
     // and the values themselves in that indexing.
     std::uint32_t corner_entry(const Cdt& cdt, EdgeInd e) const;
+    // corner_value in two steps, the lookup once for models of the same wedges (ErdChannels'
+    // channels): the entry corner e reads (kNoValue: none, the NaN), then that entry's value.
+    static constexpr std::uint32_t kNoValue = 0xffffffffu;
+    std::uint32_t corner_lookup(const Cdt& cdt, EdgeInd e) const;
+    double looked_up_value(VertInd v, std::uint32_t i) const {
+        if (i == kNoValue) return std::numeric_limits<double>::quiet_NaN();
+        return slots_[v].count == 1 ? slots_[v].value : entries_[i].value;
+    }
     std::size_t entry_count() const { return entries_.size(); }
     double entry_value(std::size_t i) const { return entries_[i].value; }
     void set_entry_value(std::size_t i, double z) {
