@@ -99,8 +99,16 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     auto tri_error = [&](EdgeInd e0, EdgeInd e1, EdgeInd e2, double base, double stop) {
         double z[3][kMaxChannels];
         const EdgeInd e[3] = {e0, e1, e2};
-        for (int i = 0; i < 3; ++i)
-            for (std::size_t c = 0; c < C; ++c) z[i][c] = models[c]->corner_value(*cdt, e[i]);
+        for (int i = 0; i < 3; ++i) {
+            if (C == 1) {
+                z[i][0] = models[0]->corner_value(*cdt, e[i]);
+                continue;
+            }
+            // The channels share their wedges (flips.h): corner e[i]'s entry is looked up once.
+            const std::uint32_t at = models[0]->corner_lookup(*cdt, e[i]);
+            const VertInd v = cdt->org(e[i]);
+            for (std::size_t c = 0; c < C; ++c) z[i][c] = models[c]->looked_up_value(v, at);
+        }
         return triangle_error(cdt->point(cdt->org(e0)), z[0], cdt->point(cdt->org(e1)), z[1], cdt->point(cdt->org(e2)),
                               z[2], base, stop);
     };
@@ -200,6 +208,11 @@ void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     for (MeshSystems* s : systems)
         if (!s || !s->matches(*cdt)) return;
     TriangleError tri_error(planes, *cdt);
+    const RasterDomain domain{cdt->max_x(), cdt->max_y()};
+    const bool fuse = C == 3 && !planes[0]->real() && planes[1]->width == planes[0]->width &&
+                      planes[2]->width == planes[0]->width;
+    (void)domain;
+    (void)fuse;
     std::vector<EdgeInd> star;
     std::vector<double> zs;  // per star corner and channel: (z_a, z_b) of the face (v, a, b)
     for (VertInd v = 4; v < cdt->vertex_count(); ++v) {
@@ -219,10 +232,29 @@ void move_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
             const FaceInd f = face_of(e);
             const EdgeInd k = 3 * f;
             const int i = int(e - k);
+            std::uint32_t at[3] = {0, 0, 0};
+            if constexpr (C == 3) {
+                // The channels share their wedges (flips.h): each corner's entry looked up once, and
+                // the three channels' systems of a stale face made in one pass over its pixels.
+                for (int j = 0; j < 3; ++j) at[j] = models[0]->corner_lookup(*cdt, k + EdgeInd(j));
+                if (fuse && systems[0]->stale[f] && systems[1]->stale[f] && systems[2]->stale[f]) {
+                    FaceSystem fs3[3];
+                    face_systems3(planes.data(), domain, cdt->point(cdt->org(k)), cdt->point(cdt->org(k + 1)),
+                                  cdt->point(cdt->org(k + 2)), fs3);
+                    for (std::size_t c = 0; c < 3; ++c) {
+                        systems[c]->faces[f] = fs3[c];
+                        systems[c]->stale[f] = 0;
+                    }
+                }
+            }
             for (std::size_t c = 0; c < C; ++c) {
                 const ErdModel& model = *models[c];
-                const double z[3] = {model.corner_value(*cdt, k), model.corner_value(*cdt, k + 1),
-                                     model.corner_value(*cdt, k + 2)};
+                double z[3];
+                if constexpr (C == 3) {
+                    for (int j = 0; j < 3; ++j) z[j] = model.looked_up_value(cdt->org(k + EdgeInd(j)), at[j]);
+                } else {
+                    for (int j = 0; j < 3; ++j) z[j] = model.corner_value(*cdt, k + EdgeInd(j));
+                }
                 const FaceSystem& fs = systems[c]->get(*cdt, *planes[c], f);
                 double gz[3];
                 fs.gram_times(z[0], z[1], z[2], gz);

@@ -36,7 +36,8 @@ void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::
                       double min_share = 0.0);
 
 // The same for a colour model (issue 17): channel c's values from models[c] on planes[c], the
-// squared error summed over the channels (no systems, no skip).
+// squared error summed over the channels (no systems, no skip). The models are one ErdChannels'
+// channels: they share their wedges (entries in the same order), so a corner is looked up once.
 void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
                       std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces = nullptr);
 
@@ -55,9 +56,9 @@ struct MoveStats {
 void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::int32_t step, double min_gain,
                       MeshSystems* systems, MoveStats* stats);
 
-// The same for one triangulation's 1 or 3 channels (a colour model: models[c] on planes[c]): the
-// gradient and the errors summed over the channels, each channel's face systems made here as the
-// moves first need them.
+// The same for one triangulation's 1 or 3 channels (a colour model: models[c] on planes[c], one
+// ErdChannels' channels, which share their wedges): the gradient and the errors summed over the
+// channels, the channels' face systems made here (in one pass) as the moves first need them.
 void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
                       std::int32_t step, double min_gain, MoveStats* stats);
 

@@ -272,6 +272,13 @@ FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0,
     return fs;
 }
 
+void face_systems3(const Image* const* planes, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
+                   FaceSystem* out) {
+    // accumulate<3> sums each channel's terms as accumulate<1> does, the Gram matrix once.
+    for (int k = 0; k < 3; ++k) out[k] = FaceSystem();
+    accumulate<3>(planes, domain, p0, p1, p2, out);
+}
+
 const FaceSystem& MeshSystems::get(const Cdt& cdt, const Image& image, FaceInd f) {
     if (stale[f]) {
         const EdgeInd e = 3 * f;

@@ -54,6 +54,10 @@ struct FaceSystem {
 // corners 0, 1, 2) over the pixels it owns. Bit for bit what the refit's own pass over the
 // pixels makes for such a face.
 FaceSystem face_system(const Image& image, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2);
+// The same for three planes of one size (a colour image's channels) in one pass over the pixels:
+// out[k] is bit for bit face_system(*planes[k], ...).
+void face_systems3(const Image* const* planes, RasterDomain domain, LatticePoint p0, LatticePoint p1, LatticePoint p2,
+                   FaceSystem* out);
 
 // The systems of a mesh's faces by face slot, kept in step with the mesh: the refit fills them
 // when they are missing, and the flips (flips.h) rewrite those of the faces they flip, so the
