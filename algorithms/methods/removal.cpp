@@ -238,23 +238,24 @@ void PointRemover::hole(VertInd v, std::vector<std::array<VertInd, 3>>* out) {
     for (std::size_t t = 0; t < tris_.size(); t += 3) out->push_back({poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]});
 }
 
-std::size_t PointRemover::cache_slot(const VertInd* v, CacheSlot* key) {
+std::uint64_t PointRemover::cache_key(const VertInd* v, CacheSlot* key) {
     const int r = v[1] < v[0] ? (v[2] < v[1] ? 2 : 1) : (v[2] < v[0] ? 2 : 0);  // rotate the smallest first
     *key = CacheSlot{v[r], v[(r + 1) % 3], v[(r + 2) % 3], 0.0};
-    if (cache_.empty()) cache_.resize(std::size_t(1) << 16);
+    return (std::uint64_t(key->a) * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(key->b) * 0xC2B2AE3D27D4EB4Full) ^
+           (std::uint64_t(key->c) * 0x165667B19E3779F9ull);
+}
+
+std::size_t PointRemover::cache_slot(const CacheSlot& key, std::uint64_t h) {
     const std::size_t mask = cache_.size() - 1;
-    const std::uint64_t h = (std::uint64_t(key->a) * 0x9E3779B97F4A7C15ull) ^
-                            (std::uint64_t(key->b) * 0xC2B2AE3D27D4EB4Full) ^ (std::uint64_t(key->c) * 0x165667B19E3779F9ull);
     std::size_t i = std::size_t(h >> 20) & mask;
     for (; cache_[i].a != noVertex; i = (i + 1) & mask)
-        if (cache_[i].a == key->a && cache_[i].b == key->b && cache_[i].c == key->c) break;
+        if (cache_[i].a == key.a && cache_[i].b == key.b && cache_[i].c == key.c) break;
     return i;
 }
 
-double PointRemover::hole_triangle_error(std::size_t t) {
-    const VertInd v[3] = {poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]};
-    CacheSlot key;
-    const std::size_t i = cache_slot(v, &key);
+double PointRemover::hole_triangle_error(std::size_t t, const CacheSlot& key_in, std::uint64_t hash) {
+    CacheSlot key = key_in;
+    const std::size_t i = cache_slot(key, hash);
     if (cache_[i].a != noVertex) return cache_[i].error;
     LatticePoint p[3];
     double z[3 * 3];
@@ -283,8 +284,16 @@ bool PointRemover::significance_of(VertInd v, double* sig) {
     double before = 0.0;
     for (FaceInd f : star_) before += face_err_[f];
     triangulate_hole();
+    if (cache_.empty()) cache_.resize(std::size_t(1) << 16);
+    keys_.resize(tris_.size() / 3);
+    for (std::size_t t = 0; t < tris_.size(); t += 3) {
+        const VertInd tv[3] = {poly_[tris_[t]], poly_[tris_[t + 1]], poly_[tris_[t + 2]]};
+        auto& k = keys_[t / 3];
+        k.second = cache_key(tv, &k.first);
+        prefetch_slot(k.second);
+    }
     double after = 0.0;
-    for (std::size_t t = 0; t < tris_.size(); t += 3) after += hole_triangle_error(t);
+    for (std::size_t t = 0; t < tris_.size(); t += 3) after += hole_triangle_error(t, keys_[t / 3].first, keys_[t / 3].second);
     *sig = after - before;
     return true;
 }
@@ -321,15 +330,22 @@ void PointRemover::rescan_created(bool cached) {
         face_err_[f] = 0.0;
         if (track_) by_face_.remove(f);
     }
-    for (FaceInd f : cdt_.changes().created) {
+    const std::vector<FaceInd>& created = cdt_.changes().created;
+    if (cached) {
+        if (cache_.empty()) cache_.resize(std::size_t(1) << 16);
+        keys_.resize(created.size());
+        for (std::size_t n = 0; n < created.size(); ++n) {
+            const FaceInd f = created[n];
+            const VertInd v[3] = {cdt_.face_vertex(f, 0), cdt_.face_vertex(f, 1), cdt_.face_vertex(f, 2)};
+            keys_[n].second = cache_key(v, &keys_[n].first);
+            prefetch_slot(keys_[n].second);
+        }
+    }
+    for (std::size_t n = 0; n < created.size(); ++n) {
+        const FaceInd f = created[n];
         // After a removal the created faces are the hole's triangles, whose errors significance()
         // mostly cached (the same pixels and values: hole_triangle_error).
-        std::size_t i = 0;
-        CacheSlot key;
-        if (cached) {
-            const VertInd v[3] = {cdt_.face_vertex(f, 0), cdt_.face_vertex(f, 1), cdt_.face_vertex(f, 2)};
-            i = cache_slot(v, &key);
-        }
+        const std::size_t i = cached ? cache_slot(keys_[n].first, keys_[n].second) : 0;
         total_ += face_err_[f] = cached && cache_[i].a != noVertex ? cache_[i].error : face_error_now(f);
         if (track_) by_face_.set(f, face_err_[f], f);
     }

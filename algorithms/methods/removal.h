@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "algorithms/imaging/image.h"
@@ -135,14 +136,23 @@ private:
     // change while they live, and a wedge of a polygon vertex is fixed by the triangle), and
     // vertex indices are never reused, so the cache is keyed by the vertex triple; the stars of
     // neighbouring vertices share most of their hole triangles.
-    double hole_triangle_error(std::size_t t);
+    // key, hash: its cache key and hash (cache_key).
     struct CacheSlot {
         VertInd a = noVertex, b = noVertex, c = noVertex;
         double error = 0.0;
     };
-    // The cache slot of triangle v[0..2] (positive order, any rotation): its entry, or the empty
-    // slot where it goes; *key gets the triple in the cache's rotation.
-    std::size_t cache_slot(const VertInd* v, CacheSlot* key);
+    double hole_triangle_error(std::size_t t, const CacheSlot& key, std::uint64_t hash);
+    // Triangle v[0..2] (positive order, any rotation) as the cache keys it: *key gets the triple
+    // in the cache's rotation; returns its hash.
+    static std::uint64_t cache_key(const VertInd* v, CacheSlot* key);
+    // The cache slot of key: its entry, or the empty slot where it goes.
+    std::size_t cache_slot(const CacheSlot& key, std::uint64_t hash);
+    // The probes of a hole's (or the created faces') triangles are independent: their slots are
+    // asked for ahead (the table is larger than the caches), their keys kept here.
+    std::vector<std::pair<CacheSlot, std::uint64_t>> keys_;
+    void prefetch_slot(std::uint64_t hash) const {
+        __builtin_prefetch(&cache_[std::size_t(hash >> 20) & (cache_.size() - 1)]);
+    }
     double face_error_now(FaceInd f) const;
     void face_corners(FaceInd f, LatticePoint* p, double* z) const;  // points, 3 x channels_ values
     // The errors of the faces the last kernel change created; after a removal (cached) from the
