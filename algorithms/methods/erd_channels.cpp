@@ -29,7 +29,8 @@ void ErdChannels::pin_pixel_vertices(const Cdt& cdt) {
 }
 
 void ErdChannels::fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats,
-                      const ProgressHook& progress, const std::vector<std::vector<double>>* priors) {
+                      const ProgressHook& progress, const std::vector<std::vector<double>>* priors,
+                      ColourSystems* systems) {
     std::vector<const Image*> planes;
     std::vector<ErdModel*> models;
     std::vector<const std::vector<double>*> prior;
@@ -39,7 +40,7 @@ void ErdChannels::fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitSt
         if (priors) prior.push_back(&(*priors)[c]);
     }
     std::vector<WedgeFitStats> each;
-    fit_wedge_values(cdt, planes, options, models, &each, priors ? &prior : nullptr, progress);
+    fit_wedge_values(cdt, planes, options, models, &each, priors ? &prior : nullptr, progress, systems);
     *stats = WedgeFitStats();
     for (const WedgeFitStats& s : each) {
         stats->iterations = s.iterations > stats->iterations ? s.iterations : stats->iterations;
@@ -69,11 +70,11 @@ void ErdChannels::flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const 
     improve_by_flips(cdt, planes, models, max_flips, stats, seed_faces);
 }
 
-void ErdChannels::move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats) const {
+void ErdChannels::move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats, const ColourSystems* kept) const {
     std::vector<const Image*> planes;
     std::vector<const ErdModel*> models;
     views(&planes, &models);
-    improve_by_moves(cdt, planes, models, step, min_gain, stats);
+    improve_by_moves(cdt, planes, models, step, min_gain, stats, kept);
 }
 
 void ErdChannels::to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const {

@@ -40,14 +40,15 @@ public:
     // around its current (line-search) values; the stats add the channels' squared errors.
     // priors: channel c's values to draw towards and bound around instead of its current ones
     // (the line-search values when a refit already moved them); may be null.
+    // systems (optional): the face systems kept from the refits and moves before (wedge_fit.h).
     void fit(const Cdt& cdt, const WedgeFitOptions& options, WedgeFitStats* stats, const ProgressHook& progress = {},
-             const std::vector<std::vector<double>>* priors = nullptr);
+             const std::vector<std::vector<double>>* priors = nullptr, ColourSystems* systems = nullptr);
     // Every channel's current values (ErdModel::entry_value), channel by channel.
     std::vector<std::vector<double>> values() const;
     // Data-dependent flips (flips.h) on the squared error summed over the channels.
     void flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const;
     // Vertex moves (flips.h improve_by_moves) on the squared error summed over the channels.
-    void move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats) const;
+    void move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats, const ColourSystems* kept = nullptr) const;
     // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).
     void to_model(const Cdt& cdt, int width, int height, std::uint32_t maxval, Model* out) const;
 

@@ -307,7 +307,7 @@ void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::
 }
 
 void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
-                      std::int32_t step, double min_gain, MoveStats* stats) {
+                      std::int32_t step, double min_gain, MoveStats* stats, const ColourSystems* kept) {
     if (stats) *stats = MoveStats();
     // Each channel's systems made as the moves first need them (a face's pass over the pixels).
     std::vector<MeshSystems> own(models.size());
@@ -316,6 +316,16 @@ void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const s
         s.faces.resize(cdt->face_count());
         s.stale.assign(cdt->face_count(), 1);
         systems.push_back(&s);
+    }
+    if (kept && models.size() == 3) {
+        for (FaceInd f = 0; f < cdt->face_count(); ++f) {
+            const FaceSystem* fs = kept->find(*cdt, f);
+            if (!fs) continue;
+            for (std::size_t c = 0; c < 3; ++c) {
+                own[c].faces[f] = fs[c];
+                own[c].stale[f] = 0;
+            }
+        }
     }
     if (models.size() == 1) move_channels<1>(cdt, planes, models, step, min_gain, systems, stats);
     else if (models.size() == 3) move_channels<3>(cdt, planes, models, step, min_gain, systems, stats);

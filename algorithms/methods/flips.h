@@ -58,8 +58,9 @@ void improve_by_moves(Cdt* cdt, const Image& image, const ErdModel& model, std::
 
 // The same for one triangulation's 1 or 3 channels (a colour model: models[c] on planes[c], one
 // ErdChannels' channels, which share their wedges): the gradient and the errors summed over the
-// channels, the channels' face systems made here (in one pass) as the moves first need them.
+// channels, the channels' face systems made here (in one pass) as the moves first need them, or
+// taken from *kept (optional, three channels) where its faces' corners are the same.
 void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
-                      std::int32_t step, double min_gain, MoveStats* stats);
+                      std::int32_t step, double min_gain, MoveStats* stats, const ColourSystems* kept = nullptr);
 
 }  // namespace erd

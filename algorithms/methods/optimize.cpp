@@ -45,14 +45,15 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
 }
 
 void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* model,
-                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats) {
+                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats,
+                       ColourSystems* systems) {
     std::vector<FaceInd> seed;  // as the gray rounds above, their refits with half the steps too
     WedgeFitOptions later = wedge_fit_options(options);
     later.iterations = (later.iterations + 1) / 2;
     const bool with_moves = options.colour.moves && options.moves > 0 && options.wedge_fit > 0;
     const auto refit = [&] {
         WedgeFitStats again;
-        model->fit(*cdt, later, &again, {}, line_search);
+        model->fit(*cdt, later, &again, {}, line_search, systems);
         if (stats) stats->sse_after = again.sse_after;
     };
     for (int round = 0; round < options.flips; ++round) {
@@ -64,7 +65,7 @@ void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* mo
         if (options.wedge_fit > 0 && fs.flips > 0) refit();
         if (moves) {  // options.colour.moves: as the gray rounds' moves, each followed by a refit
             MoveStats ms;
-            model->move(cdt, std::max<std::int32_t>(1, options.move_step >> round), options.move_min_gain, &ms);
+            model->move(cdt, std::max<std::int32_t>(1, options.move_step >> round), options.move_min_gain, &ms, systems);
             if (ms.moves > 0) refit();
         }
     }

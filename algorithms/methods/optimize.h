@@ -31,9 +31,11 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
                        const std::vector<double>* line_search, WedgeFitStats* stats, MeshSystems* systems = nullptr);
 
 // The same for a colour model: flips on the error summed over the channels, each channel's refit
-// drawn towards (*line_search)[c].
+// drawn towards (*line_search)[c]. systems (optional): the refit before's face systems, kept
+// for the refits and moves here (wedge_fit.h ColourSystems).
 void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* model,
-                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats);
+                       const std::vector<std::vector<double>>* line_search, WedgeFitStats* stats,
+                       ColourSystems* systems = nullptr);
 
 // Replaces *model (a basic model of cdt) by the optimised one: refitted values, flipped faces.
 // Does nothing unless options.optimize.

@@ -476,7 +476,10 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
         // As gray's refit (prior and support bounds per channel), then its flips.
         std::vector<std::vector<double>> line_search;
         if (options.flips) line_search = model->values();
-        model->fit(cdt, wedge_fit_options(options), &result->stats.wedge_fit, options.progress);
+        // The face systems kept for the flips' refits and moves (faces they did not change).
+        ColourSystems systems;
+        model->fit(cdt, wedge_fit_options(options), &result->stats.wedge_fit, options.progress, nullptr,
+                   options.flips ? &systems : nullptr);
         model->pin_pixel_vertices(cdt);
         result->stats.has_wedge_fit = true;
         timer->lap("wedge refit");
@@ -487,7 +490,7 @@ Status finish_erd_method(Cdt& cdt, const Image& image, const GenerateOptions& op
                 before = result->model;
                 model->to_model(cdt, image.width, image.height, image.maxval, &before);
             }
-            optimize_by_flips(&cdt, options, model, &line_search, &result->stats.wedge_fit);
+            optimize_by_flips(&cdt, options, model, &line_search, &result->stats.wedge_fit, &systems);
             model->pin_pixel_vertices(cdt);
             if (!real) model->to_model(cdt, image.width, image.height, image.maxval, &result->model);
             if (guard) result->stats.erd.plain_psnr = keep_better(image, &before, &result->model, options.threads);

@@ -279,6 +279,26 @@ void face_systems3(const Image* const* planes, RasterDomain domain, LatticePoint
     accumulate<3>(planes, domain, p0, p1, p2, out);
 }
 
+const FaceSystem* ColourSystems::find(const Cdt& cdt, FaceInd f) const {
+    if (f >= faces.size() || !faces[f].made) return nullptr;
+    const Face& c = faces[f];
+    for (int j = 0; j < 3; ++j) {
+        const LatticePoint p = cdt.point(cdt.org(3 * f + EdgeInd(j)));
+        if (p.x != c.p[j].x || p.y != c.p[j].y) return nullptr;
+    }
+    return c.s;
+}
+
+const FaceSystem* ColourSystems::get(const Cdt& cdt, const Image* const* planes, FaceInd f) {
+    if (const FaceSystem* s = find(cdt, f)) return s;
+    if (faces.size() < cdt.face_count()) faces.resize(cdt.face_count());
+    Face& c = faces[f];
+    for (int j = 0; j < 3; ++j) c.p[j] = cdt.point(cdt.org(3 * f + EdgeInd(j)));
+    face_systems3(planes, RasterDomain{cdt.max_x(), cdt.max_y()}, c.p[0], c.p[1], c.p[2], c.s);
+    c.made = true;
+    return c.s;
+}
+
 const FaceSystem& MeshSystems::get(const Cdt& cdt, const Image& image, FaceInd f) {
     if (stale[f]) {
         const EdgeInd e = 3 * f;
@@ -334,7 +354,8 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
 
 void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, const WedgeFitOptions& options,
                       const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats,
-                      const std::vector<const std::vector<double>*>* priors, ProgressHook progress) {
+                      const std::vector<const std::vector<double>*>* priors, ProgressHook progress,
+                      ColourSystems* systems) {
     stats->assign(planes.size(), WedgeFitStats());
     auto prior = [&](std::size_t c) { return priors && c < priors->size() ? (*priors)[c] : nullptr; };
     if (planes.size() != 3 || models.size() != 3) {
@@ -348,7 +369,20 @@ void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, c
     // channels' wedges are the same, so are their entries and Gram matrices.
     std::vector<FaceSystem> faces;
     std::vector<ChannelTerms> more[2];
-    face_systems<3>(cdt, planes.data(), *models[0], &faces, more);
+    if (systems) {  // as face_systems<3>, each face's systems kept or made again
+        faces.reserve(cdt.face_count());
+        for (auto& m : more) m.reserve(cdt.face_count());
+        for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+            const FaceSystem* fs = systems->get(cdt, planes.data(), f);
+            if (!fs[0].owns) continue;
+            faces.push_back(fs[0]);
+            for (int j = 0; j < 3; ++j) faces.back().entry[j] = models[0]->corner_entry(cdt, 3 * f + EdgeInd(j));
+            for (int k = 1; k < 3; ++k)
+                more[k - 1].push_back(ChannelTerms{{fs[k].h[0], fs[k].h[1], fs[k].h[2]}, fs[k].bb, fs[k].lo, fs[k].hi});
+        }
+    } else {
+        face_systems<3>(cdt, planes.data(), *models[0], &faces, more);
+    }
     progress("wedge refit", 0.5);
     // The progress of the last channel's iterations stands for all three (it must not go back).
     for (std::size_t c = 0; c < 3; ++c)

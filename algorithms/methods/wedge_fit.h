@@ -74,6 +74,22 @@ struct MeshSystems {
     const FaceSystem& get(const Cdt& cdt, const Image& image, FaceInd f);
 };
 
+// The three channels' face systems of a colour mesh by face slot, each with the corners it was made
+// for: a face whose corners are still those points in that order has bit for bit the same systems,
+// so the ending's refits and moves pass over the pixels of the faces flips and moves changed only.
+struct ColourSystems {
+    struct Face {
+        LatticePoint p[3];
+        FaceSystem s[3];
+        bool made = false;
+    };
+    std::vector<Face> faces;
+    // Face f's systems (planes: the three channels), made again unless its corners are the same.
+    const FaceSystem* get(const Cdt& cdt, const Image* const* planes, FaceInd f);
+    // Face f's systems when they are those of its current corners, else null.
+    const FaceSystem* find(const Cdt& cdt, FaceInd f) const;
+};
+
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
 // progress: "wedge refit", half for the pass over the pixels, half for the iterations.
 void fit_wedge_values(const Cdt& cdt, const Image& image, int iterations, ErdModel* model, WedgeFitStats* stats,
@@ -102,8 +118,10 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
 // The same for the channels of a colour image on one triangulation (models[c] on planes[c], all
 // with the same wedges): each channel's refit as above with the same options, the pixel pass
 // shared; (*priors)[c], when given, is channel c's `prior`.
+// systems (optional, three channels): the face systems kept from the refits and moves before.
 void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, const WedgeFitOptions& options,
                       const std::vector<ErdModel*>& models, std::vector<WedgeFitStats>* stats,
-                      const std::vector<const std::vector<double>*>* priors = nullptr, ProgressHook progress = {});
+                      const std::vector<const std::vector<double>*>* priors = nullptr, ProgressHook progress = {},
+                      ColourSystems* systems = nullptr);
 
 }  // namespace erd
