@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -227,6 +228,78 @@ TEST_CASE("colour vertex moves lower the channels' summed error; one channel mov
         CHECK(ma.tested == mb.tested);
         for (VertInd v = 0; v < a.cdt.vertex_count(); ++v) CHECK(a.cdt.point(v) == b.cdt.point(v));
     }
+}
+
+namespace {
+
+// RidgeMesh with two more planes (the ramp reversed, and a vertical ramp) and their models.
+struct ColourRidge {
+    RidgeMesh r;
+    Image g = r.im, b = r.im;
+    std::unique_ptr<ErdModel> mg, mb;
+    explicit ColourRidge(std::uint32_t seed) : r(seed) {
+        for (int y = 0; y < g.height; ++y)
+            for (int x = 0; x < g.width; ++x) {
+                g.at(x, y) = std::uint16_t(255 - r.im.at(x, y));
+                b.at(x, y) = std::uint16_t((r.im.at(x, y) + 5 * y) % 256);
+            }
+        mg = std::make_unique<ErdModel>(g, WedgeValueOptions{});
+        mb = std::make_unique<ErdModel>(b, WedgeValueOptions{});
+        mg->assign_all(r.cdt);
+        mb->assign_all(r.cdt);
+    }
+    std::vector<const Image*> planes() const { return {&r.im, &g, &b}; }
+    std::vector<ErdModel*> models() { return {&r.model, mg.get(), mb.get()}; }
+};
+
+bool same_system(const FaceSystem& a, const FaceSystem& b) {
+    for (int j = 0; j < 6; ++j)
+        if (a.g[j] != b.g[j]) return false;
+    return a.h[0] == b.h[0] && a.h[1] == b.h[1] && a.h[2] == b.h[2] && a.bb == b.bb && a.lo == b.lo && a.hi == b.hi &&
+           a.owns == b.owns;
+}
+
+}  // namespace
+
+TEST_CASE("colour face systems: one pass is each channel's own, and kept ones refit and move as fresh ones", "[flips]") {
+    ColourRidge a(11), b(11);
+    const std::vector<const Image*> planes = a.planes();
+    const Cdt& cdt = a.r.cdt;
+    const RasterDomain domain{cdt.max_x(), cdt.max_y()};
+    std::size_t owning = 0;
+    for (FaceInd f = 0; f < cdt.face_count(); ++f) {
+        const EdgeInd e = 3 * f;
+        const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
+        FaceSystem three[3];
+        face_systems3(planes.data(), domain, p0, p1, p2, three);
+        for (int c = 0; c < 3; ++c) CHECK(same_system(three[c], face_system(*planes[std::size_t(c)], domain, p0, p1, p2)));
+        owning += three[0].owns ? 1 : 0;
+    }
+    CHECK(owning > 100);
+    // a: systems kept from the refit through the moves to the next refit; b: made afresh each time.
+    ColourSystems kept;
+    std::vector<WedgeFitStats> sa, sb;
+    const std::vector<ErdModel*> ma = a.models(), mb = b.models();
+    fit_wedge_values(a.r.cdt, planes, WedgeFitOptions{}, ma, &sa, nullptr, {}, &kept);
+    fit_wedge_values(b.r.cdt, b.planes(), WedgeFitOptions{}, mb, &sb);
+    MoveStats va, vb;
+    improve_by_moves(&a.r.cdt, planes, {ma.begin(), ma.end()}, 2, 0.0, &va, &kept);
+    improve_by_moves(&b.r.cdt, b.planes(), {mb.begin(), mb.end()}, 2, 0.0, &vb);
+    CHECK(va.moves > 0);
+    CHECK(va.moves == vb.moves);
+    CHECK(va.tested == vb.tested);
+    fit_wedge_values(a.r.cdt, planes, WedgeFitOptions{}, ma, &sa, nullptr, {}, &kept);
+    fit_wedge_values(b.r.cdt, b.planes(), WedgeFitOptions{}, mb, &sb);
+    for (std::size_t c = 0; c < 3; ++c) {
+        CHECK(sa[c].sse_after == sb[c].sse_after);
+        for (std::size_t i = 0; i < ma[c]->entry_count(); ++i) CHECK(ma[c]->entry_value(i) == mb[c]->entry_value(i));
+    }
+    for (VertInd v = 0; v < a.r.cdt.vertex_count(); ++v) CHECK(a.r.cdt.point(v) == b.r.cdt.point(v));
+    // Kept systems are refused for a face whose corners changed.
+    std::size_t found = 0;
+    for (FaceInd f = 0; f < a.r.cdt.face_count(); ++f) found += kept.find(a.r.cdt, f) ? 1 : 0;
+    CHECK(found == a.r.cdt.face_count());  // the refit after the moves made the changed ones again
+    a.r.check_kept();
 }
 
 TEST_CASE("rounds of moves go coarse to fine: one pixel, then half a pixel", "[flips]") {
