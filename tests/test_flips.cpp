@@ -297,7 +297,8 @@ TEST_CASE("colour face systems: one pass is each channel's own, and kept ones re
     for (VertInd v = 0; v < a.r.cdt.vertex_count(); ++v) CHECK(a.r.cdt.point(v) == b.r.cdt.point(v));
     // Kept systems are refused for a face whose corners changed.
     std::size_t found = 0;
-    for (FaceInd f = 0; f < a.r.cdt.face_count(); ++f) found += kept.find(a.r.cdt, f) ? 1 : 0;
+    FaceSystem fs[3];
+    for (FaceInd f = 0; f < a.r.cdt.face_count(); ++f) found += kept.find(a.r.cdt, f, fs) ? 1 : 0;
     CHECK(found == a.r.cdt.face_count());  // the refit after the moves made the changed ones again
     a.r.check_kept();
 }

@@ -319,8 +319,8 @@ void improve_by_moves(Cdt* cdt, const std::vector<const Image*>& planes, const s
     }
     if (kept && models.size() == 3) {
         for (FaceInd f = 0; f < cdt->face_count(); ++f) {
-            const FaceSystem* fs = kept->find(*cdt, f);
-            if (!fs) continue;
+            FaceSystem fs[3];
+            if (!kept->find(*cdt, f, fs)) continue;
             for (std::size_t c = 0; c < 3; ++c) {
                 own[c].faces[f] = fs[c];
                 own[c].stale[f] = 0;

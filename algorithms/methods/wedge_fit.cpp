@@ -279,24 +279,36 @@ void face_systems3(const Image* const* planes, RasterDomain domain, LatticePoint
     accumulate<3>(planes, domain, p0, p1, p2, out);
 }
 
-const FaceSystem* ColourSystems::find(const Cdt& cdt, FaceInd f) const {
-    if (f >= faces.size() || !faces[f].made) return nullptr;
+bool ColourSystems::find(const Cdt& cdt, FaceInd f, FaceSystem* out) const {
+    if (f >= faces.size() || !faces[f].made) return false;
     const Face& c = faces[f];
     for (int j = 0; j < 3; ++j) {
         const LatticePoint p = cdt.point(cdt.org(3 * f + EdgeInd(j)));
-        if (p.x != c.p[j].x || p.y != c.p[j].y) return nullptr;
+        if (p.x != c.p[j].x || p.y != c.p[j].y) return false;
     }
-    return c.s;
+    for (int k = 0; k < 3; ++k) {
+        FaceSystem& s = out[k];
+        s = FaceSystem();
+        for (int j = 0; j < 6; ++j) s.g[j] = c.g[j];
+        for (int j = 0; j < 3; ++j) s.h[j] = c.t[k].h[j];
+        s.bb = c.t[k].bb;
+        s.lo = c.t[k].lo;
+        s.hi = c.t[k].hi;
+        s.owns = c.owns;
+    }
+    return true;
 }
 
-const FaceSystem* ColourSystems::get(const Cdt& cdt, const Image* const* planes, FaceInd f) {
-    if (const FaceSystem* s = find(cdt, f)) return s;
+void ColourSystems::get(const Cdt& cdt, const Image* const* planes, FaceInd f, FaceSystem* out) {
+    if (find(cdt, f, out)) return;
     if (faces.size() < cdt.face_count()) faces.resize(cdt.face_count());
     Face& c = faces[f];
     for (int j = 0; j < 3; ++j) c.p[j] = cdt.point(cdt.org(3 * f + EdgeInd(j)));
-    face_systems3(planes, RasterDomain{cdt.max_x(), cdt.max_y()}, c.p[0], c.p[1], c.p[2], c.s);
+    face_systems3(planes, RasterDomain{cdt.max_x(), cdt.max_y()}, c.p[0], c.p[1], c.p[2], out);
+    for (int j = 0; j < 6; ++j) c.g[j] = out[0].g[j];  // accumulate<3> gives every channel the same
+    for (int k = 0; k < 3; ++k) c.t[k] = Terms{{out[k].h[0], out[k].h[1], out[k].h[2]}, out[k].bb, out[k].lo, out[k].hi};
+    c.owns = out[0].owns;
     c.made = true;
-    return c.s;
 }
 
 const FaceSystem& MeshSystems::get(const Cdt& cdt, const Image& image, FaceInd f) {
@@ -373,7 +385,8 @@ void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, c
         faces.reserve(cdt.face_count());
         for (auto& m : more) m.reserve(cdt.face_count());
         for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-            const FaceSystem* fs = systems->get(cdt, planes.data(), f);
+            FaceSystem fs[3];
+            systems->get(cdt, planes.data(), f, fs);
             if (!fs[0].owns) continue;
             faces.push_back(fs[0]);
             for (int j = 0; j < 3; ++j) faces.back().entry[j] = models[0]->corner_entry(cdt, 3 * f + EdgeInd(j));

@@ -78,16 +78,22 @@ struct MeshSystems {
 // for: a face whose corners are still those points in that order has bit for bit the same systems,
 // so the ending's refits and moves pass over the pixels of the faces flips and moves changed only.
 struct ColourSystems {
-    struct Face {
+    struct Terms {  // one channel's own terms (FaceSystem's h, bb, lo, hi)
+        double h[3], bb;
+        float lo, hi;
+    };
+    struct Face {  // the Gram matrix and `owns` are the same in every channel
         LatticePoint p[3];
-        FaceSystem s[3];
-        bool made = false;
+        double g[6];
+        Terms t[3];
+        bool owns = false, made = false;
     };
     std::vector<Face> faces;
-    // Face f's systems (planes: the three channels), made again unless its corners are the same.
-    const FaceSystem* get(const Cdt& cdt, const Image* const* planes, FaceInd f);
-    // Face f's systems when they are those of its current corners, else null.
-    const FaceSystem* find(const Cdt& cdt, FaceInd f) const;
+    // Face f's systems into out[0..3) (planes: the three channels), made again unless its corners
+    // are the same.
+    void get(const Cdt& cdt, const Image* const* planes, FaceInd f, FaceSystem* out);
+    // Face f's systems into out[0..3) when they are those of its current corners; else false.
+    bool find(const Cdt& cdt, FaceInd f, FaceSystem* out) const;
 };
 
 // Refits every wedge value of model on cdt against image by at most `iterations` CGLS steps.
