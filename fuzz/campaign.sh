@@ -81,7 +81,7 @@ campaign() {
         execs=$((execs + ${e:-0}))
         { cat "$dir/start.log"; echo "== start $starts ended (${e:-0} executions)"; } >>"$dir/log"
         rm -f "$dir/start.log"
-        used=$(awk '{ printf "%d", $1 + $2 }' "$dir/start.cpu" 2>/dev/null)
+        used=$(tail -1 "$dir/start.cpu" 2>/dev/null | awk '{ printf "%d", $1 + $2 }')  # a status line may come first
         cpu=$((cpu + ${used:-0}))
         rm -f "$dir/start.cpu"
         left=$((SECONDS_EACH - cpu))
