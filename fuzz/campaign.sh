@@ -113,7 +113,7 @@ campaign() {
     echo "$execs $(ls "$corpus" | wc -l) $findings $merged $starts $fuzzed $wall" >"$dir/result"
     # The record: the commit fuzzed ("+" when the work tree differed from it).
     local commit; commit=$(git rev-parse --short=7 HEAD 2>/dev/null || echo unknown)
-    git diff --quiet HEAD -- . ':!fuzz/campaign.tsv' ':!fuzz/corpus' 2>/dev/null || commit+="+"
+    git diff --quiet HEAD -- . ':!fuzz/campaign.*' ':!fuzz/corpus' 2>/dev/null || commit+="+"
     printf '%s\t%s\t%s\t%d\t%d\t%d\t%d\t%d\n' "$(date -u +%F)" "$commit" "$n" "$fuzzed" "$wall" "$execs" \
         "$(ls "$corpus" | wc -l)" "$findings" >>fuzz/campaign.tsv
 }
