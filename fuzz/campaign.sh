@@ -81,7 +81,7 @@ campaign() {
         execs=$((execs + ${e:-0}))
         { cat "$dir/start.log"; echo "== start $starts ended (${e:-0} executions)"; } >>"$dir/log"
         rm -f "$dir/start.log"
-        used=$(awk '{ printf "%d", $1 + $2 }' "$dir/start.cpu" 2>/dev/null)
+        used=$(tail -1 "$dir/start.cpu" 2>/dev/null | awk '{ printf "%d", $1 + $2 }')  # a status line may come first
         cpu=$((cpu + ${used:-0}))
         rm -f "$dir/start.cpu"
         left=$((SECONDS_EACH - cpu))
@@ -113,7 +113,7 @@ campaign() {
     echo "$execs $(ls "$corpus" | wc -l) $findings $merged $starts $fuzzed $wall" >"$dir/result"
     # The record: the commit fuzzed ("+" when the work tree differed from it).
     local commit; commit=$(git rev-parse --short=7 HEAD 2>/dev/null || echo unknown)
-    git diff --quiet HEAD -- . ':!fuzz/campaign.tsv' ':!fuzz/corpus' 2>/dev/null || commit+="+"
+    git diff --quiet HEAD -- . ':!fuzz/campaign.*' ':!fuzz/corpus' 2>/dev/null || commit+="+"
     printf '%s\t%s\t%s\t%d\t%d\t%d\t%d\t%d\n' "$(date -u +%F)" "$commit" "$n" "$fuzzed" "$wall" "$execs" \
         "$(ls "$corpus" | wc -l)" "$findings" >>fuzz/campaign.tsv
 }
