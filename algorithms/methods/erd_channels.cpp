@@ -16,6 +16,10 @@ ErdChannels::ErdChannels(const Image& image, const WedgeValueOptions& options, b
     }
 }
 
+void ErdChannels::take_mmsodd(ErdChannels& old) {
+    for (std::size_t c = 0; c < models_.size() && c < old.models_.size(); ++c) models_[c]->take_mmsodd(*old.models_[c]);
+}
+
 void ErdChannels::assign_vertex(const Cdt& cdt, VertInd v) {
     for (auto& m : models_) m->assign_vertex(cdt, v);
 }

@@ -32,6 +32,8 @@ public:
     const ErdModel& channel(int c) const { return *models_[std::size_t(c)]; }
     ErdModel& channel(int c) { return *models_[std::size_t(c)]; }
 
+    // Each channel's MMSODD (grid or cached pixels) taken from old's (ErdModel::take_mmsodd).
+    void take_mmsodd(ErdChannels& old);
     void assign_vertex(const Cdt& cdt, VertInd v);
     void assign_all(const Cdt& cdt);
     // ErdModel::pin_pixel_vertices for every channel (a real image).

@@ -50,6 +50,7 @@ Status erdgpi_colour(const Image& image, const GenerateOptions& options, std::si
         if (!st) return st;
         // A fresh model of the compact mesh: its wedge values as insertion assigns them.
         ErdChannels compact(image, wo, options.colour.shared_wedge_position, options.colour.density);
+        compact.take_mmsodd(model);  // as gray's: the MMSODD the line searches computed is kept
         compact.assign_all(*cdt);
         timer->lap("point removal");
         return finish_erd_method(*cdt, image, options, mesh, &compact, timer, result);
