@@ -83,7 +83,7 @@ const CommandLine kGenerate = {
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
         {0, "wedge-bounds", "M", "ERD refit: keep each value within its pixels' sample range widened by M times it (default 0.5; -1: off)"},
-        {0, "oversample", "K", "GPRFS, ERDGPR: the start holds K*N points before removal (default: GPRFS 8, ERDGPR 2)"},
+        {0, "oversample", "K", "GPRFS, ERDGPR: the start holds K*N points before removal (default: GPRFS 8, ERDGPR 1.5)"},
         {0, "removal-refit", "0|1", "ERDGPR: refit the wedge values before each removal stage (default 1)"},
         {0, "removal-cycles", "C", "ERDGPR: C more cycles of insertion to K*N and removal to N (default 0)"},
         {0, "removal-stages", "S", "ERDGPR: removal in S stages, each from a refitted compact mesh (default 1)"},

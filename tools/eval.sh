@@ -150,7 +150,7 @@ kept=$OUT/kept_sections.md
     echo "## Every method: PSNR dB / CPU s on the thesis's 12 cases (issue 45)"
     echo
     echo "Basic model: ED, GPI (the thesis's), GPR, GPRFS, ID (the removal methods, docs/DECISIONS.md"
-    echo "\"Point removal\"); ERD model: ERDED, ERDGPI, ERDGPR (ERDGPI to 2N, then removal to N: the"
+    echo "\"Point removal\"); ERD model: ERDED, ERDGPI, ERDGPR (ERDGPI to 1.5N, then removal to N: the"
     echo "recommended default). +bpr: \`--bpr $BPR\`; +optimize: \`--optimize\`; +thesis: \`--thesis\`."
     echo
     printf '| variant |'; for img in bull lena peppers; do for d in ${DENSITIES[$img]}; do printf ' %s %s |' "$img" "$d"; done; done

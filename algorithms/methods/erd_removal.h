@@ -13,7 +13,7 @@
 namespace erd {
 
 // ERDGPR's default K (docs/DECISIONS.md "Point removal").
-constexpr double kErdgprOversample = 2.0;
+constexpr double kErdgprOversample = 1.5;
 
 // ERDGPR's ending unless the caller set any of it (GenerateOptions::ending_given): one more round
 // of flips and of moves than ERDGPI's, the first moves two pixels long, more of them tried
