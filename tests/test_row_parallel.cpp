@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "api/erd.h"
+#include "algorithms/imaging/canny.h"
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
@@ -203,6 +204,48 @@ TEST_CASE("PSNR, MSE and channel MSE: the same at 1, 2 and 3 threads", "[threads
     // Sizes that differ still fail, threads or not.
     double e = 0;
     CHECK_FALSE(mse(synth_image(5, 4), synth_image(4, 5), &e, 3).ok());
+}
+
+// Edge detection's gradient pass in row bands (canny_pass.cpp stream_bands): the same edges and
+// thresholds at 1, 2 and 3 threads. 700 x 400 has a 1399 x 799 half-pixel grid, cut into 2 and 3
+// bands (bands hold 2^18 points at least); the striped image puts all its texture in the rows
+// the pass's sample reads (pixel rows 8 + 16 k), so the sampled guess is above the final bound
+// and the pass runs again without it; the flat image has no gradient at all.
+TEST_CASE("edge detection: the same edges at 1, 2 and 3 threads", "[threads][canny]") {
+    Image striped = noise_image(700, 400, 1, 7);
+    for (int y = 0; y < striped.height; ++y)
+        if (y % 16 != 8)
+            for (int x = 0; x < striped.width; ++x) striped.samples[std::size_t(y) * 700 + std::size_t(x)] = 30000;
+    const Image images[] = {synth_image(700, 400), striped, Image(700, 400, 255, 1), synth_colour(700, 400)};
+    for (const Image& im : images) {
+        // Under the sanitizers the thesis's beta alone (each detection there takes a second).
+        const std::vector<double> betas = std::getenv("ERD_SANITIZED") ? std::vector<double>{0.055}
+                                                                        : std::vector<double>{0.01, 0.055, 0.3};
+        for (double beta : betas) {
+            INFO(im.channels << " channels, beta " << beta);
+            CannyParams p;
+            p.beta = beta;
+            Grid<std::uint8_t> first;
+            CannyStats first_stats;
+            for (int threads : with_one_thread()) {
+                p.threads = threads;
+                EdgeDetector detector(im);
+                Grid<std::uint8_t> edges;
+                CannyStats stats;
+                REQUIRE(detector.detect(p, &edges, &stats).ok());
+                if (threads == 1) {
+                    first = edges;
+                    first_stats = stats;
+                    continue;
+                }
+                INFO(threads << " threads");
+                CHECK(edges.data == first.data);
+                CHECK(stats.tau_high == first_stats.tau_high);
+                CHECK(stats.edge_points == first_stats.edge_points);
+            }
+            if (im.channels == 1 && im.samples[0] != 0) CHECK(first_stats.edge_points > 0);
+        }
+    }
 }
 
 TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 threads", "[threads][methods]") {

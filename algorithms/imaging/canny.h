@@ -51,6 +51,9 @@ struct CannyParams {
     // makes the whole image frame a strong edge that eats a third of the beta quantile on bull, so
     // edge detection replicates the border sample instead (docs/DECISIONS.md "Filters and MMSODD").
     Border border = Border::replicate;
+    // The gradient pass (steps 1 and 3) in row bands on this many threads (kernel/row_parallel.h;
+    // 0: one per processor). The edges are the same for every count.
+    int threads = 1;
 };
 
 // What detect_edges measured, for reports and tests.

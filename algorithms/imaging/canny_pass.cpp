@@ -85,6 +85,11 @@ constexpr int kSampleStride = 32;
 constexpr std::size_t kSampleRun = 2;
 constexpr double kGuessMargin = 0.8;
 
+// A band of the gradient pass holds at least this many points of the plane (lena's 1023^2 grid:
+// two bands; a band is a few milliseconds of work, a thread's start tens of microseconds); the
+// sample's runs are shared out by a quarter of it.
+constexpr std::size_t kMinBandPoints = std::size_t(1) << 18;
+
 }  // namespace
 
 template <class Sample>
@@ -94,14 +99,7 @@ void EdgeDetector::Pass::run(int width, int height, Sample sample, const CannyPa
     border = params.border;
     std::size_t expected = 0;  // points the guess is expected to keep
     const float guess = sampled_bound(width, sample, params, k_high, &expected);
-    // Room for them up front (a quarter more): the store then rarely fills, and a full one
-    // is compacted and copied (growing it from empty was a real share of the pass).
-    if (expected > 0) {
-        capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
-        mag.resize(capacity);
-        flag.resize(capacity);
-    }
-    if (!stream(width, sample, params, k_high, guess)) stream(width, sample, params, k_high, 0.0f);
+    if (!stream(width, sample, params, k_high, guess, expected)) stream(width, sample, params, k_high, 0.0f, expected);
     // Only the points at or above the final bound can be strong in a detection this pass
     // covers; with narrow bins they are hardly more than the first detection's strong points.
     // Compacted in place and cut to size.
@@ -151,7 +149,81 @@ void EdgeDetector::Pass::narrow(const CannyParams& widest) {
 }
 
 template <class Sample>
-bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess) {
+bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess,
+                                std::size_t expected) {
+    const RowParts parts(0, std::size_t(pl.h), params.threads, rows_for(kMinBandPoints, std::size_t(pl.w)));
+    if (parts.count > 1) return stream_bands(parts, width, sample, params, k_high, guess, expected);
+    // Room for the points the guess is expected to keep up front (a quarter more): the store then
+    // rarely fills, and a full one is compacted and copied (growing it from empty was a real
+    // share of the pass).
+    if (expected > 0 && capacity == 0) {
+        capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
+        mag.resize(capacity);
+        flag.resize(capacity);
+    }
+    return stream_rows(width, sample, params, k_high, guess, 0, pl.h, 0);
+}
+
+template <class Sample>
+bool EdgeDetector::Pass::stream_bands(const RowParts& parts, int width, Sample sample, const CannyParams& params,
+                                      std::size_t k_high, float guess, std::size_t expected) {
+    const std::size_t nb = parts.count;
+    std::vector<Pass> bands(nb);
+    const std::size_t words = pl.cells() / 64 + 2;
+    auto word0 = [&](std::size_t k) { return std::size_t(pl.at(0, int(parts.part_begin(k)))) >> 6; };
+    run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
+        Pass& b = bands[k];
+        b.pl = pl;
+        if (expected > 0) {
+            const std::size_t share = std::size_t(double(expected) * double(y1 - y0) / double(pl.h));
+            b.capacity = share + share / 4 + 2 * std::size_t(pl.w);
+            b.mag.resize(b.capacity);
+            b.flag.resize(b.capacity);
+        }
+        b.stream_rows(width, sample, params, k_high, guess, int(y0), int(y1), word0(k));
+    });
+    // The counts from the highest band bin up, then the final bin as one pass finds it.
+    std::uint32_t top = 0;
+    for (const Pass& b : bands) top = std::max(top, b.floor_bin);
+    hist.assign(kFloatBins, 0);
+    hist_base = 0;
+    at_or_above_floor = 0;
+    for (const Pass& b : bands)
+        for (std::size_t bin = top; bin < kFloatBins; ++bin) {
+            hist[bin] += b.hist[bin];
+            at_or_above_floor += b.hist[bin];
+        }
+    floor_bin = top;
+    while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
+    low = float(params.r * double(bin_floor(floor_bin)));
+    if (low < guess) return false;
+    // Each band keeps what is at or above the final bound (its own bound is at most that), and
+    // the bands are joined in row order.
+    std::size_t total = 0;
+    for (Pass& b : bands) {
+        b.drop_below(low);
+        total += b.n_kept;
+    }
+    capacity = n_kept = total;
+    mag.resize(total);
+    flag.resize(total);
+    cells.assign(words, 0);
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < nb; ++k) {
+        Pass& b = bands[k];
+        std::copy(b.mag.data(), b.mag.data() + b.n_kept, mag.data() + at);
+        std::copy(b.flag.data(), b.flag.data() + b.n_kept, flag.data() + at);
+        at += b.n_kept;
+        const std::size_t w0 = word0(k);
+        for (std::size_t w = 0; w < b.cells.size() && w0 + w < words; ++w) cells[w0 + w] |= b.cells[w];
+        b.clear();
+    }
+    return true;
+}
+
+template <class Sample>
+bool EdgeDetector::Pass::stream_rows(int width, Sample sample, const CannyParams& params, std::size_t k_high,
+                                     float guess, int y0, int y1, std::size_t word0) {
     const int W = pl.w, H = pl.h;
     const std::size_t rs = std::size_t(W) + 2;  // a row of g with its replicated frame columns
     std::vector<float> rows(3 * rs);
@@ -161,7 +233,9 @@ bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& par
     floor_bin = 0;
     at_or_above_floor = 0;
     n_kept = 0;
-    cells.assign(pl.cells() / 64 + 2, 0);  // one spare word (PointBits)
+    // The words of rows y0 .. y1 - 1 from word0 on, and one spare word (PointBits).
+    const std::size_t last = y1 > y0 ? std::size_t(pl.at(W - 1, y1 - 1)) >> 6 : word0;
+    cells.assign(y0 == 0 && y1 == H ? pl.cells() / 64 + 2 : last - word0 + 2, 0);
     low = guess;
     const float* prev_gx = nullptr;  // components of the row before the last one emitted
     const float* prev_gy = nullptr;
@@ -186,7 +260,7 @@ bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& par
             }
             if (v <= 0.0f) return;
             const std::uint32_t q = base + std::uint32_t(X);
-            c[q >> 6] |= std::uint64_t(1) << (q & 63u);
+            c[(q >> 6) - word0] |= std::uint64_t(1) << (q & 63u);
             g[n] = v;
             f[n] = suppress(up, mid, down, int(X), gx[X], gy[X]);
             ++n;
@@ -196,14 +270,15 @@ bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& par
         while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
         low = std::max(guess, float(params.r * double(bin_floor(floor_bin))));
     };
+    // Rows y0 - 1 and y1 are made for their neighbours' suppression only.
     step1_rows(
-        width, W, H, 0, H, binomial_taps(params.smoothing_order), params.border, sample, row,
-        [&](int y, const float* ax, const float* ay) {
+        width, W, H, std::max(0, y0 - 1), std::min(H, y1 + 1), binomial_taps(params.smoothing_order), params.border,
+        sample, row, [&](int y, const float* ax, const float* ay) {
             float* r = row(y);
             r[-1] = r[0];
             r[W] = r[W - 1];
-            if (y > 0) finish_row(y - 1, prev_gx, prev_gy);
-            if (y == H - 1) finish_row(y, ax, ay);
+            if (y - 1 >= y0) finish_row(y - 1, prev_gx, prev_gy);
+            if (y == H - 1 && y < y1) finish_row(y, ax, ay);
             prev_gx = ax;
             prev_gy = ay;
         });
@@ -221,13 +296,17 @@ float EdgeDetector::Pass::sampled_bound(int width, Sample sample, const CannyPar
     if (blocks < 8 || rank < 64.0) return 0.0f;
     std::vector<float> g(n);
     const std::vector<double> taps = binomial_taps(params.smoothing_order);
-    for (std::size_t i = 0; i < blocks; ++i) {
-        const int y = int(i) * kSampleStride + kSampleStride / 2;
-        step1_rows(
-            width, W, H, y, y + int(kSampleRun), taps, params.border, sample,
-            [&](int Y) { return g.data() + (i * kSampleRun + std::size_t(Y - y)) * std::size_t(W); },
-            [](int, const float*, const float*) {});
-    }
+    // The runs on the pass's threads, each into its own rows of g.
+    parallel_rows(0, blocks, params.threads, rows_for(kMinBandPoints / 4, kSampleRun * std::size_t(W)),
+                  [&](std::size_t b0, std::size_t b1) {
+                      for (std::size_t i = b0; i < b1; ++i) {
+                          const int y = int(i) * kSampleStride + kSampleStride / 2;
+                          step1_rows(
+                              width, W, H, y, y + int(kSampleRun), taps, params.border, sample,
+                              [&](int Y) { return g.data() + (i * kSampleRun + std::size_t(Y - y)) * std::size_t(W); },
+                              [](int, const float*, const float*) {});
+                      }
+                  });
     const std::size_t k = std::size_t(rank) - 1;  // the rank-th largest
     std::nth_element(g.begin(), g.begin() + std::ptrdiff_t(k), g.end(), std::greater<float>());
     const float guess = float(kGuessMargin * params.r * double(g[k]));

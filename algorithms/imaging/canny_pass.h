@@ -14,6 +14,7 @@
 #include "algorithms/imaging/image.h"
 #include "algorithms/imaging/point_rings.h"
 #include "algorithms/imaging/raw_array.h"
+#include "kernel/row_parallel.h"
 
 namespace erd {
 namespace canny_detail {
@@ -127,9 +128,27 @@ struct EdgeDetector::Pass {
     void narrow(const CannyParams& widest);
 
     // One streaming pass from the bound `guess` (0: none); false when the final bound is below
-    // the guess (the result is then incomplete). On success `low` is the final bound.
+    // the guess (the result is then incomplete). On success `low` is the final bound. With
+    // params.threads > 1 and enough rows, the rows are cut into bands (stream_bands).
     template <class Sample>
-    bool stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess);
+    bool stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess,
+                std::size_t expected);
+
+    // The streaming pass over rows y0 .. y1 - 1 of the plane alone (their gradient needs rows
+    // y0 - 1 and y1 too), its bit plane holding the words from word0 on.
+    template <class Sample>
+    bool stream_rows(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess, int y0,
+                     int y1, std::size_t word0);
+
+    // The pass in row bands, one thread each, each band a pass of its own over its rows with its
+    // own rising bound: a band's k-th largest is at most the whole plane's, so its bound is a
+    // lower bound of the final one too, and it counted every bin at or above its own final bin
+    // exactly. The final bin is found from the sum of the bands' counts from the highest of their
+    // bins up (all exact there), each band drops what is below the final bound, and the bands'
+    // points are joined in row order: the points, flags and counts the one-band pass keeps.
+    template <class Sample>
+    bool stream_bands(const RowParts& parts, int width, Sample sample, const CannyParams& params, std::size_t k_high,
+                      float guess, std::size_t expected);
 
     // A guess of the streaming pass's final bound: r times the magnitude of the same rank among
     // the sampled rows as tau_high has among all, less a margin (kGuessMargin). A sampled run

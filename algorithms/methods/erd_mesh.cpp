@@ -50,9 +50,9 @@ class StepOneCounter : public ConstraintPointCounter {
 public:
     // budget: the most constrained points the parameter selection accepts (0.7 N there).
     StepOneCounter(const Image& image, const Image* gradient, ColourGradient colour, LengthRule rule, double eps_unit,
-                   bool hard, bool fallback, double budget, StepProgress* progress)
+                   bool hard, bool fallback, double budget, StepProgress* progress, int threads)
         : chain_(image, hard, gradient, colour), rule_(rule), eps_unit_(eps_unit), hard_(hard), fallback_(fallback), budget_(budget),
-          progress_(progress) {}
+          progress_(progress), threads_(threads) {}
 
     void detect(double beta, double r) override {
         progress_->selection(0.0);
@@ -93,10 +93,11 @@ public:
     const PolylineList& kept() const { return chain_.kept(); }
 
 private:
-    static CannyParams params(double beta, double r) {
+    CannyParams params(double beta, double r) const {
         CannyParams cp;
         cp.beta = beta;
         cp.r = r;
+        cp.threads = threads_;
         return cp;
     }
     // On the image, not a double copy of it: the ERD methods make their double phi only after
@@ -110,6 +111,7 @@ private:
     Status status_;
     std::size_t counted_ = 0, count_ = 0;  // distinct points of simplification number counted_
     bool fell_back_ = false;
+    int threads_;
 };
 
 std::uint64_t key_of(LatticePoint p) { return (std::uint64_t(std::uint32_t(p.y)) << 32) | std::uint32_t(p.x); }
@@ -269,7 +271,7 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     StepProgress progress(options.progress, options.request.simple >= 0 ? 1 : 2);
     if (options.detect) {
         StepOneCounter counter(image, options.colour, options.colour_gradient, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
-                               0.7 * double(options.target), &progress);
+                               0.7 * double(options.target), &progress, options.threads);
         out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
                                         counter);
         counter.release_detector();

@@ -60,6 +60,8 @@ struct InitialMeshOptions {
     ColourGradient colour_gradient = ColourGradient::luma;
     // "initial mesh" with the fraction done: each edge detection, each count, the insertion.
     ProgressHook progress;
+    // Threads of edge detection's gradient pass (CannyParams::threads): the same mesh for any.
+    int threads = 1;
 };
 
 struct InitialMesh {

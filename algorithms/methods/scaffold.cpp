@@ -297,6 +297,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
         mo.colour_gradient = options.colour.edges;
     }
     mo.progress = options.progress;
+    mo.threads = options.threads;
     // A tile: detected polylines cut where they reach a side (the sides' vertices are decided).
     std::vector<std::uint8_t> cut;
     if (options.lock_border) {
