@@ -364,6 +364,7 @@ WedgeFitOptions wedge_fit_options(const GenerateOptions& options) {
     f.iterations = options.wedge_fit;
     f.prior_weight = options.wedge_prior;
     f.support_bounds = options.wedge_bounds;
+    f.threads = options.threads;
     return f;
 }
 

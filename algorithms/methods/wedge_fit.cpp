@@ -8,6 +8,7 @@
 
 #include "kernel/raster.h"
 #include "kernel/raster_rows.h"
+#include "kernel/row_parallel.h"
 
 namespace erd {
 
@@ -122,23 +123,42 @@ struct ChannelTerms {
 
 // Assembles the face systems of every face that owns at least one pixel, for each of the N
 // images: faces holds image 0's, more[k - 1] image k's own terms.
+// Faces' pixel sums in parts of at least this many faces, one thread each (a face of a 1% mesh
+// is tens of pixels: a part is a few tenths of a millisecond at least).
+constexpr std::size_t kMinPartFaces = 4096;
+
+// Assembles the face systems of every face that owns at least one pixel, for each of the N
+// images: faces holds image 0's, more[k - 1] image k's own terms. Every face's sums go to its own
+// slot on `threads` threads; the faces that own no pixel are then dropped in order.
 template <int N>
 void face_systems(const Cdt& cdt, const Image* const* images, const ErdModel& model, std::vector<FaceSystem>* faces,
-                  std::vector<ChannelTerms>* more) {
+                  std::vector<ChannelTerms>* more, int threads) {
     const RasterDomain domain{cdt.max_x(), cdt.max_y()};
-    faces->reserve(cdt.face_count());
-    for (int k = 1; k < N; ++k) more[k - 1].reserve(cdt.face_count());
-    for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-        const EdgeInd e = 3 * f;
-        const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
-        FaceSystem fs[N];
-        accumulate<N>(images, domain, p0, p1, p2, fs);
-        if (!fs[0].owns) continue;
-        for (int j = 0; j < 3; ++j) fs[0].entry[j] = model.corner_entry(cdt, e + EdgeInd(j));
-        faces->push_back(fs[0]);
-        for (int k = 1; k < N; ++k)
-            more[k - 1].push_back(ChannelTerms{{fs[k].h[0], fs[k].h[1], fs[k].h[2]}, fs[k].bb, fs[k].lo, fs[k].hi});
+    const std::size_t nf = cdt.face_count();
+    faces->assign(nf, FaceSystem());
+    for (int k = 1; k < N; ++k) more[k - 1].assign(nf, ChannelTerms());
+    parallel_rows(0, nf, threads, kMinPartFaces, [&](std::size_t f0, std::size_t f1) {
+        for (std::size_t f = f0; f < f1; ++f) {
+            const EdgeInd e = 3 * EdgeInd(f);
+            const LatticePoint p0 = cdt.point(cdt.org(e)), p1 = cdt.point(cdt.org(e + 1)), p2 = cdt.point(cdt.org(e + 2));
+            FaceSystem fs[N];
+            accumulate<N>(images, domain, p0, p1, p2, fs);
+            if (!fs[0].owns) continue;
+            for (int j = 0; j < 3; ++j) fs[0].entry[j] = model.corner_entry(cdt, e + EdgeInd(j));
+            (*faces)[f] = fs[0];
+            for (int k = 1; k < N; ++k)
+                more[k - 1][f] = ChannelTerms{{fs[k].h[0], fs[k].h[1], fs[k].h[2]}, fs[k].bb, fs[k].lo, fs[k].hi};
+        }
+    });
+    std::size_t n = 0;
+    for (std::size_t f = 0; f < nf; ++f) {
+        if (!(*faces)[f].owns) continue;
+        (*faces)[n] = (*faces)[f];
+        for (int k = 1; k < N; ++k) more[k - 1][n] = more[k - 1][f];
+        ++n;
     }
+    faces->resize(n);
+    for (int k = 1; k < N; ++k) more[k - 1].resize(n);
 }
 
 // The systems solve() reads: faces, with the data terms of `terms` instead of their own when given
@@ -336,18 +356,14 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
         // The systems by face slot are solved in place (the faces that own no pixel are skipped
         // there): the same faces in the same order as the pass over the pixels lists, without a
         // second copy of them beside the mesh's.
-        if (systems->matches(cdt)) {
-            for (FaceInd f = 0; f < cdt.face_count(); ++f) systems->get(cdt, image, f);
-        } else {
+        // Each face's system in its own slot, on the options' threads.
+        if (!systems->matches(cdt)) {
             systems->faces.assign(cdt.face_count(), FaceSystem());
-            systems->stale.assign(cdt.face_count(), 0);
-            const RasterDomain domain{cdt.max_x(), cdt.max_y()};
-            for (FaceInd f = 0; f < cdt.face_count(); ++f) {
-                const EdgeInd e = 3 * f;
-                systems->faces[f] =
-                    face_system(image, domain, cdt.point(cdt.org(e)), cdt.point(cdt.org(e + 1)), cdt.point(cdt.org(e + 2)));
-            }
+            systems->stale.assign(cdt.face_count(), 1);
         }
+        parallel_rows(0, cdt.face_count(), options.threads, kMinPartFaces, [&](std::size_t f0, std::size_t f1) {
+            for (std::size_t f = f0; f < f1; ++f) systems->get(cdt, image, FaceInd(f));
+        });
         for (FaceInd f = 0; f < cdt.face_count(); ++f) {
             FaceSystem& fs = systems->faces[f];
             if (fs.owns)
@@ -359,7 +375,7 @@ void fit_wedge_values(const Cdt& cdt, const Image& image, const WedgeFitOptions&
     }
     std::vector<FaceSystem> faces;
     const Image* one = &image;
-    face_systems<1>(cdt, &one, *model, &faces, nullptr);
+    face_systems<1>(cdt, &one, *model, &faces, nullptr, options.threads);
     progress("wedge refit", 0.5);
     solve(Systems{faces}, image, options, model, stats, prior, progress);
 }
@@ -394,7 +410,7 @@ void fit_wedge_values(const Cdt& cdt, const std::vector<const Image*>& planes, c
                 more[k - 1].push_back(ChannelTerms{{fs[k].h[0], fs[k].h[1], fs[k].h[2]}, fs[k].bb, fs[k].lo, fs[k].hi});
         }
     } else {
-        face_systems<3>(cdt, planes.data(), *models[0], &faces, more);
+        face_systems<3>(cdt, planes.data(), *models[0], &faces, more, options.threads);
     }
     progress("wedge refit", 0.5);
     // The progress of the last channel's iterations stands for all three (it must not go back).

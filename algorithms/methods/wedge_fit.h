@@ -111,6 +111,9 @@ struct WedgeFitOptions {
     int iterations = 6;         // CGLS steps
     double prior_weight = 0.0;  // lambda, in pixel observations; 0: plain least squares
     double support_bounds = -1.0;  // margin (fraction of the range) of the bounds; < 0: off
+    // The faces' pixel sums on this many threads (kernel/row_parallel.h; 0: one per processor):
+    // each face's system is its own, so the values are the same for any count.
+    int threads = 1;
 };
 
 // As above with options. `prior`, when given, holds z_ls for the first prior->size() entries
