@@ -68,13 +68,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool ok = framed_read(framer, stream, is_stream, chunk, &bytes, &reads);
     if (ok && stream.compare(0, bytes.size(), bytes) != 0) std::abort();
     if (kind == 0) {
-        // A start no reader takes is refused from the first read (PNG, JPEG, PGM/PPM, PAM are
-        // read further, as cli/framing.cpp frames them).
+        // A start no reader takes is refused from the first read (PNG, JPEG, PGM/PPM, PAM, PFM
+        // and TIFF are read further, as cli/framing.cpp frames them).
         const auto u = [&](std::size_t i) { return static_cast<unsigned char>(stream[i]); };
         const bool jpeg = stream.size() >= 3 && u(0) == 0xff && u(1) == 0xd8 && u(2) == 0xff;
         const bool pnm = stream[0] == 'P' && (stream[1] == '2' || stream[1] == '3' || stream[1] == '5' ||
-                                              stream[1] == '6' || stream[1] == '7');
-        const bool bad_start = stream.size() >= 2 && u(0) != 0x89 && !jpeg && !pnm;
+                                              stream[1] == '6' || stream[1] == '7' || stream[1] == 'f' ||
+                                              stream[1] == 'F');
+        const bool tiff = (stream[0] == 'I' && stream[1] == 'I') || (stream[0] == 'M' && stream[1] == 'M');
+        const bool bad_start = stream.size() >= 2 && u(0) != 0x89 && !jpeg && !pnm && !tiff;
         if (bad_start && reads > 1 && (is_stream || stream.size() > 4096 + erd::cli::kLookAfter)) std::abort();
         erd::Image whole, framed;
         std::string w;

@@ -11,9 +11,13 @@ thread_local std::size_t g_used = 0;
 
 struct Header { std::size_t size; std::size_t pad; };
 
+// Every byte the decoder is given starts zeroed (calloc here, the grown part in realloc): stb's
+// progressive JPEG decoder reads coefficients of blocks no scan wrote, and with plain malloc the
+// decode (even whether it succeeds) depended on what the heap held before (found by the fuzz
+// campaign; tests/test_colour_io.cpp, fuzz/corpus/fuzz_jpeg/regress_progressive_unwritten_coefficients).
 void* budget_malloc(std::size_t n) {
     if (n > g_budget || g_used > g_budget - n) return nullptr;
-    auto* h = static_cast<Header*>(std::malloc(sizeof(Header) + n));
+    auto* h = static_cast<Header*>(std::calloc(1, sizeof(Header) + n));
     if (!h) return nullptr;
     h->size = n;
     g_used += n;
@@ -32,6 +36,7 @@ void* budget_realloc(void* p, std::size_t n) {
     if (n > old && (n - old > g_budget || g_used > g_budget - (n - old))) return nullptr;
     auto* nh = static_cast<Header*>(std::realloc(h, sizeof(Header) + n));
     if (!nh) return nullptr;
+    if (n > old) std::memset(reinterpret_cast<unsigned char*>(nh + 1) + old, 0, n - old);
     g_used = g_used - old + n;
     nh->size = n;
     return nh + 1;
