@@ -170,7 +170,9 @@ bool EdgeDetector::Pass::stream_bands(const RowParts& parts, int width, Sample s
     const std::size_t nb = parts.count;
     std::vector<Pass> bands(nb);
     const std::size_t words = pl.cells() / 64 + 2;
-    auto word0 = [&](std::size_t k) { return std::size_t(pl.at(0, int(parts.part_begin(k)))) >> 6; };
+    // Band 0's bit plane is the whole plane's (from word 0): the pass takes it over, with its
+    // arrays and counts, and the other bands are added to them.
+    auto word0 = [&](std::size_t k) { return k == 0 ? 0 : std::size_t(pl.at(0, int(parts.part_begin(k)))) >> 6; };
     run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
         Pass& b = bands[k];
         b.pl = pl;
@@ -185,14 +187,13 @@ bool EdgeDetector::Pass::stream_bands(const RowParts& parts, int width, Sample s
     // The counts from the highest band bin up, then the final bin as one pass finds it.
     std::uint32_t top = 0;
     for (const Pass& b : bands) top = std::max(top, b.floor_bin);
-    hist.assign(kFloatBins, 0);
+    hist = std::move(bands[0].hist);
     hist_base = 0;
     at_or_above_floor = 0;
-    for (const Pass& b : bands)
-        for (std::size_t bin = top; bin < kFloatBins; ++bin) {
-            hist[bin] += b.hist[bin];
-            at_or_above_floor += b.hist[bin];
-        }
+    for (std::size_t bin = top; bin < kFloatBins; ++bin) {
+        for (std::size_t k = 1; k < nb; ++k) hist[bin] += bands[k].hist[bin];
+        at_or_above_floor += hist[bin];
+    }
     floor_bin = top;
     while (at_or_above_floor - hist[floor_bin] >= k_high) at_or_above_floor -= hist[floor_bin++];
     low = float(params.r * double(bin_floor(floor_bin)));
@@ -204,12 +205,14 @@ bool EdgeDetector::Pass::stream_bands(const RowParts& parts, int width, Sample s
         b.drop_below(low);
         total += b.n_kept;
     }
+    std::size_t at = bands[0].n_kept;
+    mag = std::move(bands[0].mag);
+    flag = std::move(bands[0].flag);
+    cells = std::move(bands[0].cells);
     capacity = n_kept = total;
     mag.resize(total);
     flag.resize(total);
-    cells.assign(words, 0);
-    std::size_t at = 0;
-    for (std::size_t k = 0; k < nb; ++k) {
+    for (std::size_t k = 1; k < nb; ++k) {
         Pass& b = bands[k];
         std::copy(b.mag.data(), b.mag.data() + b.n_kept, mag.data() + at);
         std::copy(b.flag.data(), b.flag.data() + b.n_kept, flag.data() + at);
@@ -235,7 +238,7 @@ bool EdgeDetector::Pass::stream_rows(int width, Sample sample, const CannyParams
     n_kept = 0;
     // The words of rows y0 .. y1 - 1 from word0 on, and one spare word (PointBits).
     const std::size_t last = y1 > y0 ? std::size_t(pl.at(W - 1, y1 - 1)) >> 6 : word0;
-    cells.assign(y0 == 0 && y1 == H ? pl.cells() / 64 + 2 : last - word0 + 2, 0);
+    cells.assign(word0 == 0 ? pl.cells() / 64 + 2 : last - word0 + 2, 0);
     low = guess;
     const float* prev_gx = nullptr;  // components of the row before the last one emitted
     const float* prev_gy = nullptr;

@@ -26,6 +26,15 @@ public:
     ~RawArray() { std::free(p_); }
     RawArray(const RawArray&) = delete;
     RawArray& operator=(const RawArray&) = delete;
+    RawArray(RawArray&& o) noexcept : p_(o.p_) { o.p_ = nullptr; }
+    RawArray& operator=(RawArray&& o) noexcept {
+        if (this != &o) {
+            std::free(p_);
+            p_ = o.p_;
+            o.p_ = nullptr;
+        }
+        return *this;
+    }
     T* data() { return p_; }
     const T* data() const { return p_; }
     T& operator[](std::size_t k) { return p_[k]; }
