@@ -312,6 +312,7 @@ static int generate_one(const Args& a, const Reporter& rep, const Paths& p, int 
     // Same checks the methods make, here first so the message names the flags.
     // --choose-density: the densest mesh it may try bounds the memory.
     GenerateOptions sized = opt;
+    sized.threads = threads;  // edge detection's bands hold memory of their own (memory_estimate.cpp)
     if (codec.choose_density) sized.density = kChoiceMaxDensity, sized.density_given = true;
     std::int64_t n = target_points(sized, image.width, image.height);
     st = check_target(n, image.width, image.height);

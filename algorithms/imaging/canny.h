@@ -122,6 +122,10 @@ private:
 // half-pixel grid for an image too small to sample; 0 for an empty image or bad parameters.
 std::size_t estimated_kept_points(const Image& im, const CannyParams& params);
 
+// The row bands the gradient pass of a width x height image runs in at `threads` threads
+// (CannyParams::threads); 1 for one thread or a small image.
+std::size_t gradient_pass_bands(int width, int height, int threads);
+
 // The width x height edge map (1 = edge) of points from EdgeDetector::detect.
 Grid<std::uint8_t> edge_map(const SortedPoints& points, int width, int height);
 

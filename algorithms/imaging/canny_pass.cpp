@@ -148,6 +148,11 @@ void EdgeDetector::Pass::narrow(const CannyParams& widest) {
     flag.resize(n);
 }
 
+std::size_t gradient_pass_bands(int width, int height, int threads) {
+    if (width < 1 || height < 1) return 1;
+    return RowParts(0, std::size_t(2 * height - 1), threads, rows_for(kMinBandPoints, std::size_t(2 * width - 1))).count;
+}
+
 template <class Sample>
 bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess,
                                 std::size_t expected) {
