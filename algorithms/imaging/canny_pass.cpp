@@ -148,24 +148,30 @@ void EdgeDetector::Pass::narrow(const CannyParams& widest) {
     flag.resize(n);
 }
 
+namespace {
+// The row bands of a plane of w x h points at `threads` threads.
+RowParts band_parts(int w, int h, int threads) {
+    return RowParts(0, std::size_t(h), threads, rows_for(kMinBandPoints, std::size_t(w)));
+}
+}  // namespace
+
 std::size_t gradient_pass_bands(int width, int height, int threads) {
     if (width < 1 || height < 1) return 1;
-    return RowParts(0, std::size_t(2 * height - 1), threads, rows_for(kMinBandPoints, std::size_t(2 * width - 1))).count;
+    return band_parts(2 * width - 1, 2 * height - 1, threads).count;
+}
+
+void EdgeDetector::Pass::make_store(std::size_t expected) {
+    capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
+    mag.resize(capacity);
+    flag.resize(capacity);
 }
 
 template <class Sample>
 bool EdgeDetector::Pass::stream(int width, Sample sample, const CannyParams& params, std::size_t k_high, float guess,
                                 std::size_t expected) {
-    const RowParts parts(0, std::size_t(pl.h), params.threads, rows_for(kMinBandPoints, std::size_t(pl.w)));
+    const RowParts parts = band_parts(pl.w, pl.h, params.threads);
     if (parts.count > 1) return stream_bands(parts, width, sample, params, k_high, guess, expected);
-    // Room for the points the guess is expected to keep up front (a quarter more): the store then
-    // rarely fills, and a full one is compacted and copied (growing it from empty was a real
-    // share of the pass).
-    if (expected > 0 && capacity == 0) {
-        capacity = expected + expected / 4 + 2 * std::size_t(pl.w);
-        mag.resize(capacity);
-        flag.resize(capacity);
-    }
+    if (expected > 0 && capacity == 0) make_store(expected);
     return stream_rows(width, sample, params, k_high, guess, 0, pl.h, 0);
 }
 
@@ -181,12 +187,7 @@ bool EdgeDetector::Pass::stream_bands(const RowParts& parts, int width, Sample s
     run_parts(parts, [&](std::size_t k, std::size_t y0, std::size_t y1) {
         Pass& b = bands[k];
         b.pl = pl;
-        if (expected > 0) {
-            const std::size_t share = std::size_t(double(expected) * double(y1 - y0) / double(pl.h));
-            b.capacity = share + share / 4 + 2 * std::size_t(pl.w);
-            b.mag.resize(b.capacity);
-            b.flag.resize(b.capacity);
-        }
+        if (expected > 0) b.make_store(std::size_t(double(expected) * double(y1 - y0) / double(pl.h)));
         b.stream_rows(width, sample, params, k_high, guess, int(y0), int(y1), word0(k));
     });
     // The counts from the highest band bin up, then the final bin as one pass finds it.

@@ -163,6 +163,11 @@ struct EdgeDetector::Pass {
     // strong), then grow if still more than half full.
     void make_room(std::size_t more);
 
+    // The store made up front for the `expected` points the guess keeps (a quarter more): it
+    // then rarely fills, and a full one is compacted and copied (growing it from empty was a
+    // real share of the pass).
+    void make_store(std::size_t expected);
+
     // Steps 2 and 4 to 6. Returns false, having written nothing, when the pass does not cover the
     // parameters: a different filter, too few values counted for this beta, or a tau_low below
     // the bound. release = the pass is not used again: its arrays go as soon as they are read.

@@ -38,12 +38,22 @@ void measure_step(int n, int i, At at, EdgeKindStats* s) {
     }
 }
 
-// Whether any of |b[k] - a[k]|, k in [0, 8), is at least `strong`: a count, so that -O2
-// vectorises it (most of an image is below the strong step).
-inline bool any_strong8(const std::uint16_t* a, const std::uint16_t* b, int strong) {
-    int n = 0;
-    for (int k = 0; k < 8; ++k) n += std::abs(int(b[k]) - int(a[k])) >= strong;
-    return n != 0;
+// Calls fn(k) for each k in [0, n) with |b[k] - a[k]| >= strong, in increasing order, skipping
+// blocks of eight below it with one test (a count, so that -O2 vectorises it: most of an image is
+// below the strong step).
+template <class Fn>
+void for_each_strong(const std::uint16_t* a, const std::uint16_t* b, int n, int strong, Fn fn) {
+    int k = 0;
+    for (; k + 8 <= n; k += 8) {
+        const std::uint16_t *pa = a + k, *pb = b + k;
+        int c = 0;
+        for (int j = 0; j < 8; ++j) c += std::abs(int(pb[j]) - int(pa[j])) >= strong;
+        if (c)
+            for (int j = 0; j < 8; ++j)
+                if (std::abs(int(pb[j]) - int(pa[j])) >= strong) fn(k + j);
+    }
+    for (; k < n; ++k)
+        if (std::abs(int(b[k]) - int(a[k])) >= strong) fn(k);
 }
 
 std::int64_t orient(LatticePoint a, LatticePoint b, LatticePoint c) {
@@ -58,32 +68,19 @@ EdgeKindStats measure_edge_kind(const Image& im) {
     const int strong = std::max(1, int(kStrongStep * double(im.maxval) + 0.5));
     const int W = im.width, H = im.height;
     const std::uint16_t* const px = im.samples.data();
-    // Steps along rows: pixel i to i + 1 of row y, i in [1, W - 3]; blocks of 8 with no strong
-    // step are skipped at once. The counts are sums, so the order steps are taken in is free.
-    for (int y = 0; y < H; ++y) {
+    // Steps along rows: pixel i to i + 1 of row y, i in [1, W - 3]. The counts are sums, so the
+    // order steps are taken in is free.
+    for (int y = 0; y < H && W > 3; ++y) {
         const std::uint16_t* r = px + std::size_t(y) * std::size_t(W);
         const auto at = [r](int x) { return int(r[x]); };
-        int i = 1;
-        for (; i + 8 <= W - 2; i += 8)
-            if (any_strong8(r + i, r + i + 1, strong))
-                for (int k = i; k < i + 8; ++k)
-                    if (std::abs(at(k + 1) - at(k)) >= strong) measure_step(W, k, at, &s);
-        for (; i + 2 < W; ++i)
-            if (std::abs(at(i + 1) - at(i)) >= strong) measure_step(W, i, at, &s);
+        for_each_strong(r + 1, r + 2, W - 3, strong, [&](int k) { measure_step(W, k + 1, at, &s); });
     }
     // Steps along columns: row j to j + 1, j in [1, H - 3], all columns of the two rows at once.
     for (int j = 1; j + 2 < H; ++j) {
         const std::uint16_t* r0 = px + std::size_t(j) * std::size_t(W);
-        const std::uint16_t* r1 = r0 + W;
-        int x = 0;
-        const auto check = [&](int c) {
-            if (std::abs(int(r1[c]) - int(r0[c])) < strong) return;
+        for_each_strong(r0, r0 + W, W, strong, [&](int c) {
             measure_step(H, j, [px, W, c](int y) { return int(px[std::size_t(y) * std::size_t(W) + std::size_t(c)]); }, &s);
-        };
-        for (; x + 8 <= W; x += 8)
-            if (any_strong8(r0 + x, r1 + x, strong))
-                for (int c = x; c < x + 8; ++c) check(c);
-        for (; x < W; ++x) check(x);
+        });
     }
     return s;
 }

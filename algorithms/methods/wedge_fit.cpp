@@ -121,8 +121,6 @@ struct ChannelTerms {
     float lo, hi;
 };
 
-// Assembles the face systems of every face that owns at least one pixel, for each of the N
-// images: faces holds image 0's, more[k - 1] image k's own terms.
 // Faces' pixel sums in parts of at least this many faces, one thread each (a face of a 1% mesh
 // is tens of pixels: a part is a few tenths of a millisecond at least).
 constexpr std::size_t kMinPartFaces = 4096;
