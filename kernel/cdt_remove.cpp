@@ -234,7 +234,7 @@ void Cdt::place_new_faces(std::uint32_t m, std::uint32_t slots, bool flagged) {
         for (EdgeInd h = b; h < b + 3; ++h) {
             V[h] = noVertex;
             T[h] = noEdge;
-            F[h] = 0;
+            if (flagged) F[h] = 0;  // without constraints every flag is 0 already (a write miss saved)
         }
         free_faces_.push_back(b / 3);
     }
