@@ -54,7 +54,7 @@ TIFF_STATIC_LIBS = $(shell pkg-config --static --libs libtiff-4 2>/dev/null || e
 MPL_DEM   := /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz
 
 # Every target is listed by `make help` (tests/test_packaging.cpp checks it against the .PHONY lists).
-.PHONY: all deps test unit run bench eval fuzz fuzz-campaign asan tsan clean help docs-images regenerate codec-bench
+.PHONY: all deps test unit run bench eval fuzz fuzz-campaign asan tsan clean help docs-images regenerate codec-bench codec-methods
 all: $(BUILD)/erd
 
 help:
@@ -69,6 +69,7 @@ help:
 	@echo "make embedded   the library at -Os -fno-exceptions -fno-rtti and docs/examples/embedded.cpp"
 	@echo "make bench      speed and memory beside hmm (medians) -> docs/RESULTS.md"
 	@echo "make codec-bench  .erdz bpp at equal PSNR against JPEG, JPEG 2000, WebP (installs them) -> out/codec/"
+	@echo "make codec-methods .erdz bpp at equal PSNR, ERDGPR against ERDGPI (issue 45) -> out/codec-methods/"
 	@echo "make eval       PSNR on the thesis images, colour images, drawings and graphics -> docs/RESULTS.md"
 	@echo "make graphics-deps  apt-get install what the graphics table needs (librsvg2-bin, fonts-dejavu-core, adwaita-icon-theme)"
 	@echo "make docs-images  README pictures of bull (ERDGPI, GPI) -> docs/img/"
@@ -212,6 +213,9 @@ bench: $(BUILD)/erd
 
 codec-bench: $(BUILD)/erd
 	@ERD=$(BUILD)/erd IMAGES=$(IMAGES) bash bench/codec.sh out/codec
+
+codec-methods: $(BUILD)/erd
+	@ERD=$(BUILD)/erd IMAGES=$(IMAGES) bash bench/codec_methods.sh out/codec-methods
 
 eval: $(BUILD)/erd graphics-deps
 	@bash tools/eval.sh $(BUILD)/erd $(IMAGES)
