@@ -8,6 +8,7 @@ set -eu
 cd "$(dirname "$0")/.."
 OUT=${1:-out/codec-methods}
 COLOUR=$(for k in kodim01 kodim02 kodim03 kodim04 kodim05 kodim06 house_color; do printf '%s:1 ' $k; done)
+mkdir -p "$OUT"
 CASES="bull:0.125 bull:0.25 bull:0.5 bull:1 lena:0.5 lena:1 lena:2 lena:3 peppers:0.5 peppers:1 peppers:2 peppers:3 $COLOUR"
 METHODS="erdgpi erdgpr" CHOOSE=0 RESULTS=none CASES=$CASES bash bench/codec.sh "$OUT" >"$OUT.log" 2>&1 ||
     { echo "codec-methods: bench/codec.sh failed (see $OUT.log)"; exit 1; }
