@@ -7,30 +7,9 @@ reaches a PSNR; between two envelope points, linear in (PSNR, log bpp)). Prints 
 Usage: codec_methods.py RD_TSV ROWS_TSV A B"""
 import collections
 import csv
-import math
 import sys
 
-
-def envelope(points):
-    """The points no cheaper point beats in PSNR, by increasing bpp (and PSNR)."""
-    out, best = [], -math.inf
-    for psnr, bpp in sorted(points, key=lambda t: (t[1], -t[0])):
-        if psnr > best:
-            out.append((psnr, bpp))
-            best = psnr
-    return out
-
-
-def bpp_at(env, target):
-    if not env or target > env[-1][0]:
-        return None
-    if target <= env[0][0]:
-        return env[0][1]
-    for (p0, b0), (p1, b1) in zip(env, env[1:]):
-        if p0 <= target <= p1:
-            t = (target - p0) / (p1 - p0)
-            return math.exp(math.log(b0) + t * (math.log(b1) - math.log(b0)))
-    return None
+from codec_curve import at_psnr
 
 
 def main():
@@ -38,7 +17,7 @@ def main():
     points = collections.defaultdict(list)
     for r in csv.DictReader(open(rd_path), delimiter='\t'):
         if r['codec'] in ('erd-' + a, 'erd-' + b):
-            points[(r['image'], r['codec'][4:])].append((float(r['psnr']), float(r['bpp'])))
+            points[(r['image'], r['codec'][4:])].append((float(r['bpp']), float(r['psnr'])))
     print(f'| image | density | {a} row PSNR (dB) | {a} bpp | {b} bpp at that PSNR | {b} - {a} |')
     print('| --- | ---: | ---: | ---: | ---: | ---: |')
     changes = []
@@ -47,8 +26,8 @@ def main():
         if method != a:
             continue
         target = float(psnr)
-        ba = bpp_at(envelope(points[(img, a)]), target)
-        bb = bpp_at(envelope(points[(img, b)]), target)
+        ba = at_psnr(points[(img, a)], target)[1]
+        bb = at_psnr(points[(img, b)], target)[1]
         if ba is None or bb is None:
             print(f'| {img} | {density}% | {target:.2f} | - | - | (not reached) |')
             continue

@@ -3,8 +3,9 @@
 # PSNR, bpp and bpp per section, and each other codec's bpp at the same PSNR, interpolated
 # linearly in (PSNR, log bpp) between the sweep points around it.
 import json
-import math
 import sys
+
+from codec_curve import at_psnr
 
 rd_path, rows_path = sys.argv[1], sys.argv[2]
 curves = {}
@@ -13,27 +14,6 @@ for line in open(rd_path).read().splitlines()[1:]:
     img, codec, setting, bpp, psnr = line.split('\t')
     curves.setdefault((img, codec), []).append((float(bpp), float(psnr)))
     settings.setdefault((img, codec), []).append((float(bpp), float(psnr), setting))
-
-
-def at_psnr(points, target):
-    """bpp of the codec at `target` dB: '<x' / '>x' outside the sweep."""
-    pts = sorted(points)
-    # The lower-rate envelope: keep points whose PSNR beats every cheaper point.
-    env, best = [], -1e9
-    for b, p in pts:
-        if p > best:
-            env.append((b, p))
-            best = p
-    if target <= env[0][1]:
-        return '<%.3f' % env[0][0], env[0][0]
-    if target > env[-1][1]:
-        return '>%.3f' % env[-1][0], None
-    for (b0, p0), (b1, p1) in zip(env, env[1:]):
-        if p0 <= target <= p1:
-            t = (target - p0) / (p1 - p0) if p1 > p0 else 0.0
-            b = math.exp(math.log(b0) + t * (math.log(b1) - math.log(b0)))
-            return '%.3f' % b, b
-    return 'n/a', None
 
 
 summary = []  # (img, d, method, psnr, erd's best bpp, {codec: bpp or None})
