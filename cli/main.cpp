@@ -27,7 +27,7 @@ static const Command kCommands[] = {
     {"psnr", "PSNR of an approximation against the original", cmd_psnr},
     {"edges", "half-pixel edge map and polylines of an image", cmd_edges},
     {"render", "draw a mesh as SVG or PNG", cmd_render},
-    {"export", "write a mesh as OBJ or PLY", cmd_export},
+    {"export", "write a mesh as OBJ, PLY, STL or glTF (.glb)", cmd_export},
     {"convert", "rewrite a model as .model/.erd text or .erdz binary", cmd_convert},
     {"info", "what an image or a model file holds (size, channels, vertices, bits per pixel)", cmd_info},
     {"synth", "write a deterministic test image", cmd_synth},

@@ -63,8 +63,8 @@ struct ExportCounts {
 // models).
 double default_zscale(const Model& m);
 
-// Writes the model as OBJ or PLY text, or binary STL, into *out. Fails (Code::input) on an inconsistent model
-// (index out of range, a repeated vertex, overlapping faces: build_topology).
+// Writes the model as OBJ or PLY text, binary STL or glTF 2.0 binary into *out. Fails (Code::input) on an
+// inconsistent model (index out of range, a repeated vertex, overlapping faces: build_topology).
 Status export_mesh(const Model& m, const ExportOptions& options, std::string* out, ExportCounts* counts = nullptr);
 
 }  // namespace erd
