@@ -543,6 +543,10 @@ cat <<'EOF'
 `make fuzz-campaign` (fuzz/campaign.sh): every target on a corpus kept from run to run, timed by
 its own CPU time; each run's line is in fuzz/campaign.tsv, summed here per target (the corpus is
 the latest run's; "commits" are the sources fuzzed). make test runs the short smoke runs.
+fuzz_framing's 21 findings are all from its first run (276d80c): 20 were the target's own stale
+check, 1 a real bug (stb's progressive JPEG decoder read coefficients no scan had written; the
+glue now hands it zeroed memory). Both are fixed, with regression seeds (docs/log/fuzz-campaign.md);
+the runs since, on the fixed target, found nothing.
 
 | target | CPU hours | executions | corpus | findings | runs | commits |
 | --- | --- | --- | --- | --- | --- | --- |
