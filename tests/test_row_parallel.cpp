@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -21,10 +22,13 @@
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
 #include "algorithms/imaging/synth.h"
+#include "algorithms/methods/greedy.h"
+#include "algorithms/methods/greedy_models.h"
 #include "algorithms/methods/methods.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/model_io.h"
 #include "algorithms/model/reconstruct.h"
+#include "kernel/cdt.h"
 #include "kernel/row_parallel.h"
 #include "tests/erd_run.h"
 #include "tests/synth_util.h"
@@ -286,6 +290,39 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
                     CHECK(same_image(one, other));
                 }
             }
+        }
+    }
+}
+
+// The greedy loop's re-scans on a second thread (kernel/step_helper.h): gray images of at least
+// kTwoThreadPixels, no supersampling. The helper must take part (its step count), and the
+// triangulation, sums and candidates must be the same bits as on one thread.
+TEST_CASE("greedy re-scans on a second thread: the same mesh and error at 1, 2 and 3 threads", "[threads][greedy]") {
+    const erd::Image im = synth_image(1024, 1024);
+    REQUIRE(std::size_t(im.width) * std::size_t(im.height) >= erd::kTwoThreadPixels);
+    std::vector<std::array<std::int32_t, 6>> first;
+    double first_sse = 0;
+    for (int threads : with_one_thread()) {
+        INFO(threads << " threads");
+        erd::BasicGreedyModel model(im);
+        erd::GreedyOptions go;
+        go.target_vertices = 1500;
+        go.threads = threads;
+        erd::Cdt cdt;
+        REQUIRE(cdt.reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
+        erd::GreedyStats gs;
+        REQUIRE(erd::greedy_refine(cdt, im, model, go, &gs).ok());
+        REQUIRE(cdt.vertex_count() == 1500);
+        if (threads == 1) {
+            CHECK(gs.two_thread_steps == 0);
+            first = erd::canonical_faces(cdt);
+            first_sse = gs.total_squared_error;
+        } else {
+#ifndef ERD_NO_THREADS
+            CHECK(gs.two_thread_steps > 0);
+#endif
+            CHECK(erd::canonical_faces(cdt) == first);
+            CHECK(gs.total_squared_error == first_sse);
         }
     }
 }

@@ -3,12 +3,14 @@
 #include "algorithms/methods/greedy.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "algorithms/imaging/real_image.h"
 #include "algorithms/methods/greedy_refiner.h"
+#include "kernel/row_parallel.h"
 
 namespace erd {
 
@@ -71,9 +73,21 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         touched_.clear();
     }
-    if (by_owner()) scan_all_by_owner();
-    else
+    // A second thread for the re-scans: gray images without supersampling (the other scans stay
+    // on one), large enough for the steps to outweigh the hand-over (docs/DECISIONS.md "Threads").
+    const bool two = resolve_threads(options_.threads) >= 2 && channels_ == 1 && !real_ && !options_.supersampled &&
+                     std::size_t(image_.width) * std::size_t(image_.height) >= kTwoThreadPixels;
+    StepHelper helper(two);
+    helper_ = helper.threaded() ? &helper : nullptr;
+    if (by_owner()) {
+        scan_all_by_owner();
+    } else if (helper_) {
+        batch_.clear();
+        for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) stamp_[f] = generation_, batch_.push_back(f);
+        scan_batch();
+    } else {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
+    }
 
     GreedyStop stop;
     std::vector<FaceInd> dirty;
@@ -122,18 +136,48 @@ Status GreedyRefiner::run(GreedyStats* stats) {
                     const FaceInd o = owner_[std::size_t(t.y) * std::size_t(image_.width) + std::size_t(x)];
                     if (stamp_[o] != generation_) scan(o);
                 }
+        } else if (helper_) {
+            // The faces the serial loop below scans, in its order (the stamps skip repeats).
+            batch_.clear();
+            for (FaceInd c : cdt_.changes().created) stamp_[c] = generation_, batch_.push_back(c);
+            for (FaceInd d : dirty)
+                if (d < faces_.size() && stamp_[d] != generation_) stamp_[d] = generation_, batch_.push_back(d);
+            scan_batch();
+            continue;
         } else {
             for (FaceInd c : cdt_.changes().created) scan(c);
         }
         for (FaceInd d : dirty)
             if (d < faces_.size() && stamp_[d] != generation_) scan(d);
     }
+    helper_ = nullptr;
+    stats->two_thread_steps = helper.two_thread_steps();
     stats->stop = stop;
     stats->total_squared_error = total_;
     stats->max_error = 0.0;
     for (const FaceState& fs : faces_) stats->max_error = std::max(stats->max_error, fs.cand_error);
     stats->psnr = psnr();
     return Status::success();
+}
+
+void GreedyRefiner::scan_batch() {
+    const std::size_t n = batch_.size();
+    if (n < 2 || !helper_) {
+        for (const FaceInd f : batch_) rescan(f);
+        return;
+    }
+    scanned_.resize(n);
+    // Faces are taken one at a time from a shared counter: their sizes differ by orders of
+    // magnitude, and each result has its own slot.
+    std::atomic<std::size_t> next{0};
+    auto half = [&](int) {
+        for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < n;) scanned_[i] = measure(batch_[i]);
+    };
+    helper_->run(half);
+    for (std::size_t i = 0; i < n; ++i) {
+        total_ -= faces_[batch_[i]].sum;
+        settle(batch_[i], scanned_[i]);
+    }
 }
 
 Status greedy_refine(Cdt& cdt, const Image& image, GreedyModel& model, const GreedyOptions& options,

@@ -96,6 +96,10 @@ public:
     }
 };
 
+// The image size from which greedy refinement re-scans on two threads when given them
+// (GreedyOptions::threads): below it the hand-over costs more than it saves (docs/DECISIONS.md "Threads").
+constexpr std::size_t kTwoThreadPixels = std::size_t(1) << 20;
+
 struct GreedyOptions {
     std::size_t target_vertices = 0;  // stop when the triangulation has this many vertices
     double max_error = -1.0;          // stop when max abs error <= max_error; negative: rule off
@@ -127,6 +131,9 @@ struct GreedyOptions {
     // A tile (GenerateOptions::lock_border): the pixels on the rectangle's sides are never
     // candidates (their vertices were decided before the run).
     bool ban_border = false;
+    // Threads for the re-scans (resolve_threads: 0 = the machine's); the result is the same bits
+    // for any count. Two are used on gray images of at least kTwoThreadPixels without supersampling.
+    int threads = 1;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;
     // Optional, a real gray image: the face that owns each pixel in the mesh given (pixel_owners,

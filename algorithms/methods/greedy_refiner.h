@@ -14,6 +14,7 @@
 
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/heap.h"
+#include "kernel/step_helper.h"
 
 namespace erd {
 
@@ -85,6 +86,19 @@ private:
     // (greedy_rescan.cpp). The loop calls scan(), which takes a real image to rescan_real: the
     // integer scan's code stays as it was (a test in it cost GPI 1% of its instructions).
     void rescan(FaceInd f);
+    // rescan's measurement of a gray face: its error sum, candidate error (< 0: none) and
+    // candidate. Reads the mesh, the model and the image only (the supersampled scan also writes
+    // owner_, its own pixels' entries), so that faces can be measured on two threads at once.
+    struct Scanned {
+        double sum, best;
+        LatticePoint cand;
+    };
+    Scanned measure(FaceInd f);
+    // Re-scans faces batch_[0..) as scan() would one after the other: measured on both threads
+    // of helper_ when the run has one (GreedyOptions::threads, gray images without
+    // supersampling), the results then settled in batch_ order, so the sums, the heaps and the
+    // candidates are the same bits as with one thread (greedy.cpp).
+    void scan_batch();
     void scan(FaceInd f) {
         if (real_) rescan_real(f);
         else rescan(f);
@@ -119,6 +133,10 @@ private:
 
     // Stores face f's new error sum and candidate error (the candidate point is in faces_[f])
     // and updates the heaps.
+    void settle(FaceInd f, const Scanned& s) {
+        if (s.best > 0.0) faces_[f].cand = s.cand;
+        settle(f, s.sum, s.best);
+    }
     void settle(FaceInd f, double sum, double best) {
         FaceState& fs = faces_[f];
         fs.sum = sum;
@@ -158,6 +176,9 @@ private:
     double corner_[4] = {0, 0, 0, 0};
     std::vector<FaceInd> owner_;
     std::vector<Span> spans_, touched_;
+    std::vector<FaceInd> batch_;    // the faces scan_batch re-scans, in scan order
+    std::vector<Scanned> scanned_;  // and their measurements
+    StepHelper* helper_ = nullptr;  // the second thread of scan_batch (null: one thread)
     double total_ = 0.0;  // whole-image squared error (sum of the face sums)
     double peak_ = 255.0;
     double pixels_ = 0.0;  // the pixels the PSNR is over: all, or a real image's valid ones

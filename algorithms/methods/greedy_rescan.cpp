@@ -18,8 +18,11 @@ using namespace greedy_scan;
 void GreedyRefiner::rescan(FaceInd f) {
     if (channels_ > 1) return rescan_colour(f);
     stamp_[f] = generation_;
-    FaceState& fs = faces_[f];
-    total_ -= fs.sum;
+    total_ -= faces_[f].sum;
+    settle(f, measure(f));
+}
+
+GreedyRefiner::Scanned GreedyRefiner::measure(FaceInd f) {
     const LatticePoint p[3] = {cdt_.point(cdt_.face_vertex(f, 0)), cdt_.point(cdt_.face_vertex(f, 1)),
                                cdt_.point(cdt_.face_vertex(f, 2))};
     // Rounded scans of a face with integer corner values in [0, maxval] round exactly (as
@@ -90,8 +93,7 @@ void GreedyRefiner::rescan(FaceInd f) {
             if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
         });
     }
-    if (best > 0.0) fs.cand = LatticePoint{2 * bx, 2 * by};
-    settle(f, sum, best);
+    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}};
 }
 
 }  // namespace erd

@@ -32,6 +32,7 @@ struct GreedyStats {
     double total_squared_error = 0.0; // over all pixels, point evaluation, at the end
     double max_error = 0.0;           // largest abs error over candidate points, at the end
     double psnr = 0.0;                // from total_squared_error and the image's peak (inf if 0)
+    std::size_t two_thread_steps = 0; // re-scan steps measured on two threads (GreedyOptions::threads)
 };
 
 // The least-squares refit of the wedge values (algorithms/methods/wedge_fit.h).

@@ -225,6 +225,7 @@ GreedyOptions greedy_options(const GenerateOptions& options, std::size_t n) {
     go.max_channel_error = options.colour.max_channel_error;
     go.progress = options.progress;
     go.ban_border = options.lock_border;
+    go.threads = options.threads;
     return go;
 }
 
