@@ -98,7 +98,7 @@ public:
 
 // The image size from which greedy refinement re-scans on two threads when given them
 // (GreedyOptions::threads): below it the hand-over costs more than it saves (docs/DECISIONS.md "Threads").
-constexpr std::size_t kTwoThreadPixels = std::size_t(1) << 20;
+constexpr std::size_t kTwoThreadPixels = std::size_t(1) << 19;
 
 struct GreedyOptions {
     std::size_t target_vertices = 0;  // stop when the triangulation has this many vertices
