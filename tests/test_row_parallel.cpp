@@ -21,7 +21,9 @@
 #include "algorithms/imaging/colour.h"
 #include "algorithms/imaging/error_diffusion.h"
 #include "algorithms/imaging/mmsodd.h"
+#include "algorithms/imaging/real_image.h"
 #include "algorithms/imaging/synth.h"
+#include "algorithms/imaging/synth_dem.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/greedy_models.h"
 #include "algorithms/methods/methods.h"
@@ -297,7 +299,7 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
 // The greedy loop's re-scans on a second thread (kernel/step_helper.h): gray images of at least
 // kTwoThreadPixels, no supersampling. The helper must take part (its step count), and the
 // triangulation, sums and candidates must be the same bits as on one thread.
-TEST_CASE("greedy re-scans on a second thread: the same mesh and error at 1, 2 and 3 threads", "[threads][greedy]") {
+TEST_CASE("greedy re-scans on a second thread: the same mesh, error and models at 1, 2 and 3 threads", "[threads][greedy]") {
     const erd::Image im = synth_image(1024, 1024);
     REQUIRE(std::size_t(im.width) * std::size_t(im.height) >= erd::kTwoThreadPixels);
     std::vector<std::array<std::int32_t, 6>> first;
@@ -323,6 +325,29 @@ TEST_CASE("greedy re-scans on a second thread: the same mesh and error at 1, 2 a
 #endif
             CHECK(erd::canonical_faces(cdt) == first);
             CHECK(gs.total_squared_error == first_sse);
+        }
+    }
+    // The ERD model's planes (8-bit) and a real DEM with nodata (its own scan, and the owner map
+    // ERDGPI keeps there), through the methods: the same model at every thread count.
+    erd::DemParams dp;
+    dp.width = dp.height = 1024;
+    std::vector<double> heights(std::size_t(dp.width) * std::size_t(dp.height));
+    for (int y = 0; y < dp.height; ++y) erd::dem_row(dp, y, &heights[std::size_t(y) * std::size_t(dp.width)]);
+    erd::Image dem;
+    REQUIRE(erd::make_real_image(dp.width, dp.height, 1, std::move(heights), erd::RasterMeta(), &dem).ok());
+    REQUIRE(dem.has_holes());
+    const erd::Image* const images[] = {&im, &dem};
+    for (const erd::Image* image : images) {
+        std::string first_text;
+        for (int threads : with_one_thread()) {
+            INFO((image == &dem ? "DEM, " : "8-bit, ") << threads << " threads");
+            GenerateOptions o;
+            o.points = 1500;
+            o.threads = threads;
+            GenerateResult r;
+            REQUIRE(find_method("erdgpi")->run(*image, o, &r).ok());
+            if (threads == 1) first_text = model_text(r.model);
+            else CHECK(model_text(r.model) == first_text);
         }
     }
 }

@@ -75,7 +75,7 @@ Status GreedyRefiner::run(GreedyStats* stats) {
     }
     // A second thread for the re-scans: gray images without supersampling (the other scans stay
     // on one), large enough for the steps to outweigh the hand-over (docs/DECISIONS.md "Threads").
-    const bool two = resolve_threads(options_.threads) >= 2 && channels_ == 1 && !real_ && !options_.supersampled &&
+    const bool two = resolve_threads(options_.threads) >= 2 && channels_ == 1 && !options_.supersampled &&
                      std::size_t(image_.width) * std::size_t(image_.height) >= kTwoThreadPixels;
     StepHelper helper(two);
     helper_ = helper.threaded() ? &helper : nullptr;
@@ -171,7 +171,7 @@ void GreedyRefiner::scan_batch() {
     // magnitude, and each result has its own slot.
     std::atomic<std::size_t> next{0};
     auto half = [&](int) {
-        for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < n;) scanned_[i] = measure(batch_[i]);
+        for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < n;) scanned_[i] = real_ ? measure_real(batch_[i]) : measure(batch_[i]);
     };
     helper_->run(half);
     for (std::size_t i = 0; i < n; ++i) {

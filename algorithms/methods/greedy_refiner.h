@@ -94,6 +94,9 @@ private:
         LatticePoint cand;
     };
     Scanned measure(FaceInd f);
+    // The same for a real gray image (rescan_real's measurement; it also fills the owner map's
+    // entries of f's pixels when the run keeps one).
+    Scanned measure_real(FaceInd f);
     // Re-scans faces batch_[0..) as scan() would one after the other: measured on both threads
     // of helper_ when the run has one (GreedyOptions::threads, gray images without
     // supersampling), the results then settled in batch_ order, so the sums, the heaps and the
