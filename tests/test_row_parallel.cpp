@@ -296,35 +296,38 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
     }
 }
 
-// The greedy loop's re-scans on a second thread (kernel/step_helper.h): gray images of at least
-// kTwoThreadPixels, no supersampling. The helper must take part (its step count), and the
-// triangulation, sums and candidates must be the same bits as on one thread.
+// The greedy loop's re-scans on a second thread (kernel/step_helper.h): images of at least
+// kTwoThreadPixels (gray, real gray, colour), no supersampling. The helper must take part (its
+// step count), and the triangulation, sums and candidates must be the same bits as on one thread.
 TEST_CASE("greedy re-scans on a second thread: the same mesh, error and models at 1, 2 and 3 threads", "[threads][greedy]") {
     const erd::Image im = synth_image(1024, 1024);
+    const Image colour = synth_colour(1024, 1024);
     REQUIRE(std::size_t(im.width) * std::size_t(im.height) >= erd::kTwoThreadPixels);
-    std::vector<std::array<std::int32_t, 6>> first;
-    double first_sse = 0;
-    for (int threads : with_one_thread()) {
-        INFO(threads << " threads");
-        erd::BasicGreedyModel model(im);
-        erd::GreedyOptions go;
-        go.target_vertices = 1500;
-        go.threads = threads;
-        erd::Cdt cdt;
-        REQUIRE(cdt.reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
-        erd::GreedyStats gs;
-        REQUIRE(erd::greedy_refine(cdt, im, model, go, &gs).ok());
-        REQUIRE(cdt.vertex_count() == 1500);
-        if (threads == 1) {
-            CHECK(gs.two_thread_steps == 0);
-            first = erd::canonical_faces(cdt);
-            first_sse = gs.total_squared_error;
-        } else {
+    for (const erd::Image* image : {&im, &colour}) {
+        std::vector<std::array<std::int32_t, 6>> first;
+        double first_sse = 0;
+        for (int threads : with_one_thread()) {
+            INFO(image->channels << " channels, " << threads << " threads");
+            erd::BasicGreedyModel model(*image);
+            erd::GreedyOptions go;
+            go.target_vertices = 1500;
+            go.threads = threads;
+            erd::Cdt cdt;
+            REQUIRE(cdt.reset(2 * (image->width - 1), 2 * (image->height - 1)).ok());
+            erd::GreedyStats gs;
+            REQUIRE(erd::greedy_refine(cdt, *image, model, go, &gs).ok());
+            REQUIRE(cdt.vertex_count() == 1500);
+            if (threads == 1) {
+                CHECK(gs.two_thread_steps == 0);
+                first = erd::canonical_faces(cdt);
+                first_sse = gs.total_squared_error;
+            } else {
 #ifndef ERD_NO_THREADS
-            CHECK(gs.two_thread_steps > 0);
+                CHECK(gs.two_thread_steps > 0);
 #endif
-            CHECK(erd::canonical_faces(cdt) == first);
-            CHECK(gs.total_squared_error == first_sse);
+                CHECK(erd::canonical_faces(cdt) == first);
+                CHECK(gs.total_squared_error == first_sse);
+            }
         }
     }
     // The ERD model's planes (8-bit) and a real DEM with nodata (its own scan, and the owner map
@@ -336,16 +339,22 @@ TEST_CASE("greedy re-scans on a second thread: the same mesh, error and models a
     erd::Image dem;
     REQUIRE(erd::make_real_image(dp.width, dp.height, 1, std::move(heights), erd::RasterMeta(), &dem).ok());
     REQUIRE(dem.has_holes());
-    const erd::Image* const images[] = {&im, &dem};
-    for (const erd::Image* image : images) {
+    // Colour too (its own scan, each thread its own span scratch): GPI's planes and the ERD model's.
+    struct Run {
+        const char* what;
+        const erd::Image* image;
+        const char* method;
+    };
+    const Run runs[] = {{"8-bit", &im, "erdgpi"}, {"DEM", &dem, "erdgpi"}, {"colour", &colour, "gpi"}, {"colour", &colour, "erdgpi"}};
+    for (const Run& run : runs) {
         std::string first_text;
         for (int threads : with_one_thread()) {
-            INFO((image == &dem ? "DEM, " : "8-bit, ") << threads << " threads");
+            INFO(run.what << ", " << run.method << ", " << threads << " threads");
             GenerateOptions o;
             o.points = 1500;
             o.threads = threads;
             GenerateResult r;
-            REQUIRE(find_method("erdgpi")->run(*image, o, &r).ok());
+            REQUIRE(find_method(run.method)->run(*run.image, o, &r).ok());
             if (threads == 1) first_text = model_text(r.model);
             else CHECK(model_text(r.model) == first_text);
         }

@@ -19,6 +19,10 @@ using namespace greedy_scan;
 void GreedyRefiner::rescan_colour(FaceInd f) {
     stamp_[f] = generation_;
     total_ -= faces_[f].sum;
+    settle(f, measure_colour(f, &spans_));
+}
+
+GreedyRefiner::Scanned GreedyRefiner::measure_colour(FaceInd f, std::vector<Span>* spans) {
     const int C = channels_;
     SpanPlane planes[kMaxChannels];
     for (int c = 0; c < C; ++c) planes[c] = model_.channel_face_plane(cdt_, f, c);
@@ -30,14 +34,11 @@ void GreedyRefiner::rescan_colour(FaceInd f) {
     double sum = 0.0, best = -1.0;
     std::int32_t bx = 0, by = 0;
     // 8-bit images, rounded, by the largest channel error (the default): the fixed-point scan.
-    if (round && by_max && image_.maxval <= 255 && fixed_scan(planes, p0, p1, p2, &sum, &best, &bx, &by)) {
-        if (best >= 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
-        settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
-        return;
-    }
+    if (round && by_max && image_.maxval <= 255 && fixed_scan(planes, p0, p1, p2, &sum, &best, &bx, &by))
+        return Scanned{sum, best > 0.0 ? std::sqrt(best) : -1.0, LatticePoint{2 * bx, 2 * by}, best >= 0.0};
     // The owned pixels as spans (the ownership rule of OwnedRows, which the gray scan walks).
-    scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, &spans_);
-    for (const Span& sp : spans_) {
+    scan_triangle(Lattice::pixels(), domain_, p0, p1, p2, spans);
+    for (const Span& sp : *spans) {
         const std::int32_t j = sp.y, lo = sp.x_begin, hi = sp.x_end;
         double v[kMaxChannels], dv[kMaxChannels];
         for (int c = 0; c < C; ++c) {
@@ -50,8 +51,7 @@ void GreedyRefiner::rescan_colour(FaceInd f) {
                                 : (by_max ? scan_colour<false, true> : scan_colour<false, false>);
         if (scan(s, banned, lo, hi, v, dv, maxval, &sum, &best, &bx)) by = j;
     }
-    if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
-    settle(f, sum, best > 0.0 ? std::sqrt(best) : -1.0);
+    return Scanned{sum, best > 0.0 ? std::sqrt(best) : -1.0, LatticePoint{2 * bx, 2 * by}, best > 0.0};
 }
 
 bool GreedyRefiner::fixed_scan(const SpanPlane* planes, LatticePoint p0, LatticePoint p1, LatticePoint p2, double* sum,

@@ -66,7 +66,7 @@ GreedyRefiner::Scanned GreedyRefiner::measure_real(FaceInd f) {
                               : scan_real_span<false>(reals + row, nullptr, banned + row, lo, hi, v, dv, &sum, &best, &bx);
         if (moved) by = j;
     });
-    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}};
+    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}, best > 0.0};
 }
 
 void GreedyRefiner::rescan_real(FaceInd f) {

@@ -92,11 +92,14 @@ private:
     struct Scanned {
         double sum, best;
         LatticePoint cand;
+        bool has_cand;  // cand is to be stored (best may still say "no candidate")
     };
     Scanned measure(FaceInd f);
     // The same for a real gray image (rescan_real's measurement; it also fills the owner map's
     // entries of f's pixels when the run keeps one).
     Scanned measure_real(FaceInd f);
+    // The same for a colour image (rescan_colour's; spans: the caller's scratch).
+    Scanned measure_colour(FaceInd f, std::vector<Span>* spans);
     // Re-scans faces batch_[0..) as scan() would one after the other: measured on both threads
     // of helper_ when the run has one (GreedyOptions::threads, gray images without
     // supersampling), the results then settled in batch_ order, so the sums, the heaps and the
@@ -137,7 +140,7 @@ private:
     // Stores face f's new error sum and candidate error (the candidate point is in faces_[f])
     // and updates the heaps.
     void settle(FaceInd f, const Scanned& s) {
-        if (s.best > 0.0) faces_[f].cand = s.cand;
+        if (s.has_cand) faces_[f].cand = s.cand;
         settle(f, s.sum, s.best);
     }
     void settle(FaceInd f, double sum, double best) {
@@ -179,6 +182,7 @@ private:
     double corner_[4] = {0, 0, 0, 0};
     std::vector<FaceInd> owner_;
     std::vector<Span> spans_, touched_;
+    std::vector<Span> helper_spans_;  // the helper thread's scratch for measure_colour
     std::vector<FaceInd> batch_;    // the faces scan_batch re-scans, in scan order
     std::vector<Scanned> scanned_;  // and their measurements
     StepHelper* helper_ = nullptr;  // the second thread of scan_batch (null: one thread)

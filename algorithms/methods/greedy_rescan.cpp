@@ -93,7 +93,7 @@ GreedyRefiner::Scanned GreedyRefiner::measure(FaceInd f) {
             if (scan_real(srow, as_double_.data(), brow, lo, hi, v, dv, &sum, &best, &best2, &bx)) by = j;
         });
     }
-    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}};
+    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}, best > 0.0};
 }
 
 }  // namespace erd
