@@ -297,17 +297,19 @@ TEST_CASE("methods and reconstruction: the same model and images at 1, 2 and 3 t
 }
 
 // The greedy loop's re-scans on a second thread (kernel/step_helper.h): images of at least
-// kTwoThreadPixels (gray, real gray, colour), no supersampling. The helper must take part (its
+// kTwoThreadPixels (gray, colour, real), no supersampling. The helper must take part (its
 // step count), and the triangulation, sums and candidates must be the same bits as on one thread.
 TEST_CASE("greedy re-scans on a second thread: the same mesh, error and models at 1, 2 and 3 threads", "[threads][greedy]") {
     const erd::Image im = synth_image(1024, 1024);
     const Image colour = synth_colour(1024, 1024);
+    const Image real_colour = erd::real_copy(colour);
+    REQUIRE(real_colour.real());
     REQUIRE(std::size_t(im.width) * std::size_t(im.height) >= erd::kTwoThreadPixels);
-    for (const erd::Image* image : {&im, &colour}) {
+    for (const erd::Image* image : {&im, &colour, &real_colour}) {
         std::vector<std::array<std::int32_t, 6>> first;
         double first_sse = 0;
         for (int threads : with_one_thread()) {
-            INFO(image->channels << " channels, " << threads << " threads");
+            INFO(image->channels << " channels" << (image->real() ? ", real" : "") << ", " << threads << " threads");
             erd::BasicGreedyModel model(*image);
             erd::GreedyOptions go;
             go.target_vertices = 1500;

@@ -73,10 +73,9 @@ Status GreedyRefiner::run(GreedyStats* stats) {
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) paint(f);
         touched_.clear();
     }
-    // A second thread for the re-scans: gray, real gray and colour images without supersampling
-    // (real colour and the supersampled scans stay on one), large enough for the steps to
-    // outweigh the hand-over (docs/DECISIONS.md "Threads").
-    const bool two = resolve_threads(options_.threads) >= 2 && (channels_ == 1 || !real_) && !options_.supersampled &&
+    // A second thread for the re-scans: images without supersampling (its scans stay on one),
+    // large enough for the steps to outweigh the hand-over (docs/DECISIONS.md "Threads").
+    const bool two = resolve_threads(options_.threads) >= 2 && !options_.supersampled &&
                      std::size_t(image_.width) * std::size_t(image_.height) >= kTwoThreadPixels;
     StepHelper helper(two);
     helper_ = helper.threaded() ? &helper : nullptr;
@@ -174,9 +173,9 @@ void GreedyRefiner::scan_batch() {
     auto half = [&](int k) {
         std::vector<Span>* const spans = k == 0 ? &spans_ : &helper_spans_;
         for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < n;)
-            scanned_[i] = channels_ > 1 ? measure_colour(batch_[i], spans)
-                          : real_       ? measure_real(batch_[i])
-                                        : measure(batch_[i]);
+            scanned_[i] = real_           ? measure_real(batch_[i])
+                          : channels_ > 1 ? measure_colour(batch_[i], spans)
+                                          : measure(batch_[i]);
     };
     helper_->run(half);
     for (std::size_t i = 0; i < n; ++i) {

@@ -45,40 +45,11 @@ inline bool scan_real_span(const double* s, const std::uint8_t* ok, const std::u
 }  // namespace
 
 GreedyRefiner::Scanned GreedyRefiner::measure_real(FaceInd f) {
-    const SpanPlane plane = model_.face_plane(cdt_, f);
-    const LatticePoint p0 = cdt_.point(cdt_.face_vertex(f, 0)), p1 = cdt_.point(cdt_.face_vertex(f, 1)),
-                       p2 = cdt_.point(cdt_.face_vertex(f, 2));
-    const std::size_t width = std::size_t(image_.width);
-    const double* const reals = image_.reals.data();
-    const std::uint8_t* const ok = image_.valid.empty() ? nullptr : image_.valid.data();
-    const std::uint8_t* const banned = banned_.data();
-    double sum = 0.0, best = -1.0;
-    std::int32_t bx = 0, by = 0;
-    const double dv = 2.0 * plane.gx;
-    // The owner map's entries of f's pixels: faces own disjoint pixels, so two threads measuring
-    // two faces write disjoint entries.
-    FaceInd* const owner = by_owner() ? options_.owners->data() : nullptr;
-    for_each_owned_row(Lattice::pixels(), domain_, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
-        const std::size_t row = std::size_t(j) * width;
-        if (owner) std::fill(owner + row + std::size_t(lo), owner + row + std::size_t(hi) + 1, f);
-        const double v = plane.at(double(2 * lo), double(2 * j));
-        const bool moved = ok ? scan_real_span<true>(reals + row, ok + row, banned + row, lo, hi, v, dv, &sum, &best, &bx)
-                              : scan_real_span<false>(reals + row, nullptr, banned + row, lo, hi, v, dv, &sum, &best, &bx);
-        if (moved) by = j;
-    });
-    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}, best > 0.0};
-}
-
-void GreedyRefiner::rescan_real(FaceInd f) {
-    stamp_[f] = generation_;
-    total_ -= faces_[f].sum;
     const int C = channels_;
-    if (C == 1) {
-        settle(f, measure_real(f));
-        return;
-    }
     SpanPlane planes[kMaxChannels];
-    for (int c = 0; c < C; ++c) planes[c] = model_.channel_face_plane(cdt_, f, c);
+    if (C == 1) planes[0] = model_.face_plane(cdt_, f);
+    else
+        for (int c = 0; c < C; ++c) planes[c] = model_.channel_face_plane(cdt_, f, c);
     const LatticePoint p0 = cdt_.point(cdt_.face_vertex(f, 0)), p1 = cdt_.point(cdt_.face_vertex(f, 1)),
                        p2 = cdt_.point(cdt_.face_vertex(f, 2));
     const std::size_t width = std::size_t(image_.width);
@@ -87,6 +58,22 @@ void GreedyRefiner::rescan_real(FaceInd f) {
     const std::uint8_t* const banned = banned_.data();
     double sum = 0.0, best = -1.0;
     std::int32_t bx = 0, by = 0;
+    if (C == 1) {
+        const SpanPlane& plane = planes[0];
+        const double dv = 2.0 * plane.gx;
+        // The owner map's entries of f's pixels: faces own disjoint pixels, so two threads
+        // measuring two faces write disjoint entries.
+        FaceInd* const owner = by_owner() ? options_.owners->data() : nullptr;
+        for_each_owned_row(Lattice::pixels(), domain_, p0, p1, p2, [&](std::int32_t j, std::int32_t lo, std::int32_t hi) {
+            const std::size_t row = std::size_t(j) * width;
+            if (owner) std::fill(owner + row + std::size_t(lo), owner + row + std::size_t(hi) + 1, f);
+            const double v = plane.at(double(2 * lo), double(2 * j));
+            const bool moved = ok ? scan_real_span<true>(reals + row, ok + row, banned + row, lo, hi, v, dv, &sum, &best, &bx)
+                                  : scan_real_span<false>(reals + row, nullptr, banned + row, lo, hi, v, dv, &sum, &best, &bx);
+            if (moved) by = j;
+        });
+        return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}, best > 0.0};
+    }
     // Colour: a pixel's error is the sum of its squared channel errors; the candidate the pixel
     // of the largest channel error or of the largest sum (GreedyOptions::max_channel_error), as
     // the squares are compared.
@@ -120,8 +107,13 @@ void GreedyRefiner::rescan_real(FaceInd f) {
         }
     });
     best = best2 > 0.0 ? std::sqrt(best2) : -1.0;
-    if (best > 0.0) faces_[f].cand = LatticePoint{2 * bx, 2 * by};
-    settle(f, sum, best);
+    return Scanned{sum, best, LatticePoint{2 * bx, 2 * by}, best > 0.0};
+}
+
+void GreedyRefiner::rescan_real(FaceInd f) {
+    stamp_[f] = generation_;
+    total_ -= faces_[f].sum;
+    settle(f, measure_real(f));
 }
 
 void GreedyRefiner::scan_all_by_owner() {

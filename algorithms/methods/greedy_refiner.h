@@ -95,8 +95,8 @@ private:
         bool has_cand;  // cand is to be stored (best may still say "no candidate")
     };
     Scanned measure(FaceInd f);
-    // The same for a real gray image (rescan_real's measurement; it also fills the owner map's
-    // entries of f's pixels when the run keeps one).
+    // The same for a real image (rescan_real's measurement; in gray it also fills the owner
+    // map's entries of f's pixels when the run keeps one).
     Scanned measure_real(FaceInd f);
     // The same for a colour image (rescan_colour's; spans: the caller's scratch).
     Scanned measure_colour(FaceInd f, std::vector<Span>* spans);
