@@ -8,9 +8,9 @@
 // of a microsecond. On a machine with more runnable threads than processors the two halves wait
 // for each other's time slices instead: the caller's wait for the helper's half, next to its own
 // half's time, says which (see kWindow), and run() then keeps the steps on the calling thread for
-// a while. Compiled with ERD_NO_THREADS, or when not enabled, run() calls
-// both halves on the calling thread, one after the other. Callers whose halves write their own
-// results get the same results either way.
+// a while. Compiled with ERD_NO_THREADS, or when not enabled, run() calls both halves on the
+// calling thread, one after the other. Callers whose halves write their own results get the same
+// results either way.
 #pragma once
 #include <cstdint>
 #ifndef ERD_NO_THREADS
