@@ -132,7 +132,7 @@ struct GreedyOptions {
     // candidates (their vertices were decided before the run).
     bool ban_border = false;
     // Threads for the re-scans (resolve_threads: 0 = the machine's); the result is the same bits
-    // for any count. Two are used on gray images of at least kTwoThreadPixels without supersampling.
+    // for any count. Two are used on images of at least kTwoThreadPixels without supersampling.
     int threads = 1;
     // Optional: called as progress("greedy insertion", vertices / target) about every 1%.
     ProgressHook progress;

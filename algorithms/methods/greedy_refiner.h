@@ -87,8 +87,8 @@ private:
     // integer scan's code stays as it was (a test in it cost GPI 1% of its instructions).
     void rescan(FaceInd f);
     // rescan's measurement of a gray face: its error sum, candidate error (< 0: none) and
-    // candidate. Reads the mesh, the model and the image only (the supersampled scan also writes
-    // owner_, its own pixels' entries), so that faces can be measured on two threads at once.
+    // candidate. Reads the mesh, the model and the image only, so that faces can be measured on
+    // two threads at once.
     struct Scanned {
         double sum, best;
         LatticePoint cand;
@@ -101,9 +101,9 @@ private:
     // The same for a colour image (rescan_colour's; spans: the caller's scratch).
     Scanned measure_colour(FaceInd f, std::vector<Span>* spans);
     // Re-scans faces batch_[0..) as scan() would one after the other: measured on both threads
-    // of helper_ when the run has one (GreedyOptions::threads, gray images without
-    // supersampling), the results then settled in batch_ order, so the sums, the heaps and the
-    // candidates are the same bits as with one thread (greedy.cpp).
+    // of helper_ when the run has one (GreedyOptions::threads, images without supersampling),
+    // the results then settled in batch_ order, so the sums, the heaps and the candidates are
+    // the same bits as with one thread (greedy.cpp).
     void scan_batch();
     void scan(FaceInd f) {
         if (real_) rescan_real(f);
