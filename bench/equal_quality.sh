@@ -6,7 +6,8 @@
 # (`hmm -z 1 -e 0 -p N`); its PSNR is measured by bench/stl_psnr.py (its STL evaluated at every
 # pixel, rounded, erd's peak); `erd generate -m erdgpi -d 1 --psnr P` finds the fewest points whose
 # model reaches it (algorithms/methods/quality_target.h); then hmm at N, erdgpi at that count and
-# erdgpi at N are timed one after the other (bench/timeit: CPU ms, medians of RUNS after a warm-up).
+# erdgpi at N are timed one after the other (bench/timeit: CPU ms, medians of RUNS after a warm-up;
+# erd at -j 1, as hmm runs: a second thread only adds CPU time).
 # Prints the markdown table on stdout (run.sh puts it in docs/RESULTS.md, section "equal-quality").
 set -u
 HMM=$1 ERD=$2 IMAGES=$3 OUT=$4 RUNS=${5:-5}
@@ -34,10 +35,10 @@ for c in "${cases[@]}"; do
         kcpu="-" k="not reached at N"
     else
         # shellcheck disable=SC2086
-        read -r _ kcpu _ < <("$TIMEIT" "$RUNS" "$ERD" generate -m erdgpi $extra -n "$k" -x 2 -q -i "$img" -o "$OUT/eq.erd")
+        read -r _ kcpu _ < <("$TIMEIT" "$RUNS" "$ERD" generate -m erdgpi $extra -n "$k" -j 1 -x 2 -q -i "$img" -o "$OUT/eq.erd")
     fi
     # shellcheck disable=SC2086
-    read -r _ ncpu _ < <("$TIMEIT" "$RUNS" "$ERD" generate -m erdgpi $extra -n "$n" -x 2 -q -i "$img" -o "$OUT/eq.erd")
+    read -r _ ncpu _ < <("$TIMEIT" "$RUNS" "$ERD" generate -m erdgpi $extra -n "$n" -j 1 -x 2 -q -i "$img" -o "$OUT/eq.erd")
     ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a != "-" && b > 0) printf "%.2fx", a / b; else print "-" }'; }
     echo "| $label | $n | $p | $hcpu | $k | $kcpu | $(ratio "$kcpu" "$hcpu") | $ncpu | $(ratio "$ncpu" "$hcpu") |"
 done

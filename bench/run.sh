@@ -66,7 +66,9 @@ bench_case() {
     read -r wall cpu rss < <("$TIMEIT" "$RUNS" "$@" || echo "- - -")
     verdict=$(awk -v w="$wall" -v t="$target" 'BEGIN { print (w != "-" && w <= t) ? "ok" : "over" }')
     if [[ $CALLGRIND == 1 ]] && command -v valgrind >/dev/null; then
-        ir=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 >/dev/null |
+        # erd at one thread: callgrind would count the greedy helper's spinning (kernel/step_helper.h).
+        local one=(); [[ $1 == "$ERD" ]] && one=(-j 1)
+        ir=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" "${one[@]}" 2>&1 >/dev/null |
              sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | awk '{ printf "  %.0fM instr", $1 / 1e6 }')
     fi
     printf '%-34s wall %8s ms  cpu %6s ms  rss %7s KB  target %5s ms %-4s%s\n' "$name" "$wall" "$cpu" "$rss" "$target" "$verdict" "$ir"
@@ -171,19 +173,20 @@ fi
 # ---------------------------------------------------------------------------------------------
 # removal (issue 45): the recommended ERDGPR beside 531d603's default (its ERDGPI, which this
 # build's erdgpi reproduces byte for byte) at equal N. Target: ERDGPR <= 2.0x its CPU time, judged
-# by callgrind instructions (repeatable) and the CPU medians. BASE_ERD: that commit's binary
-# (default /work/base/erd-531d603, else this build's erdgpi).
+# by callgrind instructions (repeatable) and the CPU medians, both at -j 1 (a second thread only
+# adds CPU time). BASE_ERD: that commit's binary (default /work/base/erd-531d603, else this
+# build's erdgpi).
 BASE_ERD=${BASE_ERD:-/work/base/erd-531d603}
 [[ -x $BASE_ERD ]] || BASE_ERD=$ERD
 if [[ -f $IMAGES/lena.pgm && -f $IMAGES/bull.pgm ]]; then
     for c in "lena 1" "bull 0.25" "peppers 3"; do
         read -r name d <<<"$c"
         [[ -f $IMAGES/$name.pgm ]] || continue
-        bench_case "generate erdgpr $name $d%" 1000 -- "$ERD" generate --method erdgpr -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd"
-        bench_case "base erdgpi $name $d%" 1000 -- "$BASE_ERD" generate --method erdgpi -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd"
+        bench_case "generate erdgpr $name $d%" 1000 -- "$ERD" generate --method erdgpr -j 1 -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd"
+        bench_case "base erdgpi $name $d%" 1000 -- "$BASE_ERD" generate --method erdgpi -j 1 -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd"
         if command -v valgrind >/dev/null; then
-            a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method erdgpr -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
-            b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$BASE_ERD" generate --method erdgpi -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+            a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method erdgpr -j 1 -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.erdgpr.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
+            b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$BASE_ERD" generate --method erdgpi -j 1 -q -x 2 -d "$d" -i "$IMAGES/$name.pgm" -o "$OUT/$name.base.erd" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | head -1)
             awk -v a="$a" -v b="$b" -v c="$name $d%" 'BEGIN { if (a && b) printf "removal: erdgpr / base erdgpi %s: %.0fM / %.0fM instructions = %.2fx (target <= 2.0)\n", c, a / 1e6, b / 1e6, a / b }'
         fi
     done
@@ -209,7 +212,8 @@ fi
 # built here, outside the repository, into $OUT; nothing is downloaded), else against our GPI.
 # hmm meshes to the same vertex count (-p N -e 0) and writes STL; the 16-bit heightmap is a PNG,
 # which both read (hmm's reader takes 16 bits from PNG only). Targets: erdgpi and erded
-# <= 1.0x hmm's CPU time, within 2x GPI; peak RSS <= 32 bytes per pixel for every method.
+# <= 1.0x hmm's CPU time, within 2x GPI; peak RSS <= 32 bytes per pixel for every method. erd
+# runs at -j 1 here, as hmm: CPU time beside a one-thread program (a second thread only adds it).
 # SCALE_SIZES (default "512 1024 2048") adds 4096 8192; SCALE_RUNS (default 3) runs per case.
 # Each line has the CPU time per pixel, so the sizes make the growth table (docs/DECISIONS.md
 # "Speed and growth"), and with CALLGRIND=1 the instructions per pixel up to SCALE_CALLGRIND_MAX.
@@ -250,7 +254,7 @@ scale_case() {
     fi
     for m in gpi ed erded erdgpi; do
         extra=(); [[ $m == erd* ]] && extra=("$@")
-        read -r wall cpu rss < <("$TIMEIT" "$SCALE_RUNS" "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -n "$n" -i "$img" -o "$OUT/scale.$m" || echo "- - -")
+        read -r wall cpu rss < <("$TIMEIT" "$SCALE_RUNS" "$ERD" generate --method "$m" "${extra[@]}" -j 1 -q -x 2 -n "$n" -i "$img" -o "$OUT/scale.$m" || echo "- - -")
         [[ $m == gpi ]] && gcpu=$cpu
         ref=${hcpu:-$gcpu}
         echo "$label|$w x $h|$m|$cpu|$(awk -v c="$cpu" -v r="$ref" 'BEGIN { if (c != "-" && r > 0) printf "%.2fx", c / r }')" >>"$speed_rows"
@@ -260,7 +264,7 @@ scale_case() {
         # up to SCALE_CALLGRIND_MAX, default 1024: callgrind runs about 50 times slower).
         ipx=""
         if [[ $CALLGRIND == 1 && $w -le ${SCALE_CALLGRIND_MAX:-1024} ]] && command -v valgrind >/dev/null; then
-            ipx=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method "$m" "${extra[@]}" -q -x 2 -n "$n" -i "$img" \
+            ipx=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$ERD" generate --method "$m" "${extra[@]}" -j 1 -q -x 2 -n "$n" -i "$img" \
                       -o "$OUT/scale.$m" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p' | sort -n | tail -1)
             ipx=$(awk -v i="$ipx" -v p="$px" 'BEGIN { if (i > 0) printf "  %.0f instr/px", i / p }')
         fi
@@ -574,7 +578,7 @@ if mkdir -p "$OUT/dem" && /usr/bin/python3 tests/dem_data.py "$OUT/dem" >"$OUT/d
             ext=model; [[ $m == erd* ]] && ext=erd
             # N a cap only: every pixel for the small models, 5% of the large one (which needs 0.04%).
             dens=100; [[ $dem == synth ]] && dens=5
-            args=(generate -m $m -i "$OUT/dem/$dem.tif" -d $dens -x 2 --max-error "$E" --max-memory 0 -q -o "$OUT/dem/t.$ext")
+            args=(generate -m $m -i "$OUT/dem/$dem.tif" -d $dens -x 2 --max-error "$E" --max-memory 0 -j 1 -q -o "$OUT/dem/t.$ext")
             read -r _ cpu rss < <("$TIMEIT" "$runs" "$ERD" "${args[@]}" || echo "- - -")
             "$ERD" "${args[@]}" --stats "$OUT/dem/t.json" && "$ERD" reconstruct -q "$OUT/dem/t.$ext" -o "$OUT/dem/t.pfm" || continue
             tri=$(/usr/bin/python3 -c "import json; print(json.load(open('$OUT/dem/t.json'))['faces'])")
