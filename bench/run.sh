@@ -284,7 +284,7 @@ rm -f "$OUT"/synth*.pgm "$OUT"/height*.png "$OUT"/scale.*
 # The table: one row per image, CPU ms of each program with its ratio to hmm (or to gpi) beside it.
 if [[ -s $speed_rows ]]; then
     {
-        echo "Whole \`erd generate\` process (read, mesh, write) at 1% of the pixels as vertices, CPU milliseconds,"
+        echo "Whole \`erd generate -j 1\` process (read, mesh, write; one thread, as hmm) at 1% of the pixels as vertices, CPU milliseconds,"
         echo "medians of $SCALE_RUNS runs after a warm-up, each program on the same image one after the other in one"
         echo "run. synth = \`erd synth\` (8-bit, noise; its edges measure hard), \"soft\" = the same with"
         echo "\`--edges soft\` for the ERD methods (Canny on noise: the heaviest step 1 there is), height16 = a"
@@ -319,7 +319,7 @@ if [[ -n $HMM ]]; then
     {
         echo "hmm meshes 1% of the pixels (\`hmm -z 1 -e 0 -p N\`); its PSNR is its STL evaluated at every pixel"
         echo "(bench/stl_psnr.py); erdgpi's count is the fewest points whose model reaches that PSNR"
-        echo "(\`erd generate -m erdgpi -d 1 --psnr P\`, found within 2%). Whole process CPU ms, medians of"
+        echo "(\`erd generate -m erdgpi -d 1 --psnr P\`, found within 2%). Whole process CPU ms (erd at -j 1), medians of"
         echo "$SCALE_RUNS runs after a warm-up, one program after the other; ratio = erdgpi / hmm. synth 2048 soft:"
         echo "\`erd synth\` 2048^2 with \`--edges soft\` for erdgpi. Targets (issue 46): equal quality <= 0.5x,"
         echo "equal points <= 1.0x."
