@@ -63,17 +63,27 @@ public:
     template <class Fn>
     void run(Fn& fn) {
 #ifndef ERD_NO_THREADS
-        if (!thread_.joinable()) {
-            fn(0);
-            fn(1);
+        if (thread_.joinable() && off_ == 0) {
+            hand_over(fn);
             return;
         }
-        if (off_ > 0) {
-            --off_;
-            fn(0);
-            fn(1);
-            return;
-        }
+        if (off_ > 0) --off_;
+#endif
+        fn(0);
+        fn(1);
+    }
+
+private:
+    std::uint32_t two_steps_ = 0;
+#ifndef ERD_NO_THREADS
+    static void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause();
+#endif
+    }
+
+    template <class Fn>
+    void hand_over(Fn& fn) {
         job_ = &fn;
         call_ = [](void* f) { (*static_cast<Fn*>(f))(1); };
         const std::uint32_t step = posted_.fetch_add(1) + 1;
@@ -97,19 +107,6 @@ public:
             if (waited_ > own_) off_ = kOff;
             own_ = waited_ = Clock::duration::zero();
         }
-#else
-        fn(0);
-        fn(1);
-#endif
-    }
-
-private:
-    std::uint32_t two_steps_ = 0;
-#ifndef ERD_NO_THREADS
-    static void pause() {
-#if defined(__x86_64__) || defined(__i386__)
-        __builtin_ia32_pause();
-#endif
     }
 
     void serve() {

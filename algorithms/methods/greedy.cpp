@@ -81,12 +81,10 @@ Status GreedyRefiner::run(GreedyStats* stats) {
     helper_ = helper.threaded() ? &helper : nullptr;
     if (by_owner()) {
         scan_all_by_owner();
-    } else if (helper_) {
+    } else {
         batch_.clear();
         for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) stamp_[f] = generation_, batch_.push_back(f);
         scan_batch();
-    } else {
-        for (FaceInd f = 0; f < FaceInd(faces_.size()); ++f) scan(f);
     }
 
     GreedyStop stop;
@@ -136,19 +134,16 @@ Status GreedyRefiner::run(GreedyStats* stats) {
                     const FaceInd o = owner_[std::size_t(t.y) * std::size_t(image_.width) + std::size_t(x)];
                     if (stamp_[o] != generation_) scan(o);
                 }
-        } else if (helper_) {
-            // The faces the serial loop below scans, in its order (the stamps skip repeats).
+            for (FaceInd d : dirty)
+                if (d < faces_.size() && stamp_[d] != generation_) scan(d);
+        } else {
+            // The new faces, then the model's dirty ones (the stamps skip repeats), in this order.
             batch_.clear();
             for (FaceInd c : cdt_.changes().created) stamp_[c] = generation_, batch_.push_back(c);
             for (FaceInd d : dirty)
                 if (d < faces_.size() && stamp_[d] != generation_) stamp_[d] = generation_, batch_.push_back(d);
             scan_batch();
-            continue;
-        } else {
-            for (FaceInd c : cdt_.changes().created) scan(c);
         }
-        for (FaceInd d : dirty)
-            if (d < faces_.size() && stamp_[d] != generation_) scan(d);
     }
     helper_ = nullptr;
     stats->two_thread_steps = helper.two_thread_steps();
