@@ -1,6 +1,7 @@
 #include "algorithms/imaging/edge_kind.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "algorithms/imaging/douglas_peucker.h"
@@ -125,15 +126,21 @@ void CrackDetector::detect(double beta, double r, Grid<std::uint8_t>* out) const
         const std::size_t i = std::size_t(Y >> 1) * std::size_t(W) + std::size_t(X >> 1);
         return double(std::abs(int(px[i + ((X & 1) ? 1 : std::size_t(W))]) - int(px[i])));
     };
-    // Hysteresis over cracks that share a pixel corner, from the cracks at or above `high`.
-    std::vector<std::pair<int, int>> stack;
+    // Hysteresis over cracks that share a pixel corner, from the cracks at or above `high` (the
+    // integer steps at or above its ceiling), found a pixel row at a time: the cracks to the
+    // right (row Y = 2y, X odd), then those down (row Y = 2y + 1, X even).
+    std::vector<std::pair<int, int>> stack, marked;
+    const int seed = int(std::ceil(high));
     for (int Y = 0; Y < GH; ++Y) {
         std::uint8_t* row = map.data.data() + std::size_t(Y) * std::size_t(GW);
-        for (int X = 1 - (Y & 1); X < GW; X += 2)
-            if (step(X, Y) >= high) {
-                row[X] = 1;
-                stack.push_back({X, Y});
-            }
+        const std::uint16_t* a = px + std::size_t(Y >> 1) * std::size_t(W);
+        const auto mark = [&](int X) {
+            row[X] = 1;
+            stack.push_back({X, Y});
+            marked.push_back({X, Y});
+        };
+        if (Y & 1) for_each_strong(a, a + W, W, seed, [&](int x) { mark(2 * x); });
+        else for_each_strong(a, a + 1, W - 1, seed, [&](int x) { mark(2 * x + 1); });
     }
     const auto visit = [&](int X, int Y) {
         if (X < 0 || Y < 0 || X >= GW || Y >= GH) return;
@@ -141,6 +148,7 @@ void CrackDetector::detect(double beta, double r, Grid<std::uint8_t>* out) const
         if (!m && step(X, Y) >= low) {
             m = 1;
             stack.push_back({X, Y});
+            marked.push_back({X, Y});
         }
     };
     while (!stack.empty()) {
@@ -156,14 +164,16 @@ void CrackDetector::detect(double beta, double r, Grid<std::uint8_t>* out) const
             visit(cx + 1, cy);
         }
     }
-    // A pixel corner is on an edge where two or more of its cracks are.
-    for (int Y = 1; Y < GH; Y += 2) {
-        std::uint8_t* row = map.data.data() + std::size_t(Y) * std::size_t(GW);
-        const std::uint8_t* up = row - GW;
-        const std::uint8_t* down = row + GW;  // Y + 1 <= GH - 1: Y is odd and GH is odd
-        for (int X = 1; X < GW; X += 2)
-            if (up[X] + down[X] + row[X - 1] + row[X + 1] >= 2) row[X] = 1;
-    }
+    // A pixel corner (both coordinates odd) is on an edge where two or more of its four cracks
+    // are: such a corner is an end of a marked crack, so only those ends are looked at (a
+    // corner's mark is no crack of another corner's).
+    const auto at = [&](int X, int Y) -> std::uint8_t& { return map.data[std::size_t(Y) * std::size_t(GW) + std::size_t(X)]; };
+    for (const auto& [X, Y] : marked)
+        for (int side = -1; side <= 1; side += 2) {
+            const int cx = (X & 1) ? X : X + side, cy = (X & 1) ? Y + side : Y;
+            if (cx < 1 || cy < 1 || cx >= GW - 1 || cy >= GH - 1 || at(cx, cy)) continue;
+            if (at(cx, cy - 1) + at(cx, cy + 1) + at(cx - 1, cy) + at(cx + 1, cy) >= 2) at(cx, cy) = 1;
+        }
 }
 
 Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r) { return CrackDetector(im).detect(beta, r); }
