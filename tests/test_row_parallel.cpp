@@ -24,6 +24,7 @@
 #include "algorithms/imaging/real_image.h"
 #include "algorithms/imaging/synth.h"
 #include "algorithms/imaging/synth_dem.h"
+#include "algorithms/methods/flips.h"
 #include "algorithms/methods/greedy.h"
 #include "algorithms/methods/greedy_models.h"
 #include "algorithms/methods/methods.h"
@@ -366,6 +367,82 @@ TEST_CASE("greedy re-scans on a second thread: the same mesh, error and models a
 // Two calls of the public API at once (a program meshing on two threads): no state shared
 // between calls, so each equals the same call made alone. Under ThreadSanitizer (make tsan) this
 // also finds any write two calls would share.
+TEST_CASE("flip tests measured ahead on a second thread: the same flips, faces and sums at 1, 2 and 3 threads",
+          "[threads][flips]") {
+    // An ERD mesh of a large image (the helper's threshold) without edge detection: pseudo-random
+    // pixels and a few constrained segments, so that some vertices have two wedges.
+    const Image im = synth_image(1024, 1024);
+    const Image colour = synth_colour(1024, 1024);
+    REQUIRE(std::size_t(im.width) * std::size_t(im.height) >= erd::kTwoThreadPixels);
+    erd::Cdt mesh;
+    REQUIRE(mesh.reset(2 * (im.width - 1), 2 * (im.height - 1)).ok());
+    std::uint32_t seed = 7;
+    for (int i = 0; i < 2500; ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        const erd::LatticePoint p{std::int32_t(2 * ((seed >> 8) % 1023u) + 2), std::int32_t(2 * ((seed >> 20) % 1023u) + 2)};
+        erd::VertInd v = 0;
+        REQUIRE(mesh.insert_point(p, &v).ok());
+    }
+    for (int k = 0; k < 6; ++k) {
+        erd::VertInd a = 0, b = 0;
+        REQUIRE(mesh.insert_point({200 + 300 * k, 100 + 40 * k}, &a).ok());
+        REQUIRE(mesh.insert_point({260 + 300 * k, 1900 - 50 * k}, &b).ok());
+        REQUIRE(mesh.insert_constraint(a, b).ok());
+    }
+    erd::ErdModel model(im, erd::WedgeValueOptions{});
+    model.assign_all(mesh);
+    std::vector<erd::ErdModel> channel;
+    std::vector<erd::Image> planes;
+    channel.reserve(3);
+    for (int c = 0; c < 3; ++c) planes.push_back(erd::channel_plane(colour, c));
+    for (int c = 0; c < 3; ++c) {
+        channel.emplace_back(planes[std::size_t(c)], erd::WedgeValueOptions{});
+        channel.back().assign_all(mesh);
+    }
+    // The refit's face systems: the loop's errors before a flip and its skip of small ones.
+    erd::ErdModel fitted = model;
+    erd::MeshSystems systems;
+    erd::WedgeFitOptions wo;
+    erd::fit_wedge_values(mesh, im, wo, &fitted, nullptr, nullptr, {}, &systems);
+    REQUIRE(systems.matches(mesh));
+
+    enum class Kind { gray, with_systems, rgb };
+    for (Kind kind : {Kind::gray, Kind::with_systems, Kind::rgb}) {
+        std::vector<std::array<std::int32_t, 6>> first;
+        erd::FlipStats first_stats;
+        for (int threads : with_one_thread()) {
+            INFO(int(kind) << " kind, " << threads << " threads");
+            erd::Cdt cdt = mesh;
+            erd::FlipStats fs;
+            if (kind == Kind::gray) {
+                erd::improve_by_flips(&cdt, im, model, 1u << 20, &fs, nullptr, nullptr, 0.0, threads);
+            } else if (kind == Kind::with_systems) {
+                erd::MeshSystems own = systems;
+                erd::improve_by_flips(&cdt, im, fitted, 1u << 20, &fs, nullptr, &own, 0.2, threads);
+            } else {
+                erd::improve_by_flips(&cdt, {&planes[0], &planes[1], &planes[2]}, {&channel[0], &channel[1], &channel[2]},
+                                      1u << 20, &fs, nullptr, threads);
+            }
+            REQUIRE(fs.flips > 0);
+            if (threads == 1) {
+                CHECK(fs.ahead == 0);
+                first = erd::canonical_faces(cdt);
+                first_stats = fs;
+                continue;
+            }
+#ifndef ERD_NO_THREADS
+            CHECK(fs.ahead > 0);
+#endif
+            CHECK(erd::canonical_faces(cdt) == first);
+            CHECK(fs.flips == first_stats.flips);
+            CHECK(fs.tested == first_stats.tested);
+            CHECK(fs.changed == first_stats.changed);
+            CHECK(fs.sse_before == first_stats.sse_before);
+            CHECK(fs.sse_after == first_stats.sse_after);
+        }
+    }
+}
+
 TEST_CASE("public API: two meshes on two threads equal the same meshes made one after the other", "[threads][api]") {
     const erd::Image a = synth_image(96, 64, 8, 11);
     const erd::Image b = synth_image(80, 72, 8, 12);

@@ -67,11 +67,12 @@ void ErdChannels::views(std::vector<const Image*>* planes, std::vector<const Erd
     }
 }
 
-void ErdChannels::flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const {
+void ErdChannels::flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces,
+                       int threads) const {
     std::vector<const Image*> planes;
     std::vector<const ErdModel*> models;
     views(&planes, &models);
-    improve_by_flips(cdt, planes, models, max_flips, stats, seed_faces);
+    improve_by_flips(cdt, planes, models, max_flips, stats, seed_faces, threads);
 }
 
 void ErdChannels::move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats, const ColourSystems* kept) const {

@@ -48,7 +48,8 @@ public:
     // Every channel's current values (ErdModel::entry_value), channel by channel.
     std::vector<std::vector<double>> values() const;
     // Data-dependent flips (flips.h) on the squared error summed over the channels.
-    void flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) const;
+    void flip(Cdt* cdt, std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces,
+              int threads = 1) const;
     // Vertex moves (flips.h improve_by_moves) on the squared error summed over the channels.
     void move(Cdt* cdt, std::int32_t step, double min_gain, MoveStats* stats, const ColourSystems* kept = nullptr) const;
     // The C-channel ERD model: values[v*C + c], corner_values[f*C + c] (algorithms/model/model.h).

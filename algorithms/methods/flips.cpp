@@ -1,12 +1,20 @@
 #include "algorithms/methods/flips.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
+#ifndef ERD_NO_THREADS
+#include <atomic>
+#include <thread>
+#endif
 
+#include "algorithms/methods/greedy.h"
 #include "kernel/raster.h"
 #include "kernel/raster_rows.h"
+#include "kernel/row_parallel.h"
 
 namespace erd {
 
@@ -83,11 +91,161 @@ private:
     RasterDomain domain_;
 };
 
+// The sums of a test measured ahead (TestsAhead): s1 over (c,a,d), s2 over (d,b,c), and which
+// are whole (the others were cut short at the limit).
+struct AheadSums {
+    double s1 = 0.0, s2 = 0.0;
+    bool whole1 = false, whole2 = false;
+};
+
+#ifndef ERD_NO_THREADS
+// The first round's tests measured ahead on a second thread (-j 2; docs/DECISIONS.md "Threads").
+// The loop pops the first list's entries from the top down: entry i when the entries below it
+// are all that is left of that list (the flips' own entries go above them). Just below the loop,
+// in a window of kRing entries, the loop copies each entry with its quadrilateral as the mesh
+// then is: the corners a, b, c, d of faces (a,b,c) and (b,a,d), each with its model entry, and
+// the limit the two faces' errors give. A helper thread measures the copied entries from the top
+// down, kLead below the loop at least, into AheadSums, each sum cut short at the copied limit. It
+// reads the copies, the image, the models and the points, none of which a flip changes, never
+// the mesh. The loop takes an entry's sums when its edge still has the copied corners: the same
+// two triangles with the same values (a corner's value is its vertex's wedge around the face,
+// and flips change no wedge), so the same sums. A whole sum is the one-thread loop's, and a cut
+// one decides only what the loop's own cut sum would (sums of squares only grow), so the flips
+// and every sum they record are the one-thread loop's bits.
+class TestsAhead {
+public:
+    // work: the loop's first list (every edge); face_sse: every face's error (the loop's), or null
+    // (then nothing is cut short).
+    TestsAhead(const Cdt& cdt, const std::vector<EdgeInd>& work, const std::vector<const ErdModel*>& models,
+               const std::vector<double>* face_sse, const TriangleError& error)
+        : cdt_(cdt), models_(models), face_sse_(face_sse), error_(error), points_(cdt.points().data()),
+          ring_(kRing), filled_(work.size()) {
+        passed(work, work.size());
+        thread_ = std::thread([this] { serve(); });
+    }
+    ~TestsAhead() {
+        stop_.store(true, std::memory_order_relaxed);
+        thread_.join();
+    }
+    TestsAhead(const TestsAhead&) = delete;
+    TestsAhead& operator=(const TestsAhead&) = delete;
+
+    // The loop has popped entry `left` of the first list (work's first left entries are what is
+    // left of it; left = its size before the first pop): copies the entries below as the window
+    // needs, leaving entry left's own copy.
+    void passed(const std::vector<EdgeInd>& work, std::size_t left) {
+        left_.store(left, std::memory_order_relaxed);
+        if (filled_ == 0 || left - filled_ >= kRing / 2) return;
+        const std::size_t bottom = left + 1 > kRing ? left + 1 - kRing : 0;
+        for (std::size_t i = filled_; i-- > bottom;) copy(work[i], i);
+        filled_ = bottom;
+        filled_pub_.store(bottom, std::memory_order_release);
+    }
+
+    // Entry i's sums when its quadrilateral is still (a, b, c, d), else null.
+    const AheadSums* take(std::size_t i, const VertInd (&v)[4]) const {
+        const Slot& s = ring_[i % kRing];
+        if (s.state.load(std::memory_order_acquire) != kDone || s.entry != i) return nullptr;
+        for (int k = 0; k < 4; ++k)
+            if (s.v[k] != v[k]) return nullptr;
+        return &s.sums;
+    }
+
+private:
+    static constexpr std::size_t kRing = 4096;  // entries copied at once at most (a window of 256 KB)
+    static constexpr std::size_t kLead = 8;     // the helper stays this far below the loop
+    enum : std::uint8_t { kFree, kReady, kClaimed, kDone };
+    struct Slot {
+        std::atomic<std::uint8_t> state{kFree};
+        std::size_t entry = 0;
+        VertInd v[4] = {};
+        std::uint32_t at[4] = {};  // the corners' model entries (ErdModel::corner_lookup)
+        double limit = 0.0;
+        AheadSums sums;
+    };
+
+    static void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause();
+#endif
+    }
+
+    // Copies entry i (edge e) into its slot, once the helper is not measuring what the slot held.
+    void copy(EdgeInd e, std::size_t i) {
+        Slot& s = ring_[i % kRing];
+        for (std::uint8_t st = s.state.load(std::memory_order_acquire);;) {
+            if (st == kClaimed) {
+                pause();
+                st = s.state.load(std::memory_order_acquire);
+            } else if (s.state.compare_exchange_weak(st, kFree, std::memory_order_acq_rel)) {
+                break;
+            }
+        }
+        s.entry = i;
+        if (!cdt_.can_flip(e)) return;  // stays free: not measured
+        const EdgeInd t = cdt_.twin(e);
+        const EdgeInd es[4] = {e, next_edge(e), prev_edge(e), prev_edge(t)};
+        for (int k = 0; k < 4; ++k) {
+            s.v[k] = cdt_.org(es[k]);
+            s.at[k] = models_[0]->corner_lookup(cdt_, es[k]);
+        }
+        const double before = face_sse_ ? (*face_sse_)[face_of(e)] + (*face_sse_)[face_of(t)] : -1.0;
+        s.limit = before >= 0 ? before - 1e-9 * (before + 1.0) : std::numeric_limits<double>::infinity();
+        s.state.store(kReady, std::memory_order_release);
+    }
+
+    void serve() {
+        std::size_t next = left_.load(std::memory_order_relaxed);  // the entries below are still to measure
+        while (!stop_.load(std::memory_order_relaxed)) {
+            const std::size_t left = left_.load(std::memory_order_relaxed);
+            if (next + kLead > left) next = left > kLead ? left - kLead : 0;
+            const std::size_t bottom = filled_pub_.load(std::memory_order_acquire);
+            if (next <= bottom) {
+                if (next == 0) return;
+                pause();  // the loop copies more when it nears the window's bottom
+                continue;
+            }
+            Slot& s = ring_[--next % kRing];
+            std::uint8_t st = kReady;
+            if (!s.state.compare_exchange_strong(st, kClaimed, std::memory_order_acq_rel)) continue;
+            if (s.entry == next) measure(&s);
+            s.state.store(s.entry == next ? kDone : kReady, std::memory_order_release);
+        }
+    }
+
+    void measure(Slot* s) const {
+        double z[4][kMaxChannels];
+        for (int k = 0; k < 4; ++k)
+            for (std::size_t c = 0; c < models_.size(); ++c) z[k][c] = models_[c]->looked_up_value(s->v[k], s->at[k]);
+        const LatticePoint a = points_[s->v[0]], b = points_[s->v[1]], c = points_[s->v[2]], d = points_[s->v[3]];
+        AheadSums& r = s->sums;
+        r.s1 = error_(c, z[2], a, z[0], d, z[3], 0.0, s->limit);
+        r.whole1 = r.s1 < s->limit;
+        r.whole2 = false;
+        if (r.whole1) {
+            r.s2 = error_(d, z[3], b, z[1], c, z[2], r.s1, s->limit);
+            r.whole2 = r.s1 + r.s2 < s->limit;
+        }
+    }
+
+    const Cdt& cdt_;
+    const std::vector<const ErdModel*>& models_;
+    const std::vector<double>* face_sse_;
+    const TriangleError& error_;
+    const LatticePoint* points_;
+    std::vector<Slot> ring_;
+    std::size_t filled_;  // the loop's: entries from filled_ up are copied (or popped)
+    std::atomic<std::size_t> filled_pub_{~std::size_t(0)}, left_{0};
+    std::atomic<bool> stop_{false};
+    std::thread thread_;
+};
+#endif
+
 // The flip loop of one or C channels: channel c's corner values from models[c] on planes[c].
 // systems (one channel only) as in flips.h.
 void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
                    std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces,
-                   MeshSystems* systems, double min_share) {
+                   MeshSystems* systems, double min_share, int threads) {
     FlipStats st;
     if (systems && (models.size() != 1 || !systems->matches(*cdt))) systems = nullptr;
     TriangleError triangle_error(planes, *cdt);
@@ -95,20 +253,22 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     const std::size_t nf = cdt->face_count();
     std::vector<double> face_sse(nf, -1.0);  // < 0: not computed yet
     auto corner = [&](EdgeInd e) { return models[0]->corner_value(*cdt, e); };
+    // The C values of corner e.
+    auto corner_values = [&](EdgeInd e, double* z) {
+        if (C == 1) {
+            z[0] = models[0]->corner_value(*cdt, e);
+            return;
+        }
+        // The channels share their wedges (flips.h): the corner's entry is looked up once.
+        const std::uint32_t at = models[0]->corner_lookup(*cdt, e);
+        const VertInd v = cdt->org(e);
+        for (std::size_t c = 0; c < C; ++c) z[c] = models[c]->looked_up_value(v, at);
+    };
     // The squared error over the triangle of the corners at the origins of e0, e1, e2.
     auto tri_error = [&](EdgeInd e0, EdgeInd e1, EdgeInd e2, double base, double stop) {
         double z[3][kMaxChannels];
         const EdgeInd e[3] = {e0, e1, e2};
-        for (int i = 0; i < 3; ++i) {
-            if (C == 1) {
-                z[i][0] = models[0]->corner_value(*cdt, e[i]);
-                continue;
-            }
-            // The channels share their wedges (flips.h): corner e[i]'s entry is looked up once.
-            const std::uint32_t at = models[0]->corner_lookup(*cdt, e[i]);
-            const VertInd v = cdt->org(e[i]);
-            for (std::size_t c = 0; c < C; ++c) z[i][c] = models[c]->looked_up_value(v, at);
-        }
+        for (int i = 0; i < 3; ++i) corner_values(e[i], z[i]);
         return triangle_error(cdt->point(cdt->org(e0)), z[0], cdt->point(cdt->org(e1)), z[1], cdt->point(cdt->org(e2)),
                               z[2], base, stop);
     };
@@ -148,10 +308,26 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     } else {
         for (EdgeInd e = 3 * EdgeInd(nf); e-- > 0;) enqueue(e);
     }
+    // Every edge's first test measured ahead on a second thread, on images large enough for it
+    // to pay (greedy.h's kTwoThreadPixels, as the greedy's re-scans).
+    std::size_t first_left = work.size();  // what is left of the first list: work's first entries
+#ifndef ERD_NO_THREADS
+    std::unique_ptr<TestsAhead> ahead;
+    if (!seed_faces && resolve_threads(threads) >= 2 &&
+        std::size_t(planes[0]->width) * std::size_t(planes[0]->height) >= kTwoThreadPixels)
+        ahead.reset(new TestsAhead(*cdt, work, models, skip_below > 0 ? &face_sse : nullptr, triangle_error));
+#else
+    (void)threads;
+#endif
     while (!work.empty() && st.flips < max_flips) {
         const EdgeInd e = work.back();
         work.pop_back();
         queued[e] = 0;
+        const bool first = work.size() < first_left;  // an entry of the first list
+        if (first) first_left = work.size();
+#ifndef ERD_NO_THREADS
+        if (ahead && first) ahead->passed(work, first_left);
+#endif
         if (!cdt->can_flip(e)) continue;
         const EdgeInd t = cdt->twin(e);
         // Faces (a,b,c) and (b,a,d) -> (c,a,d) and (d,b,c) (kernel/cdt.h).
@@ -160,12 +336,21 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
         if (before < skip_below) continue;
         // A flip must win by more than rounding: the squared error then falls at every flip and
         // no edge flips back and forth. A sum cut short at the limit is at least the limit, and
-        // so is the whole one: the same verdict; an accepted flip has both sums whole.
+        // so is the whole one: the same verdict; an accepted flip has both sums whole. A sum
+        // measured ahead stands for the loop's own when it is whole or already decides.
         const double limit = before - 1e-9 * (before + 1.0);
         ++st.tested;
-        const double s1 = tri_error(ec, ea, ed, 0.0, limit);
+        const AheadSums* m = nullptr;
+#ifndef ERD_NO_THREADS
+        if (ahead && first) {
+            const VertInd v[4] = {cdt->org(ea), cdt->org(eb), cdt->org(ec), cdt->org(ed)};
+            m = ahead->take(first_left, v);
+            st.ahead += m != nullptr;
+        }
+#endif
+        const double s1 = m && (m->whole1 || !(m->s1 < limit)) ? m->s1 : tri_error(ec, ea, ed, 0.0, limit);
         if (!(s1 < limit)) continue;
-        const double s2 = tri_error(ed, eb, ec, s1, limit);
+        const double s2 = m && m->whole1 && (m->whole2 || !(s1 + m->s2 < limit)) ? m->s2 : tri_error(ed, eb, ec, s1, limit);
         if (!(s1 + s2 < limit)) continue;
         const EdgeInd diag = cdt->flip_edge(e);
         if (diag == noEdge) continue;
@@ -188,13 +373,13 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
 }  // namespace
 
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
-                      const std::vector<FaceInd>* seed_faces, MeshSystems* systems, double min_share) {
-    flip_channels(cdt, {&image}, {&model}, max_flips, stats, seed_faces, systems, min_share);
+                      const std::vector<FaceInd>* seed_faces, MeshSystems* systems, double min_share, int threads) {
+    flip_channels(cdt, {&image}, {&model}, max_flips, stats, seed_faces, systems, min_share, threads);
 }
 
 void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
-                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces) {
-    flip_channels(cdt, planes, models, max_flips, stats, seed_faces, nullptr, 0.0);
+                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces, int threads) {
+    flip_channels(cdt, planes, models, max_flips, stats, seed_faces, nullptr, 0.0, threads);
 }
 
 namespace {

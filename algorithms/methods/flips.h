@@ -20,6 +20,7 @@ namespace erd {
 struct FlipStats {
     std::size_t flips = 0;      // flips made
     std::size_t tested = 0;     // flippable edges whose two diagonals were compared
+    std::size_t ahead = 0;      // tests whose sums a second thread had measured (threads >= 2)
     double sse_before = 0.0;    // squared error of the touched quadrilaterals before / after
     double sse_after = 0.0;
     std::vector<FaceInd> changed;  // faces a flip rewrote (with repeats)
@@ -31,15 +32,18 @@ struct FlipStats {
 // quadrilateral back on it. systems, when they match *cdt (the refit's, wedge_fit.h), give the
 // squared error of the faces before a flip without a pass over their pixels, and are kept in
 // step: a flip rewrites the systems of its two faces.
+// With threads >= 2 (0: the machine's) on a large image, a second thread measures the first
+// tests ahead of the loop: the same flips and sums.
 void improve_by_flips(Cdt* cdt, const Image& image, const ErdModel& model, std::size_t max_flips, FlipStats* stats,
                       const std::vector<FaceInd>* seed_faces = nullptr, MeshSystems* systems = nullptr,
-                      double min_share = 0.0);
+                      double min_share = 0.0, int threads = 1);
 
 // The same for a colour model (issue 17): channel c's values from models[c] on planes[c], the
 // squared error summed over the channels (no systems, no skip). The models are one ErdChannels'
 // channels: they share their wedges (entries in the same order), so a corner is looked up once.
 void improve_by_flips(Cdt* cdt, const std::vector<const Image*>& planes, const std::vector<const ErdModel*>& models,
-                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces = nullptr);
+                      std::size_t max_flips, FlipStats* stats, const std::vector<FaceInd>* seed_faces = nullptr,
+                      int threads = 1);
 
 struct MoveStats {
     std::size_t moves = 0;   // vertices moved

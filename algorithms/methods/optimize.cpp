@@ -26,7 +26,7 @@ void optimize_by_flips(Cdt* cdt, const Image& image, const GenerateOptions& opti
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
         improve_by_flips(cdt, image, *model, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed, systems,
-                         options.flip_min_share);
+                         options.flip_min_share, options.threads);
         seed = std::move(fs.changed);
         if (fs.flips == 0 && options.moves == 0) break;
         const bool moves = round < options.moves && systems && options.wedge_fit > 0;
@@ -58,7 +58,7 @@ void optimize_by_flips(Cdt* cdt, const GenerateOptions& options, ErdChannels* mo
     };
     for (int round = 0; round < options.flips; ++round) {
         FlipStats fs;
-        model->flip(cdt, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed);
+        model->flip(cdt, 8 * cdt->face_count(), &fs, round == 0 ? nullptr : &seed, options.threads);
         seed = std::move(fs.changed);
         const bool moves = with_moves && round < options.moves;
         if (fs.flips == 0 && !moves) break;
