@@ -111,17 +111,27 @@ struct AheadSums {
 // two triangles with the same values (a corner's value is its vertex's wedge around the face,
 // and flips change no wedge), so the same sums. A whole sum is the one-thread loop's, and a cut
 // one decides only what the loop's own cut sum would (sums of squares only grow), so the flips
-// and every sum they record are the one-thread loop's bits.
+// and every sum they record are the one-thread loop's bits. The helper measures the loop's first
+// test first, and the loop starts once it has: that test is always taken (no flip comes before
+// it), so a run with a helper takes one test at least, however busy the machine.
 class TestsAhead {
 public:
     // work: the loop's first list (every edge); face_sse: every face's error (the loop's), or null
-    // (then nothing is cut short).
+    // (then nothing is cut short); skip_below: the loop's skip of small errors (with face_sse).
     TestsAhead(const Cdt& cdt, const std::vector<EdgeInd>& work, const std::vector<const ErdModel*>& models,
-               const std::vector<double>* face_sse, const TriangleError& error)
-        : cdt_(cdt), models_(models), face_sse_(face_sse), error_(error), points_(cdt.points().data()),
-          ring_(kRing), filled_(work.size()) {
+               const std::vector<double>* face_sse, double skip_below, const TriangleError& error)
+        : cdt_(cdt), models_(models), face_sse_(face_sse), skip_below_(skip_below), error_(error),
+          points_(cdt.points().data()), ring_(kRing), filled_(work.size()) {
         passed(work, work.size());
+        std::size_t first = work.size();
+        while (first > filled_ && !ring_[(first - 1) % kRing].tested) --first;
+        first_ = first > filled_ ? first - 1 : kNone;
         thread_ = std::thread([this] { serve(); });
+        if (first_ == kNone) return;
+        for (int i = 0; ring_[first_ % kRing].state.load(std::memory_order_acquire) != kDone; ++i) {
+            if (i < 4096) pause();
+            else std::this_thread::yield();
+        }
     }
     ~TestsAhead() {
         stop_.store(true, std::memory_order_relaxed);
@@ -154,9 +164,11 @@ public:
 private:
     static constexpr std::size_t kRing = 4096;  // entries copied at once at most (a window of 256 KB)
     static constexpr std::size_t kLead = 8;     // the helper stays this far below the loop
+    static constexpr std::size_t kNone = ~std::size_t(0);
     enum : std::uint8_t { kFree, kReady, kClaimed, kDone };
     struct Slot {
         std::atomic<std::uint8_t> state{kFree};
+        bool tested = false;  // the loop tests it as the mesh was copied (flippable, not skipped)
         std::size_t entry = 0;
         VertInd v[4] = {};
         std::uint32_t at[4] = {};  // the corners' model entries (ErdModel::corner_lookup)
@@ -182,6 +194,7 @@ private:
             }
         }
         s.entry = i;
+        s.tested = false;
         if (!cdt_.can_flip(e)) return;  // stays free: not measured
         const EdgeInd t = cdt_.twin(e);
         const EdgeInd es[4] = {e, next_edge(e), prev_edge(e), prev_edge(t)};
@@ -191,10 +204,12 @@ private:
         }
         const double before = face_sse_ ? (*face_sse_)[face_of(e)] + (*face_sse_)[face_of(t)] : -1.0;
         s.limit = before >= 0 ? before - 1e-9 * (before + 1.0) : std::numeric_limits<double>::infinity();
+        s.tested = !face_sse_ || !(before < skip_below_);
         s.state.store(kReady, std::memory_order_release);
     }
 
     void serve() {
+        if (first_ != kNone) claim(first_);
         std::size_t next = left_.load(std::memory_order_relaxed);  // the entries below are still to measure
         while (!stop_.load(std::memory_order_relaxed)) {
             const std::size_t left = left_.load(std::memory_order_relaxed);
@@ -205,12 +220,17 @@ private:
                 pause();  // the loop copies more when it nears the window's bottom
                 continue;
             }
-            Slot& s = ring_[--next % kRing];
-            std::uint8_t st = kReady;
-            if (!s.state.compare_exchange_strong(st, kClaimed, std::memory_order_acq_rel)) continue;
-            if (s.entry == next) measure(&s);
-            s.state.store(s.entry == next ? kDone : kReady, std::memory_order_release);
+            claim(--next);
         }
+    }
+
+    // Measures entry i when its slot holds it, copied and not claimed yet.
+    void claim(std::size_t i) {
+        Slot& s = ring_[i % kRing];
+        std::uint8_t st = kReady;
+        if (!s.state.compare_exchange_strong(st, kClaimed, std::memory_order_acq_rel)) return;
+        if (s.entry == i) measure(&s);
+        s.state.store(s.entry == i ? kDone : kReady, std::memory_order_release);
     }
 
     void measure(Slot* s) const {
@@ -231,10 +251,12 @@ private:
     const Cdt& cdt_;
     const std::vector<const ErdModel*>& models_;
     const std::vector<double>* face_sse_;
+    double skip_below_;
     const TriangleError& error_;
     const LatticePoint* points_;
     std::vector<Slot> ring_;
     std::size_t filled_;  // the loop's: entries from filled_ up are copied (or popped)
+    std::size_t first_ = kNone;  // the entry the loop tests first
     std::atomic<std::size_t> filled_pub_{~std::size_t(0)}, left_{0};
     std::atomic<bool> stop_{false};
     std::thread thread_;
@@ -315,7 +337,7 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     std::unique_ptr<TestsAhead> ahead;
     if (!seed_faces && resolve_threads(threads) >= 2 &&
         std::size_t(planes[0]->width) * std::size_t(planes[0]->height) >= kTwoThreadPixels)
-        ahead.reset(new TestsAhead(*cdt, work, models, skip_below > 0 ? &face_sse : nullptr, triangle_error));
+        ahead.reset(new TestsAhead(*cdt, work, models, skip_below > 0 ? &face_sse : nullptr, skip_below, triangle_error));
 #else
     (void)threads;
 #endif
