@@ -23,6 +23,29 @@
 
 namespace erd {
 
+#ifndef ERD_NO_THREADS
+// A spin-wait's pause (x86's PAUSE hint; nothing on other processors).
+inline void spin_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+// About 20-60 microseconds of pause instructions: longer than a caller's work between two steps,
+// short enough not to hold a core another thread needs for long.
+constexpr int kSpinsBeforeYield = 2000;
+
+// Waits until done() is true: spinning while the other thread is likely running, then yielding,
+// since past that it may be waiting for a core (more runnable threads than processors).
+template <class Done>
+void spin_until(Done done) {
+    for (int i = 0; !done(); ++i) {
+        if (i < kSpinsBeforeYield) spin_pause();
+        else std::this_thread::yield();
+    }
+}
+#endif
+
 class StepHelper {
 public:
     explicit StepHelper(bool enabled) {
@@ -76,12 +99,6 @@ public:
 private:
     std::uint32_t two_steps_ = 0;
 #ifndef ERD_NO_THREADS
-    static void pause() {
-#if defined(__x86_64__) || defined(__i386__)
-        __builtin_ia32_pause();
-#endif
-    }
-
     template <class Fn>
     void hand_over(Fn& fn) {
         job_ = &fn;
@@ -94,12 +111,7 @@ private:
         const Clock::time_point t0 = Clock::now();
         fn(0);
         const Clock::time_point t1 = Clock::now();
-        // Spin while the helper is likely running; past that it may be waiting for a core
-        // (more runnable threads than processors), which yielding gives it.
-        for (int i = 0; done_.load(std::memory_order_acquire) != step; ++i) {
-            if (i < kSpins) pause();
-            else std::this_thread::yield();
-        }
+        spin_until([&] { return done_.load(std::memory_order_acquire) == step; });
         ++two_steps_;
         own_ += t1 - t0;
         waited_ += Clock::now() - t1;
@@ -114,8 +126,8 @@ private:
         for (;;) {
             // Spin for the next step a while, then sleep until one is posted.
             for (int i = 0; posted_.load() == seen && !stop_.load(); ++i) {
-                if (i < kSpins) {
-                    pause();
+                if (i < kSpinsBeforeYield) {
+                    spin_pause();
                     continue;
                 }
                 std::unique_lock<std::mutex> lock(mutex_);
@@ -130,9 +142,6 @@ private:
         }
     }
 
-    // About 20-60 microseconds of pause instructions: longer than the caller's work between
-    // two steps, short enough not to hold a core another thread needs for long.
-    static constexpr int kSpins = 2000;
     // Over each kWindow steps on two threads, the time the caller waited for the helper's half
     // after its own, and its own halves' time. On a quiet 2-core machine the wait is ~0.1 of its
     // own (0.25 in the first window, the helper's start); with another process busy on both cores

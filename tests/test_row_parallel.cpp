@@ -364,9 +364,8 @@ TEST_CASE("greedy re-scans on a second thread: the same mesh, error and models a
     }
 }
 
-// Two calls of the public API at once (a program meshing on two threads): no state shared
-// between calls, so each equals the same call made alone. Under ThreadSanitizer (make tsan) this
-// also finds any write two calls would share.
+// The flips' first round measured ahead on a second thread (flips.cpp TestsAhead): the same
+// flips and sums as on one thread, and the helper's sums taken (at least the loop's first test).
 TEST_CASE("flip tests measured ahead on a second thread: the same flips, faces and sums at 1, 2 and 3 threads",
           "[threads][flips]") {
     // An ERD mesh of a large image (the helper's threshold) without edge detection: pseudo-random
@@ -443,6 +442,9 @@ TEST_CASE("flip tests measured ahead on a second thread: the same flips, faces a
     }
 }
 
+// Two calls of the public API at once (a program meshing on two threads): no state shared
+// between calls, so each equals the same call made alone. Under ThreadSanitizer (make tsan) this
+// also finds any write two calls would share.
 TEST_CASE("public API: two meshes on two threads equal the same meshes made one after the other", "[threads][api]") {
     const erd::Image a = synth_image(96, 64, 8, 11);
     const erd::Image b = synth_image(80, 72, 8, 12);

@@ -126,54 +126,51 @@ void CrackDetector::detect(double beta, double r, Grid<std::uint8_t>* out) const
         const std::size_t i = std::size_t(Y >> 1) * std::size_t(W) + std::size_t(X >> 1);
         return double(std::abs(int(px[i + ((X & 1) ? 1 : std::size_t(W))]) - int(px[i])));
     };
+    const auto at = [&](int X, int Y) -> std::uint8_t& { return map.data[std::size_t(Y) * std::size_t(GW) + std::size_t(X)]; };
+    // fn(cx, cy) for each end of crack (X, Y) inside the grid: pixel corners, both coordinates odd.
+    const auto ends = [&](int X, int Y, auto fn) {
+        for (int side = -1; side <= 1; side += 2) {
+            const int cx = (X & 1) ? X : X + side, cy = (X & 1) ? Y + side : Y;
+            if (cx >= 0 && cy >= 0 && cx < GW && cy < GH) fn(cx, cy);
+        }
+    };
     // Hysteresis over cracks that share a pixel corner, from the cracks at or above `high` (the
     // integer steps at or above its ceiling), found a pixel row at a time: the cracks to the
-    // right (row Y = 2y, X odd), then those down (row Y = 2y + 1, X even).
-    std::vector<std::pair<int, int>> stack, marked;
+    // right (row Y = 2y, X odd), then those down (row Y = 2y + 1, X even). `marked` holds every
+    // marked crack in the order marked, and is the search's queue.
+    std::vector<std::pair<int, int>> marked;
     const int seed = int(std::ceil(high));
     for (int Y = 0; Y < GH; ++Y) {
-        std::uint8_t* row = map.data.data() + std::size_t(Y) * std::size_t(GW);
         const std::uint16_t* a = px + std::size_t(Y >> 1) * std::size_t(W);
         const auto mark = [&](int X) {
-            row[X] = 1;
-            stack.push_back({X, Y});
+            at(X, Y) = 1;
             marked.push_back({X, Y});
         };
         if (Y & 1) for_each_strong(a, a + W, W, seed, [&](int x) { mark(2 * x); });
         else for_each_strong(a, a + 1, W - 1, seed, [&](int x) { mark(2 * x + 1); });
     }
     const auto visit = [&](int X, int Y) {
-        if (X < 0 || Y < 0 || X >= GW || Y >= GH) return;
-        std::uint8_t& m = map.data[std::size_t(Y) * std::size_t(GW) + std::size_t(X)];
-        if (!m && step(X, Y) >= low) {
-            m = 1;
-            stack.push_back({X, Y});
-            marked.push_back({X, Y});
-        }
+        if (X < 0 || Y < 0 || X >= GW || Y >= GH || at(X, Y) || !(step(X, Y) >= low)) return;
+        at(X, Y) = 1;
+        marked.push_back({X, Y});
     };
-    while (!stack.empty()) {
-        const auto [X, Y] = stack.back();
-        stack.pop_back();
-        // The crack's two ends (pixel corners, both coordinates odd), each with its four cracks.
-        for (int side = -1; side <= 1; side += 2) {
-            const int cx = (X & 1) ? X : X + side, cy = (X & 1) ? Y + side : Y;
-            if (cx < 0 || cy < 0 || cx >= GW || cy >= GH) continue;
+    for (std::size_t n = 0; n < marked.size(); ++n) {
+        const auto [X, Y] = marked[n];  // a copy: visit grows the queue
+        ends(X, Y, [&](int cx, int cy) {
             visit(cx, cy - 1);
             visit(cx, cy + 1);
             visit(cx - 1, cy);
             visit(cx + 1, cy);
-        }
+        });
     }
-    // A pixel corner (both coordinates odd) is on an edge where two or more of its four cracks
-    // are: such a corner is an end of a marked crack, so only those ends are looked at (a
-    // corner's mark is no crack of another corner's).
-    const auto at = [&](int X, int Y) -> std::uint8_t& { return map.data[std::size_t(Y) * std::size_t(GW) + std::size_t(X)]; };
+    // A pixel corner is on an edge where two or more of its four cracks are: such a corner is an
+    // end of a marked crack, so only those ends are looked at (a corner's mark is no crack of
+    // another corner's). An end inside the grid has all four cracks inside it (the grid's sides
+    // are even rows and columns).
     for (const auto& [X, Y] : marked)
-        for (int side = -1; side <= 1; side += 2) {
-            const int cx = (X & 1) ? X : X + side, cy = (X & 1) ? Y + side : Y;
-            if (cx < 1 || cy < 1 || cx >= GW - 1 || cy >= GH - 1 || at(cx, cy)) continue;
-            if (at(cx, cy - 1) + at(cx, cy + 1) + at(cx - 1, cy) + at(cx + 1, cy) >= 2) at(cx, cy) = 1;
-        }
+        ends(X, Y, [&](int cx, int cy) {
+            if (!at(cx, cy) && at(cx, cy - 1) + at(cx, cy + 1) + at(cx - 1, cy) + at(cx + 1, cy) >= 2) at(cx, cy) = 1;
+        });
 }
 
 Grid<std::uint8_t> crack_edges(const Image& im, double beta, double r) { return CrackDetector(im).detect(beta, r); }

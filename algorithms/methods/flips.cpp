@@ -15,6 +15,7 @@
 #include "kernel/raster.h"
 #include "kernel/raster_rows.h"
 #include "kernel/row_parallel.h"
+#include "kernel/step_helper.h"
 
 namespace erd {
 
@@ -127,11 +128,8 @@ public:
         while (first > filled_ && !ring_[(first - 1) % kRing].tested) --first;
         first_ = first > filled_ ? first - 1 : kNone;
         thread_ = std::thread([this] { serve(); });
-        if (first_ == kNone) return;
-        for (int i = 0; ring_[first_ % kRing].state.load(std::memory_order_acquire) != kDone; ++i) {
-            if (i < 4096) pause();
-            else std::this_thread::yield();
-        }
+        if (first_ != kNone)
+            spin_until([&] { return ring_[first_ % kRing].state.load(std::memory_order_acquire) == kDone; });
     }
     ~TestsAhead() {
         stop_.store(true, std::memory_order_relaxed);
@@ -176,18 +174,12 @@ private:
         AheadSums sums;
     };
 
-    static void pause() {
-#if defined(__x86_64__) || defined(__i386__)
-        __builtin_ia32_pause();
-#endif
-    }
-
     // Copies entry i (edge e) into its slot, once the helper is not measuring what the slot held.
     void copy(EdgeInd e, std::size_t i) {
         Slot& s = ring_[i % kRing];
         for (std::uint8_t st = s.state.load(std::memory_order_acquire);;) {
             if (st == kClaimed) {
-                pause();
+                spin_pause();
                 st = s.state.load(std::memory_order_acquire);
             } else if (s.state.compare_exchange_weak(st, kFree, std::memory_order_acq_rel)) {
                 break;
@@ -217,20 +209,21 @@ private:
             const std::size_t bottom = filled_pub_.load(std::memory_order_acquire);
             if (next <= bottom) {
                 if (next == 0) return;
-                pause();  // the loop copies more when it nears the window's bottom
+                spin_pause();  // the loop copies more when it nears the window's bottom
                 continue;
             }
             claim(--next);
         }
     }
 
-    // Measures entry i when its slot holds it, copied and not claimed yet.
+    // Measures the entry in entry i's slot when it is copied and not claimed yet (take checks
+    // which entry the slot holds).
     void claim(std::size_t i) {
         Slot& s = ring_[i % kRing];
         std::uint8_t st = kReady;
         if (!s.state.compare_exchange_strong(st, kClaimed, std::memory_order_acq_rel)) return;
-        if (s.entry == i) measure(&s);
-        s.state.store(s.entry == i ? kDone : kReady, std::memory_order_release);
+        measure(&s);
+        s.state.store(kDone, std::memory_order_release);
     }
 
     void measure(Slot* s) const {
