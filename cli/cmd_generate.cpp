@@ -78,7 +78,8 @@ const CommandLine kGenerate = {
         {'B', "startup", "0|1|2", "ERDED: error-diffusion startup 0 mirror (default), 1 force, 2 none"},
         {'S', "simple", "0|1", "ERD: 0 simple image, 1 not simple (default automatic)"},
         {0, "seed", "S", "ERDED -f 0: random seed (default 1)"},
-        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --moves 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 (later flags override)"},
+        {0, "thesis", nullptr, "ERD: the thesis's method exactly: --wedge-fit 0 --flips 0 --moves 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 --lower-beta 1 (later flags override)"},
+        {0, "lower-beta", "0|1", "ERD: the parameter loop lowers beta by 0.75 as it doubles l (1, default, the thesis's) or doubles l alone on one detection (0: faster where the loop repeats, e.g. noisy photos)"},
         {0, "edges", "KIND", "ERD: hard (steps between pixels: drawings, screenshots), soft (blurred: photos) or auto (default: measured)"},
         {0, "wedge-fit", "N", "ERD: least-squares refit of the wedge values, N CGLS iterations (default 6; 0 = thesis values)"},
         {0, "wedge-prior", "W", "ERD refit: each line-search value weighs as W pixels (default 0.01)"},
@@ -193,6 +194,7 @@ void parse_options(const Args& a, GenerateOptions* o, int* exit_mode, Status* st
     if (a.has("seed")) o->seed = std::uint64_t(a.integer("seed", 1, 0, (1LL << 62), st));
     // --thesis first, so an explicit flag beside it still wins.
     if (a.has("thesis")) set_thesis_preset(o);
+    if (a.has("lower-beta")) o->lower_beta = a.integer("lower-beta", 1, 0, 1, st) == 1;
     if (a.has("edges")) {
         const std::string e = a.str("edges");
         if (e == "hard" || e == "soft" || e == "auto")

@@ -104,6 +104,29 @@ TEST_CASE("too many constrained points: beta shrinks by 0.75 and l doubles", "[e
     CHECK(p.eps == 1.0);  // the last count fell below 0.35N, so eps was reset to 1
 }
 
+TEST_CASE("--lower-beta 0: l doubles on the one detection", "[erd]") {
+    FakeCounter c([](double beta, int l, double) { return 20000.0 * (beta / 0.028) * (5.0 / l); });
+    ErdParamRequest l_alone;
+    l_alone.lower_beta = false;
+    ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, l_alone, c);
+    // 20000 (l 5) -> 10000 (l 10) -> 5000 (l 20) <= 0.7N: three iterations at beta 0.028.
+    REQUIRE(p.loop_iterations == 3);
+    CHECK(p.beta == 0.028);
+    CHECK(p.l == 20);
+    CHECK(p.eps == 2.0);  // 5000 is not below 0.35N
+    CHECK(p.constrained_points == 5000);
+    // The shortcut's first detection is the loop's: every call asks for the same beta.
+    CHECK(c.betas == std::vector<double>(c.betas.size(), 0.028));
+
+    // -l fixed: beta is what moves.
+    ErdParamRequest req = l_alone;
+    req.l = 5;
+    FakeCounter c2([](double beta, int l, double) { return 20000.0 * (beta / 0.028) * (5.0 / l); });
+    ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, req, c2);
+    CHECK(q.l == 5);
+    CHECK(q.beta == Approx(0.028 * 0.75 * 0.75 * 0.75 * 0.75));  // 20000 * 0.75^4 = 6328 <= 7000
+}
+
 TEST_CASE("too few constrained points: eps := 1 and recount", "[erd]") {
     FakeCounter c([](double, int, double eps) { return eps == 1.0 ? 6000.0 : 3000.0; });
     ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);

@@ -45,10 +45,10 @@ TEST_CASE("generate --thesis is the thesis's settings; our defaults differ; flag
         INFO(m);
         const std::string thesis = gen(m, "--thesis", m + "-t.erd");
         const std::string spelled =
-            gen(m, "--wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1", m + "-s.erd");
+            gen(m, "--wedge-fit 0 --flips 0 --alpha-min 1 --alpha-max 1.5 --edge-zero-radius 0 --edges soft --aa-errors 1 --lower-beta 1", m + "-s.erd");
         const std::string ours = gen(m, "", m + "-d.erd");
         const std::string ours_spelled =
-            gen(m, "--thesis --wedge-fit 6 --flips 2 --moves 2 --alpha-min 0.75 --alpha-max 1 --edge-zero-radius 1 --edges auto --aa-errors 0", m + "-o.erd");
+            gen(m, "--thesis --wedge-fit 6 --flips 2 --moves 2 --alpha-min 0.75 --alpha-max 1 --edge-zero-radius 1 --edges auto --aa-errors 0 --lower-beta 1", m + "-o.erd");
         CHECK(!thesis.empty());
         CHECK(thesis == spelled);
         CHECK(thesis != ours);

@@ -87,10 +87,13 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
         }
         p.constrained_points = c;
         if (double(c) <= high) break;
-        const bool can_move = req.beta < 0 || req.l < 0;
-        if (!can_move || p.loop_iterations >= kErdParamMaxIterations) break;
-        if (req.beta < 0) p.beta *= 0.75;
-        if (req.l < 0) p.l *= 2;
+        // Without req.lower_beta l alone grows while it can, so one detection serves every
+        // iteration; beta then moves only when -l fixes l.
+        const bool lengthen = req.l < 0;
+        const bool lower = req.beta < 0 && (req.lower_beta || !lengthen);
+        if (!(lengthen || lower) || p.loop_iterations >= kErdParamMaxIterations) break;
+        if (lower) p.beta *= 0.75;
+        if (lengthen) p.l *= 2;
     }
     return p;
 }

@@ -6,6 +6,11 @@
 // than 0.35 N points, epsilon := 1 and the simplification is redone. Every parameter the user
 // set by flag stays fixed; the loop only moves the others.
 //
+// With req.lower_beta false (ours, --lower-beta 0) the loop doubles l alone, keeping the table's
+// beta, so every iteration counts on the one detection (beta moves only when -l fixes l): faster
+// where the loop repeats, better on photos at low density, worse on graphics (docs/DECISIONS.md
+// "Parameter selection").
+//
 // The selection is written against an abstract counter so it can be tested on synthetic counts
 // and so step 1 can cache the expensive part (the gradient) across iterations.
 #pragma once
@@ -41,6 +46,7 @@ struct ErdParamRequest {
     double eps = -1;    // -e
     int simple = -1;    // -S: -1 automatic, 0 simple, anything else not simple (thesis flag text)
     bool shortcut = true;  // the simple test's shortcut (below); false: the thesis's test as written
+    bool lower_beta = true;  // the loop lowers beta as it doubles l (the thesis); false: l alone (below)
 };
 
 // The chosen values and how they were reached (for stats).
@@ -54,7 +60,8 @@ struct ErdParams {
     double simple_test_beta = 0;         // the beta they were counted at: 0.055, or the loop's first
                                          // beta when the shortcut decided (0 when -S given)
     std::size_t constrained_points = 0;  // constrained points with the final parameters
-    int loop_iterations = 0;             // edge detections in the selection loop
+    int loop_iterations = 0;             // iterations of the selection loop (a detection each
+                                         // when beta moves)
 };
 
 // Table 3.1 (ERDED) or 3.2 (ERDGPI): beta for a sampling density given in percent.

@@ -77,6 +77,8 @@ struct GenerateOptions {
     bool simple_shortcut = true; // (ours) the simple test decided by the loop's first detection when
                                  // its count already reaches the test's threshold (erd_params.h);
                                  // --thesis: always the test's own detection
+    bool lower_beta = true;      // the parameter loop lowers beta as it doubles l (the thesis's);
+                                 // false: l alone, on one detection (--lower-beta 0, erd_params.h)
     int wedge_rule = 1;          // -w 1 MMSODD line search, 0 fixed distance
     int wedge_order = 5;         // -s binomial filter order for the wedge-value MMSODD
     int startup = 0;             // -B ERDED error-diffusion startup: 0 mirror, 1 force, 2 none

@@ -66,6 +66,7 @@ void set_thesis_preset(GenerateOptions* o) {
     o->edges = EdgeChoice::soft;
     o->supersampled_errors = true;
     o->simple_shortcut = false;
+    o->lower_beta = true;
 }
 
 GenerateOptions thesis_options() {
@@ -240,7 +241,7 @@ WedgeValueOptions wedge_options(const GenerateOptions& options) {
 
 ErdParamRequest param_request(const GenerateOptions& options) {
     return ErdParamRequest{options.beta, options.ratio, options.min_length, options.epsilon, options.simple,
-                           options.simple_shortcut};
+                           options.simple_shortcut, options.lower_beta};
 }
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,

@@ -41,6 +41,7 @@ const std::vector<Spec>& specs() {
         {"wedge_order", Kind::integer, 1, 31, [](GenerateArgs* a, double v) { a->options.generate.wedge_order = int(v); }},
         {"startup", Kind::integer, 0, 2, [](GenerateArgs* a, double v) { a->options.generate.startup = int(v); }},
         {"simple", Kind::integer, 0, 1 << 30, [](GenerateArgs* a, double v) { a->options.generate.simple = int(v); }},
+        {"lower_beta", Kind::integer, 0, 1, [](GenerateArgs* a, double v) { a->options.generate.lower_beta = v == 1; }},
         {"seed", Kind::integer, 0, double(1LL << 62), [](GenerateArgs* a, double v) { a->options.generate.seed = std::uint64_t(v); }},
         {"wedge_fit", Kind::integer, 0, 1000, [](GenerateArgs* a, double v) { a->options.generate.wedge_fit = int(v); }},
         {"alpha_min", Kind::real, 0, 64, [](GenerateArgs* a, double v) { a->options.generate.alpha_min = v; }},
