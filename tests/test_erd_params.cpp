@@ -5,6 +5,9 @@
 #include <vector>
 
 #include "algorithms/methods/erd_params.h"
+#include "algorithms/methods/methods.h"
+#include "algorithms/methods/result.h"
+#include "tests/thesis_cases.h"
 
 using namespace erd;
 
@@ -237,4 +240,25 @@ TEST_CASE("the simple test's shortcut decides as the test does when counts grow 
                 CHECK(pa.eps == pb.eps);
                 CHECK(pa.constrained_points == pb.constrained_points);
             }
+}
+
+TEST_CASE("--lower-beta 0 on lena at 311 points: the table's beta, a longer l, one detection", "[erd]") {
+    Image im;
+    if (!test::read_thesis_image("lena", &im)) return;
+    GenerateOptions o;
+    o.points = 311;
+    o.density_given = false;
+    GenerateResult thesis_loop, l_alone;
+    REQUIRE(find_method("erdgpi")->run(im, o, &thesis_loop).ok());
+    o.lower_beta = false;
+    REQUIRE(find_method("erdgpi")->run(im, o, &l_alone).ok());
+    const ErdParams& a = thesis_loop.stats.erd.params;
+    const ErdParams& b = l_alone.stats.erd.params;
+    // The thesis's loop runs there: beta 0.011 -> 0.00825 -> 0.0061875 as l goes 5 -> 40.
+    REQUIRE(a.loop_iterations > 1);
+    CHECK(a.beta < 0.011);
+    CHECK(b.beta == 0.011);
+    CHECK(b.l > a.l);
+    CHECK(b.constrained_points <= std::size_t(0.7 * 311));
+    CHECK(l_alone.model.vertices.size() == 311);
 }
