@@ -7,7 +7,8 @@
 # pixel, rounded, erd's peak); `erd generate -m erdgpi -d 1 --psnr P` finds the fewest points whose
 # model reaches it (algorithms/methods/quality_target.h); then hmm at N, erdgpi at that count and
 # erdgpi at N are timed one after the other (bench/timeit: CPU ms, medians of RUNS after a warm-up;
-# erd at -j 1, as hmm runs: a second thread only adds CPU time).
+# erd at -j 1, as hmm runs: a second thread only adds CPU time). The same again with
+# `--lower-beta 0` (the parameter loop on one detection).
 # Prints the markdown table on stdout (run.sh puts it in docs/RESULTS.md, section "equal-quality").
 set -u
 HMM=$1 ERD=$2 IMAGES=$3 OUT=$4 RUNS=${5:-5}
@@ -17,7 +18,9 @@ PY=/usr/bin/python3
 cd "$(dirname "$0")/.." || exit 1
 [[ -x $TIMEIT ]] || ${CXX:-g++} -O2 -std=c++17 bench/timeit.cpp -o "$TIMEIT" || exit 1
 "$ERD" synth -q -W 2048 -H 2048 -o "$OUT/eq_synth2048.pgm" || exit 1
-cases=("lena|$IMAGES/lena.pgm|" "bull|$IMAGES/bull.pgm|" "synth 2048 soft|$OUT/eq_synth2048.pgm|--edges soft")
+cases=("lena|$IMAGES/lena.pgm|" "bull|$IMAGES/bull.pgm|" "synth 2048 soft|$OUT/eq_synth2048.pgm|--edges soft"
+       "lena, --lower-beta 0|$IMAGES/lena.pgm|--lower-beta 0" "bull, --lower-beta 0|$IMAGES/bull.pgm|--lower-beta 0"
+       "synth 2048 soft, --lower-beta 0|$OUT/eq_synth2048.pgm|--edges soft --lower-beta 0")
 echo "| image | N (1%) | hmm PSNR | hmm ms | erdgpi points for it | erdgpi ms | ratio | erdgpi at N ms | ratio |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for c in "${cases[@]}"; do

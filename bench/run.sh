@@ -276,7 +276,8 @@ scale_case() {
 }
 for s in $SCALE_SIZES; do
     "$ERD" synth -q -W "$s" -H "$s" -o "$OUT/synth$s.pgm" && scale_case "synth $s" "$OUT/synth$s.pgm" &&
-        scale_case "synth $s soft" "$OUT/synth$s.pgm" --edges soft
+        scale_case "synth $s soft" "$OUT/synth$s.pgm" --edges soft &&
+        scale_case "synth $s soft, l" "$OUT/synth$s.pgm" --edges soft --lower-beta 0
     "$ERD" synth -q -W "$s" -H "$s" --bits 16 --no-noise -o "$OUT/height$s.png" && scale_case "height16 $s" "$OUT/height$s.png"
 done
 for f in lena bull; do [[ -f $IMAGES/$f.pgm ]] && scale_case "$f" "$IMAGES/$f.pgm"; done
@@ -287,8 +288,8 @@ if [[ -s $speed_rows ]]; then
         echo "Whole \`erd generate -j 1\` process (read, mesh, write; one thread, as hmm) at 1% of the pixels as vertices, CPU milliseconds,"
         echo "medians of $SCALE_RUNS runs after a warm-up, each program on the same image one after the other in one"
         echo "run. synth = \`erd synth\` (8-bit, noise; its edges measure hard), \"soft\" = the same with"
-        echo "\`--edges soft\` for the ERD methods (Canny on noise: the heaviest step 1 there is), height16 = a"
-        echo "16-bit heightmap without noise (PNG)."
+        echo "\`--edges soft\` for the ERD methods (Canny on noise: the heaviest step 1 there is), \"soft, l\" = that with"
+        echo "\`--lower-beta 0\` (the parameter loop on one detection), height16 = a 16-bit heightmap without noise (PNG)."
         if [[ -n $HMM ]]; then echo "hmm meshes to the same vertex count (\`hmm -z 1 -e 0 -p N\`, STL out). In brackets: the ratio to hmm's CPU time."
         else echo "In brackets: the ratio to erd gpi's CPU time."; fi
         echo "$hmm_note"
@@ -321,8 +322,8 @@ if [[ -n $HMM ]]; then
         echo "(bench/stl_psnr.py); erdgpi's count is the fewest points whose model reaches that PSNR"
         echo "(\`erd generate -m erdgpi -d 1 --psnr P\`, found within 2%). Whole process CPU ms (erd at -j 1), medians of"
         echo "$SCALE_RUNS runs after a warm-up, one program after the other; ratio = erdgpi / hmm. synth 2048 soft:"
-        echo "\`erd synth\` 2048^2 with \`--edges soft\` for erdgpi. Targets (issue 46): equal quality <= 0.5x,"
-        echo "equal points <= 1.0x."
+        echo "\`erd synth\` 2048^2 with \`--edges soft\` for erdgpi; \", --lower-beta 0\": erdgpi with the parameter loop"
+        echo "on one detection. Targets (issue 46): equal quality <= 0.5x, equal points <= 1.0x."
         echo
         echo "$eq_table"
     } | results_section equal-quality "Equal quality beside hmm (make bench, issue 46)"
