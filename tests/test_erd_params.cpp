@@ -1,6 +1,7 @@
 // Automatic parameter selection (thesis 3.4.1) on synthetic constraint-point counts.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -219,6 +220,37 @@ TEST_CASE("the simple test's shortcut: at 2.5% and above the loop starts at or a
     CHECK(c.betas.front() == 0.055);
     CHECK(c.prepared.empty());
     CHECK(p.simple_test_beta == 0.055);
+}
+
+TEST_CASE("a known simple-test count: the same choices without the test's detection", "[erd]") {
+    // Counts that grow with beta; over densities and thresholds around them, with the shortcut and
+    // without (--thesis), the count given instead of detected at 0.055 changes no choice.
+    static double scale = 1.0;
+    auto counts = [](double beta, int l, double eps) { return scale * 1e5 * beta * (5.0 / l) / eps; };
+    for (double sc : {0.1, 0.5, 0.73, 1.0, 2.0})
+        for (std::size_t n : {1000u, 10000u, 30000u})
+            for (bool shortcut : {true, false}) {
+                scale = sc;
+                ErdParamRequest req;
+                req.shortcut = shortcut;
+                FakeCounter a(counts), b(counts);
+                const ErdParams pa = select_erd_params(ErdMethod::erdgpi, 1000, 1000, n, req, a);
+                req.test_points = std::int64_t(std::lround(counts(kSimpleTestBeta, 5, 1.0)));
+                const ErdParams pb = select_erd_params(ErdMethod::erdgpi, 1000, 1000, n, req, b);
+                INFO("scale " << sc << " n " << n << " shortcut " << shortcut);
+                CHECK(pa.simple == pb.simple);
+                CHECK(pa.beta == pb.beta);
+                CHECK(pa.l == pb.l);
+                CHECK(pa.eps == pb.eps);
+                CHECK(pa.constrained_points == pb.constrained_points);
+                CHECK(pa.simple_test_points == pb.simple_test_points);
+                // No detection at the test's beta unless the loop itself asks for it, and no pass
+                // widened for it.
+                const bool loop_at_test = pa.beta == kSimpleTestBeta;
+                CHECK((std::count(b.betas.begin(), b.betas.end(), kSimpleTestBeta) > 0) == loop_at_test);
+                CHECK(b.prepared.empty());
+                CHECK(pb.simple_test_known == (pb.simple_test_beta == kSimpleTestBeta));
+            }
 }
 
 TEST_CASE("the simple test's shortcut decides as the test does when counts grow with beta", "[erd]") {

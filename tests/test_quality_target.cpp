@@ -11,6 +11,7 @@
 #include "algorithms/methods/quality_target.h"
 #include "cli/stats_json.h"
 #include "synth_util.h"
+#include "tests/thesis_cases.h"
 
 using namespace erd;
 
@@ -200,4 +201,29 @@ TEST_CASE("quality target: --count-search 0 keeps the method's own run", "[quali
     CHECK(a.stats.quality.runs == 1);
     CHECK(a.model.vertices == b.model.vertices);
     CHECK(a.model.corner_values == b.model.corner_values);
+}
+
+TEST_CASE("quality target: later runs take the first run's simple-test count, and make the same model", "[quality-target]") {
+    // lena, soft edges: the first run (5%) makes the test's detection; the runs at a few hundred
+    // points, whose shortcut does not decide, take its count instead of detecting again.
+    Image im;
+    if (!test::read_thesis_image("lena", &im)) return;
+    GenerateOptions o = at_density(5.0);
+    o.psnr = 23.36;
+    GenerateResult searched_r;
+    REQUIRE(run_method(*find_method("erdgpi"), im, o, &searched_r).ok());
+    const QualitySearchStats& q = searched_r.stats.quality;
+    REQUIRE(q.runs > 1);
+    REQUIRE(q.reached);
+    CHECK(searched_r.stats.erd.params.simple_test_known);
+    GenerateOptions alone;
+    alone.points = std::int64_t(q.points);
+    alone.density_given = false;
+    GenerateResult own;
+    REQUIRE(find_method("erdgpi")->run(im, alone, &own).ok());
+    CHECK_FALSE(own.stats.erd.params.simple_test_known);
+    CHECK(own.stats.erd.params.simple_test_points == searched_r.stats.erd.params.simple_test_points);
+    CHECK(own.model.vertices == searched_r.model.vertices);
+    CHECK(own.model.values == searched_r.model.values);
+    CHECK(own.model.corner_values == searched_r.model.corner_values);
 }

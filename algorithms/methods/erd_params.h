@@ -47,7 +47,13 @@ struct ErdParamRequest {
     int simple = -1;    // -S: -1 automatic, 0 simple, anything else not simple (thesis flag text)
     bool shortcut = true;  // the simple test's shortcut (below); false: the thesis's test as written
     bool lower_beta = true;  // the loop lowers beta as it doubles l (the thesis); false: l alone (below)
+    // The simple test's count when an earlier run on the same image made it (>= 0; a count
+    // search's): its detection is not made again.
+    std::int64_t test_points = -1;
 };
+
+// The simple test's beta (thesis 3.4.1: with l 5 and epsilon 1).
+constexpr double kSimpleTestBeta = 0.055;
 
 // The chosen values and how they were reached (for stats).
 struct ErdParams {
@@ -59,6 +65,7 @@ struct ErdParams {
     std::size_t simple_test_points = 0;  // constrained points of the simple test (0 when -S given)
     double simple_test_beta = 0;         // the beta they were counted at: 0.055, or the loop's first
                                          // beta when the shortcut decided (0 when -S given)
+    bool simple_test_known = false;      // its count came with the request (test_points)
     std::size_t constrained_points = 0;  // constrained points with the final parameters
     int loop_iterations = 0;             // iterations of the selection loop (a detection each
                                          // when beta moves)

@@ -79,6 +79,8 @@ struct GenerateOptions {
                                  // --thesis: always the test's own detection
     bool lower_beta = true;      // the parameter loop lowers beta as it doubles l (the thesis's);
                                  // false: l alone, on one detection (--lower-beta 0, erd_params.h)
+    std::int64_t simple_test_points = -1;  // the simple test's count, known from an earlier run on
+                                           // this image (the count search sets it; erd_params.h)
     int wedge_rule = 1;          // -w 1 MMSODD line search, 0 fixed distance
     int wedge_order = 5;         // -s binomial filter order for the wedge-value MMSODD
     int startup = 0;             // -B ERDED error-diffusion startup: 0 mirror, 1 force, 2 none

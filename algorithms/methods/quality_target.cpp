@@ -66,6 +66,13 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
     const bool exact = own.has_greedy && !own.has_erd && !options.optimize &&
                        (options.psnr <= 0 || std::fabs(own.greedy.psnr - cur.db) <= 1e-9 * std::max(1.0, cur.db)) &&
                        (options.max_error < 0 || own.greedy.max_error == cur.max_error);
+    // The ERD methods' simple-image test (a detection at a fixed beta, counted at a fixed l and
+    // epsilon) reads the image alone where edges are soft (hard edges' curves depend on N's
+    // budget): when the first run made it, the later runs take its count (erd_params.h).
+    const ErdParams& first = own.erd.params;
+    const bool test_known = own.has_erd && cur.result.model.edges == EdgeKind::soft && options.simple < 0 &&
+                            first.simple_test_beta == kSimpleTestBeta;
+    const std::int64_t test_points = test_known ? std::int64_t(first.simple_test_points) : -1;
     if (cur.meets) hi = std::move(cur), have_hi = true;
     else lo = std::move(cur), have_lo = true;
 
@@ -74,6 +81,7 @@ Status run_method(const MethodInfo& method, const Image& image, const GenerateOp
     at.psnr = 0;
     at.max_error = -1;
     at.density_given = false;
+    at.simple_test_points = test_points;
     auto probe = [&](std::int64_t n, Probe* p) -> Status {
         at.points = n;
         p->n = n;

@@ -241,7 +241,8 @@ WedgeValueOptions wedge_options(const GenerateOptions& options) {
 
 ErdParamRequest param_request(const GenerateOptions& options) {
     return ErdParamRequest{options.beta, options.ratio, options.min_length, options.epsilon, options.simple,
-                           options.simple_shortcut, options.lower_beta};
+                           options.simple_shortcut, options.lower_beta,
+                           options.simple_test_points};
 }
 
 Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdMethod method, Cdt* cdt,
@@ -276,6 +277,7 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.target = result->requested;
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
+    if (s.hard_edges) mo.request.test_points = -1;  // counted on curves that depend on N's budget
     mo.hard_fallback = hard_fallback;
     mo.constraints = &options.constraints;
     mo.detect = options.detect;
