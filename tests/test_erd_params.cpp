@@ -50,6 +50,15 @@ ErdParamRequest thesis_request() {
     return r;
 }
 
+// The same parameters chosen, and the same count reached with them.
+void check_same_choices(const ErdParams& a, const ErdParams& b) {
+    CHECK(a.simple == b.simple);
+    CHECK(a.beta == b.beta);
+    CHECK(a.l == b.l);
+    CHECK(a.eps == b.eps);
+    CHECK(a.constrained_points == b.constrained_points);
+}
+
 }  // namespace
 
 TEST_CASE("beta tables 3.1 and 3.2", "[erd]") {
@@ -238,11 +247,7 @@ TEST_CASE("a known simple-test count: the same choices without the test's detect
                 req.test_points = std::int64_t(std::lround(counts(kSimpleTestBeta, 5, 1.0)));
                 const ErdParams pb = select_erd_params(ErdMethod::erdgpi, 1000, 1000, n, req, b);
                 INFO("scale " << sc << " n " << n << " shortcut " << shortcut);
-                CHECK(pa.simple == pb.simple);
-                CHECK(pa.beta == pb.beta);
-                CHECK(pa.l == pb.l);
-                CHECK(pa.eps == pb.eps);
-                CHECK(pa.constrained_points == pb.constrained_points);
+                check_same_choices(pa, pb);
                 CHECK(pa.simple_test_points == pb.simple_test_points);
                 // No detection at the test's beta unless the loop itself asks for it, and no pass
                 // widened for it.
@@ -266,11 +271,7 @@ TEST_CASE("the simple test's shortcut decides as the test does when counts grow 
                 const ErdParams pa = select_erd_params(m, 1000, 1000, n, {}, a);
                 const ErdParams pb = select_erd_params(m, 1000, 1000, n, thesis_request(), b);
                 INFO("scale " << sc << " n " << n);
-                CHECK(pa.simple == pb.simple);
-                CHECK(pa.beta == pb.beta);
-                CHECK(pa.l == pb.l);
-                CHECK(pa.eps == pb.eps);
-                CHECK(pa.constrained_points == pb.constrained_points);
+                check_same_choices(pa, pb);
             }
 }
 
