@@ -24,6 +24,7 @@ CASES = [
     ("house.pgm", "gpi", dict(density=1.0), ["-d", "1"]),
     ("cameraman.pgm", "ed", dict(points=1500, exit_mode=2), ["-n", "1500", "-x", "2"]),
     ("lena.pgm", "erdgpi", dict(density=0.5, thesis=True), ["-d", "0.5", "--thesis"]),
+    ("lena.pgm", "erdgpi", dict(points=311, lower_beta=0), ["-n", "311", "--lower-beta", "0"]),
     ("phantom.pgm", "erdgpi", dict(density=1.0, beta=0.05, ratio=0.5, wedge_fit=2, alpha_max=1.25, exit_mode=2),
      ["-d", "1", "-b", "0.05", "-r", "0.5", "--wedge-fit", "2", "--alpha-max", "1.25", "-x", "2"]),
     ("ct_head_12b.pgm", "erdgpi", dict(density=1.0, maxval=4095), ["-d", "1"]),
