@@ -36,12 +36,11 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
     } else {
         // The test runs with the thesis's fixed choices (and the user's r): an image whose
         // initial mesh has fewer than 0.001 |half-pixel grid| constrained points is simple.
-        constexpr double kTestBeta = kSimpleTestBeta;
         const double grid = double(2 * std::int64_t(width) - 1) * double(2 * std::int64_t(height) - 1);
         const double first = req.beta >= 0 ? req.beta : erd_beta_table(method, density * 100.0);
         bool decided = false;
-        if (req.shortcut && first < kTestBeta) {
-            if (req.test_points < 0) counter.prepare(kTestBeta, p.r);  // else no test detection comes
+        if (req.shortcut && first < kSimpleTestBeta) {
+            if (req.test_points < 0) counter.prepare(kSimpleTestBeta, p.r);  // else no test detection comes
             counter.detect(first, p.r);
             const std::size_t c = counter.count(5, 1.0);
             if (double(c) >= 0.001 * grid) {
@@ -58,10 +57,10 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
                 p.simple_test_points = std::size_t(req.test_points);
                 p.simple_test_known = true;
             } else {
-                counter.detect(kTestBeta, p.r);
+                counter.detect(kSimpleTestBeta, p.r);
                 p.simple_test_points = counter.count(5, 1.0);
             }
-            p.simple_test_beta = kTestBeta;
+            p.simple_test_beta = kSimpleTestBeta;
             p.simple = double(p.simple_test_points) < 0.001 * grid;
         }
     }

@@ -268,22 +268,20 @@ void flip_channels(Cdt* cdt, const std::vector<const Image*>& planes, const std:
     const std::size_t nf = cdt->face_count();
     std::vector<double> face_sse(nf, -1.0);  // < 0: not computed yet
     auto corner = [&](EdgeInd e) { return models[0]->corner_value(*cdt, e); };
-    // The C values of corner e.
-    auto corner_values = [&](EdgeInd e, double* z) {
-        if (C == 1) {
-            z[0] = models[0]->corner_value(*cdt, e);
-            return;
-        }
-        // The channels share their wedges (flips.h): the corner's entry is looked up once.
-        const std::uint32_t at = models[0]->corner_lookup(*cdt, e);
-        const VertInd v = cdt->org(e);
-        for (std::size_t c = 0; c < C; ++c) z[c] = models[c]->looked_up_value(v, at);
-    };
     // The squared error over the triangle of the corners at the origins of e0, e1, e2.
     auto tri_error = [&](EdgeInd e0, EdgeInd e1, EdgeInd e2, double base, double stop) {
         double z[3][kMaxChannels];
         const EdgeInd e[3] = {e0, e1, e2};
-        for (int i = 0; i < 3; ++i) corner_values(e[i], z[i]);
+        for (int i = 0; i < 3; ++i) {
+            if (C == 1) {
+                z[i][0] = models[0]->corner_value(*cdt, e[i]);
+                continue;
+            }
+            // The channels share their wedges (flips.h): corner e[i]'s entry is looked up once.
+            const std::uint32_t at = models[0]->corner_lookup(*cdt, e[i]);
+            const VertInd v = cdt->org(e[i]);
+            for (std::size_t c = 0; c < C; ++c) z[i][c] = models[c]->looked_up_value(v, at);
+        }
         return triangle_error(cdt->point(cdt->org(e0)), z[0], cdt->point(cdt->org(e1)), z[1], cdt->point(cdt->org(e2)),
                               z[2], base, stop);
     };
