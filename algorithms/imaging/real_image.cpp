@@ -131,7 +131,7 @@ Image real_luma(const Image& im) {
     return g;
 }
 
-double lattice_value(const Image& im, LatticePoint p, int c) {
+double lattice_value_between(const Image& im, LatticePoint p, int c) {
     const std::size_t W = std::size_t(im.width), C = std::size_t(im.channels);
     const int x0 = p.x / 2, y0 = p.y / 2, x1 = (p.x + 1) / 2, y1 = (p.y + 1) / 2;
     double sum = 0, all = 0;

@@ -45,7 +45,14 @@ inline double sample_value(const Image& im, std::size_t i) { return im.real() ? 
 // at a half-pixel point the mean of the valid pixels among the 2 or 4 nearest (all of them when
 // none is valid). The value of the basic model's vertices on the outline of the valid region
 // (algorithms/imaging/valid_region.h), which lie between a valid and a nodata pixel.
-double lattice_value(const Image& im, LatticePoint p, int c = 0);
+double lattice_value_between(const Image& im, LatticePoint p, int c);  // p not a pixel
+inline double lattice_value(const Image& im, LatticePoint p, int c = 0) {
+    if ((p.x | p.y) & 1) return lattice_value_between(im, p, c);
+    // One pixel: its sample, as the mean below gives it (which turns -0 into +0). The greedy's
+    // face planes read three of these a face.
+    const std::size_t i = std::size_t(p.y / 2) * std::size_t(im.width) + std::size_t(p.x / 2);
+    return 0.0 + im.reals[i * std::size_t(im.channels) + std::size_t(c)];
+}
 
 // True when pixel i (y * width + x) holds data.
 inline bool pixel_valid(const Image& im, std::size_t i) { return im.valid.empty() || im.valid[i] != 0; }
