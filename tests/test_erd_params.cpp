@@ -140,6 +140,65 @@ TEST_CASE("--lower-beta 0: l doubles on the one detection", "[erd]") {
     CHECK(q.beta == Approx(0.028 * 0.75 * 0.75 * 0.75 * 0.75));  // 20000 * 0.75^4 = 6328 <= 7000
 }
 
+namespace {
+// The distinct betas a counter was asked to detect at (a detection each).
+std::size_t distinct_betas(const FakeCounter& c) {
+    std::vector<double> b = c.betas;
+    std::sort(b.begin(), b.end());
+    return std::size_t(std::unique(b.begin(), b.end()) - b.begin());
+}
+}  // namespace
+
+TEST_CASE("the loop's look-ahead: the loop's choices, an iteration's detection skipped", "[erd]") {
+    // Counts that fall steeply with beta: 1e5 at beta 0.028 and l 5, n = 10000 (budget 7000).
+    FakeCounter c([](double beta, int l, double) { return 1e5 * std::pow(beta / 0.028, 4.0) * std::sqrt(5.0 / l); });
+    ErdParamRequest off;
+    off.look_ahead = false;
+    FakeCounter d(c.fn);
+    const ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);
+    const ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, off, d);
+    check_same_choices(p, q);
+    CHECK(p.loop_iterations == q.loop_iterations);
+    REQUIRE(q.loop_iterations >= 3);
+    // Iteration 1 (beta 0.021, l 10) is over the budget even at iteration 2's beta: not detected.
+    CHECK(std::count(d.betas.begin(), d.betas.end(), 0.028 * 0.75) == 1);
+    CHECK(std::count(c.betas.begin(), c.betas.end(), 0.028 * 0.75) == 0);
+    CHECK(distinct_betas(c) < distinct_betas(d));
+}
+
+TEST_CASE("the loop's look-ahead makes the loop's choices, with fewer detections", "[erd]") {
+    // Counts that grow with beta and fall with l, steeply or not, over budgets around them. A
+    // look-ahead whose detection the loop then does not reach costs one detection; only the last
+    // one of a run can (the others' are taken up), so a run makes at most one detection more.
+    static double scale = 1.0, a = 1.0, b = 1.0;
+    std::size_t with = 0, without = 0;
+    auto counts = [](double beta, int l, double eps) {
+        return scale * 1e4 * std::pow(beta / 0.011, a) * std::pow(5.0 / l, b) * (eps == 1.0 ? 1.2 : 1.0);
+    };
+    for (double sa : {0.5, 1.0, 2.0, 4.0})
+        for (double sb : {0.3, 1.0, 2.0})
+            for (double sc : {0.05, 0.3, 1.0, 3.0, 20.0})
+                for (std::size_t n : {300u, 1000u, 3000u}) {
+                    scale = sc;
+                    a = sa;
+                    b = sb;
+                    ErdParamRequest off;
+                    off.look_ahead = false;
+                    FakeCounter on_c(counts), off_c(counts), thesis_c(counts);
+                    const ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, n, {}, on_c);
+                    const ErdParams q = select_erd_params(ErdMethod::erdgpi, 1000, 1000, n, off, off_c);
+                    const ErdParams t = select_erd_params(ErdMethod::erdgpi, 1000, 1000, n, thesis_request(), thesis_c);
+                    INFO("a " << sa << " b " << sb << " scale " << sc << " n " << n);
+                    check_same_choices(p, q);
+                    check_same_choices(p, t);
+                    CHECK(p.loop_iterations == q.loop_iterations);
+                    CHECK(distinct_betas(on_c) <= distinct_betas(off_c) + 1);
+                    with += distinct_betas(on_c);
+                    without += distinct_betas(off_c);
+                }
+    CHECK(with < without);
+}
+
 TEST_CASE("too few constrained points: eps := 1 and recount", "[erd]") {
     FakeCounter c([](double, int, double eps) { return eps == 1.0 ? 6000.0 : 3000.0; });
     ErdParams p = select_erd_params(ErdMethod::erdgpi, 1000, 1000, 10000, {}, c);

@@ -272,8 +272,10 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     if (options.detect) {
         StepOneCounter counter(image, options.colour, options.colour_gradient, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
                                0.7 * double(options.target), &progress, options.threads);
-        out->params = select_erd_params(options.method, image.width, image.height, options.target, options.request,
-                                        counter);
+        // Crack curves are not counted to shrink with beta as Canny's are: no look-ahead for them.
+        ErdParamRequest request = options.request;
+        request.look_ahead = request.look_ahead && !options.hard_edges;
+        out->params = select_erd_params(options.method, image.width, image.height, options.target, request, counter);
         counter.release_detector();
         if (!counter.status().ok()) return counter.status();
         if (progress.cancelled()) return Status::failure(kCancelled);

@@ -1,5 +1,7 @@
 #include "algorithms/methods/erd_params.h"
 
+#include <cmath>
+
 namespace erd {
 
 namespace {
@@ -14,6 +16,34 @@ constexpr BetaRow kBetaRows[] = {
     {0.20, 0.0095, 0.0110}, {0.35, 0.0095, 0.0115}, {0.75, 0.0118, 0.0118}, {1.20, 0.0280, 0.0280},
     {2.50, 0.0550, 0.0550}, {3.50, 0.0830, 0.0830}, {5.00, 0.0950, 0.0950},
 };
+
+// The loop's look-ahead (ours, with req.shortcut), before iteration k = i + 1 while the last
+// detection is iteration i's and p holds iteration k's beta and l. A smaller beta finds fewer
+// constrained points at the same l and epsilon (what the simple test's shortcut relies on), and
+// on one detection a longer l keeps a subset of the polylines. So the detection at iteration k+1's
+// beta, counted at l_k, bounds iteration k's count from below: when that is over the budget,
+// iteration k cannot stop the loop, and its detection is not made; p moves on to iteration k+1
+// (epsilon stays: it moves only at a count below 0.35 N) and true is returned. Otherwise the
+// detection is set aside for iteration k+1, which the loop reaches unless k stops it (then it
+// was one detection too many). So it is tried only where it is expected to pay: iteration i's
+// detection counted at l_k (an upper bound on k's count), times *ratio squared (the count's
+// expected change over one step of beta, squared for two), is over the budget. *ratio is then
+// measured again from the two counts at l_k.
+bool look_ahead(ConstraintPointCounter& counter, double high, double* ratio, ErdParams* p) {
+    const double upper = double(counter.count(p->l, p->eps));
+    if (upper * *ratio * *ratio <= high) return false;
+    const double next = p->beta * 0.75;
+    counter.detect(next, p->r);
+    const double lower = double(counter.count(p->l, p->eps));
+    *ratio = std::sqrt(lower / upper);
+    if (lower <= high) {
+        counter.set_aside();
+        return false;
+    }
+    p->beta = next;
+    p->l *= 2;
+    return true;
+}
 
 }  // namespace
 
@@ -31,6 +61,7 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
     const double pixels = double(width) * double(height);
     const double density = pixels > 0 ? double(n) / pixels : 0.0;  // a fraction, not percent
 
+    double ratio = 0.75;  // the look-ahead's guess of one beta step's effect on the count (below)
     if (req.simple >= 0) {
         p.simple = req.simple == 0;
     } else {
@@ -39,6 +70,7 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
         const double grid = double(2 * std::int64_t(width) - 1) * double(2 * std::int64_t(height) - 1);
         const double first = req.beta >= 0 ? req.beta : erd_beta_table(method, density * 100.0);
         bool decided = false;
+        std::size_t first_count = 0;  // at l 5, epsilon 1, when the shortcut counted it
         if (req.shortcut && first < kSimpleTestBeta) {
             if (req.test_points < 0) counter.prepare(kSimpleTestBeta, p.r);  // else no test detection comes
             counter.detect(first, p.r);
@@ -50,6 +82,7 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
                 decided = true;
             } else {
                 counter.set_aside();
+                first_count = c;
             }
         }
         if (!decided) {
@@ -62,6 +95,11 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
             }
             p.simple_test_beta = kSimpleTestBeta;
             p.simple = double(p.simple_test_points) < 0.001 * grid;
+            // The look-ahead's first guess of one beta step's effect: the two counts taken as a
+            // power of beta.
+            if (first_count > 0 && p.simple_test_points > first_count)
+                ratio = std::pow(double(first_count) / double(p.simple_test_points),
+                                 std::log(0.75) / std::log(first / kSimpleTestBeta));
         }
     }
 
@@ -98,6 +136,9 @@ ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t
         if (!(lengthen || lower) || p.loop_iterations >= kErdParamMaxIterations) break;
         if (lower) p.beta *= 0.75;
         if (lengthen) p.l *= 2;
+        if (lower && lengthen && req.shortcut && req.look_ahead && p.loop_iterations + 2 <= kErdParamMaxIterations &&
+            look_ahead(counter, high, &ratio, &p))
+            ++p.loop_iterations;
     }
     return p;
 }

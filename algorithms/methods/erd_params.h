@@ -45,11 +45,14 @@ struct ErdParamRequest {
     int l = -1;         // -l
     double eps = -1;    // -e
     int simple = -1;    // -S: -1 automatic, 0 simple, anything else not simple (thesis flag text)
-    bool shortcut = true;  // the simple test's shortcut (below); false: the thesis's test as written
+    bool shortcut = true;  // the simple test's shortcut and the loop's look-ahead (below); false: the
+                           // thesis's test and loop as written
     bool lower_beta = true;  // the loop lowers beta as it doubles l (the thesis); false: l alone (below)
     // The simple test's count when an earlier run on the same image made it (>= 0; a count
     // search's): its detection is not made again.
     std::int64_t test_points = -1;
+    bool look_ahead = true;  // with shortcut: the loop's look-ahead (below); step 1 turns it off for
+                             // hard edges
 };
 
 // The simple test's beta (thesis 3.4.1: with l 5 and epsilon 1).
@@ -87,6 +90,14 @@ constexpr int kErdParamMaxIterations = 24;
 // detection comes first, counted as the test counts (l 5, epsilon 1); when it already reaches
 // the test's threshold the image is not simple and the test's own detection is not made. Else
 // the test runs as written and the first detection is set aside for the loop.
+//
+// The look-ahead (ours, req.shortcut and req.look_ahead): before an iteration that the last
+// detection, counted at the iteration's l, cannot show to stop the loop, the next iteration's
+// detection may be made first; when it, counted at this iteration's l, is still over the budget
+// (a smaller beta finding fewer points), this iteration cannot stop the loop either and its
+// detection is skipped. The choices are the loop's, with a detection fewer per skip; one more only
+// when a look-ahead's detection is not reached, which a guess of beta's effect keeps rare
+// (docs/DECISIONS.md "Parameter selection").
 ErdParams select_erd_params(ErdMethod method, int width, int height, std::size_t n,
                             const ErdParamRequest& req, ConstraintPointCounter& counter);
 
