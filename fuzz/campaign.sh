@@ -50,6 +50,10 @@ mkdir -p "$OUT" "$KEPT" || exit 1
 
 # The targets, built once by fuzz/run.sh (FUZZ_BUILD_ONLY: build, do not run).
 FUZZ_BUILD_ONLY=1 bash fuzz/run.sh 0 "${names[@]}" >"$OUT/build.log" 2>&1
+# The record's commit: the one the targets were built from ("+" when the work tree differed from
+# it), taken now: the tree may change while the campaign runs.
+FUZZED=$(git rev-parse --short=7 HEAD 2>/dev/null || echo unknown)
+git diff --quiet HEAD -- . ':!fuzz/campaign.*' ':!fuzz/corpus' 2>/dev/null || FUZZED+="+"
 status=0
 built=()
 for n in "${names[@]}"; do
@@ -111,10 +115,7 @@ campaign() {
         rm -rf "$m" "$dir/seeds.list"
     fi
     echo "$execs $(ls "$corpus" | wc -l) $findings $merged $starts $fuzzed $wall" >"$dir/result"
-    # The record: the commit fuzzed ("+" when the work tree differed from it).
-    local commit; commit=$(git rev-parse --short=7 HEAD 2>/dev/null || echo unknown)
-    git diff --quiet HEAD -- . ':!fuzz/campaign.*' ':!fuzz/corpus' 2>/dev/null || commit+="+"
-    printf '%s\t%s\t%s\t%d\t%d\t%d\t%d\t%d\n' "$(date -u +%F)" "$commit" "$n" "$fuzzed" "$wall" "$execs" \
+    printf '%s\t%s\t%s\t%d\t%d\t%d\t%d\t%d\n' "$(date -u +%F)" "$FUZZED" "$n" "$fuzzed" "$wall" "$execs" \
         "$(ls "$corpus" | wc -l)" "$findings" >>fuzz/campaign.tsv
 }
 
