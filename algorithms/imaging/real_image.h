@@ -48,8 +48,8 @@ inline double sample_value(const Image& im, std::size_t i) { return im.real() ? 
 double lattice_value_between(const Image& im, LatticePoint p, int c);  // p not a pixel
 inline double lattice_value(const Image& im, LatticePoint p, int c = 0) {
     if ((p.x | p.y) & 1) return lattice_value_between(im, p, c);
-    // One pixel: its sample, as the mean below gives it (which turns -0 into +0). The greedy's
-    // face planes read three of these a face.
+    // A pixel: its sample, as lattice_value_between's mean of one gives it (-0 made +0). The
+    // greedy's face planes read three of these a face.
     const std::size_t i = std::size_t(p.y / 2) * std::size_t(im.width) + std::size_t(p.x / 2);
     return 0.0 + im.reals[i * std::size_t(im.channels) + std::size_t(c)];
 }
