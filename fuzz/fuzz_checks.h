@@ -8,6 +8,7 @@
 #include <string>
 
 #include "algorithms/imaging/image.h"
+#include "algorithms/methods/options.h"
 #include "algorithms/model/model.h"
 #include "imageio/image_format.h"
 #include "kernel/predicates.h"
@@ -27,6 +28,16 @@ struct ByteReader {
     std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
 };
 
+// The generate targets' request, two bytes: the first's bit 7 set -> density (its low 7 bits) + the
+// second / 256 percent (may be 0); otherwise N = their 16 bits % (pixels + 8) (may be out of range
+// on purpose).
+inline void read_target(ByteReader& in, std::int64_t pixels, erd::GenerateOptions* o) {
+    const std::uint32_t t0 = in.byte(), t1 = in.byte();
+    o->density_given = (t0 & 128) != 0;
+    if (o->density_given) o->density = double(t0 & 127) + double(t1) / 256.0;
+    else o->points = std::int64_t((t0 << 8) | t1) % (pixels + 8);
+}
+
 // The image limits the decoder targets run under: small enough that every allocation stays cheap.
 inline erd::imageio::ImageLimits image_limits() {
     erd::imageio::ImageLimits limits;
@@ -42,6 +53,14 @@ inline void check_refusal(const erd::Status& s) {
 
 // What an entry point answered: true when it accepted the input; a refusal is checked and false.
 inline bool accepted(const erd::Status& s) {
+    if (!s.ok()) check_refusal(s);
+    return s.ok();
+}
+
+// What a method answered a generate target: true when it made a model. A request for a count
+// outside [4, W*H] must be refused; any refusal is checked.
+inline bool generated(const erd::Status& s, bool count_in_range) {
+    if (!count_in_range) check(!s.ok());
     if (!s.ok()) check_refusal(s);
     return s.ok();
 }

@@ -28,19 +28,12 @@
 #include "algorithms/methods/options.h"
 #include "algorithms/methods/quality_target.h"
 #include "algorithms/model/reconstruct.h"
+#include "fuzz/fuzz_checks.h"
 #include "kernel/cdt.h"
 
 namespace {
 
-struct Reader {
-    const std::uint8_t* data;
-    std::size_t size, pos = 0;
-    std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
-};
-
-void check(bool ok) {
-    if (!ok) __builtin_trap();
-}
+using fuzz_checks::check;
 
 void check_model(const erd::Image& image, const erd::GenerateResult& res) {
     using namespace erd;
@@ -84,7 +77,7 @@ void check_model(const erd::Image& image, const erd::GenerateResult& res) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace erd;
-    Reader in{data, size};
+    fuzz_checks::ByteReader in{data, size};
     Image image;
     image.width = int(1 + in.byte() % 24);
     image.height = int(1 + in.byte() % 24);
@@ -96,14 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     GenerateOptions o;
     const std::int64_t pixels = std::int64_t(image.width) * image.height;
-    const std::uint32_t t0 = in.byte(), t1 = in.byte();
-    if (t0 & 128) {
-        o.density_given = true;
-        o.density = double(t0 & 127) + double(t1) / 256.0;
-    } else {
-        o.points = std::int64_t((t0 << 8) | t1) % (pixels + 8);
-        o.density_given = false;
-    }
+    fuzz_checks::read_target(in, pixels, &o);
     const std::uint32_t f0 = in.byte(), f1 = in.byte(), f2 = in.byte(), f3 = in.byte(), f4 = in.byte(),
                         f5 = in.byte();
     if (f0 != 0) o.beta = double(f0) / 256.0;                   // (0, 1)
@@ -137,14 +123,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool in_range = check_target(n, image.width, image.height).ok();
     GenerateResult res;
     const Status st = run_method(method, image, o, &res);  // --psnr / --max-error: the count searched
-    if (!in_range) {
-        check(!st.ok() && st.code == Code::input);
-        return 0;
-    }
-    if (!st.ok()) {
-        check(st.code == Code::input && !st.message.empty());
-        return 0;
-    }
+    if (!fuzz_checks::generated(st, in_range)) return 0;
     if (res.stats.has_quality) {
         const QualitySearchStats& q = res.stats.quality;
         check(res.requested <= std::size_t(n) && res.requested >= 4);

@@ -11,8 +11,8 @@
 //               the minimax rounds
 //   the rest    raw values, two bytes each (a signed 16-bit number), cycled when short
 // Checks: any failure is Code::input with a message (never runtime); an image with no valid pixel
-// is refused; every model is real, its faces own each valid pixel once and no nodata pixel, its
-// point reconstruction has finite values exactly at the valid pixels; when the method reports
+// is refused; every model is real and a triangulation of its valid region (check_triangulation;
+// the reconstruction has data exactly at the valid pixels, with finite values); when the method reports
 // its largest error within --max-error E, the reconstruction's largest error over the valid
 // pixels, measured here, is within E too.
 #include <algorithm>
@@ -28,41 +28,20 @@
 #include "algorithms/methods/quality_target.h"
 #include "algorithms/model/metrics.h"
 #include "algorithms/model/reconstruct.h"
-#include "kernel/raster_rows.h"
+#include "fuzz/fuzz_checks.h"
 
 namespace {
 
-struct Reader {
-    const std::uint8_t* data;
-    std::size_t size, pos = 0;
-    std::uint32_t byte() { return pos < size ? data[pos++] : 0u; }
-};
-
-void check(bool ok) {
-    if (!ok) __builtin_trap();
-}
+using fuzz_checks::check;
 
 constexpr double kScales[8] = {1e-7, 1e-4, 0.01, 0.5, 1.0, 37.25, 1e3, 1e6};
 constexpr double kOffsets[8] = {0.0, -1e4, 1e4, -1.0, 0.5, 1e6, -1e6, 123.25};
-
-// Each valid pixel is owned by exactly one face, no nodata pixel by any.
-void check_owners(const erd::Image& im, const erd::Model& m) {
-    std::vector<int> owners(im.pixels(), 0);
-    std::vector<erd::Span> spans;
-    for (const auto& f : m.faces) {
-        erd::scan_triangle(erd::Lattice::pixels(), {2 * m.width - 2, 2 * m.height - 2}, m.vertices[f[0]], m.vertices[f[1]],
-                           m.vertices[f[2]], &spans);
-        for (const erd::Span& s : spans)
-            for (int x = s.x_begin; x <= s.x_end; ++x) ++owners[std::size_t(s.y) * std::size_t(m.width) + std::size_t(x)];
-    }
-    for (std::size_t i = 0; i < im.pixels(); ++i) check(owners[i] == (erd::pixel_valid(im, i) ? 1 : 0));
-}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace erd;
-    Reader in{data, size};
+    fuzz_checks::ByteReader in{data, size};
     const int w = int(1 + in.byte() % 24), h = int(1 + in.byte() % 24);
     const std::uint32_t form = in.byte();
     const int channels = (form & 1) ? 3 : 1;
@@ -75,14 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     GenerateOptions o;
     const std::int64_t pixels = std::int64_t(w) * h;
-    const std::uint32_t t0 = in.byte(), t1 = in.byte();
-    if (t0 & 128) {
-        o.density_given = true;
-        o.density = double(t0 & 127) + double(t1) / 256.0;
-    } else {
-        o.points = std::int64_t((t0 << 8) | t1) % (pixels + 8);
-        o.density_given = false;
-    }
+    fuzz_checks::read_target(in, pixels, &o);
     const std::uint32_t f0 = in.byte(), f1 = in.byte(), f2 = in.byte(), f3 = in.byte();
     o.edges = f0 % 3 == 0 ? EdgeChoice::automatic : f0 % 3 == 1 ? EdgeChoice::soft : EdgeChoice::hard;
     o.flips = int((f0 >> 2) % 3);
@@ -111,29 +83,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     Image image;
     const Status made = make_real_image(w, h, channels, std::move(values), RasterMeta{}, &image);
-    if (!made.ok()) {
-        check(made.code == Code::input && !made.message.empty());
-        return 0;
-    }
+    if (!fuzz_checks::accepted(made)) return 0;
 
     const std::int64_t n = target_points(o, w, h);
     const bool in_range = check_target(n, w, h).ok();
     GenerateResult res;
     const Status st = run_method(method, image, o, &res);
-    if (!in_range) {
-        check(!st.ok() && st.code == Code::input);
-        return 0;
-    }
-    if (!st.ok()) {
-        check(st.code == Code::input && !st.message.empty());
-        return 0;
-    }
+    if (!fuzz_checks::generated(st, in_range)) return 0;
     const Model& m = res.model;
     check(m.real && m.width == w && m.height == h && m.channels == channels);
     check(m.holes == image.has_holes());
     check(m.values.size() == m.vertices.size() * std::size_t(channels));
     for (double v : m.values) check(std::isfinite(v));
-    check_owners(image, m);
+    check(check_triangulation(m).ok());
 
     Image rec;
     check(reconstruct(m, false, &rec).ok());
