@@ -272,9 +272,13 @@ Status build_initial_mesh(const Image& image, const InitialMeshOptions& options,
     if (options.detect) {
         StepOneCounter counter(image, options.colour, options.colour_gradient, options.length_rule, options.eps_unit, options.hard_edges, options.hard_fallback,
                                0.7 * double(options.target), &progress, options.threads);
-        // Crack curves are not counted to shrink with beta as Canny's are: no look-ahead for them.
+        // Crack curves' counts depend on N's budget (so an earlier run's simple-test count does
+        // not carry over) and were not shown to shrink with beta as Canny's do (no look-ahead).
         ErdParamRequest request = options.request;
-        request.look_ahead = request.look_ahead && !options.hard_edges;
+        if (options.hard_edges) {
+            request.test_points = -1;
+            request.look_ahead = false;
+        }
         out->params = select_erd_params(options.method, image.width, image.height, options.target, request, counter);
         counter.release_detector();
         if (!counter.status().ok()) return counter.status();

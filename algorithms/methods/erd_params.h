@@ -49,7 +49,7 @@ struct ErdParamRequest {
                            // thesis's test and loop as written
     bool lower_beta = true;  // the loop lowers beta as it doubles l (the thesis); false: l alone (below)
     // The simple test's count when an earlier run on the same image made it (>= 0; a count
-    // search's): its detection is not made again.
+    // search's): its detection is not made again. Step 1 drops it for hard edges.
     std::int64_t test_points = -1;
     bool look_ahead = true;  // with shortcut: the loop's look-ahead (below); step 1 turns it off for
                              // hard edges

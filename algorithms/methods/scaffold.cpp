@@ -277,7 +277,6 @@ Status begin_erd_method(const Image& image, const GenerateOptions& options, ErdM
     mo.target = result->requested;
     mo.request = param_request(options);
     mo.hard_edges = s.hard_edges;
-    if (s.hard_edges) mo.request.test_points = -1;  // counted on curves that depend on N's budget
     mo.hard_fallback = hard_fallback;
     mo.constraints = &options.constraints;
     mo.detect = options.detect;
